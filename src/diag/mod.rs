@@ -1,0 +1,188 @@
+//! Source files, spans and diagnostics rendered with a source excerpt and a caret.
+//!
+//! Every error that input can cause, from the grammar or from evaluation, becomes a
+//! [`Diagnostic`] anchored to a [`Span`]. This module depends on nothing else in the crate.
+
+use serde::Serialize;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// Index of a file in a [`SourceMap`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Default)]
+pub struct FileId(pub u32);
+
+/// A byte range in one source file.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Serialize, Default)]
+pub struct Span {
+    /// The file the range lies in.
+    pub file: FileId,
+    /// First byte.
+    pub start: u32,
+    /// One past the last byte.
+    pub end: u32,
+}
+
+impl Span {
+    /// A span from byte offsets in `file`.
+    pub fn new(file: FileId, start: usize, end: usize) -> Span {
+        Span {
+            file,
+            start: start as u32,
+            end: end as u32,
+        }
+    }
+}
+
+impl fmt::Debug for Span {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}..{}", self.start, self.end)
+    }
+}
+
+/// One loaded source file.
+#[derive(Debug, Clone)]
+pub struct SourceFile {
+    /// The path as the user (or an include) named it.
+    pub path: PathBuf,
+    /// Its whole text.
+    pub text: String,
+}
+
+/// Every file read while loading a scene; spans index into it.
+#[derive(Debug, Clone, Default)]
+pub struct SourceMap {
+    files: Vec<SourceFile>,
+}
+
+impl SourceMap {
+    /// Adds a file and returns its id.
+    pub fn add(&mut self, path: &Path, text: String) -> FileId {
+        self.files.push(SourceFile {
+            path: path.to_path_buf(),
+            text,
+        });
+        FileId(self.files.len() as u32 - 1)
+    }
+
+    /// The file with id `id`.
+    pub fn file(&self, id: FileId) -> &SourceFile {
+        &self.files[id.0 as usize]
+    }
+
+    /// 1-based line and column (in characters) of byte `offset` in `file`.
+    pub fn line_col(&self, file: FileId, offset: u32) -> (usize, usize) {
+        let text = &self.file(file).text;
+        let offset = (offset as usize).min(text.len());
+        let before = &text[..floor_char_boundary(text, offset)];
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let col = before[line_start..].chars().count() + 1;
+        (line, col)
+    }
+
+    /// `path:line:col` of a span's start.
+    pub fn location(&self, span: Span) -> String {
+        let (line, col) = self.line_col(span.file, span.start);
+        format!("{}:{}:{}", self.file(span.file).path.display(), line, col)
+    }
+}
+
+fn floor_char_boundary(text: &str, mut i: usize) -> usize {
+    while i > 0 && !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// How serious a diagnostic is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Severity {
+    /// Loading stops.
+    Error,
+    /// Loading goes on; the user is told.
+    Warning,
+}
+
+/// A message about the input, anchored to a span, with notes (such as an include chain).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnostic {
+    /// Error or warning.
+    pub severity: Severity,
+    /// One line saying what is wrong.
+    pub message: String,
+    /// Where; `None` for errors about the input as a whole.
+    pub span: Option<Span>,
+    /// Further lines shown after the excerpt.
+    pub notes: Vec<String>,
+}
+
+impl Diagnostic {
+    /// An error at `span`.
+    pub fn error(message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Error,
+            message: message.into(),
+            span: Some(span),
+            notes: Vec::new(),
+        }
+    }
+
+    /// A warning at `span`.
+    pub fn warning(message: impl Into<String>, span: Span) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Warning,
+            message: message.into(),
+            span: Some(span),
+            notes: Vec::new(),
+        }
+    }
+
+    /// Adds a note line.
+    pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
+        self.notes.push(note.into());
+        self
+    }
+
+    /// Renders the diagnostic as text: message, location, the source line and a caret line.
+    ///
+    /// ```text
+    /// error: unsupported: `difference` (CSG is outside trace's subset)
+    ///   --> scene.rt:3:1
+    ///    |
+    ///  3 | difference {
+    ///    | ^^^^^^^^^^
+    /// ```
+    pub fn render(&self, sources: &SourceMap) -> String {
+        let label = match self.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        };
+        let mut out = format!("{label}: {}\n", self.message);
+        if let Some(span) = self.span {
+            let file = sources.file(span.file);
+            let (line, col) = sources.line_col(span.file, span.start);
+            let text = &file.text;
+            let start = floor_char_boundary(text, (span.start as usize).min(text.len()));
+            let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
+            let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+            let source_line = text[line_start..line_end].trim_end_matches('\r');
+            let end = floor_char_boundary(text, (span.end as usize).clamp(start, line_end));
+            let width = text[start..end].chars().count().max(1);
+            let gutter = line.to_string().len();
+            let pad = " ".repeat(gutter);
+            // Tabs before the caret are kept so that the caret lines up under the culprit.
+            let lead: String = text[line_start..start]
+                .chars()
+                .map(|c| if c == '\t' { '\t' } else { ' ' })
+                .collect();
+            out += &format!("{pad}--> {}:{line}:{col}\n", file.path.display());
+            out += &format!("{pad} |\n");
+            out += &format!("{line} | {source_line}\n");
+            out += &format!("{pad} | {lead}{}\n", "^".repeat(width));
+        }
+        for note in &self.notes {
+            out += &format!("  = {note}\n");
+        }
+        out
+    }
+}

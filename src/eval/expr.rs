@@ -1,0 +1,464 @@
+//! Expression evaluation: POV-Ray's operators, promotion rules, constants and functions.
+
+use super::Evaluator;
+use super::value::{Value, Vector, srgb_decode};
+use crate::diag::{Diagnostic, Span};
+use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
+
+/// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
+const EQUALITY_TOLERANCE: f64 = 1e-10;
+
+type Result<T> = std::result::Result<T, Diagnostic>;
+
+impl Evaluator<'_> {
+    /// Evaluates an expression to a value.
+    pub(super) fn eval(&mut self, expr: &Expr) -> Result<Value> {
+        match &expr.kind {
+            ExprKind::Number(n) => Ok(Value::Float(*n)),
+            ExprKind::Vector(items) => {
+                if items.len() > 5 {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "a vector has 2 to 5 components, this one has {}",
+                            items.len()
+                        ),
+                        expr.span,
+                    ));
+                }
+                let mut comps = Vec::with_capacity(items.len());
+                for item in items {
+                    comps.push(self.float(item)?);
+                }
+                Ok(Value::Vector(Vector::new(&comps)))
+            }
+            ExprKind::Ident(name) => self.ident(name, expr.span),
+            ExprKind::Unary(op, operand) => {
+                let v = self.eval(operand)?;
+                match op {
+                    UnOp::Plus => Ok(v),
+                    UnOp::Neg => map_components(&v, |c| -c)
+                        .ok_or_else(|| type_error("a number", &v, operand.span)),
+                    UnOp::Not => {
+                        let f = self.expect_float(&v, operand.span)?;
+                        Ok(Value::Float(bool_value(f.abs() <= EQUALITY_TOLERANCE)))
+                    }
+                }
+            }
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b),
+            ExprKind::Ternary(c, a, b) => {
+                let cond = self.float(c)?;
+                if cond.abs() > EQUALITY_TOLERANCE {
+                    self.eval(a)
+                } else {
+                    self.eval(b)
+                }
+            }
+            ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, expr.span),
+            ExprKind::Member(base, name, span) => {
+                let v = self.eval(base)?;
+                self.member(&v, name, *span, base.span)
+            }
+            ExprKind::Colour(parts) => self.colour(parts),
+        }
+    }
+
+    /// Evaluates an expression that must be a float.
+    pub(super) fn float(&mut self, expr: &Expr) -> Result<f64> {
+        let v = self.eval(expr)?;
+        self.expect_float(&v, expr.span)
+    }
+
+    pub(super) fn expect_float(&self, v: &Value, span: Span) -> Result<f64> {
+        match v {
+            Value::Float(f) => Ok(*f),
+            _ => Err(type_error("a float", v, span)),
+        }
+    }
+
+    /// Evaluates an expression in a 3-vector context: a float promotes to all three components.
+    pub(super) fn vec3(&mut self, expr: &Expr) -> Result<glam::DVec3> {
+        let v = self.eval(expr)?;
+        match v {
+            Value::Float(f) => Ok(glam::DVec3::splat(f)),
+            Value::Vector(v) => Ok(v.vec3()),
+            _ => Err(type_error("a vector", &v, expr.span)),
+        }
+    }
+
+    fn ident(&mut self, name: &str, span: Span) -> Result<Value> {
+        if let Some(v) = self.env.get(name) {
+            return Ok(v.clone());
+        }
+        let v3 = |x, y, z| Value::Vector(Vector::new(&[x, y, z]));
+        Ok(match name {
+            "pi" => Value::Float(std::f64::consts::PI),
+            "x" => v3(1.0, 0.0, 0.0),
+            "y" => v3(0.0, 1.0, 0.0),
+            "z" => v3(0.0, 0.0, 1.0),
+            "t" => Value::Vector(Vector::new(&[0.0, 0.0, 0.0, 1.0])),
+            "u" => Value::Vector(Vector::new(&[1.0, 0.0])),
+            "v" => Value::Vector(Vector::new(&[0.0, 1.0])),
+            "true" | "yes" | "on" => Value::Float(1.0),
+            "false" | "no" | "off" => Value::Float(0.0),
+            "clock" => Value::Float(0.0),
+            "clock_on" => Value::Float(0.0),
+            "image_width" => Value::Float(self.options.width as f64),
+            "image_height" => Value::Float(self.options.height as f64),
+            "version" => Value::Float(self.version.unwrap_or(3.7)),
+            _ => return Err(self.unknown_word(name, span)),
+        })
+    }
+
+    fn binary(&mut self, op: BinOp, a: &Expr, b: &Expr) -> Result<Value> {
+        let va = self.eval(a)?;
+        let vb = self.eval(b)?;
+        let span = Span {
+            end: b.span.end,
+            ..a.span
+        };
+        match op {
+            BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Div => {
+                let f = match op {
+                    BinOp::Add => |x: f64, y: f64| x + y,
+                    BinOp::Sub => |x, y| x - y,
+                    BinOp::Mul => |x, y| x * y,
+                    _ => |x, y| x / y,
+                };
+                let (ca, la) = va
+                    .components()
+                    .ok_or_else(|| type_error("a number", &va, a.span))?;
+                let (cb, lb) = vb
+                    .components()
+                    .ok_or_else(|| type_error("a number", &vb, b.span))?;
+                if op == BinOp::Div
+                    && vb
+                        .components()
+                        .is_some_and(|(c, n)| c[..n].iter().any(|&x| x == 0.0))
+                {
+                    return Err(Diagnostic::error("division by zero", b.span));
+                }
+                let is_colour = matches!(va, Value::Colour(_)) || matches!(vb, Value::Colour(_));
+                if la == 1 && lb == 1 && !is_colour {
+                    return Ok(Value::Float(f(ca[0], cb[0])));
+                }
+                // Promote: a float fills every component; vectors of different sizes are
+                // padded with zeros.
+                let len = if is_colour { 5 } else { la.max(lb) };
+                let pick = |c: [f64; 5], l: usize, i: usize| if l == 1 { c[0] } else { c[i] };
+                let mut out = [0.0; 5];
+                for (i, o) in out.iter_mut().enumerate().take(len) {
+                    *o = f(pick(ca, la, i), pick(cb, lb, i));
+                }
+                Ok(if is_colour {
+                    Value::Colour(out)
+                } else {
+                    Value::Vector(Vector { c: out, len })
+                })
+            }
+            _ => {
+                let x = self.expect_float(&va, a.span)?;
+                let y = self.expect_float(&vb, b.span)?;
+                let _ = span;
+                let r = match op {
+                    BinOp::Lt => x < y,
+                    BinOp::Le => x <= y + EQUALITY_TOLERANCE,
+                    BinOp::Gt => x > y,
+                    BinOp::Ge => x + EQUALITY_TOLERANCE >= y,
+                    BinOp::Eq => (x - y).abs() <= EQUALITY_TOLERANCE,
+                    BinOp::Ne => (x - y).abs() > EQUALITY_TOLERANCE,
+                    BinOp::And => x.abs() > EQUALITY_TOLERANCE && y.abs() > EQUALITY_TOLERANCE,
+                    _ => x.abs() > EQUALITY_TOLERANCE || y.abs() > EQUALITY_TOLERANCE,
+                };
+                Ok(Value::Float(bool_value(r)))
+            }
+        }
+    }
+
+    fn member(&mut self, v: &Value, name: &str, span: Span, base_span: Span) -> Result<Value> {
+        let (c, len) = v
+            .components()
+            .ok_or_else(|| type_error("a vector or colour", v, base_span))?;
+        let index = match name {
+            "x" | "u" | "red" => 0,
+            "y" | "v" | "green" => 1,
+            "z" | "blue" => 2,
+            "t" | "filter" => 3,
+            "transmit" => 4,
+            "gray" | "grey" => return Ok(Value::Float(0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2])),
+            _ => {
+                return Err(Diagnostic::error(
+                    format!(
+                        "unknown component `.{name}` (expected .x .y .z .t .u .v .red .green .blue .filter .transmit .gray)"
+                    ),
+                    span,
+                ));
+            }
+        };
+        if len == 1 || index >= len {
+            return Err(Diagnostic::error(
+                format!("`.{name}` does not exist on {}", v.kind_name()),
+                span,
+            ));
+        }
+        Ok(Value::Float(c[index]))
+    }
+
+    fn colour(&mut self, parts: &[ColourPart]) -> Result<Value> {
+        let mut c = [0.0; 5];
+        for part in parts {
+            match part {
+                ColourPart::Base(e) => {
+                    let v = self.eval(e)?;
+                    c = super::value::colour5(&v)
+                        .ok_or_else(|| type_error("a colour", &v, e.span))?;
+                }
+                ColourPart::Typed(kw, e) => {
+                    let v = self.eval(e)?;
+                    let (comps, len) = v
+                        .components()
+                        .ok_or_else(|| type_error("a colour", &v, e.span))?;
+                    let comps = if len == 1 { [comps[0]; 5] } else { comps };
+                    let srgb = kw.starts_with('s');
+                    if srgb && self.assumed_gamma.is_none() {
+                        return Err(Diagnostic::error(
+                            format!(
+                                "`{kw}` needs `assumed_gamma` to be set first in global_settings"
+                            ),
+                            e.span,
+                        ));
+                    }
+                    let channels = kw.trim_start_matches('s');
+                    // Which of filter/transmit this keyword sets, in the order the vector gives them.
+                    let (filter, transmit) = match channels {
+                        "rgb" => (None, None),
+                        "rgbf" => (Some(3), None),
+                        "rgbt" => (None, Some(3)),
+                        _ => (Some(3), Some(4)),
+                    };
+                    for (i, ci) in c.iter_mut().enumerate().take(3) {
+                        *ci = if srgb {
+                            self.from_srgb(comps[i])
+                        } else {
+                            comps[i]
+                        };
+                    }
+                    c[3] = filter.map_or(0.0, |i| comps[i]);
+                    c[4] = transmit.map_or(0.0, |i| comps[i]);
+                }
+                ColourPart::Channel(kw, e) => {
+                    let f = self.float(e)?;
+                    match kw.as_str() {
+                        "red" => c[0] = f,
+                        "green" => c[1] = f,
+                        "blue" => c[2] = f,
+                        "filter" => c[3] = f,
+                        "transmit" => c[4] = f,
+                        _ => {
+                            return Err(Diagnostic::error(
+                                format!("`{kw}` is not a colour channel that can be set"),
+                                e.span,
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(Value::Colour(c))
+    }
+
+    /// An sRGB-encoded channel converted into working gamma.
+    fn from_srgb(&self, v: f64) -> f64 {
+        let linear = srgb_decode(v);
+        match self.assumed_gamma {
+            Some(g) if g != 1.0 => linear.max(0.0).powf(1.0 / g),
+            _ => linear,
+        }
+    }
+
+    fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Value> {
+        let mut values = Vec::with_capacity(args.len());
+        for a in args {
+            values.push(self.eval(a)?);
+        }
+        let arity = |n: usize| -> Result<()> {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(Diagnostic::error(
+                    format!(
+                        "`{name}` takes {n} argument{}, found {}",
+                        if n == 1 { "" } else { "s" },
+                        args.len()
+                    ),
+                    span,
+                ))
+            }
+        };
+        let f = |i: usize, me: &Self| -> Result<f64> { me.expect_float(&values[i], args[i].span) };
+        let v3 = |i: usize| -> Result<glam::DVec3> {
+            match &values[i] {
+                Value::Float(x) => Ok(glam::DVec3::splat(*x)),
+                Value::Vector(v) => Ok(v.vec3()),
+                other => Err(type_error("a vector", other, args[i].span)),
+            }
+        };
+        let domain = |ok: bool| -> Result<()> {
+            if ok {
+                Ok(())
+            } else {
+                Err(Diagnostic::error(
+                    format!("`{name}`: argument out of its domain"),
+                    span,
+                ))
+            }
+        };
+        let unary: Option<fn(f64) -> f64> = match name {
+            "abs" => Some(f64::abs),
+            "acosh" => Some(f64::acosh),
+            "asinh" => Some(f64::asinh),
+            "atan" => Some(f64::atan),
+            "atanh" => Some(f64::atanh),
+            "ceil" => Some(f64::ceil),
+            "cos" => Some(f64::cos),
+            "cosh" => Some(f64::cosh),
+            "degrees" => Some(f64::to_degrees),
+            "radians" => Some(f64::to_radians),
+            "exp" => Some(f64::exp),
+            "floor" => Some(f64::floor),
+            "int" => Some(f64::trunc),
+            "sin" => Some(f64::sin),
+            "sinh" => Some(f64::sinh),
+            "tan" => Some(f64::tan),
+            "tanh" => Some(f64::tanh),
+            _ => None,
+        };
+        if let Some(g) = unary {
+            arity(1)?;
+            return Ok(Value::Float(g(f(0, self)?)));
+        }
+        let result = match name {
+            "acos" | "asin" => {
+                arity(1)?;
+                let x = f(0, self)?.clamp(-1.0, 1.0);
+                if name == "acos" { x.acos() } else { x.asin() }
+            }
+            "sqrt" => {
+                arity(1)?;
+                let x = f(0, self)?;
+                domain(x >= 0.0)?;
+                x.sqrt()
+            }
+            "ln" | "log" => {
+                arity(1)?;
+                let x = f(0, self)?;
+                domain(x > 0.0)?;
+                if name == "ln" { x.ln() } else { x.log10() }
+            }
+            "atan2" | "div" | "mod" | "pow" => {
+                arity(2)?;
+                let (a, b) = (f(0, self)?, f(1, self)?);
+                match name {
+                    "atan2" => a.atan2(b),
+                    "div" => {
+                        domain(b != 0.0)?;
+                        (a / b).trunc()
+                    }
+                    "mod" => {
+                        domain(b != 0.0)?;
+                        a % b
+                    }
+                    _ => {
+                        domain(!(a == 0.0 && b == 0.0))?;
+                        a.powf(b)
+                    }
+                }
+            }
+            "max" | "min" => {
+                if args.is_empty() {
+                    return Err(Diagnostic::error(
+                        format!("`{name}` needs at least one argument"),
+                        span,
+                    ));
+                }
+                let mut acc = f(0, self)?;
+                for i in 1..args.len() {
+                    let x = f(i, self)?;
+                    acc = if name == "max" {
+                        acc.max(x)
+                    } else {
+                        acc.min(x)
+                    };
+                }
+                acc
+            }
+            "select" => {
+                if args.len() != 3 && args.len() != 4 {
+                    return Err(Diagnostic::error("`select` takes 3 or 4 arguments", span));
+                }
+                let a = f(0, self)?;
+                let pick = if args.len() == 3 {
+                    if a < 0.0 { 1 } else { 2 }
+                } else if a < 0.0 {
+                    1
+                } else if a == 0.0 {
+                    2
+                } else {
+                    3
+                };
+                return Ok(values[pick].clone());
+            }
+            "vdot" => {
+                arity(2)?;
+                v3(0)?.dot(v3(1)?)
+            }
+            "vlength" => {
+                arity(1)?;
+                v3(0)?.length()
+            }
+            "vcross" => {
+                arity(2)?;
+                return Ok(Value::Vector(Vector::from_vec3(v3(0)?.cross(v3(1)?))));
+            }
+            "vnormalize" => {
+                arity(1)?;
+                let v = v3(0)?;
+                domain(v.length() > 0.0)?;
+                return Ok(Value::Vector(Vector::from_vec3(v.normalize())));
+            }
+            "vrotate" => {
+                arity(2)?;
+                let m = super::transform::rotation(v3(1)?);
+                return Ok(Value::Vector(Vector::from_vec3(m.transform_point3(v3(0)?))));
+            }
+            _ => return Err(self.unknown_word(name, name_span)),
+        };
+        Ok(Value::Float(result))
+    }
+}
+
+fn map_components(v: &Value, f: impl Fn(f64) -> f64) -> Option<Value> {
+    Some(match v {
+        Value::Float(x) => Value::Float(f(*x)),
+        Value::Vector(vec) => {
+            let mut out = *vec;
+            for c in out.c.iter_mut().take(vec.len) {
+                *c = f(*c);
+            }
+            Value::Vector(out)
+        }
+        Value::Colour(c) => Value::Colour(c.map(f)),
+        _ => return None,
+    })
+}
+
+fn bool_value(b: bool) -> f64 {
+    if b { 1.0 } else { 0.0 }
+}
+
+/// "expected X, found Y" at `span`.
+pub(super) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnostic {
+    Diagnostic::error(
+        format!("expected {expected}, found {}", found.kind_name()),
+        span,
+    )
+}

@@ -1,0 +1,107 @@
+//! Transformations: `translate`, `rotate`, `scale`, `matrix`, `transform { … [inverse] }`.
+//!
+//! POV-Ray multiplies row vectors (`p' = p·M`) and composes in the order written; the IR uses
+//! glam's column vectors, so each step multiplies on the left.
+
+use super::Evaluator;
+use crate::diag::Diagnostic;
+use crate::ir::Transform;
+use crate::syntax::{ExprKind, Node, NodeKind};
+use glam::{DMat3, DMat4, DVec3};
+
+/// `rotate <a, b, c>` (degrees): about x by a, then y by b, then z by c (left-handed sense).
+pub fn rotation(degrees: DVec3) -> DMat4 {
+    let r = degrees * (std::f64::consts::PI / 180.0);
+    DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x)
+}
+
+impl Evaluator<'_> {
+    /// Whether a node is a transformation.
+    pub(super) fn is_transform(node: &Node) -> bool {
+        matches!(
+            node.kind,
+            NodeKind::Translate
+                | NodeKind::Rotate
+                | NodeKind::Scale
+                | NodeKind::Matrix
+                | NodeKind::Transform
+        )
+    }
+
+    /// Evaluates one transformation node.
+    pub(super) fn transform(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
+        let matrix = match node.kind {
+            NodeKind::Translate => DMat4::from_translation(self.vec3(&node.args[0])?),
+            NodeKind::Rotate => rotation(self.vec3(&node.args[0])?),
+            NodeKind::Scale => {
+                let mut s = self.vec3(&node.args[0])?;
+                // POV-Ray replaces a zero scale component by 1 (with a warning).
+                for c in [&mut s.x, &mut s.y, &mut s.z] {
+                    if *c == 0.0 {
+                        *c = 1.0;
+                        self.warn(Diagnostic::warning(
+                            "zero scale component replaced by 1 (as POV-Ray does)",
+                            node.args[0].span,
+                        ));
+                    }
+                }
+                DMat4::from_scale(s)
+            }
+            NodeKind::Matrix => {
+                let arg = &node.args[0];
+                let ExprKind::Vector(items) = &arg.kind else {
+                    return Err(Diagnostic::error(
+                        "`matrix` needs a 12-component vector <m00, …, m32>",
+                        arg.span,
+                    ));
+                };
+                if items.len() != 12 {
+                    return Err(Diagnostic::error(
+                        format!("`matrix` needs 12 components, found {}", items.len()),
+                        arg.span,
+                    ));
+                }
+                let mut m = [0.0; 12];
+                for (slot, item) in m.iter_mut().zip(items) {
+                    *slot = self.float(item)?;
+                }
+                // Row i of POV-Ray's matrix is what the ith basis vector becomes.
+                let linear =
+                    DMat3::from_cols_array(&[m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7], m[8]]);
+                let matrix = DMat4::from_translation(DVec3::new(m[9], m[10], m[11]))
+                    * DMat4::from_mat3(linear);
+                if matrix.determinant().abs() < 1e-300 {
+                    return Err(Diagnostic::error(
+                        "`matrix` is singular (cannot be inverted)",
+                        arg.span,
+                    ));
+                }
+                matrix
+            }
+            NodeKind::Transform => return self.transform_block(node),
+            _ => unreachable!("not a transformation node"),
+        };
+        Ok(Transform { matrix })
+    }
+
+    /// `transform { items [inverse] }` or `transform Name`.
+    fn transform_block(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
+        let mut t = Transform::IDENTITY;
+        let mut inverse = false;
+        for child in &node.children {
+            match child.kind {
+                NodeKind::Inverse => inverse = true,
+                NodeKind::IdentRef => t = t.then(self.declared_transform(child)?),
+                _ => t = t.then(self.transform(child)?),
+            }
+        }
+        Ok(if inverse { t.inverse() } else { t })
+    }
+
+    fn declared_transform(&mut self, ident: &Node) -> Result<Transform, Diagnostic> {
+        match self.lookup(ident)? {
+            super::Value::Transform(t) => Ok(t),
+            other => Err(super::expr::type_error("a transform", &other, ident.span)),
+        }
+    }
+}

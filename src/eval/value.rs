@@ -1,0 +1,114 @@
+//! Values that expressions and declarations produce, and POV-Ray's promotion rules.
+
+use crate::ir::{self, Colour, Rgb};
+use glam::DVec3;
+
+/// A vector of 2 to 5 components (`<a, b>` … `<a, b, c, d, e>`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vector {
+    /// Components; those past `len` are zero.
+    pub c: [f64; 5],
+    /// Number of components.
+    pub len: usize,
+}
+
+impl Vector {
+    pub fn new(components: &[f64]) -> Vector {
+        let mut c = [0.0; 5];
+        c[..components.len()].copy_from_slice(components);
+        Vector {
+            c,
+            len: components.len(),
+        }
+    }
+
+    pub fn vec3(&self) -> DVec3 {
+        DVec3::new(self.c[0], self.c[1], self.c[2])
+    }
+
+    pub fn from_vec3(v: DVec3) -> Vector {
+        Vector::new(&[v.x, v.y, v.z])
+    }
+}
+
+/// What an expression or a declaration evaluates to.
+#[derive(Clone, Debug)]
+pub enum Value {
+    Float(f64),
+    Vector(Vector),
+    /// A colour: red, green, blue, filter, transmit.
+    Colour([f64; 5]),
+    Pigment(ir::Pigment),
+    Finish(ir::Finish),
+    Texture(ir::Texture),
+    Object(Box<super::ObjectValue>),
+    Transform(ir::Transform),
+    Camera(Box<super::CameraItems>),
+}
+
+impl Value {
+    /// The phrase used in "expected …, found …" messages.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Value::Float(_) => "a float",
+            Value::Vector(_) => "a vector",
+            Value::Colour(_) => "a colour",
+            Value::Pigment(_) => "a pigment",
+            Value::Finish(_) => "a finish",
+            Value::Texture(_) => "a texture",
+            Value::Object(_) => "an object",
+            Value::Transform(_) => "a transform",
+            Value::Camera(_) => "a camera",
+        }
+    }
+
+    /// Components of a float, vector or colour (a float is one component).
+    pub fn components(&self) -> Option<([f64; 5], usize)> {
+        match self {
+            Value::Float(f) => Some(([*f, 0.0, 0.0, 0.0, 0.0], 1)),
+            Value::Vector(v) => Some((v.c, v.len)),
+            Value::Colour(c) => Some((*c, 5)),
+            _ => None,
+        }
+    }
+}
+
+/// A five-channel colour from a value in a pigment-colour context: a float fills all five
+/// channels, a shorter vector is padded with zeros.
+pub fn colour5(value: &Value) -> Option<[f64; 5]> {
+    match value {
+        Value::Float(f) => Some([*f; 5]),
+        Value::Vector(v) => Some(v.c),
+        Value::Colour(c) => Some(*c),
+        _ => None,
+    }
+}
+
+/// An RGB colour from a value in an RGB-only context (light colour, ambient …): a float fills
+/// the three channels.
+pub fn rgb(value: &Value) -> Option<Rgb> {
+    match value {
+        Value::Float(f) => Some(Rgb::splat(*f)),
+        Value::Vector(v) => Some(v.vec3()),
+        Value::Colour(c) => Some(Rgb::new(c[0], c[1], c[2])),
+        _ => None,
+    }
+}
+
+/// The IR colour of five channels.
+pub fn to_colour(c: [f64; 5]) -> Colour {
+    Colour {
+        rgb: Rgb::new(c[0], c[1], c[2]),
+        filter: c[3],
+        transmit: c[4],
+    }
+}
+
+/// sRGB decode of one channel (for `srgb` colours).
+pub fn srgb_decode(v: f64) -> f64 {
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}

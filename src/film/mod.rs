@@ -1,0 +1,328 @@
+//! The film: a linear RGB pixel buffer, its EXR and PNG files, and image metrics.
+//!
+//! Files are written to a temporary file in the target's folder and renamed into place, so
+//! an interrupted write never leaves a broken file at the target path.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// A linear-light RGB image, top row first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Film {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Row-major pixels, top row first.
+    pub pixels: Vec<[f32; 3]>,
+}
+
+/// Errors reading or writing images.
+#[derive(Debug, thiserror::Error)]
+pub enum ImageError {
+    /// File-system failure.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// What went wrong.
+        source: std::io::Error,
+    },
+    /// Encoder or decoder failure.
+    #[error("{path}: {message}")]
+    Format {
+        /// The file.
+        path: PathBuf,
+        /// What went wrong.
+        message: String,
+    },
+    /// An extension other than .exr or .png.
+    #[error("{0}: unknown image format (use .exr or .png)")]
+    UnknownFormat(PathBuf),
+    /// Images of different sizes cannot be compared.
+    #[error("image sizes differ: {0}x{1} and {2}x{3}")]
+    SizeMismatch(u32, u32, u32, u32),
+}
+
+/// Image file formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// OpenEXR, linear float RGB.
+    Exr,
+    /// PNG, 8-bit sRGB.
+    Png,
+}
+
+impl Format {
+    /// The format a path's extension names.
+    pub fn of(path: &Path) -> Option<Format> {
+        match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
+            "exr" => Some(Format::Exr),
+            "png" => Some(Format::Png),
+            _ => None,
+        }
+    }
+}
+
+/// sRGB encode (linear → display), the curve POV-Ray writes PNGs with.
+pub fn linear_to_srgb(v: f64) -> f64 {
+    if v <= 0.0031308 {
+        12.92 * v
+    } else {
+        1.055 * v.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// sRGB decode (display → linear).
+pub fn srgb_to_linear(v: f64) -> f64 {
+    if v <= 0.04045 {
+        v / 12.92
+    } else {
+        ((v + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+impl Film {
+    /// A black film.
+    pub fn new(width: u32, height: u32) -> Film {
+        Film {
+            width,
+            height,
+            pixels: vec![[0.0; 3]; (width * height) as usize],
+        }
+    }
+
+    /// Sets pixel (x, y).
+    pub fn set(&mut self, x: u32, y: u32, v: [f32; 3]) {
+        self.pixels[(y * self.width + x) as usize] = v;
+    }
+
+    /// Pixel (x, y).
+    pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// 8-bit sRGB bytes (clamped), as POV-Ray writes PNGs: `floor(255·srgb(v) + 0.5)`.
+    pub fn to_srgb8(&self) -> Vec<u8> {
+        self.pixels
+            .iter()
+            .flat_map(|p| {
+                p.map(|v| (255.0 * linear_to_srgb((v as f64).clamp(0.0, 1.0)) + 0.5).floor() as u8)
+            })
+            .collect()
+    }
+
+    /// Number of pixels with a NaN or infinite channel.
+    pub fn non_finite_pixels(&self) -> usize {
+        self.pixels
+            .iter()
+            .filter(|p| p.iter().any(|v| !v.is_finite()))
+            .count()
+    }
+
+    /// Writes the film; the extension picks the format.
+    pub fn write(&self, path: &Path) -> Result<(), ImageError> {
+        let format =
+            Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
+        let tmp = temp_path(path);
+        let result = match format {
+            Format::Exr => self.write_exr(&tmp),
+            Format::Png => self.write_png(&tmp),
+        };
+        if let Err(e) = result {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e);
+        }
+        std::fs::rename(&tmp, path).map_err(|source| {
+            let _ = std::fs::remove_file(&tmp);
+            ImageError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+        })
+    }
+
+    fn write_exr(&self, path: &Path) -> Result<(), ImageError> {
+        use exr::prelude::*;
+        let w = self.width as usize;
+        let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
+            let p = self.pixels[y * w + x];
+            (p[0], p[1], p[2])
+        });
+        Image::from_encoded_channels(
+            (w, self.height as usize),
+            Encoding::SMALL_LOSSLESS,
+            channels,
+        )
+        .write()
+        .to_file(path)
+        .map_err(|e| ImageError::Format {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })
+    }
+
+    fn write_png(&self, path: &Path) -> Result<(), ImageError> {
+        let io = |source| ImageError::Io {
+            path: path.to_path_buf(),
+            source,
+        };
+        let buffer: image::RgbImage =
+            image::ImageBuffer::from_raw(self.width, self.height, self.to_srgb8())
+                .expect("buffer size matches the film");
+        let mut out = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
+        buffer
+            .write_to(&mut out, image::ImageFormat::Png)
+            .map_err(|e| ImageError::Format {
+                path: path.to_path_buf(),
+                message: e.to_string(),
+            })?;
+        out.flush().map_err(io)
+    }
+
+    /// Reads an EXR (any RGB(A) layer, half or float) or PNG (sRGB-decoded) image.
+    pub fn read(path: &Path) -> Result<Film, ImageError> {
+        let format =
+            Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
+        let fmt_err = |message: String| ImageError::Format {
+            path: path.to_path_buf(),
+            message,
+        };
+        match format {
+            Format::Exr => {
+                use exr::prelude::*;
+                let image = read_first_rgba_layer_from_file(
+                    path,
+                    |res: Vec2<usize>, _: &RgbaChannels| {
+                        Film::new(res.width() as u32, res.height() as u32)
+                    },
+                    |film: &mut Film, pos: Vec2<usize>, (r, g, b, _a): (f32, f32, f32, f32)| {
+                        film.set(pos.x() as u32, pos.y() as u32, [r, g, b]);
+                    },
+                )
+                .map_err(|e| fmt_err(e.to_string()))?;
+                Ok(image.layer_data.channel_data.pixels)
+            }
+            Format::Png => {
+                let img = image::ImageReader::open(path)
+                    .map_err(|source| ImageError::Io {
+                        path: path.to_path_buf(),
+                        source,
+                    })?
+                    .decode()
+                    .map_err(|e| fmt_err(e.to_string()))?
+                    .into_rgb8();
+                let pixels = img
+                    .pixels()
+                    .map(|p| p.0.map(|b| srgb_to_linear(b as f64 / 255.0) as f32))
+                    .collect();
+                Ok(Film {
+                    width: img.width(),
+                    height: img.height(),
+                    pixels,
+                })
+            }
+        }
+    }
+}
+
+fn temp_path(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+}
+
+/// How different two images are.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    /// Mean FLIP (LDR, on the sRGB-encoded images, 67 pixels per degree): 0 identical, 1 worst.
+    pub mean_flip: f32,
+    /// Root mean square difference of the linear values over all channels.
+    pub rmse: f64,
+    /// Largest absolute channel difference.
+    pub max_abs: f64,
+    /// FLIP error map (magma colours), for a person to look at.
+    pub flip_map: Vec<u8>,
+}
+
+/// Compares a test image against a reference.
+pub fn compare(reference: &Film, test: &Film) -> Result<Comparison, ImageError> {
+    if (reference.width, reference.height) != (test.width, test.height) {
+        return Err(ImageError::SizeMismatch(
+            reference.width,
+            reference.height,
+            test.width,
+            test.height,
+        ));
+    }
+    let (w, h) = (reference.width, reference.height);
+    let a = nv_flip::FlipImageRgb8::with_data(w, h, &reference.to_srgb8());
+    let b = nv_flip::FlipImageRgb8::with_data(w, h, &test.to_srgb8());
+    let error = nv_flip::flip(a, b, nv_flip::DEFAULT_PIXELS_PER_DEGREE);
+    let mean_flip = nv_flip::FlipPool::from_image(&error).mean();
+    let flip_map = error.apply_color_lut(&nv_flip::magma_lut()).to_vec();
+    let mut sum = 0.0;
+    let mut max_abs: f64 = 0.0;
+    for (p, q) in reference.pixels.iter().zip(&test.pixels) {
+        for c in 0..3 {
+            let d = (p[c] - q[c]) as f64;
+            sum += d * d;
+            max_abs = max_abs.max(d.abs());
+        }
+    }
+    let rmse = (sum / (reference.pixels.len() * 3).max(1) as f64).sqrt();
+    Ok(Comparison {
+        mean_flip,
+        rmse,
+        max_abs,
+        flip_map,
+    })
+}
+
+/// Writes an RGB8 buffer (such as a FLIP map) as PNG, atomically.
+pub fn write_rgb8_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    bytes: Vec<u8>,
+) -> Result<(), ImageError> {
+    let tmp = temp_path(path);
+    let buffer: image::RgbImage = image::ImageBuffer::from_raw(width, height, bytes)
+        .expect("buffer size matches width × height");
+    buffer
+        .save_with_format(&tmp, image::ImageFormat::Png)
+        .map_err(|e| ImageError::Format {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
+    std::fs::rename(&tmp, path).map_err(|source| ImageError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn srgb_round_trip() {
+        for i in 0..=100 {
+            let v = i as f64 / 100.0;
+            assert!((srgb_to_linear(linear_to_srgb(v)) - v).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn png_bytes_match_povray_rounding() {
+        // POV-Ray: linear 0.5 → sRGB 0.7354 → 188.
+        let f = Film {
+            width: 1,
+            height: 1,
+            pixels: vec![[0.5, 0.2, 0.8]],
+        };
+        assert_eq!(f.to_srgb8(), vec![188, 124, 231]);
+    }
+}

@@ -1,0 +1,122 @@
+//! Axis-aligned box (POV-Ray `box`).
+
+use super::{Crossings, Ray};
+use glam::DVec3;
+
+/// A box in object space, `min ≤ p ≤ max` per axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cuboid {
+    /// Least corner.
+    pub min: DVec3,
+    /// Greatest corner.
+    pub max: DVec3,
+}
+
+impl Cuboid {
+    /// Crossings of `ray` with the box surface, nearest first.
+    ///
+    /// Slab test. A zero direction component gives ±∞ slab distances, or NaN when the origin
+    /// lies exactly on that slab's plane; `f64::max`/`min` drop NaN operands, so such a slab
+    /// simply does not constrain the interval (the ray runs inside the face plane).
+    pub fn intersect(&self, ray: &Ray) -> Crossings {
+        let inv = ray.direction.recip();
+        let t0 = (self.min - ray.origin) * inv;
+        let t1 = (self.max - ray.origin) * inv;
+        let mut near = f64::NEG_INFINITY;
+        let mut far = f64::INFINITY;
+        for i in 0..3 {
+            let (a, b) = (t0[i], t1[i]);
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            near = near.max(lo);
+            far = far.min(hi);
+        }
+        if !(near <= far) || far == f64::INFINITY {
+            return Crossings::NONE;
+        }
+        Crossings::within(ray, &[near, far])
+    }
+
+    /// Outward unit normal of the face nearest to `p`.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let centre = (self.min + self.max) * 0.5;
+        let half = ((self.max - self.min) * 0.5).max(DVec3::splat(f64::MIN_POSITIVE));
+        let q = (p - centre) / half;
+        let a = q.abs();
+        if a.x >= a.y && a.x >= a.z {
+            DVec3::new(q.x.signum(), 0.0, 0.0)
+        } else if a.y >= a.z {
+            DVec3::new(0.0, q.y.signum(), 0.0)
+        } else {
+            DVec3::new(0.0, 0.0, q.z.signum())
+        }
+    }
+
+    /// Whether `p` is inside.
+    pub fn contains(&self, p: DVec3) -> bool {
+        p.cmpgt(self.min).all() && p.cmplt(self.max).all()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit() -> Cuboid {
+        Cuboid {
+            min: DVec3::splat(-1.0),
+            max: DVec3::splat(1.0),
+        }
+    }
+
+    #[test]
+    fn box_ray_through_hits_two_faces() {
+        let r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0]);
+        assert_eq!(unit().normal(r.at(4.0)), -DVec3::Z);
+    }
+
+    #[test]
+    fn box_ray_beside_misses() {
+        let r = Ray::new(DVec3::new(2.0, 0.0, -5.0), DVec3::Z);
+        assert!(unit().intersect(&r).first().is_none());
+    }
+
+    #[test]
+    fn box_ray_from_inside_hits_far_face() {
+        let r = Ray::new(DVec3::ZERO, DVec3::Y);
+        assert_eq!(unit().intersect(&r).as_slice(), &[1.0]);
+        assert_eq!(unit().normal(r.at(1.0)), DVec3::Y);
+    }
+
+    #[test]
+    fn box_behind_origin_is_not_hit() {
+        let r = Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z);
+        assert!(unit().intersect(&r).first().is_none());
+    }
+
+    #[test]
+    fn box_ray_in_face_plane_with_zero_component_does_not_nan() {
+        // Origin exactly on the x = 1 slab plane, direction with zero x component.
+        let r = Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z);
+        let hits = unit().intersect(&r);
+        assert!(hits.as_slice().iter().all(|t| t.is_finite()));
+    }
+
+    #[test]
+    fn box_tangent_along_edge_is_hit_or_missed_without_nan() {
+        let r = Ray::new(DVec3::new(1.0, 1.0, -5.0), DVec3::Z);
+        assert!(
+            unit()
+                .intersect(&r)
+                .as_slice()
+                .iter()
+                .all(|t| t.is_finite())
+        );
+    }
+
+    #[test]
+    fn box_diagonal_ray_hits_corner_region() {
+        let r = Ray::new(DVec3::splat(-5.0), DVec3::ONE);
+        assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0]);
+    }
+}

@@ -1,0 +1,121 @@
+//! Rays and the analytic shapes: intersection in object space, normals, inside tests.
+//!
+//! Material-agnostic and IR-agnostic: shapes here are plain geometry. All arithmetic is `f64`,
+//! so that a scene moved far from the origin keeps the precision of one at the origin.
+//!
+//! Each shape has two phases: `intersect` computes only the distances; `normal` runs once, for
+//! the winning hit.
+
+mod cuboid;
+mod plane;
+mod sphere;
+
+pub use cuboid::Cuboid;
+pub use plane::Plane;
+pub use sphere::Sphere;
+
+use glam::{DMat4, DVec3};
+
+/// A ray `origin + t·direction` for `t` in `(tmin, tmax)`. The direction need not be unit
+/// length (rays moved into object space keep their `t`).
+#[derive(Clone, Copy, Debug)]
+pub struct Ray {
+    /// Start point.
+    pub origin: DVec3,
+    /// Direction (not necessarily normalised).
+    pub direction: DVec3,
+    /// Hits at or below this distance are ignored.
+    pub tmin: f64,
+    /// Hits at or beyond this distance are ignored.
+    pub tmax: f64,
+}
+
+impl Ray {
+    /// A ray over `(0, ∞)`.
+    pub fn new(origin: DVec3, direction: DVec3) -> Ray {
+        debug_assert!(
+            origin.is_finite() && direction.is_finite(),
+            "ray must be finite"
+        );
+        Ray {
+            origin,
+            direction,
+            tmin: 0.0,
+            tmax: f64::INFINITY,
+        }
+    }
+
+    /// The point at distance `t`.
+    pub fn at(&self, t: f64) -> DVec3 {
+        self.origin + t * self.direction
+    }
+
+    /// The same ray in the space that `m` maps into (direction not renormalised, so `t` is kept).
+    pub fn transformed(&self, m: &DMat4) -> Ray {
+        Ray {
+            origin: m.transform_point3(self.origin),
+            direction: m.transform_vector3(self.direction),
+            tmin: self.tmin,
+            tmax: self.tmax,
+        }
+    }
+
+    /// Whether `t` lies in the ray's open interval.
+    pub fn contains(&self, t: f64) -> bool {
+        self.tmin < t && t < self.tmax
+    }
+}
+
+/// Up to two crossings of a ray with a surface, nearest first.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Crossings {
+    ts: [f64; 2],
+    len: usize,
+}
+
+impl Crossings {
+    /// No crossing.
+    pub const NONE: Crossings = Crossings {
+        ts: [0.0; 2],
+        len: 0,
+    };
+
+    /// Keeps the candidates (given nearest first) that lie within the ray's interval.
+    pub fn within(ray: &Ray, candidates: &[f64]) -> Crossings {
+        let mut c = Crossings::NONE;
+        for &t in candidates {
+            if ray.contains(t) && c.len < 2 {
+                c.ts[c.len] = t;
+                c.len += 1;
+            }
+        }
+        c
+    }
+
+    /// The distances, nearest first.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.ts[..self.len]
+    }
+
+    /// The nearest crossing.
+    pub fn first(&self) -> Option<f64> {
+        self.as_slice().first().copied()
+    }
+}
+
+/// Secondary-ray origin for a ray leaving the surface at `p` (geometric normal `ng`, either
+/// side) in direction `dir`: `p` pushed off the surface, to the side `dir` goes, by a distance
+/// proportional to the magnitude of the coordinates involved.
+///
+/// Rounding error in a computed hit point is a few ulps of the largest coordinate in the
+/// computation (the ray origin or the point), so a relative offset of 2⁻⁴⁰ (≈ 4096 ulps in
+/// `f64`) clears it at any distance from the origin while staying far below any object size
+/// trace supports (see README, "Numerical range").
+pub fn offset_origin(p: DVec3, ng: DVec3, dir: DVec3, scale: f64) -> DVec3 {
+    const RELATIVE_OFFSET: f64 = 1.0 / (1u64 << 40) as f64;
+    const ABSOLUTE_FLOOR: f64 = 1e-12;
+    let magnitude = p.abs().max_element().max(scale);
+    let offset = (magnitude * RELATIVE_OFFSET).max(ABSOLUTE_FLOOR);
+    let side = if ng.dot(dir) < 0.0 { -ng } else { ng };
+    p + side * offset
+}

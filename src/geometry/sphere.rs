@@ -1,0 +1,167 @@
+//! Sphere: `|p − centre| = radius`.
+
+use super::{Crossings, Ray};
+use glam::DVec3;
+
+/// A sphere in object space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Centre.
+    pub centre: DVec3,
+    /// Radius.
+    pub radius: f64,
+}
+
+impl Sphere {
+    /// Crossings of `ray` with the sphere, nearest first.
+    ///
+    /// Solves `|f + t·d|² = r²` with `f = o − c` in the numerically stable form of Ray Tracing
+    /// Gems ch. 7: the discriminant from the distance of the centre to the ray's line (no
+    /// cancellation for far or small spheres), the roots via `q` (no cancellation between
+    /// `−b` and `√Δ`).
+    pub fn intersect(&self, ray: &Ray) -> Crossings {
+        let f = ray.origin - self.centre;
+        let d = ray.direction;
+        let a = d.length_squared();
+        let half_b = f.dot(d);
+        let c = f.length_squared() - self.radius * self.radius;
+        // Δ/a = r² − |f − (f·d/a)·d|²: the squared half chord.
+        let perpendicular = f - (half_b / a) * d;
+        let discriminant = a * (self.radius * self.radius - perpendicular.length_squared());
+        if discriminant < 0.0 {
+            return Crossings::NONE;
+        }
+        let q = -(half_b + discriminant.sqrt().copysign(half_b));
+        if q == 0.0 {
+            // Origin on the sphere and ray tangent to it: a single touching point at t = 0.
+            return Crossings::NONE;
+        }
+        let (t0, t1) = (c / q, q / a);
+        let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+        Crossings::within(ray, &[near, far])
+    }
+
+    /// Outward unit normal at a point on the sphere.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        (p - self.centre).normalize()
+    }
+
+    /// Whether `p` is inside.
+    pub fn contains(&self, p: DVec3) -> bool {
+        (p - self.centre).length_squared() < self.radius * self.radius
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn unit() -> Sphere {
+        Sphere {
+            centre: DVec3::ZERO,
+            radius: 1.0,
+        }
+    }
+
+    #[test]
+    fn sphere_ray_through_centre_hits_both_sides() {
+        let r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0]);
+    }
+
+    #[test]
+    fn sphere_ray_beside_misses() {
+        let r = Ray::new(DVec3::new(1.5, 0.0, -5.0), DVec3::Z);
+        assert!(unit().intersect(&r).first().is_none());
+    }
+
+    #[test]
+    fn sphere_tangent_ray_touches_once_or_misses() {
+        let r = Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z);
+        let hits = unit().intersect(&r);
+        for &t in hits.as_slice() {
+            assert!((t - 5.0).abs() < 1e-6, "tangent hit at {t}");
+        }
+    }
+
+    #[test]
+    fn sphere_ray_from_inside_hits_far_side_only() {
+        let r = Ray::new(DVec3::ZERO, DVec3::X);
+        assert_eq!(unit().intersect(&r).as_slice(), &[1.0]);
+    }
+
+    #[test]
+    fn sphere_behind_origin_is_not_hit() {
+        let r = Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z);
+        assert!(unit().intersect(&r).first().is_none());
+    }
+
+    #[test]
+    fn sphere_respects_tmax() {
+        let mut r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        r.tmax = 4.5;
+        assert_eq!(unit().intersect(&r).as_slice(), &[4.0]);
+    }
+
+    #[test]
+    fn sphere_unnormalised_direction_keeps_t_meaning() {
+        let r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z * 2.0);
+        assert_eq!(unit().intersect(&r).as_slice(), &[2.0, 3.0]);
+    }
+
+    #[test]
+    fn sphere_far_and_small_keeps_precision() {
+        // A 1 mm sphere 1e5 units away: the textbook discriminant cancels, this one does not.
+        let s = Sphere {
+            centre: DVec3::new(1e5, 0.0, 0.0),
+            radius: 1e-3,
+        };
+        let r = Ray::new(DVec3::ZERO, DVec3::X);
+        let t = s.intersect(&r).first().expect("hit");
+        assert!((t - (1e5 - 1e-3)).abs() < 1e-9, "t = {t}");
+    }
+
+    proptest! {
+        #[test]
+        fn sphere_hit_lies_on_surface(
+            cx in -1e3..1e3f64, cy in -1e3..1e3f64, cz in -1e3..1e3f64,
+            radius in 1e-3..1e3f64,
+            ox in -1.0..1.0f64, oy in -1.0..1.0f64, oz in -1.0..1.0f64,
+            tx in -1.0..1.0f64, ty in -1.0..1.0f64, tz in -1.0..1.0f64,
+        ) {
+            let centre = DVec3::new(cx, cy, cz);
+            let s = Sphere { centre, radius };
+            // From a point outside, aim at a point inside the sphere.
+            let dir_out = DVec3::new(ox, oy, oz).normalize_or(DVec3::X);
+            let origin = centre + dir_out * radius * 3.0;
+            let target = centre + DVec3::new(tx, ty, tz) * radius * 0.5;
+            let r = Ray::new(origin, target - origin);
+            let hits = s.intersect(&r);
+            prop_assert_eq!(hits.as_slice().len(), 2);
+            for &t in hits.as_slice() {
+                let residual = ((r.at(t) - centre).length() - radius).abs();
+                prop_assert!(residual <= 1e-12 * (radius + centre.abs().max_element()), "residual {}", residual);
+            }
+        }
+
+        #[test]
+        fn ray_leaving_sphere_does_not_hit_it_again(
+            theta in 0.0..std::f64::consts::PI, phi in 0.0..std::f64::consts::TAU,
+            dx in -1.0..1.0f64, dy in -1.0..1.0f64, dz in -1.0..1.0f64,
+            scale in prop::sample::select(vec![1e-3, 1.0, 1e3]),
+            offset in prop::sample::select(vec![0.0, 1e3, 1e5]),
+        ) {
+            let centre = DVec3::splat(offset);
+            let s = Sphere { centre, radius: scale };
+            let n = DVec3::new(theta.sin() * phi.cos(), theta.sin() * phi.sin(), theta.cos());
+            let p = centre + n * scale;
+            let mut d = DVec3::new(dx, dy, dz).normalize_or(n);
+            if d.dot(n) < 0.0 { d = -d; }
+            if d.dot(n) < 1e-3 { d = (d + n).normalize(); }
+            let origin = super::super::offset_origin(p, n, d, 0.0);
+            let r = Ray::new(origin, d);
+            prop_assert!(s.intersect(&r).first().is_none());
+        }
+    }
+}

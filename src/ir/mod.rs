@@ -1,0 +1,308 @@
+//! The intermediate representation: a scene as evaluated plain data.
+//!
+//! No identifiers, no expressions, no syntax: every default is filled in, every transformation
+//! composed. The parser's evaluation produces it; `scene::build` consumes it. It knows nothing
+//! of pest or of rendering state. Its `Debug` output is what the parse snapshots record.
+
+use glam::{DMat4, DVec3};
+use serde::Serialize;
+
+/// An RGB colour (linear working space, unclamped).
+pub type Rgb = DVec3;
+
+/// A POV-Ray colour with its five channels: red, green, blue, filter, transmit.
+///
+/// `.rt`: `color rgbft <r, g, b, f, t>`, `rgb <r, g, b>`, `rgbf`, `rgbt`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Default)]
+pub struct Colour {
+    /// Red, green, blue.
+    pub rgb: Rgb,
+    /// Light passing through, tinted by `rgb`.
+    pub filter: f64,
+    /// Light passing through untinted.
+    pub transmit: f64,
+}
+
+/// The whole scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct Scene {
+    /// The camera (POV-Ray's default camera when the scene has none).
+    pub camera: Camera,
+    /// Light sources in scene order.
+    pub lights: Vec<Light>,
+    /// Objects in scene order.
+    pub objects: Vec<Object>,
+    /// Colour of rays that hit nothing (`background { color C }`), already multiplied by
+    /// `1 − transmit` as POV-Ray does without alpha output.
+    pub background: Rgb,
+    /// Scene-wide settings.
+    pub settings: Settings,
+}
+
+/// `global_settings` and version-dependent behaviour.
+#[derive(Clone, Debug, Serialize)]
+pub struct Settings {
+    /// How working values become linear output values.
+    pub gamma: Gamma,
+    /// `max_trace_level` (default 5): rays at a deeper level return black.
+    pub max_trace_level: u32,
+    /// `adc_bailout` (default 1/255): rays of lower weight return black.
+    pub adc_bailout: f64,
+    /// `ambient_light` (default 1): multiplies every finish's ambient.
+    pub ambient_light: Rgb,
+    /// POV-Ray's pre-3.7 surface attenuation `1 − (filter·max(r,g,b) + transmit)` (scenes
+    /// without `#version 3.7`) instead of `1 − filter − transmit`.
+    pub legacy_transparency: bool,
+}
+
+/// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum Gamma {
+    /// Values are in working gamma `g`: the linear output is `value^g`.
+    Working(f64),
+    /// "Gamma off" (no `#version 3.7` and no `assumed_gamma`): values are display-encoded
+    /// sRGB; the linear output is their sRGB decode.
+    Off,
+}
+
+/// A perspective or orthographic camera, resolved to its four vectors (POV-Ray §4.2 applied).
+#[derive(Clone, Debug, Serialize)]
+pub struct Camera {
+    /// Projection.
+    pub projection: Projection,
+    /// Eye point.
+    pub location: DVec3,
+    /// Centre of the image plane relative to `location`.
+    pub direction: DVec3,
+    /// Image-plane vector spanning the full width.
+    pub right: DVec3,
+    /// Image-plane vector spanning the full height.
+    pub up: DVec3,
+}
+
+/// Camera projection.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum Projection {
+    /// `perspective` (default).
+    Perspective,
+    /// `orthographic`.
+    Orthographic,
+}
+
+/// A point light. `.rt`: `light_source { <x, y, z>, color rgb <r, g, b> }`.
+#[derive(Clone, Debug, Serialize)]
+pub struct Light {
+    /// World position (after the light's transformations).
+    pub position: DVec3,
+    /// Colour (intensity; not clamped).
+    pub colour: Rgb,
+}
+
+/// A renderable object: a shape, where it is, and what it is made of.
+#[derive(Clone, Debug, Serialize)]
+pub struct Object {
+    /// Geometry in object space.
+    pub shape: Shape,
+    /// World from object; `None` is the identity.
+    pub transform: Option<Transform>,
+    /// The resolved surface.
+    pub texture: Texture,
+    /// `no_shadow`: the object casts no shadow.
+    pub no_shadow: bool,
+    /// `inverse`: inside and outside swapped.
+    pub inverse: bool,
+}
+
+/// Analytic shapes, in object space.
+#[derive(Clone, Debug, Serialize)]
+pub enum Shape {
+    /// `sphere { centre, radius }`.
+    Sphere {
+        /// Centre.
+        centre: DVec3,
+        /// Radius.
+        radius: f64,
+    },
+    /// `plane { normal, distance }`: points with `normal·p = distance` (normal unit length).
+    Plane {
+        /// Unit normal (pointing outside).
+        normal: DVec3,
+        /// Offset along the normal.
+        distance: f64,
+    },
+    /// `box { corner1, corner2 }` with the corners sorted per axis.
+    Box {
+        /// Least corner.
+        min: DVec3,
+        /// Greatest corner.
+        max: DVec3,
+    },
+}
+
+/// An affine transformation, composed from a list of `translate`/`rotate`/`scale`/`matrix`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Transform {
+    /// Column-vector matrix (glam convention) taking object space to world space.
+    pub matrix: DMat4,
+}
+
+impl Transform {
+    /// The identity.
+    pub const IDENTITY: Transform = Transform {
+        matrix: DMat4::IDENTITY,
+    };
+
+    /// `self` followed by `next`.
+    pub fn then(self, next: Transform) -> Transform {
+        Transform {
+            matrix: next.matrix * self.matrix,
+        }
+    }
+
+    /// The inverse transformation.
+    pub fn inverse(self) -> Transform {
+        Transform {
+            matrix: self.matrix.inverse(),
+        }
+    }
+}
+
+/// A resolved texture: pigment and finish, with the pattern-space transform.
+///
+/// `.rt`: `texture { pigment { ... } finish { ... } }`, or `pigment`/`finish` on an object.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Texture {
+    /// Colour at each point.
+    pub pigment: Pigment,
+    /// How light interacts with the surface.
+    pub finish: Finish,
+}
+
+/// Pigments.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum Pigment {
+    /// One colour everywhere. `.rt`: `pigment { color rgb <..> }`.
+    Solid(Colour),
+}
+
+/// POV-Ray's finish, every default filled in (`Create_Finish`).
+///
+/// `.rt`: `finish { ambient 0.1 diffuse 0.6 phong 1 ... }`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Finish {
+    /// Ambient colour (default 0.1).
+    pub ambient: Rgb,
+    /// Emission colour (default 0).
+    pub emission: Rgb,
+    /// Diffuse amount (default 0.6).
+    pub diffuse: f64,
+    /// Back-side diffuse amount (default 0).
+    pub diffuse_back: f64,
+    /// Brilliance exponent on the diffuse cosine (default 1).
+    pub brilliance: f64,
+    /// Phong highlight amount (default 0).
+    pub phong: f64,
+    /// Phong exponent (default 40).
+    pub phong_size: f64,
+    /// Blinn specular amount (default 0).
+    pub specular: f64,
+    /// Specular roughness (default 0.05); the exponent is `1/roughness`.
+    pub roughness: f64,
+    /// Metallic highlights (default 0; keyword alone 1).
+    pub metallic: f64,
+    /// Mirror reflection.
+    pub reflection: Reflection,
+    /// `conserve_energy`: reflection reduces transmission.
+    pub conserve_energy: bool,
+}
+
+impl Default for Finish {
+    fn default() -> Finish {
+        Finish {
+            ambient: Rgb::splat(0.1),
+            emission: Rgb::ZERO,
+            diffuse: 0.6,
+            diffuse_back: 0.0,
+            brilliance: 1.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            metallic: 0.0,
+            reflection: Reflection::default(),
+            conserve_energy: false,
+        }
+    }
+}
+
+/// `reflection C` or `reflection { min, max falloff F exponent E fresnel metallic M }`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Reflection {
+    /// Reflectivity at normal incidence (or the Fresnel minimum).
+    pub min: Rgb,
+    /// Reflectivity at grazing incidence.
+    pub max: Rgb,
+    /// Exponent of the `(1 − cos)` blend from min to max (default 1).
+    pub falloff: f64,
+    /// `exponent`: the reflected colour is raised to `1/exponent` (default 1).
+    pub exponent: f64,
+    /// Fresnel blend instead of the falloff blend.
+    pub fresnel: bool,
+    /// Reflection tinted by the pigment (default 0).
+    pub metallic: f64,
+}
+
+impl Default for Reflection {
+    fn default() -> Reflection {
+        Reflection {
+            min: Rgb::ZERO,
+            max: Rgb::ZERO,
+            falloff: 1.0,
+            exponent: 1.0,
+            fresnel: false,
+            metallic: 0.0,
+        }
+    }
+}
+
+impl Reflection {
+    /// Whether this finish reflects at all.
+    pub fn is_some(&self) -> bool {
+        self.min.max_element() > 0.0 || self.max.max_element() > 0.0
+    }
+}
+
+impl Default for Texture {
+    /// POV-Ray's default texture: black pigment, default finish.
+    fn default() -> Texture {
+        Texture {
+            pigment: Pigment::Solid(Colour::default()),
+            finish: Finish::default(),
+        }
+    }
+}
+
+impl Default for Camera {
+    /// POV-Ray's default camera: at the origin looking along +z, right `<1.33, 0, 0>`.
+    fn default() -> Camera {
+        Camera {
+            projection: Projection::Perspective,
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+        }
+    }
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            gamma: Gamma::Off,
+            max_trace_level: 5,
+            adc_bailout: 1.0 / 255.0,
+            ambient_light: Rgb::ONE,
+            legacy_transparency: true,
+        }
+    }
+}

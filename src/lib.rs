@@ -1,0 +1,111 @@
+//! trace: a Whitted ray tracer whose scene language is (a subset of) POV-Ray 3.7's.
+//!
+//! ```text
+//! scene.rt ──pest──▶ syntax tree ──eval──▶ IR ──build──▶ render scene ──trace──▶ film ──▶ EXR/PNG
+//!            syntax/               eval/    ir/   scene/                 render/        film/
+//! ```
+//!
+//! Each stage takes the previous stage's output and nothing else: `ir` knows nothing of pest,
+//! `render` nothing of syntax or IR. The public API is [`load`], [`render`] and the film's
+//! writers; the CLI, tests and benchmarks use only these.
+
+#![warn(missing_docs)]
+
+pub mod diag;
+pub mod eval;
+pub mod film;
+pub mod geometry;
+pub mod ir;
+pub mod render;
+pub mod scene;
+pub mod syntax;
+
+use diag::{Diagnostic, SourceMap};
+use std::path::Path;
+
+pub use eval::LoadOptions;
+pub use film::Film;
+pub use render::{Antialias, RenderOptions, Rendered};
+
+/// A scene that failed to load: the diagnostic and the sources it points into.
+#[derive(Debug)]
+pub struct LoadError {
+    /// What went wrong, and where.
+    pub diagnostic: Diagnostic,
+    /// The files read, for rendering the diagnostic.
+    pub sources: SourceMap,
+}
+
+impl std::fmt::Display for LoadError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.diagnostic.render(&self.sources).trim_end())
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+/// A loaded scene with the warnings met, rendered as text.
+#[derive(Debug)]
+pub struct Loaded {
+    /// The scene.
+    pub scene: ir::Scene,
+    /// Warnings, each rendered with its source excerpt.
+    pub warnings: Vec<String>,
+}
+
+/// Errors of the whole pipeline.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// The scene file could not be read.
+    #[error("cannot read {path}: {source}")]
+    Read {
+        /// The scene path.
+        path: std::path::PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The scene is invalid or outside the subset.
+    #[error("{0}")]
+    Scene(#[from] LoadError),
+    /// The thread pool could not be built.
+    #[error("cannot start worker threads: {0}")]
+    Threads(#[from] rayon::ThreadPoolBuildError),
+    /// An image could not be read or written.
+    #[error(transparent)]
+    Image(#[from] film::ImageError),
+}
+
+/// Reads and evaluates a scene file into the IR.
+pub fn load(path: &Path, options: &LoadOptions) -> Result<Loaded, Error> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    load_str(path, text, options)
+}
+
+/// Evaluates scene text (`path` names it in messages).
+pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
+    let mut sources = SourceMap::default();
+    let file = sources.add(path, text);
+    match eval::evaluate(&sources, file, options) {
+        Ok(evaluated) => Ok(Loaded {
+            scene: evaluated.scene,
+            warnings: evaluated
+                .warnings
+                .iter()
+                .map(|w| w.render(&sources))
+                .collect(),
+        }),
+        Err(diagnostic) => Err(Error::Scene(LoadError {
+            diagnostic,
+            sources,
+        })),
+    }
+}
+
+/// Renders a scene (building the render-ready scene inside).
+pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
+    let built = scene::Scene::build(scene);
+    Ok(render::render(&built, options)?)
+}

@@ -1,0 +1,238 @@
+//! The `trace` command line: render a scene, or compare two images.
+//!
+//! Exit codes: 0 success, 1 render or I/O failure, 2 bad scene or bad arguments.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+use trace::{Antialias, Error, LoadOptions, RenderOptions};
+
+/// Render POV-Ray 3.7 scenes (a CSG-free subset) with a Whitted ray tracer.
+#[derive(Parser, Debug)]
+#[command(
+    name = "trace",
+    version,
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true
+)]
+#[command(after_help = "Compare two images: trace compare REFERENCE TEST [--diff MAP.png]")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+#[derive(Args, Debug)]
+struct RenderArgs {
+    /// Scene file (.rt or .pov).
+    #[arg(required = true)]
+    scene: Option<PathBuf>,
+    /// Output image; the extension picks the format: .exr (linear float) or .png (8-bit sRGB).
+    #[arg(short, long, required = true)]
+    output: Option<PathBuf>,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 800, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 600, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    height: u32,
+    /// Anti-aliasing: `off` (one ray per pixel centre, POV-Ray -A) or a threshold (POV-Ray
+    /// +A<threshold> -J, method 1; 0 supersamples every pixel).
+    #[arg(long, default_value = "0.3", value_parser = parse_aa)]
+    aa: AaSetting,
+    /// Anti-aliasing grid size per axis, 1..=9 (POV-Ray +R).
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=9))]
+    aa_depth: u32,
+    /// Worker threads (default: one per core). The image is the same for any count.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// Print nothing but errors and warnings.
+    #[arg(short, long)]
+    quiet: bool,
+    /// Print render statistics (rays by kind, samples, time per phase).
+    #[arg(long)]
+    stats: bool,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum AaSetting {
+    Off,
+    Threshold(f64),
+}
+
+fn parse_aa(s: &str) -> Result<AaSetting, String> {
+    if s.eq_ignore_ascii_case("off") {
+        return Ok(AaSetting::Off);
+    }
+    match s.parse::<f64>() {
+        Ok(t) if t >= 0.0 && t.is_finite() => Ok(AaSetting::Threshold(t)),
+        _ => Err(format!("expected `off` or a threshold ≥ 0, found `{s}`")),
+    }
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Compare a test image against a reference (EXR or PNG): prints mean FLIP and RMSE.
+    Compare {
+        /// Reference image.
+        reference: PathBuf,
+        /// Image to test.
+        test: PathBuf,
+        /// Write the FLIP error map here (PNG).
+        #[arg(long)]
+        diff: Option<PathBuf>,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Compare {
+            reference,
+            test,
+            diff,
+        }) => compare(&reference, &test, diff.as_deref()),
+        None => render(&cli.render),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            eprintln!("{}", failure.message);
+            ExitCode::from(failure.code)
+        }
+    }
+}
+
+/// An error message with the exit code it maps to.
+struct Failure {
+    message: String,
+    code: u8,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Failure {
+        let code = match e {
+            Error::Scene(_) => 2,
+            Error::Read { .. } | Error::Threads(_) | Error::Image(_) => 1,
+        };
+        let message = match e {
+            Error::Scene(_) => e.to_string(),
+            _ => format!("error: {e}"),
+        };
+        Failure { message, code }
+    }
+}
+
+fn usage(message: String) -> Failure {
+    Failure {
+        message: format!("error: {message}"),
+        code: 2,
+    }
+}
+
+fn render(args: &RenderArgs) -> Result<(), Failure> {
+    let (Some(scene_path), Some(output)) = (&args.scene, &args.output) else {
+        return Err(usage("a scene and -o OUTPUT are required".into()));
+    };
+    if trace::film::Format::of(output).is_none() {
+        return Err(usage(format!(
+            "{}: unknown output format (use .exr or .png)",
+            output.display()
+        )));
+    }
+    let start = Instant::now();
+    let load_options = LoadOptions {
+        width: args.width,
+        height: args.height,
+    };
+    let loaded = trace::load(scene_path, &load_options)?;
+    for warning in &loaded.warnings {
+        eprint!("{warning}");
+    }
+    let parsed = Instant::now();
+    let antialias = match args.aa {
+        AaSetting::Off => Antialias::Off,
+        AaSetting::Threshold(threshold) => Antialias::Adaptive {
+            threshold,
+            depth: args.aa_depth,
+        },
+    };
+    let options = RenderOptions {
+        width: args.width,
+        height: args.height,
+        antialias,
+        threads: args.threads.map(|t| t as usize),
+    };
+    let rendered = trace::render(&loaded.scene, &options)?;
+    let traced = Instant::now();
+    rendered.film.write(output).map_err(Error::from)?;
+    let done = Instant::now();
+    if args.stats {
+        let c = &rendered.counts;
+        let pixels = (args.width * args.height) as u64;
+        let rays = c.camera + c.reflected + c.transmitted + c.shadow;
+        let trace_s = (traced - parsed).as_secs_f64();
+        eprintln!("Render statistics");
+        eprintln!("  Image resolution   {} x {}", args.width, args.height);
+        eprintln!("  Pixels             {pixels}");
+        eprintln!(
+            "  Samples            {} ({:.2} per pixel)",
+            rendered.samples,
+            rendered.samples as f64 / pixels as f64
+        );
+        eprintln!("  Camera rays        {}", c.camera);
+        eprintln!("  Reflected rays     {}", c.reflected);
+        eprintln!("  Transmitted rays   {}", c.transmitted);
+        eprintln!("  Shadow rays        {}", c.shadow);
+        eprintln!(
+            "  Parse time         {:.3} s",
+            (parsed - start).as_secs_f64()
+        );
+        eprintln!(
+            "  Trace time         {:.3} s ({:.0} rays/s)",
+            trace_s,
+            rays as f64 / trace_s.max(1e-9)
+        );
+        eprintln!(
+            "  Write time         {:.3} s",
+            (done - traced).as_secs_f64()
+        );
+    }
+    if !args.quiet {
+        eprintln!(
+            "trace: wrote {} ({}x{}) in {:.2} s",
+            output.display(),
+            args.width,
+            args.height,
+            (done - start).as_secs_f64()
+        );
+    }
+    Ok(())
+}
+
+fn compare(
+    reference: &std::path::Path,
+    test: &std::path::Path,
+    diff: Option<&std::path::Path>,
+) -> Result<(), Failure> {
+    let a = trace::Film::read(reference).map_err(Error::from)?;
+    let b = trace::Film::read(test).map_err(Error::from)?;
+    let c = trace::film::compare(&a, &b).map_err(|e| match e {
+        trace::film::ImageError::SizeMismatch(..) => usage(e.to_string()),
+        other => Failure::from(Error::from(other)),
+    })?;
+    println!("mean FLIP  {:.6}", c.mean_flip);
+    println!("RMSE       {:.6}", c.rmse);
+    println!("max |diff| {:.6}", c.max_abs);
+    println!(
+        "NaN/inf    {} / {}",
+        a.non_finite_pixels(),
+        b.non_finite_pixels()
+    );
+    if let Some(path) = diff {
+        trace::film::write_rgb8_png(path, a.width, a.height, c.flip_map).map_err(Error::from)?;
+    }
+    Ok(())
+}

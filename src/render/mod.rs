@@ -1,0 +1,265 @@
+//! Rendering: camera rays, anti-aliasing, and the parallel loop over image blocks.
+//!
+//! Uses `scene`, `geometry` and `film` only. The image is cut into 32×32 blocks (POV-Ray's
+//! default block size, which its adaptive anti-aliasing depends on); rayon renders blocks in
+//! parallel, and every pixel depends only on the scene and its own block, so the output is
+//! the same for any number of threads.
+
+mod shade;
+
+pub use shade::RayCounts;
+
+use crate::film::Film;
+use crate::geometry::Ray;
+use crate::scene::{Gamma, Projection, Rgb, Scene};
+use rayon::prelude::*;
+use shade::Tracer;
+
+/// POV-Ray's render block size (`+BS`), in pixels.
+const BLOCK_SIZE: u32 = 32;
+
+/// POV-Ray's gamma for anti-aliasing colour comparisons (`+AG`).
+const AA_COMPARISON_GAMMA: f64 = 2.5;
+
+/// Anti-aliasing (POV-Ray method 1, without jitter).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Antialias {
+    /// One ray through each pixel centre (POV-Ray `-A`).
+    Off,
+    /// Supersample pixels whose colour differs from a left or top neighbour by at least
+    /// `threshold` (POV-Ray `+A<threshold> +R<depth> -J`): (centre + depth×depth grid) /
+    /// (depth² + 1). Threshold 0 supersamples every pixel.
+    Adaptive {
+        /// Colour-difference threshold (sum over channels, gamma-2.5 encoded).
+        threshold: f64,
+        /// Grid size per axis (1..=9).
+        depth: u32,
+    },
+}
+
+/// How to render.
+#[derive(Clone, Debug)]
+pub struct RenderOptions {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// Anti-aliasing.
+    pub antialias: Antialias,
+    /// Worker threads; `None` uses every core.
+    pub threads: Option<usize>,
+}
+
+/// A rendered image with its statistics.
+pub struct Rendered {
+    /// Linear output values.
+    pub film: Film,
+    /// Rays traced, by kind.
+    pub counts: RayCounts,
+    /// Camera samples taken (centre samples plus supersamples).
+    pub samples: u64,
+}
+
+/// Renders `scene` into a film of linear values.
+pub fn render(
+    scene: &Scene,
+    options: &RenderOptions,
+) -> Result<Rendered, rayon::ThreadPoolBuildError> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(options.threads.unwrap_or(0))
+        .build()?;
+    let (w, h) = (options.width, options.height);
+    let blocks_x = w.div_ceil(BLOCK_SIZE);
+    let blocks_y = h.div_ceil(BLOCK_SIZE);
+    let blocks: Vec<BlockResult> = pool.install(|| {
+        (0..blocks_x * blocks_y)
+            .into_par_iter()
+            .map(|i| {
+                render_block(
+                    scene,
+                    options,
+                    (i % blocks_x) * BLOCK_SIZE,
+                    (i / blocks_x) * BLOCK_SIZE,
+                )
+            })
+            .collect()
+    });
+    let mut film = Film::new(w, h);
+    let mut counts = RayCounts::default();
+    let mut samples = 0;
+    for b in &blocks {
+        for (k, value) in b.pixels.iter().enumerate() {
+            let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
+            film.set(x, y, output_value(*value, scene.gamma));
+        }
+        counts.add(&b.counts);
+        samples += b.samples;
+    }
+    Ok(Rendered {
+        film,
+        counts,
+        samples,
+    })
+}
+
+/// A working-space colour as the linear value written to the film (POV-Ray §2).
+fn output_value(c: Rgb, gamma: Gamma) -> [f32; 3] {
+    let decode = |v: f64| -> f64 {
+        match gamma {
+            Gamma::Working(g) if g == 1.0 => v,
+            Gamma::Working(g) => v.signum() * v.abs().powf(g),
+            Gamma::Off => crate::film::srgb_to_linear(v),
+        }
+    };
+    [decode(c.x) as f32, decode(c.y) as f32, decode(c.z) as f32]
+}
+
+/// One rendered block.
+struct BlockResult {
+    x0: u32,
+    y0: u32,
+    width: u32,
+    pixels: Vec<Rgb>,
+    counts: RayCounts,
+    samples: u64,
+}
+
+/// The camera ray through image position (x, y) in pixel units, (i, j) being pixel centres
+/// and y growing downward (POV-Ray §4.3).
+fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Ray {
+    let c = &scene.camera;
+    let (w, h) = (width as f64, height as f64);
+    let x0 = (x + 0.5) / w - 0.5;
+    let y0 = ((h - 1.0) - (y - 0.5)) / h - 0.5;
+    match c.projection {
+        Projection::Perspective => Ray::new(
+            c.location,
+            (c.direction + x0 * c.right + y0 * c.up).normalize(),
+        ),
+        Projection::Orthographic => Ray::new(
+            c.location + x0 * c.right + y0 * c.up,
+            c.direction.normalize(),
+        ),
+    }
+}
+
+/// POV-Ray's "colours differ" test for anti-aliasing: the sum over channels of the
+/// differences of gamma-2.5-encoded values reaches the threshold.
+fn differ(a: Rgb, b: Rgb, gamma: Gamma, threshold: f64) -> bool {
+    let enc = |c: Rgb| {
+        let v = output_value(c, gamma);
+        Rgb::new(v[0] as f64, v[1] as f64, v[2] as f64)
+            .max(Rgb::ZERO)
+            .powf(1.0 / AA_COMPARISON_GAMMA)
+    };
+    (enc(a) - enc(b)).abs().element_sum() >= threshold
+}
+
+/// Renders the block whose top-left pixel is (x0, y0), with POV-Ray's method-1 logic: the
+/// row above and the column left of the block are traced (centre samples) for comparison
+/// and count as already supersampled.
+fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> BlockResult {
+    let (w, h) = (options.width, options.height);
+    let x1 = (x0 + BLOCK_SIZE).min(w);
+    let y1 = (y0 + BLOCK_SIZE).min(h);
+    let mut tracer = Tracer::new(scene);
+    let mut samples = 0u64;
+    let centre = |tracer: &mut Tracer, x: u32, y: u32| {
+        tracer.counts.camera += 1;
+        let ray = camera_ray(scene, w, h, x as f64, y as f64);
+        tracer.trace(&ray, 1, 1.0)
+    };
+
+    // Local grid with one extra row above and one extra column on the left.
+    let gw = (x1 - x0 + 1) as usize;
+    let gh = (y1 - y0 + 1) as usize;
+    let mut value = vec![Rgb::ZERO; gw * gh];
+    let mut done = vec![false; gw * gh];
+    let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
+
+    let Antialias::Adaptive { threshold, depth } = options.antialias else {
+        let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+        for y in y0..y1 {
+            for x in x0..x1 {
+                pixels.push(centre(&mut tracer, x, y));
+                samples += 1;
+            }
+        }
+        return BlockResult {
+            x0,
+            y0,
+            width: x1 - x0,
+            pixels,
+            counts: tracer.counts,
+            samples,
+        };
+    };
+
+    if y0 > 0 {
+        for x in x0..x1 {
+            value[index(x, y0 - 1)] = centre(&mut tracer, x, y0 - 1);
+            done[index(x, y0 - 1)] = true;
+        }
+    }
+    if x0 > 0 {
+        for y in y0..y1 {
+            value[index(x0 - 1, y)] = centre(&mut tracer, x0 - 1, y);
+            done[index(x0 - 1, y)] = true;
+        }
+    }
+
+    let n = depth.clamp(1, 9);
+    let step = 1.0 / n as f64;
+    let supersample = |tracer: &mut Tracer, value: &mut [Rgb], x: u32, y: u32| {
+        // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
+        let mut sum = value[index(x, y)];
+        for b in 0..n {
+            for a in 0..n {
+                let ox = -0.5 + step / 2.0 + a as f64 * step;
+                let oy = -0.5 + step / 2.0 + b as f64 * step;
+                tracer.counts.camera += 1;
+                let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
+                sum += tracer.trace(&ray, 1, 1.0);
+            }
+        }
+        value[index(x, y)] = sum / (n * n + 1) as f64;
+        (n * n) as u64
+    };
+
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let c = centre(&mut tracer, x, y);
+            samples += 1;
+            value[index(x, y)] = c;
+            let left_differs = x > 0 && differ(value[index(x - 1, y)], c, scene.gamma, threshold);
+            let top_differs = y > 0 && differ(value[index(x, y - 1)], c, scene.gamma, threshold);
+            if left_differs && !done[index(x - 1, y)] {
+                samples += supersample(&mut tracer, &mut value, x - 1, y);
+                done[index(x - 1, y)] = true;
+            }
+            if top_differs && !done[index(x, y - 1)] {
+                samples += supersample(&mut tracer, &mut value, x, y - 1);
+                done[index(x, y - 1)] = true;
+            }
+            if left_differs || top_differs {
+                samples += supersample(&mut tracer, &mut value, x, y);
+                done[index(x, y)] = true;
+            }
+        }
+    }
+
+    let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+    for y in y0..y1 {
+        for x in x0..x1 {
+            pixels.push(value[index(x, y)]);
+        }
+    }
+    BlockResult {
+        x0,
+        y0,
+        width: x1 - x0,
+        pixels,
+        counts: tracer.counts,
+        samples,
+    }
+}

@@ -1,0 +1,550 @@
+//! The pest front end: scene text → syntax tree with spans.
+//!
+//! This is the only module that names pest's `Rule`. The tree it produces is deliberately
+//! uniform: every construct is a [`Node`] (a keyword with its expressions and child nodes), and
+//! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
+
+mod grammar {
+    #[derive(pest_derive::Parser)]
+    #[grammar = "grammar/scene.pest"]
+    pub struct SceneParser;
+}
+
+use crate::diag::{Diagnostic, FileId, Span};
+use grammar::{Rule, SceneParser};
+use pest::Parser;
+use pest::iterators::Pair;
+
+/// What a node is: one variant per construct of the grammar.
+#[allow(missing_docs)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NodeKind {
+    // Directives and scene-wide items.
+    Version,
+    Declare,
+    Local,
+    Default,
+    UnknownDirective,
+    Camera,
+    LightSource,
+    Background,
+    GlobalSettings,
+    AssumedGamma,
+    MaxTraceLevel,
+    AdcBailout,
+    AmbientLight,
+    // Camera items.
+    Perspective,
+    Orthographic,
+    Location,
+    LookAt,
+    Direction,
+    Up,
+    Right,
+    Sky,
+    Angle,
+    // Objects.
+    Sphere,
+    Plane,
+    Box,
+    ObjectRef,
+    Flag,
+    // Transformations.
+    Translate,
+    Rotate,
+    Scale,
+    Matrix,
+    Transform,
+    Inverse,
+    // Materials.
+    Texture,
+    Pigment,
+    Finish,
+    Ambient,
+    Emission,
+    Diffuse,
+    Brilliance,
+    Phong,
+    PhongSize,
+    Specular,
+    Roughness,
+    Metallic,
+    ConserveEnergy,
+    Albedo,
+    Reflection,
+    Falloff,
+    Exponent,
+    Fresnel,
+    /// A reference to a declared identifier where an item may stand (`texture { T }`).
+    IdentRef,
+    /// A word the grammar does not know at this place (see `name`).
+    Unknown,
+}
+
+/// A construct: keyword, expressions, children.
+#[derive(Clone, Debug)]
+pub struct Node {
+    /// Which construct.
+    pub kind: NodeKind,
+    /// The whole construct.
+    pub span: Span,
+    /// The leading keyword or word (for [`NodeKind::Unknown`] and flags, the word itself).
+    pub word: String,
+    /// Span of that word.
+    pub word_span: Span,
+    /// The construct's expressions in source order (e.g. a sphere's centre and radius).
+    pub args: Vec<Expr>,
+    /// Nested constructs in source order (modifiers, items of a block).
+    pub children: Vec<Node>,
+}
+
+/// An expression with its span.
+#[derive(Clone, Debug)]
+pub struct Expr {
+    /// What kind of expression.
+    pub kind: ExprKind,
+    /// Its extent in the source.
+    pub span: Span,
+}
+
+/// Binary operators.
+#[allow(missing_docs)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+}
+
+/// Unary operators.
+#[allow(missing_docs)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnOp {
+    Neg,
+    Plus,
+    Not,
+}
+
+/// A part of a colour expression (`rgb <..>`, `filter .5`, or the bare base value).
+#[derive(Clone, Debug)]
+pub enum ColourPart {
+    /// A bare value after `color`: `color White`, `color 1`.
+    Base(Expr),
+    /// `rgb V`, `rgbf V`, `srgb V` …; the keyword as written.
+    Typed(String, Expr),
+    /// `red F`, `filter F` …; the keyword as written.
+    Channel(String, Expr),
+}
+
+/// Expression forms.
+#[derive(Clone, Debug)]
+pub enum ExprKind {
+    /// A literal number.
+    Number(f64),
+    /// `<a, b, ...>`.
+    Vector(Vec<Expr>),
+    /// An identifier or built-in constant.
+    Ident(String),
+    /// `-a`, `!a`.
+    Unary(UnOp, Box<Expr>),
+    /// `a + b` …
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `c ? a : b`.
+    Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// `f(a, b)`; the function name and its span.
+    Call(String, Span, Vec<Expr>),
+    /// `v.x`; the member name and its span.
+    Member(Box<Expr>, String, Span),
+    /// `color rgb <...> filter 0.5`.
+    Colour(Vec<ColourPart>),
+}
+
+/// Parses a whole scene file into its top-level statements.
+pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
+    let mut pairs = SceneParser::parse(Rule::scene, text).map_err(|e| syntax_error(e, file))?;
+    let scene = pairs.next().expect("the scene rule always yields one pair");
+    let lower = Lower { file };
+    Ok(scene
+        .into_inner()
+        .filter(|p| p.as_rule() != Rule::EOI)
+        .map(|p| lower.node(p))
+        .collect())
+}
+
+fn syntax_error(e: pest::error::Error<Rule>, file: FileId) -> Diagnostic {
+    use pest::error::{ErrorVariant, InputLocation};
+    let (start, end) = match e.location {
+        InputLocation::Pos(p) => (p, p + 1),
+        InputLocation::Span((s, e)) => (s, e),
+    };
+    let message = match &e.variant {
+        ErrorVariant::ParsingError { positives, .. } => {
+            let mut names: Vec<&str> = positives.iter().filter_map(|r| describe(*r)).collect();
+            names.sort_unstable();
+            names.dedup();
+            match names.len() {
+                0 => "syntax error".to_string(),
+                1 => format!("syntax error: expected {}", names[0]),
+                _ => {
+                    let last = names.pop().unwrap_or_default();
+                    format!("syntax error: expected {} or {}", names.join(", "), last)
+                }
+            }
+        }
+        ErrorVariant::CustomError { message } => format!("syntax error: {message}"),
+    };
+    Diagnostic::error(message, Span::new(file, start, end))
+}
+
+/// Human wording of a rule for "expected ..." messages; `None` hides the rule from the list.
+fn describe(rule: Rule) -> Option<&'static str> {
+    use Rule::*;
+    Some(match rule {
+        EOI => "end of file",
+        expr | logical | relation | sum | product | unary | postfix | colour_base => {
+            "an expression"
+        }
+        number => "a number",
+        vector => "a vector `<...>`",
+        paren => "`(`",
+        colour | colour_typed | colour_channel => "a colour",
+        call => "a function call",
+        ident => "an identifier",
+        word => "a keyword or identifier",
+        logic_op | rel_op | add_op | mul_op => "an operator",
+        unary_op => "a unary operator",
+        member => "`.`",
+        object | sphere | plane | box_shape | object_ref => "an object",
+        camera => "`camera`",
+        light_source => "`light_source`",
+        background => "`background`",
+        global_settings => "`global_settings`",
+        version | declare | default_block | unknown_directive => "a directive",
+        unknown_item | unknown_tail | balanced => "a statement",
+        _ => return None,
+    })
+}
+
+/// Lowering from pest pairs to the syntax tree, one method per family of rules.
+struct Lower {
+    file: FileId,
+}
+
+impl Lower {
+    fn span(&self, pair: &Pair<'_, Rule>) -> Span {
+        let s = pair.as_span();
+        Span::new(self.file, s.start(), s.end())
+    }
+
+    fn node(&self, pair: Pair<'_, Rule>) -> Node {
+        let span = self.span(&pair);
+        let rule = pair.as_rule();
+        let kind = match rule {
+            Rule::version => NodeKind::Version,
+            Rule::declare => NodeKind::Declare,
+            Rule::default_block => NodeKind::Default,
+            Rule::unknown_directive => NodeKind::UnknownDirective,
+            Rule::camera => NodeKind::Camera,
+            Rule::light_source => NodeKind::LightSource,
+            Rule::background => NodeKind::Background,
+            Rule::global_settings => NodeKind::GlobalSettings,
+            Rule::assumed_gamma => NodeKind::AssumedGamma,
+            Rule::max_trace_level => NodeKind::MaxTraceLevel,
+            Rule::adc_bailout => NodeKind::AdcBailout,
+            Rule::ambient_light => NodeKind::AmbientLight,
+            Rule::perspective => NodeKind::Perspective,
+            Rule::orthographic => NodeKind::Orthographic,
+            Rule::location => NodeKind::Location,
+            Rule::look_at => NodeKind::LookAt,
+            Rule::direction => NodeKind::Direction,
+            Rule::up => NodeKind::Up,
+            Rule::right => NodeKind::Right,
+            Rule::sky => NodeKind::Sky,
+            Rule::angle => NodeKind::Angle,
+            Rule::sphere => NodeKind::Sphere,
+            Rule::plane => NodeKind::Plane,
+            Rule::box_shape => NodeKind::Box,
+            Rule::object_ref => NodeKind::ObjectRef,
+            Rule::flag => NodeKind::Flag,
+            Rule::translate => NodeKind::Translate,
+            Rule::rotate => NodeKind::Rotate,
+            Rule::scale => NodeKind::Scale,
+            Rule::matrix => NodeKind::Matrix,
+            Rule::transform => NodeKind::Transform,
+            Rule::inverse => NodeKind::Inverse,
+            Rule::texture => NodeKind::Texture,
+            Rule::pigment => NodeKind::Pigment,
+            Rule::finish => NodeKind::Finish,
+            Rule::ambient => NodeKind::Ambient,
+            Rule::emission => NodeKind::Emission,
+            Rule::diffuse => NodeKind::Diffuse,
+            Rule::brilliance => NodeKind::Brilliance,
+            Rule::phong => NodeKind::Phong,
+            Rule::phong_size => NodeKind::PhongSize,
+            Rule::specular => NodeKind::Specular,
+            Rule::roughness => NodeKind::Roughness,
+            Rule::metallic => NodeKind::Metallic,
+            Rule::conserve_energy => NodeKind::ConserveEnergy,
+            Rule::albedo => NodeKind::Albedo,
+            Rule::reflection => NodeKind::Reflection,
+            Rule::falloff => NodeKind::Falloff,
+            Rule::exponent => NodeKind::Exponent,
+            Rule::fresnel => NodeKind::Fresnel,
+            Rule::ident => NodeKind::IdentRef,
+            Rule::unknown_item => NodeKind::Unknown,
+            other => unreachable!("rule {other:?} is not a node"),
+        };
+        let mut node = Node {
+            kind,
+            span,
+            word: String::new(),
+            word_span: span,
+            args: Vec::new(),
+            children: Vec::new(),
+        };
+        if rule == Rule::ident {
+            node.word = pair.as_str().to_string();
+            return node;
+        }
+        let mut first_word = true;
+        for inner in pair.into_inner() {
+            let r = inner.as_rule();
+            if is_expr(r) {
+                node.args.push(self.expr(inner));
+            } else if is_word(r) {
+                // The construct's own keyword (or, for an unknown item, the word itself).
+                if first_word {
+                    node.word = inner.as_str().to_string();
+                    node.word_span = self.span(&inner);
+                    first_word = false;
+                }
+            } else if r == Rule::declare_kind {
+                if inner.as_str().trim() == "local" {
+                    node.kind = NodeKind::Local;
+                }
+            } else if !matches!(r, Rule::unknown_tail | Rule::skip_rest | Rule::balanced) {
+                // (The body of something unsupported is dropped: evaluation stops at its word.)
+                node.children.push(self.node(inner));
+            }
+        }
+        node
+    }
+
+    fn expr(&self, pair: Pair<'_, Rule>) -> Expr {
+        let span = self.span(&pair);
+        match pair.as_rule() {
+            Rule::expr => {
+                let mut inner = pair.into_inner();
+                let cond = self.expr(inner.next().expect("expr has a first operand"));
+                match (inner.next(), inner.next()) {
+                    (Some(a), Some(b)) => Expr {
+                        kind: ExprKind::Ternary(
+                            Box::new(cond),
+                            Box::new(self.expr(a)),
+                            Box::new(self.expr(b)),
+                        ),
+                        span,
+                    },
+                    _ => cond,
+                }
+            }
+            Rule::logical | Rule::relation | Rule::sum | Rule::product => {
+                let mut inner = pair.into_inner();
+                let mut left = self.expr(inner.next().expect("binary chain has an operand"));
+                while let (Some(op), Some(right)) = (inner.next(), inner.next()) {
+                    let op = match op.as_str() {
+                        "+" => BinOp::Add,
+                        "-" => BinOp::Sub,
+                        "*" => BinOp::Mul,
+                        "/" => BinOp::Div,
+                        "<" => BinOp::Lt,
+                        "<=" => BinOp::Le,
+                        ">" => BinOp::Gt,
+                        ">=" => BinOp::Ge,
+                        "=" => BinOp::Eq,
+                        "!=" => BinOp::Ne,
+                        "&" => BinOp::And,
+                        _ => BinOp::Or,
+                    };
+                    let right = self.expr(right);
+                    let span = Span {
+                        end: right.span.end,
+                        ..left.span
+                    };
+                    left = Expr {
+                        kind: ExprKind::Binary(op, Box::new(left), Box::new(right)),
+                        span,
+                    };
+                }
+                left
+            }
+            Rule::unary => {
+                let parts: Vec<_> = pair.into_inner().collect();
+                let (ops, operand) = parts.split_at(parts.len() - 1);
+                let mut e = self.expr(operand[0].clone());
+                for op in ops.iter().rev() {
+                    let op_kind = match op.as_str() {
+                        "-" => UnOp::Neg,
+                        "+" => UnOp::Plus,
+                        _ => UnOp::Not,
+                    };
+                    let span = Span {
+                        start: self.span(op).start,
+                        ..e.span
+                    };
+                    e = Expr {
+                        kind: ExprKind::Unary(op_kind, Box::new(e)),
+                        span,
+                    };
+                }
+                e
+            }
+            Rule::postfix => {
+                let mut inner = pair.into_inner();
+                let mut e = self.expr(inner.next().expect("postfix has a primary"));
+                for member in inner {
+                    let name = member.into_inner().next().expect("member has a name");
+                    let name_span = self.span(&name);
+                    let span = Span {
+                        end: name_span.end,
+                        ..e.span
+                    };
+                    e = Expr {
+                        kind: ExprKind::Member(Box::new(e), name.as_str().to_string(), name_span),
+                        span,
+                    };
+                }
+                e
+            }
+            Rule::paren | Rule::colour_base => {
+                self.expr(pair.into_inner().next().expect("parenthesised expression"))
+            }
+            Rule::number => Expr {
+                kind: ExprKind::Number(pair.as_str().parse().unwrap_or(f64::NAN)),
+                span,
+            },
+            Rule::vector => Expr {
+                kind: ExprKind::Vector(pair.into_inner().map(|p| self.expr(p)).collect()),
+                span,
+            },
+            Rule::ident => Expr {
+                kind: ExprKind::Ident(pair.as_str().to_string()),
+                span,
+            },
+            Rule::call => {
+                let mut inner = pair.into_inner();
+                let name = inner.next().expect("call has a name");
+                let name_span = self.span(&name);
+                let args = inner.map(|p| self.expr(p)).collect();
+                Expr {
+                    kind: ExprKind::Call(name.as_str().to_string(), name_span, args),
+                    span,
+                }
+            }
+            Rule::colour => {
+                let mut parts = Vec::new();
+                for part in pair.into_inner() {
+                    match part.as_rule() {
+                        Rule::colour_base => parts.push(ColourPart::Base(self.expr(part))),
+                        Rule::colour_typed | Rule::colour_channel => {
+                            let rule = part.as_rule();
+                            let mut inner = part.into_inner();
+                            let kw = inner.next().expect("colour keyword").as_str().to_string();
+                            let value = self.expr(inner.next().expect("colour value"));
+                            parts.push(if rule == Rule::colour_typed {
+                                ColourPart::Typed(kw, value)
+                            } else {
+                                ColourPart::Channel(kw, value)
+                            });
+                        }
+                        _ => {}
+                    }
+                }
+                Expr {
+                    kind: ExprKind::Colour(parts),
+                    span,
+                }
+            }
+            other => unreachable!("rule {other:?} is not an expression"),
+        }
+    }
+}
+
+fn is_expr(rule: Rule) -> bool {
+    matches!(rule, Rule::expr | Rule::sum)
+}
+
+fn is_word(rule: Rule) -> bool {
+    use Rule::*;
+    matches!(
+        rule,
+        word | kw_adc_bailout
+            | kw_albedo
+            | kw_ambient
+            | kw_ambient_light
+            | kw_angle
+            | kw_assumed_gamma
+            | kw_background
+            | kw_box
+            | kw_brilliance
+            | kw_camera
+            | kw_color
+            | kw_colour
+            | kw_conserve_energy
+            | kw_declare
+            | kw_default
+            | kw_diffuse
+            | kw_direction
+            | kw_double_illuminate
+            | kw_emission
+            | kw_exponent
+            | kw_falloff
+            | kw_finish
+            | kw_fresnel
+            | kw_global_settings
+            | kw_hollow
+            | kw_inverse
+            | kw_light_source
+            | kw_local
+            | kw_location
+            | kw_look_at
+            | kw_matrix
+            | kw_max_trace_level
+            | kw_metallic
+            | kw_no_image
+            | kw_no_reflection
+            | kw_no_shadow
+            | kw_object
+            | kw_orthographic
+            | kw_perspective
+            | kw_phong
+            | kw_phong_size
+            | kw_pigment
+            | kw_plane
+            | kw_reflection
+            | kw_right
+            | kw_rotate
+            | kw_roughness
+            | kw_scale
+            | kw_sky
+            | kw_specular
+            | kw_sphere
+            | kw_texture
+            | kw_transform
+            | kw_translate
+            | kw_up
+            | kw_version
+    )
+}
+
+#[cfg(test)]
+mod tests;
