@@ -1,6 +1,6 @@
 //! Expression evaluation: POV-Ray's operators, promotion rules, constants and functions.
 
-use super::Evaluator;
+use super::{unsupported, Evaluator};
 use super::value::{Value, Vector, srgb_decode};
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
@@ -430,7 +430,8 @@ impl Evaluator<'_> {
                 let m = super::transform::rotation(v3(1)?);
                 return Ok(Value::Vector(Vector::from_vec3(m.transform_point3(v3(0)?))));
             }
-            _ => return Err(self.unknown_word(name, name_span)),
+            _ if unsupported::reason(name).is_some() => return Err(self.unknown_word(name, name_span)),
+            _ => return Err(Diagnostic::error(format!("unknown function `{name}`"), name_span)),
         };
         Ok(Value::Float(result))
     }

@@ -168,6 +168,11 @@ pub enum ExprKind {
     Colour(Vec<ColourPart>),
 }
 
+/// Whether `word` is one of the keywords of trace's grammar.
+pub fn is_keyword(word: &str) -> bool {
+    SceneParser::parse(Rule::keyword, word).is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
+}
+
 /// Parses a whole scene file into its top-level statements.
 pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
     let mut pairs = SceneParser::parse(Rule::scene, text).map_err(|e| syntax_error(e, file))?;
@@ -229,7 +234,10 @@ fn describe(rule: Rule) -> Option<&'static str> {
         background => "`background`",
         global_settings => "`global_settings`",
         version | declare | default_block | unknown_directive => "a directive",
-        unknown_item | unknown_tail | balanced => "a statement",
+        unknown_item | unknown_tail | balanced | leftover => "a statement",
+        semicolon => "`;`",
+        flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => "an object modifier",
+        rbrace => "`}`",
         _ => return None,
     })
 }
@@ -300,7 +308,7 @@ impl Lower {
             Rule::exponent => NodeKind::Exponent,
             Rule::fresnel => NodeKind::Fresnel,
             Rule::ident => NodeKind::IdentRef,
-            Rule::unknown_item => NodeKind::Unknown,
+            Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
         let mut node = Node {
@@ -313,6 +321,14 @@ impl Lower {
         };
         if rule == Rule::ident {
             node.word = pair.as_str().to_string();
+            return node;
+        }
+        if rule == Rule::leftover {
+            // Named by its first token.
+            let text = pair.as_str();
+            let len = text.find(|c: char| c.is_whitespace() || c == '{').unwrap_or(text.len()).max(1);
+            node.word = text[..len].to_string();
+            node.word_span = Span::new(self.file, span.start as usize, span.start as usize + len);
             return node;
         }
         let mut first_word = true;
@@ -331,7 +347,10 @@ impl Lower {
                 if inner.as_str().trim() == "local" {
                     node.kind = NodeKind::Local;
                 }
-            } else if !matches!(r, Rule::unknown_tail | Rule::skip_rest | Rule::balanced) {
+            } else if !matches!(
+                r,
+                Rule::unknown_tail | Rule::skip_rest | Rule::balanced | Rule::semicolon | Rule::rbrace
+            ) {
                 // (The body of something unsupported is dropped: evaluation stops at its word.)
                 node.children.push(self.node(inner));
             }

@@ -1,0 +1,188 @@
+//! Closed-form scenes: each checks one rule of POV-Ray's model against a value computed by hand.
+
+use crate::render_text;
+use trace::Antialias;
+
+/// The single centre pixel of a 1×1 render.
+fn centre_pixel(scene: &str) -> [f32; 3] {
+    render_text(scene, 1, 1, Antialias::Off).get(0, 0)
+}
+
+fn assert_close(actual: [f32; 3], expected: [f64; 3], tolerance: f64) {
+    for c in 0..3 {
+        assert!(
+            (actual[c] as f64 - expected[c]).abs() <= tolerance,
+            "channel {c}: got {actual:?}, expected {expected:?}"
+        );
+    }
+}
+
+const HEADER: &str = "#version 3.7; global_settings { assumed_gamma 1.0 }\n";
+
+#[test]
+fn lambert_plane_facing_light_is_ambient_plus_diffuse() {
+    // 0.5·0.1 (ambient) + 0.5·1·0.6·cos 0 (diffuse) = 0.35.
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,0,-5>, rgb 1 }}
+         plane {{ -z, 0 pigment {{ rgb 0.5 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [0.35; 3], 1e-6);
+}
+
+#[test]
+fn brilliance_raises_the_diffuse_cosine() {
+    // Light at 45°: cos = √½, brilliance 2 → ½. 0.05 + 0.5·0.6·0.5 = 0.2.
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,5,-5>, rgb 1 }}
+         plane {{ -z, 0 pigment {{ rgb 0.5 }} finish {{ brilliance 2 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [0.2; 3], 1e-6);
+}
+
+#[test]
+fn phong_peak_with_light_at_camera_adds_exactly_one() {
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,0,-5>, rgb 1 }}
+         plane {{ -z, 0 pigment {{ rgb 0.5 }} finish {{ ambient 0 diffuse 0 phong 1 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [1.0; 3], 1e-6);
+}
+
+#[test]
+fn shadowed_point_gets_ambient_only() {
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,0,-10>, rgb 1 }}
+         sphere {{ <0,0,-7>, 0.5 pigment {{ rgb 1 }} }}
+         plane {{ -z, 0 pigment {{ rgb 0.5 }} }}"
+    );
+    // The camera ray passes beside the sphere? No: the sphere is behind the camera (z = -7).
+    assert_close(centre_pixel(&scene), [0.05; 3], 1e-6);
+}
+
+#[test]
+fn shadow_through_filter_and_transmit_is_tinted_at_each_crossing() {
+    // A transparent slab (box) between light and plane is crossed twice:
+    // light × (rgb·f + t)² = (<1,.5,0>·.5 + .25)² = <.75,.5,.25>² per channel.
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,0,-10>, rgb 1 }}
+         box {{ <-1,-1,-8>, <1,1,-7.5> pigment {{ rgbft <1,0.5,0,0.5,0.25> }} }}
+         plane {{ -z, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [0.5625, 0.25, 0.0625], 1e-6);
+}
+
+#[test]
+fn facing_mirrors_give_one_minus_point_nine_to_the_trace_level() {
+    for level in [1, 3, 5, 10] {
+        let scene = format!(
+            "#version 3.7; global_settings {{ assumed_gamma 1.0 max_trace_level {level} }}
+             camera {{ location 0 look_at z }}
+             #declare M = finish {{ ambient 0.1 diffuse 0 reflection 0.9 }}
+             plane {{ z, 1 pigment {{ rgb 1 }} finish {{ M }} }}
+             plane {{ -z, 1 pigment {{ rgb 1 }} finish {{ M }} }}"
+        );
+        let expected = 1.0 - 0.9f64.powi(level);
+        assert_close(centre_pixel(&scene), [expected; 3], 1e-6);
+    }
+}
+
+#[test]
+fn transparent_surface_at_max_trace_level_one_shows_black() {
+    let scene = |level: u32| {
+        format!(
+            "#version 3.7; global_settings {{ assumed_gamma 1.0 max_trace_level {level} }}
+             background {{ rgb 1 }}
+             camera {{ location <0,0,-5> look_at 0 }}
+             sphere {{ 0, 1 pigment {{ rgbt <1,1,1,1> }} finish {{ ambient 0 diffuse 0 }} }}"
+        )
+    };
+    assert_close(centre_pixel(&scene(1)), [0.0; 3], 1e-9);
+    // Crossing ior-1 surfaces costs no trace level: level 2 already sees the background.
+    assert_close(centre_pixel(&scene(2)), [1.0; 3], 1e-9);
+}
+
+#[test]
+fn object_without_texture_is_black_except_highlights() {
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+         light_source {{ <0,0,-5>, rgb 1 }}
+         plane {{ -z, 0 }}"
+    );
+    assert_close(centre_pixel(&scene), [0.0; 3], 1e-9);
+}
+
+#[test]
+fn gamma_modes_match_povray_table() {
+    let body = "camera { location <0,0,-5> look_at 0 }
+                plane { -z, 0 pigment { rgb <0.5, 0.2, 0.8> } finish { ambient 1 diffuse 0 } }";
+    let linear = centre_pixel(&format!(
+        "#version 3.7; global_settings {{ assumed_gamma 1.0 }} {body}"
+    ));
+    assert_close(linear, [0.5, 0.2, 0.8], 1e-6);
+    let implied = centre_pixel(&format!("#version 3.7; {body}"));
+    assert_close(implied, [0.5, 0.2, 0.8], 1e-6);
+    let gamma22 = centre_pixel(&format!(
+        "#version 3.7; global_settings {{ assumed_gamma 2.2 }} {body}"
+    ));
+    assert_close(gamma22, [0.218, 0.029, 0.612], 1e-3);
+    // No #version: "gamma off", the values are display values (sRGB-decoded for EXR).
+    let off = centre_pixel(body);
+    assert_close(off, [0.214, 0.033, 0.604], 1e-3);
+}
+
+#[test]
+fn output_is_identical_for_one_and_two_threads() {
+    let text = std::fs::read_to_string(crate::root().join("examples/mirrors.rt")).expect("example");
+    let scene = crate::load_text(&text, 96, 72);
+    let film = |threads| {
+        let aa = Antialias::Adaptive {
+            threshold: 0.3,
+            depth: 3,
+        };
+        let options = trace::RenderOptions {
+            width: 96,
+            height: 72,
+            antialias: aa,
+            threads: Some(threads),
+        };
+        trace::render(&scene, &options).expect("renders").film
+    };
+    assert_eq!(film(1), film(2));
+}
+
+#[test]
+fn adaptive_antialiasing_supersamples_only_where_colours_differ() {
+    // A flat background has no differing neighbours: one sample per pixel.
+    let flat = "#version 3.7; global_settings { assumed_gamma 1.0 } background { rgb 0.5 }";
+    let scene = crate::load_text(flat, 40, 40);
+    let aa = Antialias::Adaptive {
+        threshold: 0.3,
+        depth: 3,
+    };
+    let options = trace::RenderOptions {
+        width: 40,
+        height: 40,
+        antialias: aa,
+        threads: Some(1),
+    };
+    let rendered = trace::render(&scene, &options).expect("renders");
+    assert_eq!(rendered.samples, 40 * 40);
+    // Threshold 0 supersamples every pixel: 1 + 9 samples each.
+    let aa = Antialias::Adaptive {
+        threshold: 0.0,
+        depth: 3,
+    };
+    let options = trace::RenderOptions {
+        antialias: aa,
+        ..options
+    };
+    assert_eq!(
+        trace::render(&scene, &options).expect("renders").samples,
+        40 * 40 * 10
+    );
+}

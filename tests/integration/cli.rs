@@ -1,0 +1,125 @@
+//! The `trace` binary as a user runs it: files written, exit codes, messages.
+
+use std::process::Command;
+
+fn trace() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_trace"))
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("trace-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+#[test]
+fn renders_png_and_exr() {
+    let dir = temp_dir("render");
+    for ext in ["png", "exr"] {
+        let out = dir.join(format!("img.{ext}"));
+        let status = trace()
+            .args(["examples/basic_spheres.rt", "-o"])
+            .arg(&out)
+            .args(["--width", "32", "--height", "24", "--quiet"])
+            .current_dir(crate::root())
+            .status()
+            .expect("runs");
+        assert!(status.success());
+        let film = trace::Film::read(&out).expect("readable image");
+        assert_eq!((film.width, film.height), (32, 24));
+    }
+}
+
+#[test]
+fn bad_scene_exits_2_with_location_and_keeps_existing_output() {
+    let dir = temp_dir("bad");
+    let scene = dir.join("bad.rt");
+    std::fs::write(&scene, "#version 3.7;\ndifference { sphere { 0, 1 } }\n").expect("write");
+    let out = dir.join("out.png");
+    std::fs::write(&out, b"previous").expect("write");
+    let output = trace()
+        .arg(&scene)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("bad.rt:2:1"), "{stderr}");
+    assert!(stderr.contains("^^^^^^^^^^"), "{stderr}");
+    assert!(stderr.contains("unsupported: `difference`"), "{stderr}");
+    assert_eq!(std::fs::read(&out).expect("read"), b"previous");
+}
+
+#[test]
+fn missing_scene_file_exits_1() {
+    let output = trace()
+        .args(["no/such/scene.rt", "-o", "x.png"])
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(1));
+}
+
+#[test]
+fn unknown_output_format_exits_2() {
+    let output = trace()
+        .args(["examples/basic_spheres.rt", "-o", "x.tiff"])
+        .current_dir(crate::root())
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(2));
+}
+
+#[test]
+fn bad_arguments_exit_2() {
+    let output = trace()
+        .args([
+            "examples/basic_spheres.rt",
+            "-o",
+            "x.png",
+            "--aa",
+            "sometimes",
+        ])
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(2));
+}
+
+#[test]
+fn unwritable_output_exits_1_without_leaving_a_file() {
+    let dir = temp_dir("unwritable");
+    let out = dir.join("missing-folder").join("img.png");
+    let output = trace()
+        .args([
+            "examples/basic_spheres.rt",
+            "--width",
+            "8",
+            "--height",
+            "6",
+            "-o",
+        ])
+        .arg(&out)
+        .current_dir(crate::root())
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(1));
+    assert!(!out.exists());
+}
+
+#[test]
+fn compare_prints_flip_and_rmse() {
+    let root = crate::root();
+    let output = trace()
+        .args([
+            "compare",
+            "golden/povray/mirrors.exr",
+            "golden/povray/mirrors.exr",
+        ])
+        .current_dir(&root)
+        .output()
+        .expect("runs");
+    assert!(output.status.success());
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(stdout.contains("mean FLIP  0.000000"), "{stdout}");
+    assert!(stdout.contains("RMSE       0.000000"), "{stdout}");
+}

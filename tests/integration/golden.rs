@@ -1,0 +1,104 @@
+//! Renders every example at 320×240 and compares it with POV-Ray 3.7's render of the same
+//! file (golden/povray, made by scripts/golden.sh).
+//!
+//! Tolerance: mean FLIP ≤ 0.01 (the project's bar for "renders like POV-Ray") and no NaN or
+//! infinite pixel. On failure the actual, expected and FLIP images are written to
+//! target/golden-failures/ for a person to look at.
+
+use crate::root;
+use trace::{Antialias, Film};
+
+const MAX_MEAN_FLIP: f32 = 0.01;
+
+fn check(stem: &str, antialias: Antialias, reference_name: &str) -> Result<f32, String> {
+    let scene_path = root().join("examples").join(format!("{stem}.rt"));
+    let options = trace::LoadOptions {
+        width: 320,
+        height: 240,
+    };
+    let loaded = trace::load(&scene_path, &options).map_err(|e| e.to_string())?;
+    let render = trace::RenderOptions {
+        width: 320,
+        height: 240,
+        antialias,
+        threads: None,
+    };
+    let actual = trace::render(&loaded.scene, &render)
+        .map_err(|e| e.to_string())?
+        .film;
+    let expected = Film::read(&root().join("golden/povray").join(reference_name))
+        .map_err(|e| e.to_string())?;
+    let c = trace::film::compare(&expected, &actual).map_err(|e| e.to_string())?;
+    let nan = actual.non_finite_pixels();
+    if c.mean_flip <= MAX_MEAN_FLIP && nan == 0 {
+        return Ok(c.mean_flip);
+    }
+    let dir = root().join("target/golden-failures");
+    std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+    let base = reference_name.trim_end_matches(".exr");
+    actual
+        .write(&dir.join(format!("{base}.actual.png")))
+        .map_err(|e| e.to_string())?;
+    expected
+        .write(&dir.join(format!("{base}.expected.png")))
+        .map_err(|e| e.to_string())?;
+    trace::film::write_rgb8_png(&dir.join(format!("{base}.flip.png")), 320, 240, c.flip_map)
+        .map_err(|e| e.to_string())?;
+    Err(format!(
+        "{reference_name}: mean FLIP {:.4} (max {MAX_MEAN_FLIP}), RMSE {:.5}, {nan} NaN pixels; images in {}",
+        c.mean_flip,
+        c.rmse,
+        dir.display()
+    ))
+}
+
+fn examples() -> Vec<String> {
+    let mut stems: Vec<String> = std::fs::read_dir(root().join("examples"))
+        .expect("examples folder")
+        .filter_map(|e| {
+            let p = e.ok()?.path();
+            if p.extension()? != "rt" {
+                return None;
+            }
+            Some(p.file_stem()?.to_string_lossy().into_owned())
+        })
+        .collect();
+    stems.sort();
+    stems
+}
+
+#[test]
+fn examples_match_povray_without_antialiasing() {
+    let failures: Vec<String> = examples()
+        .iter()
+        .filter_map(|s| check(s, Antialias::Off, &format!("{s}.exr")).err())
+        .collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn examples_match_povray_with_antialiasing_threshold_0() {
+    let aa = Antialias::Adaptive {
+        threshold: 0.0,
+        depth: 3,
+    };
+    let failures: Vec<String> = examples()
+        .iter()
+        .filter_map(|s| check(s, aa, &format!("{s}.aa.exr")).err())
+        .collect();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn every_example_has_povray_references() {
+    for stem in examples() {
+        for suffix in [".exr", ".aa.exr"] {
+            let p = root().join("golden/povray").join(format!("{stem}{suffix}"));
+            assert!(
+                p.exists(),
+                "missing {} (run scripts/golden.sh {stem})",
+                p.display()
+            );
+        }
+    }
+}

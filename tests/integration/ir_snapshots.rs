@@ -1,0 +1,22 @@
+//! Snapshots of the IR that every example and every accepted test scene evaluates to.
+
+use std::path::Path;
+
+fn snapshot_ir(path: &Path) {
+    let options = trace::LoadOptions {
+        width: 320,
+        height: 240,
+    };
+    let loaded = trace::load(path, &options).unwrap_or_else(|e| panic!("{e}"));
+    insta::assert_debug_snapshot!(loaded.scene);
+}
+
+#[test]
+fn examples_evaluate_to_stable_ir() {
+    insta::glob!("../../examples", "*.rt", |path| snapshot_ir(path));
+}
+
+#[test]
+fn accepted_scenes_evaluate_to_stable_ir() {
+    insta::glob!("../scenes/ok", "*.rt", |path| snapshot_ir(path));
+}

@@ -1,0 +1,40 @@
+//! Integration tests: one binary, one module per concern.
+
+mod analytic;
+mod cli;
+mod errors;
+mod golden;
+mod ir_snapshots;
+
+use std::path::{Path, PathBuf};
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Loads scene text at a given image size, panicking with the rendered diagnostic on error.
+pub fn load_text(text: &str, width: u32, height: u32) -> trace::ir::Scene {
+    let options = trace::LoadOptions { width, height };
+    match trace::load_str(Path::new("test.rt"), text.to_string(), &options) {
+        Ok(loaded) => loaded.scene,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// Renders scene text and returns the film.
+pub fn render_text(
+    text: &str,
+    width: u32,
+    height: u32,
+    antialias: trace::Antialias,
+) -> trace::Film {
+    let scene = load_text(text, width, height);
+    let options = trace::RenderOptions {
+        width,
+        height,
+        antialias,
+        threads: None,
+    };
+    trace::render(&scene, &options).expect("renders").film
+}
