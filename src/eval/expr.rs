@@ -1,7 +1,7 @@
 //! Expression evaluation: POV-Ray's operators, promotion rules, constants and functions.
 
-use super::{unsupported, Evaluator};
 use super::value::{Value, Vector, srgb_decode};
+use super::{Evaluator, unsupported};
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
@@ -31,6 +31,10 @@ impl Evaluator<'_> {
                 }
                 Ok(Value::Vector(Vector::new(&comps)))
             }
+            ExprKind::PlainVector(c, len) => Ok(Value::Vector(Vector {
+                c: *c,
+                len: *len as usize,
+            })),
             ExprKind::Ident(name) => self.ident(name, expr.span),
             ExprKind::Unary(op, operand) => {
                 let v = self.eval(operand)?;
@@ -430,8 +434,15 @@ impl Evaluator<'_> {
                 let m = super::transform::rotation(v3(1)?);
                 return Ok(Value::Vector(Vector::from_vec3(m.transform_point3(v3(0)?))));
             }
-            _ if unsupported::reason(name).is_some() => return Err(self.unknown_word(name, name_span)),
-            _ => return Err(Diagnostic::error(format!("unknown function `{name}`"), name_span)),
+            _ if unsupported::reason(name).is_some() => {
+                return Err(self.unknown_word(name, name_span));
+            }
+            _ => {
+                return Err(Diagnostic::error(
+                    format!("unknown function `{name}`"),
+                    name_span,
+                ));
+            }
         };
         Ok(Value::Float(result))
     }

@@ -5,14 +5,16 @@
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 
 mod expr;
+mod object;
 mod transform;
 mod unsupported;
 mod value;
 
 use crate::diag::{Diagnostic, FileId, SourceMap, Span};
-use crate::ir::{self, Gamma, Rgb, Shape, Texture, Transform};
+use crate::ir::{self, Gamma, Rgb, Texture, Transform};
 use crate::syntax::{self, Node, NodeKind};
 use glam::DVec3;
+pub use object::ObjectValue;
 use std::collections::HashMap;
 use value::{Value, colour5, rgb, to_colour};
 
@@ -34,16 +36,6 @@ impl Default for LoadOptions {
             height: 600,
         }
     }
-}
-
-/// An object while it is being built: its texture may not be attached yet.
-#[derive(Clone, Debug)]
-pub struct ObjectValue {
-    shape: Shape,
-    transform: Option<Transform>,
-    texture: Option<Texture>,
-    no_shadow: bool,
-    inverse: bool,
 }
 
 /// The camera items as written; resolved in POV-Ray's fixed order by [`resolve_camera`].
@@ -226,7 +218,7 @@ impl<'a> Evaluator<'a> {
                 self.background = Rgb::new(c[0], c[1], c[2]) * (1.0 - c[4]);
             }
             NodeKind::GlobalSettings => self.global_settings(node)?,
-            NodeKind::Sphere | NodeKind::Plane | NodeKind::Box | NodeKind::ObjectRef => {
+            _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
                 self.place(object);
             }
@@ -250,9 +242,7 @@ impl<'a> Evaluator<'a> {
     /// The value of a declared item (`#declare X = sphere { … }` and the like).
     fn item_value(&mut self, node: &Node) -> Result<Value> {
         Ok(match node.kind {
-            NodeKind::Sphere | NodeKind::Plane | NodeKind::Box | NodeKind::ObjectRef => {
-                Value::Object(Box::new(self.object(node)?))
-            }
+            _ if object::is_object(node.kind) => Value::Object(Box::new(self.object(node)?)),
             NodeKind::Pigment => {
                 let base = self.default_texture.pigment.clone();
                 Value::Pigment(self.pigment(node, base)?)
@@ -367,113 +357,6 @@ impl<'a> Evaluator<'a> {
         Ok(c)
     }
 
-    fn object(&mut self, node: &Node) -> Result<ObjectValue> {
-        let mut modifiers = &node.children[..];
-        let mut object = match node.kind {
-            NodeKind::Sphere => {
-                let centre = self.vec3(&node.args[0])?;
-                let radius = self.float(&node.args[1])?;
-                self.new_object(Shape::Sphere { centre, radius })
-            }
-            NodeKind::Plane => {
-                let normal = self.vec3(&node.args[0])?;
-                if normal.length_squared() == 0.0 {
-                    return Err(Diagnostic::error(
-                        "plane normal is the zero vector",
-                        node.args[0].span,
-                    ));
-                }
-                let distance = self.float(&node.args[1])?;
-                // POV-Ray normalises the normal first: `plane { <0,2,0>, 1 }` is y = 1.
-                self.new_object(Shape::Plane {
-                    normal: normal.normalize(),
-                    distance,
-                })
-            }
-            NodeKind::Box => {
-                let a = self.vec3(&node.args[0])?;
-                let b = self.vec3(&node.args[1])?;
-                self.new_object(Shape::Box {
-                    min: a.min(b),
-                    max: a.max(b),
-                })
-            }
-            NodeKind::ObjectRef => {
-                let (first, rest) = node.children.split_first().expect("object {} has a body");
-                modifiers = rest;
-                match first.kind {
-                    NodeKind::IdentRef => match self.lookup(first)? {
-                        Value::Object(o) => *o,
-                        other => return Err(expr::type_error("an object", &other, first.span)),
-                    },
-                    _ => self.object(first)?,
-                }
-            }
-            _ => unreachable!("{:?} is not an object", node.kind),
-        };
-        for m in modifiers {
-            self.object_modifier(&mut object, m)?;
-        }
-        Ok(object)
-    }
-
-    fn new_object(&self, shape: Shape) -> ObjectValue {
-        ObjectValue {
-            shape,
-            transform: None,
-            texture: None,
-            no_shadow: false,
-            inverse: false,
-        }
-    }
-
-    fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node) -> Result<()> {
-        match m.kind {
-            NodeKind::Texture => object.texture = Some(self.texture(m)?),
-            NodeKind::Pigment => {
-                let texture = object
-                    .texture
-                    .get_or_insert_with(|| self.default_texture.clone());
-                let base = texture.pigment.clone();
-                let pigment = self.pigment(m, base)?;
-                object.texture.as_mut().expect("just attached").pigment = pigment;
-            }
-            NodeKind::Finish => {
-                let texture = object
-                    .texture
-                    .get_or_insert_with(|| self.default_texture.clone());
-                let base = texture.finish.clone();
-                let finish = self.finish_block(m, base)?;
-                object.texture.as_mut().expect("just attached").finish = finish;
-            }
-            NodeKind::Flag => match m.word.as_str() {
-                "no_shadow" => object.no_shadow = true,
-                "inverse" => object.inverse = !object.inverse,
-                // `hollow` only matters for media, which trace does not render.
-                "hollow" => {}
-                other => return Err(self.unknown_word(other, m.word_span)),
-            },
-            _ if Self::is_transform(m) => {
-                let t = self.transform(m)?;
-                object.transform = Some(object.transform.unwrap_or(Transform::IDENTITY).then(t));
-            }
-            _ => return Err(self.unknown_item(m, "an object")),
-        }
-        Ok(())
-    }
-
-    fn place(&mut self, object: ObjectValue) {
-        self.objects.push(ir::Object {
-            shape: object.shape,
-            transform: object.transform,
-            texture: object
-                .texture
-                .unwrap_or_else(|| self.default_texture.clone()),
-            no_shadow: object.no_shadow,
-            inverse: object.inverse,
-        });
-    }
-
     /// `texture { [Name] pigment {…} finish {…} transforms }`, starting from the default texture.
     fn texture(&mut self, node: &Node) -> Result<Texture> {
         let mut texture = self.default_texture.clone();
@@ -489,9 +372,10 @@ impl<'a> Evaluator<'a> {
                 NodeKind::Finish => {
                     texture.finish = self.finish_block(item, texture.finish.clone())?
                 }
-                // A solid pigment looks the same however the texture is moved.
                 _ if Self::is_transform(item) => {
-                    self.transform(item)?;
+                    let t = self.transform(item)?;
+                    texture.transform =
+                        Some(texture.transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
                 _ => return Err(self.unknown_item(item, "texture")),
             }
@@ -652,10 +536,12 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
     }
     if let Some(target) = c.look_at {
         let (dl, ul, rl) = (direction.length(), up.length(), right.length());
-        let handedness = if up.cross(direction).dot(right) < 0.0 {
-            -1.0
-        } else {
+        // POV-Ray keeps `right` only when (up × direction)·right > 0: zero (e.g. `up z` with the
+        // default direction) mirrors the image, as in POV-Ray.
+        let handedness = if up.cross(direction).dot(right) > 0.0 {
             1.0
+        } else {
+            -1.0
         };
         let d = (target - location).normalize_or_zero();
         if d == DVec3::ZERO {

@@ -6,13 +6,23 @@
 //! Each shape has two phases: `intersect` computes only the distances; `normal` runs once, for
 //! the winning hit.
 
+mod cone;
 mod cuboid;
+mod disc;
+pub mod mesh;
 mod plane;
+mod poly;
 mod sphere;
+mod torus;
+pub mod triangle;
 
+pub use cone::Cone;
 pub use cuboid::Cuboid;
+pub use disc::Disc;
+pub use mesh::TriangleMesh;
 pub use plane::Plane;
 pub use sphere::Sphere;
+pub use torus::Torus;
 
 use glam::{DMat4, DVec3};
 
@@ -66,17 +76,22 @@ impl Ray {
     }
 }
 
-/// Up to two crossings of a ray with a surface, nearest first.
+/// Up to four crossings of a ray with a surface, nearest first.
+///
+/// Each crossing carries a `part` tag that the shape's `normal` uses to tell which of its
+/// surfaces was hit (a cone's side or caps, a mesh's triangle); 0 where a shape has one surface.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Crossings {
-    ts: [f64; 2],
+    ts: [f64; 4],
+    parts: [u32; 4],
     len: usize,
 }
 
 impl Crossings {
     /// No crossing.
     pub const NONE: Crossings = Crossings {
-        ts: [0.0; 2],
+        ts: [0.0; 4],
+        parts: [0; 4],
         len: 0,
     };
 
@@ -84,12 +99,32 @@ impl Crossings {
     pub fn within(ray: &Ray, candidates: &[f64]) -> Crossings {
         let mut c = Crossings::NONE;
         for &t in candidates {
-            if ray.contains(t) && c.len < 2 {
-                c.ts[c.len] = t;
-                c.len += 1;
+            if ray.contains(t) {
+                c.push(t, 0);
             }
         }
         c
+    }
+
+    /// Adds a crossing (callers add them in increasing `t`, or call [`Crossings::sort`]).
+    pub fn push(&mut self, t: f64, part: u32) {
+        if self.len < 4 {
+            self.ts[self.len] = t;
+            self.parts[self.len] = part;
+            self.len += 1;
+        }
+    }
+
+    /// Sorts the crossings by distance.
+    pub fn sort(&mut self) {
+        for i in 1..self.len {
+            let mut j = i;
+            while j > 0 && self.ts[j - 1] > self.ts[j] {
+                self.ts.swap(j - 1, j);
+                self.parts.swap(j - 1, j);
+                j -= 1;
+            }
+        }
     }
 
     /// The distances, nearest first.
@@ -100,6 +135,21 @@ impl Crossings {
     /// The nearest crossing.
     pub fn first(&self) -> Option<f64> {
         self.as_slice().first().copied()
+    }
+
+    /// The nearest crossing with its part tag.
+    pub fn first_part(&self) -> Option<(f64, u32)> {
+        (self.len > 0).then(|| (self.ts[0], self.parts[0]))
+    }
+
+    /// Number of crossings.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Whether there is no crossing.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
     }
 }
 

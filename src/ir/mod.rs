@@ -4,8 +4,9 @@
 //! composed. The parser's evaluation produces it; `scene::build` consumes it. It knows nothing
 //! of pest or of rendering state. Its `Debug` output is what the parse snapshots record.
 
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, Vec3};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;
@@ -137,6 +138,81 @@ pub enum Shape {
         /// Greatest corner.
         max: DVec3,
     },
+    /// `cylinder { base, cap, radius [open] }` and `cone { base, r0, cap, r1 [open] }`: a
+    /// truncated cone whose radius goes linearly from `base_radius` to `cap_radius` (equal radii
+    /// make a cylinder). A zero-radius end has no cap.
+    Cone {
+        /// Centre of the first end.
+        base: DVec3,
+        /// Radius there.
+        base_radius: f64,
+        /// Centre of the second end.
+        cap: DVec3,
+        /// Radius there.
+        cap_radius: f64,
+        /// `open`: no end caps.
+        open: bool,
+    },
+    /// `disc { centre, normal, radius [, hole_radius] }`: flat, two-sided.
+    Disc {
+        /// Centre.
+        centre: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Outer radius.
+        radius: f64,
+        /// Radius of the hole (0 for none).
+        hole_radius: f64,
+    },
+    /// `torus { major, minor }`: around the y axis, in the x-z plane.
+    Torus {
+        /// Radius of the centre circle.
+        major: f64,
+        /// Radius of the tube.
+        minor: f64,
+    },
+    /// `triangle` / `smooth_triangle`, and every mesh: shared between instances.
+    Mesh(Arc<Mesh>),
+}
+
+/// A triangle mesh (`mesh`, `mesh2`, or a single `triangle`/`smooth_triangle`). Vertices and
+/// normals are stored as 32-bit floats, as in POV-Ray.
+#[derive(Clone, PartialEq, Serialize, Default)]
+pub struct Mesh {
+    /// Vertex positions.
+    pub vertices: Vec<Vec3>,
+    /// Vertex normals (unit length); empty for a flat mesh.
+    pub normals: Vec<Vec3>,
+    /// Triangles as indices into `vertices`.
+    pub triangles: Vec<[u32; 3]>,
+    /// Per triangle, indices into `normals`; empty for a flat mesh. A triangle whose three
+    /// normal indices are `u32::MAX` is flat.
+    pub normal_indices: Vec<[u32; 3]>,
+    /// `inside_vector`: the direction used for inside tests, if given.
+    pub inside_vector: Option<DVec3>,
+}
+
+/// The marker for a flat triangle in [`Mesh::normal_indices`].
+pub const FLAT: [u32; 3] = [u32::MAX; 3];
+
+impl std::fmt::Debug for Mesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // Large meshes would swamp a snapshot: show the sizes and a checksum of the data.
+        let mut sum = 0.0f64;
+        for (i, v) in self.vertices.iter().enumerate() {
+            sum += (i as f64 + 1.0) * (v.x as f64 + 2.0 * v.y as f64 + 3.0 * v.z as f64);
+        }
+        let index_sum: u64 = self.triangles.iter().flatten().map(|&i| i as u64).sum();
+        let smooth = self.normal_indices.iter().filter(|n| **n != FLAT).count();
+        f.debug_struct("Mesh")
+            .field("vertices", &self.vertices.len())
+            .field("triangles", &self.triangles.len())
+            .field("smooth_triangles", &smooth)
+            .field("vertex_checksum", &format_args!("{sum:.4}"))
+            .field("index_checksum", &index_sum)
+            .field("inside_vector", &self.inside_vector)
+            .finish()
+    }
 }
 
 /// An affine transformation, composed from a list of `translate`/`rotate`/`scale`/`matrix`.
@@ -176,6 +252,10 @@ pub struct Texture {
     pub pigment: Pigment,
     /// How light interacts with the surface.
     pub finish: Finish,
+    /// World from texture space: the transformations applied after the texture was attached
+    /// (POV-Ray moves a texture with its object only if it was attached first). `None` is the
+    /// identity.
+    pub transform: Option<Transform>,
 }
 
 /// Pigments.
@@ -278,6 +358,7 @@ impl Default for Texture {
         Texture {
             pigment: Pigment::Solid(Colour::default()),
             finish: Finish::default(),
+            transform: None,
         }
     }
 }

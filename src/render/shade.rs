@@ -4,6 +4,9 @@ use crate::geometry::Ray;
 use crate::scene::{Material, Rgb, Scene, SurfaceHit};
 use glam::DVec3;
 
+/// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
+const MAX_DISTANCE: f64 = 1e7;
+
 /// POV-Ray ignores a light whose cosine with the normal is below this.
 const MIN_LIGHT_COSINE: f64 = 1e-10;
 
@@ -64,6 +67,10 @@ impl<'a> Tracer<'a> {
         if level > self.scene.max_trace_level || weight < self.scene.adc_bailout {
             return Rgb::ZERO;
         }
+        // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
+        let mut ray = *ray;
+        ray.tmax = ray.tmax.min(MAX_DISTANCE);
+        let ray = &ray;
         let Some(hit) = self.scene.intersect(ray) else {
             return self.scene.background;
         };
@@ -166,7 +173,15 @@ impl<'a> Tracer<'a> {
             let r = (d - 2.0 * d.dot(n) * n).normalize();
             let reflected = scene.spawn(hit, ray.origin, r);
             self.counts.reflected += 1;
-            let w = weight * reflectivity.max_element();
+            // POV-Ray weighs a plain reflection by its largest possible value (max of min and
+            // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
+            let r = &finish.reflection;
+            let bound = if r.fresnel {
+                reflectivity.max_element()
+            } else {
+                r.max.max_element().max(r.min.max_element())
+            };
+            let w = weight * bound;
             let mut seen = self.trace(&reflected, level + 1, w);
             if finish.reflection.exponent != 1.0 {
                 seen = seen.max(DVec3::ZERO).powf(1.0 / finish.reflection.exponent);

@@ -3,9 +3,13 @@
 //! Transformations are composed and inverted here, once; materials are resolved and stored
 //! once per distinct value; lights are collected. The renderer sees only this module's types.
 
-use crate::geometry::{Crossings, Cuboid, Plane, Ray, Sphere, offset_origin};
+use crate::geometry::{
+    Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, offset_origin,
+};
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
+use std::collections::HashMap;
+use std::sync::Arc;
 
 pub use crate::ir::{Colour, Finish, Gamma, Projection, Reflection, Rgb};
 
@@ -88,7 +92,7 @@ impl Material {
 }
 
 /// Geometry, in object space.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub enum Shape {
     /// Sphere.
     Sphere(Sphere),
@@ -96,6 +100,14 @@ pub enum Shape {
     Plane(Plane),
     /// Axis-aligned box.
     Box(Cuboid),
+    /// Cylinder or cone, in its canonical frame (the object transform includes the frame).
+    Cone(Cone),
+    /// Disc.
+    Disc(Disc),
+    /// Torus.
+    Torus(Torus),
+    /// Triangle mesh, shared between instances.
+    Mesh(Arc<TriangleMesh>),
 }
 
 impl Shape {
@@ -104,15 +116,60 @@ impl Shape {
             Shape::Sphere(s) => s.intersect(ray),
             Shape::Plane(p) => p.intersect(ray),
             Shape::Box(b) => b.intersect(ray),
+            Shape::Cone(c) => c.intersect(ray),
+            Shape::Disc(d) => d.intersect(ray),
+            Shape::Torus(t) => t.intersect(ray),
+            Shape::Mesh(m) => m.intersect(ray),
         }
     }
 
-    fn normal(&self, p: DVec3) -> DVec3 {
+    /// Number of surface crossings along the ray, for shadow rays.
+    fn crossing_count(&self, ray: &Ray) -> usize {
         match self {
+            Shape::Mesh(m) => m.count_crossings(ray),
+            other => other.intersect(ray).len(),
+        }
+    }
+
+    /// Whether anything of the shape lies on the ray.
+    fn occludes(&self, ray: &Ray) -> bool {
+        match self {
+            Shape::Mesh(m) => m.occluded(ray),
+            other => !other.intersect(ray).is_empty(),
+        }
+    }
+
+    /// (shading normal, geometric normal) in object space, not necessarily unit length.
+    fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
+        let n = match self {
             Shape::Sphere(s) => s.normal(p),
             Shape::Plane(pl) => pl.normal(),
             Shape::Box(b) => b.normal(p),
-        }
+            Shape::Cone(c) => c.normal(p, part),
+            Shape::Disc(d) => d.normal(),
+            Shape::Torus(t) => t.normal(p),
+            Shape::Mesh(m) => return (m.normal(p, part), m.geometric_normal(part)),
+        };
+        (n, n)
+    }
+
+    /// Object-space bounding box, `None` when unbounded.
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some(match self {
+            Shape::Sphere(s) => (s.centre - s.radius.abs(), s.centre + s.radius.abs()),
+            Shape::Plane(_) => return None,
+            Shape::Box(b) => (b.min, b.max),
+            Shape::Cone(c) => {
+                let r = c.r0.max(c.r1);
+                (DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0))
+            }
+            Shape::Disc(d) => (d.centre - d.radius, d.centre + d.radius),
+            Shape::Torus(t) => {
+                let (a, b) = (t.major + t.minor, t.minor);
+                (DVec3::new(-a, -b, -a), DVec3::new(a, b, a))
+            }
+            Shape::Mesh(m) => m.bounds,
+        })
     }
 }
 
@@ -139,10 +196,12 @@ impl ObjectTransform {
 }
 
 /// A placed object.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
+    /// World-space bounding box (`None` for unbounded shapes).
+    pub bounds: Option<(DVec3, DVec3)>,
     /// `None` is the identity (the shape is in world space).
     pub transform: Option<ObjectTransform>,
     /// Its material.
@@ -158,6 +217,8 @@ pub struct Hit {
     pub t: f64,
     /// The object hit.
     pub object: ObjectId,
+    /// Which part of the shape (a cone's cap, a mesh's triangle).
+    pub part: u32,
 }
 
 /// Surface details at a hit, computed once for the winning hit.
@@ -165,8 +226,10 @@ pub struct Hit {
 pub struct SurfaceHit {
     /// World-space point.
     pub point: DVec3,
-    /// Outward unit normal in world space.
+    /// Unit shading normal in world space (interpolated on smooth triangles).
     pub normal: DVec3,
+    /// Unit geometric normal in world space (same side as `normal`).
+    pub geometric_normal: DVec3,
     /// The object's material.
     pub material: MaterialId,
 }
@@ -175,6 +238,7 @@ impl Scene {
     /// Builds the render-ready scene from the IR.
     pub fn build(ir: &ir::Scene) -> Scene {
         let mut materials: Vec<Material> = Vec::new();
+        let mut meshes: HashMap<*const ir::Mesh, Arc<TriangleMesh>> = HashMap::new();
         let objects = ir
             .objects
             .iter()
@@ -191,31 +255,14 @@ impl Scene {
                         materials.len() - 1
                     }
                 };
-                let mut shape = match &o.shape {
-                    ir::Shape::Sphere { centre, radius } => Shape::Sphere(Sphere {
-                        centre: *centre,
-                        radius: *radius,
-                    }),
-                    ir::Shape::Plane { normal, distance } => Shape::Plane(Plane {
-                        normal: *normal,
-                        distance: *distance,
-                    }),
-                    ir::Shape::Box { min, max } => Shape::Box(Cuboid {
-                        min: *min,
-                        max: *max,
-                    }),
-                };
-                let mut transform = o.transform.map(|t| t.matrix);
-                // Fold translations and uniform scales of spheres into the shape itself, so
-                // that the common case needs no matrix per ray.
-                if let (Shape::Sphere(s), Some(m)) = (&mut shape, transform) {
-                    if let Some((centre, radius)) = similarity_sphere(s, &m) {
-                        *s = Sphere { centre, radius };
-                        transform = None;
-                    }
-                }
+                let (shape, transform) =
+                    build_shape(&o.shape, o.transform.map(|t| t.matrix), &mut meshes);
+                let bounds = shape
+                    .bounds()
+                    .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()));
                 Object {
                     shape,
+                    bounds,
                     transform: transform.map(ObjectTransform::new),
                     material: MaterialId(id as u32),
                     no_shadow: o.no_shadow,
@@ -270,12 +317,17 @@ impl Scene {
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
+        let inv = ray.direction.recip();
         for (i, object) in self.objects.iter().enumerate() {
-            if let Some(t) = Self::crossings(object, &ray).first() {
+            if !may_hit(object.bounds, &ray, inv) {
+                continue;
+            }
+            if let Some((t, part)) = Self::crossings(object, &ray).first_part() {
                 ray.tmax = t;
                 best = Some(Hit {
                     t,
                     object: ObjectId(i as u32),
+                    part,
                 });
             }
         }
@@ -286,16 +338,23 @@ impl Scene {
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit {
         let object = &self.objects[hit.object.0 as usize];
         let point = ray.at(hit.t);
-        let normal = match &object.transform {
-            None => object.shape.normal(point),
+        let (normal, geometric) = match &object.transform {
+            None => object.shape.normals(point, hit.part),
             Some(t) => {
                 let local = t.object_from_world.transform_point3(point);
-                (t.normal_to_world * object.shape.normal(local)).normalize()
+                let (n, g) = object.shape.normals(local, hit.part);
+                (t.normal_to_world * n, t.normal_to_world * g)
             }
         };
+        let normal = normal.normalize();
+        let mut geometric_normal = geometric.normalize();
+        if geometric_normal.dot(normal) < 0.0 {
+            geometric_normal = -geometric_normal;
+        }
         SurfaceHit {
             point,
             normal,
+            geometric_normal,
             material: object.material,
         }
     }
@@ -305,16 +364,23 @@ impl Scene {
     /// objects (POV-Ray filters at each surface crossing). Objects with `no_shadow` are skipped.
     pub fn transmittance(&self, ray: &Ray) -> Rgb {
         let mut through = Rgb::ONE;
+        let inv = ray.direction.recip();
         for object in self.objects.iter().filter(|o| !o.no_shadow) {
-            let crossings = Self::crossings(object, ray);
-            if crossings.as_slice().is_empty() {
+            if !may_hit(object.bounds, ray, inv) {
                 continue;
             }
+            let local = match &object.transform {
+                None => *ray,
+                Some(t) => ray.transformed(&t.object_from_world),
+            };
             let material = self.material(object.material);
             if !material.is_transparent() {
-                return Rgb::ZERO;
+                if object.shape.occludes(&local) {
+                    return Rgb::ZERO;
+                }
+                continue;
             }
-            for _ in crossings.as_slice() {
+            for _ in 0..object.shape.crossing_count(&local) {
                 through *= material.filter_colour();
             }
             if through == Rgb::ZERO {
@@ -327,7 +393,12 @@ impl Scene {
     /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
     pub fn spawn(&self, hit: &SurfaceHit, from: DVec3, dir: DVec3) -> Ray {
         Ray::new(
-            offset_origin(hit.point, hit.normal, dir, from.abs().max_element()),
+            offset_origin(
+                hit.point,
+                hit.geometric_normal,
+                dir,
+                from.abs().max_element(),
+            ),
             dir,
         )
     }
@@ -339,6 +410,130 @@ fn similarity_sphere(s: &Sphere, m: &DMat4) -> Option<(DVec3, f64)> {
     let k = linear.x_axis.x;
     let is_uniform_scale = k > 0.0 && linear == DMat3::from_diagonal(DVec3::splat(k));
     is_uniform_scale.then(|| (m.transform_point3(s.centre), s.radius * k))
+}
+
+/// Whether the ray may meet a box (slab test); unbounded objects always may.
+fn may_hit(bounds: Option<(DVec3, DVec3)>, ray: &Ray, inv: DVec3) -> bool {
+    let Some((lo, hi)) = bounds else { return true };
+    let t0 = (lo - ray.origin) * inv;
+    let t1 = (hi - ray.origin) * inv;
+    let near = t0.min(t1).max_element().max(ray.tmin);
+    let far = t0.max(t1).min_element().min(ray.tmax);
+    // NaN (origin on a slab plane with a zero direction component) must not reject.
+    !(near > far)
+}
+
+/// The world box around an object-space box (its eight corners transformed), padded a little.
+fn world_bounds(lo: DVec3, hi: DVec3, m: Option<&DMat4>) -> (DVec3, DVec3) {
+    let (mut wlo, mut whi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+    for i in 0..8 {
+        let c = DVec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        let w = m.map_or(c, |m| m.transform_point3(c));
+        wlo = wlo.min(w);
+        whi = whi.max(w);
+    }
+    let pad = 1e-9 * (wlo.abs().max(whi.abs()).max_element() + (whi - wlo).max_element());
+    (wlo - pad, whi + pad)
+}
+
+/// The render shape for an IR shape, with its (possibly extended) object transform. Meshes
+/// are built once per distinct IR mesh and shared.
+fn build_shape(
+    shape: &ir::Shape,
+    transform: Option<DMat4>,
+    meshes: &mut HashMap<*const ir::Mesh, Arc<TriangleMesh>>,
+) -> (Shape, Option<DMat4>) {
+    match shape {
+        ir::Shape::Sphere { centre, radius } => {
+            let s = Sphere {
+                centre: *centre,
+                radius: *radius,
+            };
+            // Fold translations and uniform scales into the sphere: no matrix per ray.
+            match transform.map(|m| similarity_sphere(&s, &m)) {
+                Some(Some((centre, radius))) => (Shape::Sphere(Sphere { centre, radius }), None),
+                _ => (Shape::Sphere(s), transform),
+            }
+        }
+        ir::Shape::Plane { normal, distance } => (
+            Shape::Plane(Plane {
+                normal: *normal,
+                distance: *distance,
+            }),
+            transform,
+        ),
+        ir::Shape::Box { min, max } => (
+            Shape::Box(Cuboid {
+                min: *min,
+                max: *max,
+            }),
+            transform,
+        ),
+        ir::Shape::Cone {
+            base,
+            base_radius,
+            cap,
+            cap_radius,
+            open,
+        } => {
+            // Canonical frame: x, y unit vectors across the axis, z the axis from base to cap.
+            let axis = *cap - *base;
+            let w = axis.normalize();
+            let u = w.any_orthonormal_vector();
+            let v = w.cross(u);
+            let frame = DMat4::from_cols(
+                u.extend(0.0),
+                v.extend(0.0),
+                axis.extend(0.0),
+                base.extend(1.0),
+            );
+            let cone = Cone {
+                r0: *base_radius,
+                r1: *cap_radius,
+                open: *open,
+            };
+            (
+                Shape::Cone(cone),
+                Some(transform.unwrap_or(DMat4::IDENTITY) * frame),
+            )
+        }
+        ir::Shape::Disc {
+            centre,
+            normal,
+            radius,
+            hole_radius,
+        } => (
+            Shape::Disc(Disc {
+                centre: *centre,
+                normal: *normal,
+                radius: *radius,
+                hole_radius: *hole_radius,
+            }),
+            transform,
+        ),
+        ir::Shape::Torus { major, minor } => (
+            Shape::Torus(Torus {
+                major: *major,
+                minor: *minor,
+            }),
+            transform,
+        ),
+        ir::Shape::Mesh(mesh) => {
+            let built = meshes.entry(Arc::as_ptr(mesh)).or_insert_with(|| {
+                Arc::new(TriangleMesh::new(
+                    mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
+                    mesh.triangles.clone(),
+                    mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
+                    mesh.normal_indices.clone(),
+                ))
+            });
+            (Shape::Mesh(built.clone()), transform)
+        }
+    }
 }
 
 #[cfg(test)]

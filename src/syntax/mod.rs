@@ -48,6 +48,20 @@ pub enum NodeKind {
     Plane,
     Box,
     ObjectRef,
+    Cylinder,
+    Cone,
+    Disc,
+    Torus,
+    Triangle,
+    SmoothTriangle,
+    Union,
+    Mesh,
+    Mesh2,
+    InsideVector,
+    VertexVectors,
+    NormalVectors,
+    FaceIndices,
+    NormalIndices,
     Flag,
     // Transformations.
     Translate,
@@ -166,11 +180,15 @@ pub enum ExprKind {
     Member(Box<Expr>, String, Span),
     /// `color rgb <...> filter 0.5`.
     Colour(Vec<ColourPart>),
+    /// A vector of plain number literals (`<1, -2.5, 3>`), read without building a tree: the
+    /// bulk of a large mesh. `len` components (2..=5) are used.
+    PlainVector([f64; 5], u8),
 }
 
 /// Whether `word` is one of the keywords of trace's grammar.
 pub fn is_keyword(word: &str) -> bool {
-    SceneParser::parse(Rule::keyword, word).is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
+    SceneParser::parse(Rule::keyword, word)
+        .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
 }
 
 /// Parses a whole scene file into its top-level statements.
@@ -236,7 +254,9 @@ fn describe(rule: Rule) -> Option<&'static str> {
         version | declare | default_block | unknown_directive => "a directive",
         unknown_item | unknown_tail | balanced | leftover => "a statement",
         semicolon => "`;`",
-        flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => "an object modifier",
+        flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => {
+            "an object modifier"
+        }
         rbrace => "`}`",
         _ => return None,
     })
@@ -282,6 +302,20 @@ impl Lower {
             Rule::plane => NodeKind::Plane,
             Rule::box_shape => NodeKind::Box,
             Rule::object_ref => NodeKind::ObjectRef,
+            Rule::cylinder => NodeKind::Cylinder,
+            Rule::cone => NodeKind::Cone,
+            Rule::disc => NodeKind::Disc,
+            Rule::torus => NodeKind::Torus,
+            Rule::triangle => NodeKind::Triangle,
+            Rule::smooth_triangle => NodeKind::SmoothTriangle,
+            Rule::union => NodeKind::Union,
+            Rule::mesh => NodeKind::Mesh,
+            Rule::mesh2 => NodeKind::Mesh2,
+            Rule::inside_vector => NodeKind::InsideVector,
+            Rule::vertex_vectors => NodeKind::VertexVectors,
+            Rule::normal_vectors => NodeKind::NormalVectors,
+            Rule::face_indices => NodeKind::FaceIndices,
+            Rule::normal_indices => NodeKind::NormalIndices,
             Rule::flag => NodeKind::Flag,
             Rule::translate => NodeKind::Translate,
             Rule::rotate => NodeKind::Rotate,
@@ -326,7 +360,10 @@ impl Lower {
         if rule == Rule::leftover {
             // Named by its first token.
             let text = pair.as_str();
-            let len = text.find(|c: char| c.is_whitespace() || c == '{').unwrap_or(text.len()).max(1);
+            let len = text
+                .find(|c: char| c.is_whitespace() || c == '{')
+                .unwrap_or(text.len())
+                .max(1);
             node.word = text[..len].to_string();
             node.word_span = Span::new(self.file, span.start as usize, span.start as usize + len);
             return node;
@@ -349,7 +386,11 @@ impl Lower {
                 }
             } else if !matches!(
                 r,
-                Rule::unknown_tail | Rule::skip_rest | Rule::balanced | Rule::semicolon | Rule::rbrace
+                Rule::unknown_tail
+                    | Rule::skip_rest
+                    | Rule::balanced
+                    | Rule::semicolon
+                    | Rule::rbrace
             ) {
                 // (The body of something unsupported is dropped: evaluation stops at its word.)
                 node.children.push(self.node(inner));
@@ -447,6 +488,33 @@ impl Lower {
             Rule::paren | Rule::colour_base => {
                 self.expr(pair.into_inner().next().expect("parenthesised expression"))
             }
+            Rule::plain_vector => {
+                let text = pair.as_str();
+                let numbers: Vec<f64> = text[1..text.len() - 1]
+                    .split(',')
+                    .map(|n| n.trim().parse().unwrap_or(f64::NAN))
+                    .collect();
+                if numbers.len() <= 5 {
+                    let mut c = [0.0; 5];
+                    c[..numbers.len()].copy_from_slice(&numbers);
+                    Expr {
+                        kind: ExprKind::PlainVector(c, numbers.len() as u8),
+                        span,
+                    }
+                } else {
+                    let items = numbers
+                        .into_iter()
+                        .map(|n| Expr {
+                            kind: ExprKind::Number(n),
+                            span,
+                        })
+                        .collect();
+                    Expr {
+                        kind: ExprKind::Vector(items),
+                        span,
+                    }
+                }
+            }
             Rule::number => Expr {
                 kind: ExprKind::Number(pair.as_str().parse().unwrap_or(f64::NAN)),
                 span,
@@ -499,7 +567,7 @@ impl Lower {
 }
 
 fn is_expr(rule: Rule) -> bool {
-    matches!(rule, Rule::expr | Rule::sum)
+    matches!(rule, Rule::expr | Rule::sum | Rule::plain_vector)
 }
 
 fn is_word(rule: Rule) -> bool {
@@ -562,6 +630,22 @@ fn is_word(rule: Rule) -> bool {
             | kw_translate
             | kw_up
             | kw_version
+            | kw_cone
+            | kw_cylinder
+            | kw_disc
+            | kw_face_indices
+            | kw_inside_vector
+            | kw_mesh
+            | kw_mesh2
+            | kw_normal_indices
+            | kw_normal_vectors
+            | kw_open
+            | kw_smooth_triangle
+            | kw_sturm
+            | kw_torus
+            | kw_triangle
+            | kw_union
+            | kw_vertex_vectors
     )
 }
 

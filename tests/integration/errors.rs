@@ -1,6 +1,5 @@
 //! Every bad scene in tests/scenes/err gives a located, readable message (snapshotted).
 
-
 #[test]
 fn bad_scenes_give_located_messages() {
     insta::glob!("../scenes/err", "*.rt", |path| {

@@ -1,0 +1,592 @@
+//! Objects: shapes, meshes, `union` groups, `object { Name }` instances and their modifiers.
+//!
+//! A union is flattened into its members (trace gives `union` its grouping meaning only);
+//! modifiers on the group apply to every member, and the group's texture to the members that
+//! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
+
+use super::{Evaluator, Result, Value, expr::type_error};
+use crate::diag::{Diagnostic, Span};
+use crate::ir::{self, FLAT, Mesh, Shape, Texture, Transform};
+use crate::syntax::{Expr, Node, NodeKind};
+use glam::DVec3;
+use std::sync::Arc;
+
+/// One shape of an object under construction.
+#[derive(Clone, Debug)]
+struct Part {
+    shape: Shape,
+    transform: Option<Transform>,
+    /// The member's own texture (for a union member), if any.
+    texture: Option<Texture>,
+    inverse: bool,
+    no_shadow: bool,
+}
+
+/// An object while it is being built: one shape, or the flattened members of a union.
+#[derive(Clone, Debug)]
+pub struct ObjectValue {
+    parts: Vec<Part>,
+    /// The object's (or group's) texture, applied to parts without their own.
+    texture: Option<Texture>,
+}
+
+/// Whether a node is an object statement.
+pub(super) fn is_object(kind: NodeKind) -> bool {
+    use NodeKind::*;
+    matches!(
+        kind,
+        Sphere
+            | Plane
+            | Box
+            | Cylinder
+            | Cone
+            | Disc
+            | Torus
+            | Triangle
+            | SmoothTriangle
+            | Mesh
+            | Mesh2
+            | Union
+            | ObjectRef
+    )
+}
+
+fn compose(t: Option<Transform>, next: Transform) -> Option<Transform> {
+    Some(t.unwrap_or(Transform::IDENTITY).then(next))
+}
+
+impl ObjectValue {
+    fn single(shape: Shape) -> ObjectValue {
+        ObjectValue {
+            parts: vec![Part {
+                shape,
+                transform: None,
+                texture: None,
+                inverse: false,
+                no_shadow: false,
+            }],
+            texture: None,
+        }
+    }
+
+    fn empty() -> ObjectValue {
+        ObjectValue {
+            parts: Vec::new(),
+            texture: None,
+        }
+    }
+
+    /// Applies a transformation to the geometry and to every texture already attached.
+    fn transform(&mut self, t: Transform) {
+        for part in &mut self.parts {
+            part.transform = compose(part.transform, t);
+            if let Some(tex) = &mut part.texture {
+                tex.transform = compose(tex.transform, t);
+            }
+        }
+        if let Some(tex) = &mut self.texture {
+            tex.transform = compose(tex.transform, t);
+        }
+    }
+}
+
+impl Evaluator<'_> {
+    /// Evaluates an object statement with its modifiers.
+    pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
+        let mut modifiers = &node.children[..];
+        let mut object = match node.kind {
+            NodeKind::Sphere => {
+                let centre = self.vec3(&node.args[0])?;
+                let radius = self.float(&node.args[1])?;
+                ObjectValue::single(Shape::Sphere { centre, radius })
+            }
+            NodeKind::Plane => {
+                let normal = self.nonzero(&node.args[0], "plane normal")?;
+                let distance = self.float(&node.args[1])?;
+                // POV-Ray normalises the normal first: `plane { <0,2,0>, 1 }` is y = 1.
+                ObjectValue::single(Shape::Plane {
+                    normal: normal.normalize(),
+                    distance,
+                })
+            }
+            NodeKind::Box => {
+                let a = self.vec3(&node.args[0])?;
+                let b = self.vec3(&node.args[1])?;
+                ObjectValue::single(Shape::Box {
+                    min: a.min(b),
+                    max: a.max(b),
+                })
+            }
+            NodeKind::Cylinder | NodeKind::Cone => {
+                let is_cone = node.kind == NodeKind::Cone;
+                let a = &node.args;
+                let (base, base_radius, cap, cap_radius) = if is_cone {
+                    (
+                        self.vec3(&a[0])?,
+                        self.float(&a[1])?,
+                        self.vec3(&a[2])?,
+                        self.float(&a[3])?,
+                    )
+                } else {
+                    let (base, cap, radius) =
+                        (self.vec3(&a[0])?, self.vec3(&a[1])?, self.float(&a[2])?);
+                    (base, radius, cap, radius)
+                };
+                if base == cap {
+                    return Err(Diagnostic::error(
+                        "the two ends are the same point",
+                        node.word_span,
+                    ));
+                }
+                if base_radius == 0.0 && cap_radius == 0.0 {
+                    return Err(Diagnostic::error("both radii are zero", node.word_span));
+                }
+                let open = modifiers
+                    .iter()
+                    .any(|m| m.kind == NodeKind::Flag && m.word == "open");
+                ObjectValue::single(Shape::Cone {
+                    base,
+                    base_radius,
+                    cap,
+                    cap_radius,
+                    open,
+                })
+            }
+            NodeKind::Disc => {
+                let centre = self.vec3(&node.args[0])?;
+                let normal = self.nonzero(&node.args[1], "disc normal")?.normalize();
+                let radius = self.float(&node.args[2])?;
+                let hole_radius = match node.args.get(3) {
+                    Some(e) => self.float(e)?,
+                    None => 0.0,
+                };
+                ObjectValue::single(Shape::Disc {
+                    centre,
+                    normal,
+                    radius,
+                    hole_radius,
+                })
+            }
+            NodeKind::Torus => {
+                let major = self.float(&node.args[0])?;
+                let minor = self.float(&node.args[1])?;
+                if minor <= 0.0 || major < 0.0 {
+                    return Err(Diagnostic::error(
+                        "torus radii must be positive",
+                        node.args[1].span,
+                    ));
+                }
+                ObjectValue::single(Shape::Torus { major, minor })
+            }
+            NodeKind::Triangle | NodeKind::SmoothTriangle => {
+                let mut mesh = Mesh::default();
+                self.add_triangle(&mut mesh, node)?;
+                if mesh.triangles.is_empty() {
+                    ObjectValue::empty()
+                } else {
+                    ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+                }
+            }
+            NodeKind::Mesh => {
+                let mut mesh = Mesh::default();
+                let split = node
+                    .children
+                    .iter()
+                    .position(|c| !matches!(c.kind, NodeKind::Triangle | NodeKind::SmoothTriangle));
+                let (triangles, rest) =
+                    node.children.split_at(split.unwrap_or(node.children.len()));
+                for t in triangles {
+                    if let Some(m) = t.children.first() {
+                        return Err(Diagnostic::error(
+                            "unsupported: modifiers on a triangle inside a mesh (not supported by trace yet)",
+                            m.span,
+                        ));
+                    }
+                    self.add_triangle(&mut mesh, t)?;
+                }
+                modifiers = self.inside_vector(&mut mesh, rest)?;
+                if mesh.triangles.is_empty() {
+                    self.warn(Diagnostic::warning(
+                        "mesh without (valid) triangles: nothing to render",
+                        node.word_span,
+                    ));
+                    ObjectValue::empty()
+                } else {
+                    ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+                }
+            }
+            NodeKind::Mesh2 => {
+                let (mesh, rest) = self.mesh2(node)?;
+                modifiers = rest;
+                ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+            }
+            NodeKind::Union => {
+                let split = node
+                    .children
+                    .iter()
+                    .position(|c| !is_object(c.kind))
+                    .unwrap_or(node.children.len());
+                let (members, rest) = node.children.split_at(split);
+                if let Some(late) = rest.iter().find(|c| is_object(c.kind)) {
+                    return Err(Diagnostic::error(
+                        "union members must come before the union's modifiers",
+                        late.word_span,
+                    ));
+                }
+                modifiers = rest;
+                let mut group = ObjectValue::empty();
+                for member in members {
+                    let m = self.object(member)?;
+                    for mut part in m.parts {
+                        part.texture = part.texture.or_else(|| m.texture.clone());
+                        group.parts.push(part);
+                    }
+                }
+                group
+            }
+            NodeKind::ObjectRef => {
+                let (first, rest) = node.children.split_first().expect("object {} has a body");
+                modifiers = rest;
+                match first.kind {
+                    NodeKind::IdentRef => match self.lookup(first)? {
+                        Value::Object(o) => *o,
+                        other => return Err(type_error("an object", &other, first.span)),
+                    },
+                    _ => self.object(first)?,
+                }
+            }
+            _ => unreachable!("{:?} is not an object", node.kind),
+        };
+        let is_cone = matches!(node.kind, NodeKind::Cylinder | NodeKind::Cone);
+        for m in modifiers {
+            self.object_modifier(&mut object, m, is_cone)?;
+        }
+        Ok(object)
+    }
+
+    fn nonzero(&mut self, e: &Expr, what: &str) -> Result<DVec3> {
+        let v = self.vec3(e)?;
+        if v.length_squared() == 0.0 {
+            return Err(Diagnostic::error(
+                format!("{what} is the zero vector"),
+                e.span,
+            ));
+        }
+        Ok(v)
+    }
+
+    fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, is_cone: bool) -> Result<()> {
+        match m.kind {
+            NodeKind::Texture => {
+                let texture = self.texture(m)?;
+                // A second texture is layered on top of the first in POV-Ray. An opaque top
+                // layer hides the one below, so replacing it is exact; a see-through one is not.
+                let ir::Pigment::Solid(c) = &texture.pigment;
+                if object.texture.is_some() && (c.filter != 0.0 || c.transmit != 0.0) {
+                    return Err(Diagnostic::error(
+                        "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",
+                        m.word_span,
+                    ));
+                }
+                object.texture = Some(texture);
+            }
+            NodeKind::Pigment | NodeKind::Finish => {
+                let mut texture = object
+                    .texture
+                    .take()
+                    .unwrap_or_else(|| self.default_texture.clone());
+                if m.kind == NodeKind::Pigment {
+                    texture.pigment = self.pigment(m, texture.pigment.clone())?;
+                } else {
+                    texture.finish = self.finish_block(m, texture.finish.clone())?;
+                }
+                object.texture = Some(texture);
+            }
+            NodeKind::Flag => match m.word.as_str() {
+                "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
+                "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),
+                // `hollow` only matters for media, which trace does not render; `sturm` picks
+                // POV-Ray's slower root solver, and trace's torus solver is always robust.
+                "hollow" | "sturm" => {}
+                "open" if is_cone => {}
+                "open" => {
+                    return Err(Diagnostic::error(
+                        "`open` applies only to cylinder and cone",
+                        m.word_span,
+                    ));
+                }
+                other => return Err(self.unknown_word(other, m.word_span)),
+            },
+            _ if Self::is_transform(m) => {
+                let t = self.transform(m)?;
+                object.transform(t);
+            }
+            _ => return Err(self.unknown_item(m, "an object")),
+        }
+        Ok(())
+    }
+
+    /// Adds the object's parts to the scene.
+    pub(super) fn place(&mut self, object: ObjectValue) {
+        for part in object.parts {
+            let texture = part
+                .texture
+                .or_else(|| object.texture.clone())
+                .unwrap_or_else(|| self.default_texture.clone());
+            self.objects.push(ir::Object {
+                shape: part.shape,
+                transform: part.transform,
+                texture,
+                no_shadow: part.no_shadow,
+                inverse: part.inverse,
+            });
+        }
+    }
+
+    /// Appends a `triangle` or `smooth_triangle` node to a mesh (a degenerate one is dropped
+    /// with a warning, as POV-Ray does).
+    fn add_triangle(&mut self, mesh: &mut Mesh, node: &Node) -> Result<()> {
+        let smooth = node.kind == NodeKind::SmoothTriangle;
+        let step = if smooth { 2 } else { 1 };
+        let mut p = [DVec3::ZERO; 3];
+        let mut n = [DVec3::ZERO; 3];
+        for i in 0..3 {
+            p[i] = self.vec3(&node.args[i * step])?;
+            if smooth {
+                n[i] = self.vec3(&node.args[i * step + 1])?;
+            }
+        }
+        let normals = if smooth { Some(n) } else { None };
+        let Some(normal_indices) = self.triangle_normals(mesh, &p, normals, node.word_span) else {
+            return Ok(());
+        };
+        let base = mesh.vertices.len() as u32;
+        mesh.vertices.extend(p.iter().map(|v| v.as_vec3()));
+        mesh.triangles.push([base, base + 1, base + 2]);
+        if normal_indices != FLAT || !mesh.normal_indices.is_empty() {
+            // Keep normal_indices parallel to triangles once any triangle is smooth.
+            mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
+            mesh.normal_indices.push(normal_indices);
+        }
+        Ok(())
+    }
+
+    /// Checks a triangle and stores its normals: `Some(FLAT)` for a flat triangle, `Some(indices)`
+    /// for a smooth one, `None` (with a warning) for a degenerate one.
+    fn triangle_normals(
+        &mut self,
+        mesh: &mut Mesh,
+        p: &[DVec3; 3],
+        normals: Option<[DVec3; 3]>,
+        span: Span,
+    ) -> Option<[u32; 3]> {
+        let ng = (p[1] - p[0]).cross(p[2] - p[0]);
+        if ng.length_squared() == 0.0 {
+            self.warn(Diagnostic::warning(
+                "degenerate triangle (zero area) is not rendered",
+                span,
+            ));
+            return None;
+        }
+        let Some(n) = normals else { return Some(FLAT) };
+        match smooth_normals(ng, &n) {
+            SmoothNormals::Flat => Some(FLAT),
+            SmoothNormals::Degenerate => {
+                self.warn(Diagnostic::warning(
+                    "degenerate triangle: its vertex normals lie on both sides of the face (POV-Ray drops it)",
+                    span,
+                ));
+                None
+            }
+            SmoothNormals::Smooth(unit) => {
+                let base = mesh.normals.len() as u32;
+                mesh.normals.extend(unit.iter().map(|v| v.as_vec3()));
+                Some([base, base + 1, base + 2])
+            }
+        }
+    }
+
+    fn inside_vector<'n>(&mut self, mesh: &mut Mesh, rest: &'n [Node]) -> Result<&'n [Node]> {
+        match rest.first() {
+            Some(iv) if iv.kind == NodeKind::InsideVector => {
+                mesh.inside_vector = Some(self.nonzero(&iv.args[0], "inside_vector")?);
+                Ok(&rest[1..])
+            }
+            _ => Ok(rest),
+        }
+    }
+
+    /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
+    fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
+        let mut i = 0;
+        let section = |kind: NodeKind, i: &mut usize| -> Option<&'n Node> {
+            let n = node.children.get(*i).filter(|c| c.kind == kind)?;
+            *i += 1;
+            Some(n)
+        };
+        let vertex_node =
+            section(NodeKind::VertexVectors, &mut i).expect("grammar requires vertex_vectors");
+        let normal_node = section(NodeKind::NormalVectors, &mut i);
+        let face_node =
+            section(NodeKind::FaceIndices, &mut i).expect("grammar requires face_indices");
+        let normal_index_node = section(NodeKind::NormalIndices, &mut i);
+        let vertices = self.vector_list(vertex_node)?;
+        let normals = match normal_node {
+            Some(n) => self.vector_list(n)?,
+            None => Vec::new(),
+        };
+        let faces = self.index_list(face_node, vertices.len())?;
+        let normal_faces = match normal_index_node {
+            Some(n) => self.index_list(n, normals.len())?,
+            // Without normal_indices, as many normals as vertices reuse the face indices.
+            None if !normals.is_empty() && normals.len() == vertices.len() => faces.clone(),
+            None if !normals.is_empty() => {
+                return Err(Diagnostic::error(
+                    "normal_vectors needs normal_indices unless it has one normal per vertex",
+                    normal_node.map_or(node.word_span, |n| n.word_span),
+                ));
+            }
+            None => Vec::new(),
+        };
+        if !normal_faces.is_empty() && normal_faces.len() != faces.len() {
+            return Err(Diagnostic::error(
+                format!(
+                    "normal_indices has {} entries, face_indices {}",
+                    normal_faces.len(),
+                    faces.len()
+                ),
+                normal_index_node.map_or(node.word_span, |n| n.word_span),
+            ));
+        }
+        let mut mesh = Mesh {
+            vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
+            normals: Vec::with_capacity(normals.len()),
+            triangles: Vec::with_capacity(faces.len()),
+            normal_indices: Vec::new(),
+            inside_vector: None,
+        };
+        let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
+        let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
+        for (k, face) in faces.iter().enumerate() {
+            let p = face.map(|i| vertices[i as usize]);
+            let ng = (p[1] - p[0]).cross(p[2] - p[0]);
+            if ng.length_squared() == 0.0 {
+                degenerate += 1;
+                continue;
+            }
+            let mut normal_index = FLAT;
+            if let Some(nf) = normal_faces.get(k) {
+                let n = nf.map(|i| unit_normals[i as usize]);
+                match smooth_normals(ng, &n) {
+                    SmoothNormals::Flat => {}
+                    SmoothNormals::Degenerate => {
+                        dropped_smooth += 1;
+                        continue;
+                    }
+                    SmoothNormals::Smooth(_) => normal_index = *nf,
+                }
+            }
+            mesh.triangles.push(*face);
+            if normal_index != FLAT || !mesh.normal_indices.is_empty() {
+                mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
+                mesh.normal_indices.push(normal_index);
+            }
+        }
+        if !mesh.normal_indices.is_empty() {
+            mesh.normals = unit_normals.iter().map(|v| v.as_vec3()).collect();
+        }
+        if degenerate + dropped_smooth > 0 {
+            self.warn(Diagnostic::warning(
+                format!(
+                    "mesh2: {degenerate} zero-area and {dropped_smooth} straddling-normal triangles are not rendered (as in POV-Ray)"
+                ),
+                node.word_span,
+            ));
+        }
+        if mesh.triangles.is_empty() {
+            return Err(Diagnostic::error(
+                "mesh2 has no renderable triangle",
+                node.word_span,
+            ));
+        }
+        let rest = self.inside_vector(&mut mesh, &node.children[i..])?;
+        Ok((mesh, rest))
+    }
+
+    /// The entries of `vertex_vectors { n, V… }`, checking the count.
+    fn vector_list(&mut self, node: &Node) -> Result<Vec<DVec3>> {
+        let count = self.list_count(node)?;
+        let mut out = Vec::with_capacity(count);
+        for e in &node.args[1..] {
+            out.push(self.vec3(e)?);
+        }
+        Ok(out)
+    }
+
+    /// The entries of `face_indices { n, <a,b,c>… }`, truncated to integers and range-checked.
+    fn index_list(&mut self, node: &Node, limit: usize) -> Result<Vec<[u32; 3]>> {
+        let count = self.list_count(node)?;
+        let mut out = Vec::with_capacity(count);
+        for e in &node.args[1..] {
+            let v = match self.eval(e)? {
+                Value::Vector(v) if v.len == 3 => v,
+                Value::Float(_) => {
+                    return Err(Diagnostic::error(
+                        "unsupported: per-face texture indices (texture_list is not supported by trace yet)",
+                        e.span,
+                    ));
+                }
+                other => return Err(type_error("a vector <a, b, c> of indices", &other, e.span)),
+            };
+            let mut face = [0u32; 3];
+            for (slot, &c) in face.iter_mut().zip(&v.c[..3]) {
+                let i = c.trunc();
+                if !(i >= 0.0 && (i as usize) < limit) {
+                    return Err(Diagnostic::error(
+                        format!("index {i} is out of range (0..{limit})"),
+                        e.span,
+                    ));
+                }
+                *slot = i as u32;
+            }
+            out.push(face);
+        }
+        Ok(out)
+    }
+
+    fn list_count(&mut self, node: &Node) -> Result<usize> {
+        let n = self.float(&node.args[0])?;
+        let given = node.args.len() - 1;
+        if n.trunc() != given as f64 {
+            return Err(Diagnostic::error(
+                format!("`{}` announces {n} entries but lists {given}", node.word),
+                node.args[0].span,
+            ));
+        }
+        Ok(given)
+    }
+}
+
+enum SmoothNormals {
+    /// All three normals equal: the triangle is flat.
+    Flat,
+    /// Normals on both sides of the face: POV-Ray drops the triangle.
+    Degenerate,
+    /// Unit normals.
+    Smooth([DVec3; 3]),
+}
+
+/// POV-Ray's smooth-triangle rule: unit vertex normals, flat when all equal, degenerate when
+/// they are not all on the same side of the geometric normal `ng`.
+fn smooth_normals(ng: DVec3, n: &[DVec3; 3]) -> SmoothNormals {
+    let unit = n.map(|v| v.normalize_or_zero());
+    if unit[0] == unit[1] && unit[1] == unit[2] {
+        return SmoothNormals::Flat;
+    }
+    let sides = unit.map(|v| v.dot(ng));
+    if sides.iter().all(|&s| s > 0.0) || sides.iter().all(|&s| s < 0.0) {
+        SmoothNormals::Smooth(unit)
+    } else {
+        SmoothNormals::Degenerate
+    }
+}

@@ -1,0 +1,299 @@
+//! Triangle meshes: vertices, triangles, optional vertex normals, and a BVH (obvhs `Bvh2`)
+//! over the triangles. A mesh is built once and shared by all its instances, which intersect
+//! it in their own object space.
+
+use super::triangle::{ShearedRay, barycentric};
+use super::{Crossings, Ray};
+use glam::{DVec3, Vec3A};
+use obvhs::BvhBuildParams;
+use obvhs::aabb::Aabb;
+use obvhs::bvh2::Bvh2;
+use obvhs::ray::{Ray as BvhRay, RayHit};
+use std::time::Duration;
+
+/// Marker for a flat triangle in the normal indices.
+const FLAT: [u32; 3] = [u32::MAX; 3];
+
+/// A mesh ready for intersection.
+pub struct TriangleMesh {
+    vertices: Vec<DVec3>,
+    /// Triangles in BVH primitive order.
+    triangles: Vec<[u32; 3]>,
+    normals: Vec<DVec3>,
+    /// Per triangle (BVH order), indices into `normals`, or [`FLAT`]; empty if all flat.
+    normal_indices: Vec<[u32; 3]>,
+    bvh: Bvh2,
+    /// Bounding box in object space.
+    pub bounds: (DVec3, DVec3),
+}
+
+impl std::fmt::Debug for TriangleMesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("TriangleMesh")
+            .field("triangles", &self.triangles.len())
+            .finish()
+    }
+}
+
+/// An f32 box that contains the f64 box (rounded outward, padded).
+pub fn outward_aabb(min: DVec3, max: DVec3) -> Aabb {
+    let pad = |v: DVec3| 1e-7 * v.abs().max_element() + 1e-30;
+    let (pmin, pmax) = (pad(min), pad(max));
+    let lo = |x: f64, p: f64| ((x - p) as f32).next_down();
+    let hi = |x: f64, p: f64| ((x + p) as f32).next_up();
+    Aabb {
+        min: Vec3A::new(lo(min.x, pmin), lo(min.y, pmin), lo(min.z, pmin)),
+        max: Vec3A::new(hi(max.x, pmax), hi(max.y, pmax), hi(max.z, pmax)),
+    }
+}
+
+/// An obvhs ray for `ray` (f32), with a reciprocal direction that stays finite and correct for
+/// short directions (obvhs's own clamps components below an absolute 1.2e-7).
+pub fn bvh_ray(ray: &Ray, tmax: f64) -> BvhRay {
+    let d = ray.direction.as_vec3a();
+    let m = d.abs().max_element() * f32::EPSILON;
+    let inv = |x: f32| {
+        if x.abs() <= m {
+            x.signum() / m
+        } else {
+            1.0 / x
+        }
+    };
+    BvhRay {
+        origin: ray.origin.as_vec3a(),
+        direction: d,
+        inv_direction: Vec3A::new(inv(d.x), inv(d.y), inv(d.z)),
+        tmin: 0.0,
+        tmax: if tmax.is_finite() {
+            ((tmax * (1.0 + 1e-6)) as f32).next_up()
+        } else {
+            f32::INFINITY
+        },
+    }
+}
+
+/// A distance as obvhs's pruning value: never below the true distance.
+fn prune_value(t: f64) -> f32 {
+    ((t * (1.0 + 1e-6)) as f32).next_up()
+}
+
+impl TriangleMesh {
+    /// Builds the BVH over the triangles. `normal_indices` is empty or parallel to `triangles`.
+    pub fn new(
+        vertices: Vec<DVec3>,
+        triangles: Vec<[u32; 3]>,
+        normals: Vec<DVec3>,
+        normal_indices: Vec<[u32; 3]>,
+    ) -> TriangleMesh {
+        let boxes: Vec<Aabb> = triangles
+            .iter()
+            .map(|t| {
+                let p = t.map(|i| vertices[i as usize]);
+                outward_aabb(p[0].min(p[1]).min(p[2]), p[0].max(p[1]).max(p[2]))
+            })
+            .collect();
+        let bvh = obvhs::bvh2::builder::build_bvh2(
+            &boxes,
+            BvhBuildParams::very_fast_build(),
+            &mut Duration::default(),
+        );
+        let order = &bvh.primitive_indices;
+        let triangles_ordered = order.iter().map(|&i| triangles[i as usize]).collect();
+        let normal_indices = if normal_indices.is_empty() {
+            Vec::new()
+        } else {
+            order.iter().map(|&i| normal_indices[i as usize]).collect()
+        };
+        let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+        for v in &vertices {
+            lo = lo.min(*v);
+            hi = hi.max(*v);
+        }
+        TriangleMesh {
+            vertices,
+            triangles: triangles_ordered,
+            normals,
+            normal_indices,
+            bvh,
+            bounds: (lo, hi),
+        }
+    }
+
+    fn corners(&self, triangle: usize) -> [DVec3; 3] {
+        self.triangles[triangle].map(|i| self.vertices[i as usize])
+    }
+
+    /// The nearest crossing (part = triangle index).
+    pub fn intersect(&self, ray: &Ray) -> Crossings {
+        let sheared = ShearedRay::new(ray.origin, ray.direction);
+        let mut best: Option<(f64, u32)> = None;
+        let mut tmax = ray.tmax;
+        self.bvh
+            .ray_traverse(bvh_ray(ray, ray.tmax), &mut RayHit::none(), |_, i| {
+                let [a, b, c] = self.corners(i);
+                match sheared.intersect(a, b, c, ray.tmin, tmax) {
+                    Some(t) => {
+                        tmax = t;
+                        best = Some((t, i as u32));
+                        prune_value(t)
+                    }
+                    None => f32::INFINITY,
+                }
+            });
+        let mut out = Crossings::NONE;
+        if let Some((t, i)) = best {
+            out.push(t, i);
+        }
+        out
+    }
+
+    /// The number of crossings along the ray (for shadows through transparent meshes).
+    pub fn count_crossings(&self, ray: &Ray) -> usize {
+        let sheared = ShearedRay::new(ray.origin, ray.direction);
+        let mut n = 0;
+        self.bvh
+            .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, i| {
+                let [a, b, c] = self.corners(i);
+                if sheared.intersect(a, b, c, ray.tmin, ray.tmax).is_some() {
+                    n += 1;
+                }
+            });
+        n
+    }
+
+    /// Whether any triangle lies on the ray.
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        let sheared = ShearedRay::new(ray.origin, ray.direction);
+        !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, i| {
+            let [a, b, c] = self.corners(i);
+            match sheared.intersect(a, b, c, ray.tmin, ray.tmax) {
+                Some(_) => 0.0,
+                None => f32::INFINITY,
+            }
+        })
+    }
+
+    /// The geometric normal of a triangle (not unit length; orientation from the winding).
+    pub fn geometric_normal(&self, triangle: u32) -> DVec3 {
+        let [a, b, c] = self.corners(triangle as usize);
+        (b - a).cross(c - a)
+    }
+
+    /// The shading normal at `p` on a triangle: interpolated vertex normals for a smooth
+    /// triangle (POV-Ray: normalize(Σ bᵢ·Nᵢ)), the geometric normal otherwise.
+    pub fn normal(&self, p: DVec3, triangle: u32) -> DVec3 {
+        let ng = self.geometric_normal(triangle);
+        match self.normal_indices.get(triangle as usize) {
+            Some(ni) if *ni != FLAT => {
+                let [a, b, c] = self.corners(triangle as usize);
+                let w = barycentric(p, a, b, c);
+                let n = ni.map(|i| self.normals[i as usize]);
+                w[0] * n[0] + w[1] * n[1] + w[2] * n[2]
+            }
+            _ => ng,
+        }
+    }
+
+    /// Whether a point is inside the (closed) mesh: an odd number of crossings along `dir`.
+    pub fn contains(&self, p: DVec3, dir: DVec3) -> bool {
+        self.count_crossings(&Ray::new(p, dir)) % 2 == 1
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A closed unit cube (12 triangles) centred at `c` with half-size `h`.
+    fn cube(c: DVec3, h: f64) -> TriangleMesh {
+        let mut v = Vec::new();
+        for i in 0..8 {
+            let s = DVec3::new(
+                (i & 1) as f64 * 2.0 - 1.0,
+                ((i >> 1) & 1) as f64 * 2.0 - 1.0,
+                ((i >> 2) & 1) as f64 * 2.0 - 1.0,
+            );
+            v.push(c + s * h);
+        }
+        let quads = [
+            [0, 1, 3, 2],
+            [4, 6, 7, 5],
+            [0, 4, 5, 1],
+            [2, 3, 7, 6],
+            [0, 2, 6, 4],
+            [1, 5, 7, 3],
+        ];
+        let mut t = Vec::new();
+        for q in quads {
+            t.push([q[0], q[1], q[2]]);
+            t.push([q[0], q[2], q[3]]);
+        }
+        TriangleMesh::new(v, t, Vec::new(), Vec::new())
+    }
+
+    #[test]
+    fn mesh_cube_ray_hits_front_face() {
+        let m = cube(DVec3::ZERO, 1.0);
+        let r = Ray::new(DVec3::new(0.2, 0.3, -5.0), DVec3::Z);
+        assert_eq!(m.intersect(&r).first(), Some(4.0));
+        assert_eq!(m.count_crossings(&r), 2);
+        assert!(m.occluded(&r));
+    }
+
+    #[test]
+    fn mesh_cube_ray_beside_misses() {
+        let m = cube(DVec3::ZERO, 1.0);
+        let r = Ray::new(DVec3::new(1.5, 0.3, -5.0), DVec3::Z);
+        assert!(m.intersect(&r).is_empty());
+        assert!(!m.occluded(&r));
+    }
+
+    #[test]
+    fn mesh_from_inside_hits_once() {
+        let m = cube(DVec3::ZERO, 1.0);
+        let r = Ray::new(DVec3::ZERO, DVec3::new(0.3, 0.2, 1.0));
+        assert_eq!(m.count_crossings(&r), 1);
+        assert!(m.contains(DVec3::ZERO, DVec3::new(0.3, 0.2, 1.0)));
+    }
+
+    #[test]
+    fn closed_mesh_has_no_leak_at_vertices_and_edges_far_from_origin() {
+        // Rays through the centre of a closed cube, aimed exactly at each vertex, each edge
+        // midpoint and points along the edges: they enter the solid there, so each must hit,
+        // at offsets 0, 1e3 and 1e5 from the origin.
+        for offset in [0.0, 1e3, 1e5] {
+            let c = DVec3::new(offset, -offset, offset);
+            let m = cube(c, 1.0);
+            let mut targets = Vec::new();
+            for i in 0..8 {
+                let s = DVec3::new(
+                    (i & 1) as f64 * 2.0 - 1.0,
+                    ((i >> 1) & 1) as f64 * 2.0 - 1.0,
+                    ((i >> 2) & 1) as f64 * 2.0 - 1.0,
+                );
+                targets.push(s);
+                for axis in 0..3 {
+                    for k in 1..8 {
+                        let mut e = s;
+                        e[axis] = -1.0 + k as f64 / 4.0;
+                        targets.push(e);
+                    }
+                }
+            }
+            for target in targets {
+                // Along the line from far outside through the target and the centre.
+                let origin = c + target * 5.0;
+                let r = Ray::new(origin, (c + target) - origin);
+                let t = m.intersect(&r).first();
+                assert!(
+                    t.is_some_and(|t| (t - 1.0).abs() < 1e-9),
+                    "leak at offset {offset}, target {target}: {t:?}"
+                );
+                assert!(
+                    m.count_crossings(&r) >= 2,
+                    "no exit at offset {offset}, target {target}"
+                );
+            }
+        }
+    }
+}

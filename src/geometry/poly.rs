@@ -1,0 +1,157 @@
+//! Real roots of polynomials of degree ≤ 4 in an interval, by isolation: between consecutive
+//! roots of the derivative a polynomial is monotonic, so each such interval holds at most one
+//! root, found by safeguarded Newton iteration. No closed-form cancellation, so grazing rays
+//! and far origins keep their accuracy.
+
+/// Coefficients, lowest degree first: `c[0] + c[1]·t + … + c[n]·tⁿ`.
+pub type Poly = [f64; 5];
+
+fn eval(c: &Poly, degree: usize, t: f64) -> f64 {
+    let mut v = 0.0;
+    for i in (0..=degree).rev() {
+        v = v * t + c[i];
+    }
+    v
+}
+
+fn derivative(c: &Poly, degree: usize) -> Poly {
+    let mut d = [0.0; 5];
+    for i in 1..=degree {
+        d[i - 1] = c[i] * i as f64;
+    }
+    d
+}
+
+/// Up to four roots in increasing order.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Roots {
+    /// The roots; the first `len` are valid.
+    pub t: [f64; 4],
+    /// How many.
+    pub len: usize,
+}
+
+impl Roots {
+    fn push(&mut self, t: f64) {
+        if self.len < 4 {
+            self.t[self.len] = t;
+            self.len += 1;
+        }
+    }
+
+    /// The roots found.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.t[..self.len]
+    }
+}
+
+/// Real roots of the polynomial `c` (of the given degree) in `[lo, hi]`, increasing.
+pub fn roots_in(c: &Poly, degree: usize, lo: f64, hi: f64) -> Roots {
+    let mut out = Roots::default();
+    if degree == 0 || lo > hi {
+        return out;
+    }
+    if degree == 1 {
+        if c[1] != 0.0 {
+            let t = -c[0] / c[1];
+            if (lo..=hi).contains(&t) {
+                out.push(t);
+            }
+        }
+        return out;
+    }
+    if c[degree] == 0.0 {
+        return roots_in(c, degree - 1, lo, hi);
+    }
+    // Split [lo, hi] at the critical points; each piece is monotonic.
+    let d = derivative(c, degree);
+    let critical = roots_in(&d, degree - 1, lo, hi);
+    let mut a = lo;
+    let mut fa = eval(c, degree, a);
+    for &b in critical.as_slice().iter().chain(std::iter::once(&hi)) {
+        let fb = eval(c, degree, b);
+        if fa == 0.0 {
+            if out.len == 0 || out.t[out.len - 1] != a {
+                out.push(a);
+            }
+        } else if fa.signum() != fb.signum() && fb != 0.0 {
+            out.push(refine(c, &d, degree, a, b, fa));
+        }
+        a = b;
+        fa = fb;
+    }
+    if fa == 0.0 && (out.len == 0 || out.t[out.len - 1] != a) {
+        out.push(a);
+    }
+    out
+}
+
+/// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to
+/// bisection whenever a step leaves the bracket.
+fn refine(c: &Poly, d: &Poly, degree: usize, mut a: f64, mut b: f64, fa: f64) -> f64 {
+    let rising = fa < 0.0;
+    let mut t = 0.5 * (a + b);
+    for _ in 0..100 {
+        let f = eval(c, degree, t);
+        if f == 0.0 {
+            return t;
+        }
+        if (f < 0.0) == rising {
+            a = t;
+        } else {
+            b = t;
+        }
+        let slope = eval(d, degree - 1, t);
+        let newton = t - f / slope;
+        let next = if slope != 0.0 && newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if (next - t).abs() <= 4.0 * f64::EPSILON * t.abs().max(1e-300)
+            || b - a <= 4.0 * f64::EPSILON * t.abs()
+        {
+            return next;
+        }
+        t = next;
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quartic_with_four_roots() {
+        // (t-1)(t-2)(t-3)(t-4) = t⁴ − 10t³ + 35t² − 50t + 24
+        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0], 4, 0.0, 10.0);
+        let expected = [1.0, 2.0, 3.0, 4.0];
+        assert_eq!(r.len, 4);
+        for (a, b) in r.as_slice().iter().zip(expected) {
+            assert!((a - b).abs() < 1e-12, "{:?}", r.as_slice());
+        }
+    }
+
+    #[test]
+    fn roots_outside_interval_are_ignored() {
+        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0], 4, 1.5, 3.5);
+        assert_eq!(r.as_slice().len(), 2);
+    }
+
+    #[test]
+    fn close_roots_are_separated() {
+        // (t − 1)(t − 1.000001)(t² + 1)
+        let (a, b) = (1.0, 1.000001);
+        let c = [a * b, -(a + b), 1.0 + a * b, -(a + b), 1.0];
+        let r = roots_in(&c, 4, 0.0, 2.0);
+        assert_eq!(r.len, 2, "{:?}", r.as_slice());
+        assert!((r.t[0] - a).abs() < 1e-9 && (r.t[1] - b).abs() < 1e-9);
+    }
+
+    #[test]
+    fn no_real_roots() {
+        let r = roots_in(&[1.0, 0.0, 2.0, 0.0, 1.0], 4, -10.0, 10.0);
+        assert_eq!(r.len, 0);
+    }
+}

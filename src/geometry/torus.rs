@@ -1,0 +1,154 @@
+//! Torus around the y axis: `(|p|² + R² − r²)² = 4R²(x² + z²)`.
+
+use super::poly::{Poly, roots_in};
+use super::{Crossings, Ray};
+use glam::DVec3;
+
+/// A torus in object space (centre at the origin, in the x-z plane).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Torus {
+    /// Radius of the centre circle.
+    pub major: f64,
+    /// Radius of the tube.
+    pub minor: f64,
+}
+
+impl Torus {
+    /// Crossings of `ray` with the torus, nearest first.
+    ///
+    /// The quartic is solved for a unit direction with the origin first moved to where the ray
+    /// enters the bounding sphere, so the coefficients stay of the torus's own size however far
+    /// away the ray starts; roots are isolated between critical points (no closed form).
+    pub fn intersect(&self, ray: &Ray) -> Crossings {
+        let (big, small) = (self.major, self.minor);
+        let length = ray.direction.length();
+        let d = ray.direction / length;
+        // Bounding sphere, radius R + r.
+        let bound = big + small;
+        let f = ray.origin.dot(d);
+        let perpendicular = ray.origin - f * d;
+        let h2 = bound * bound - perpendicular.length_squared();
+        if h2 < 0.0 {
+            return Crossings::NONE;
+        }
+        let h = h2.sqrt();
+        let (enter, exit) = (-f - h, -f + h);
+        if exit < 0.0 {
+            return Crossings::NONE;
+        }
+        let shift = enter.max(0.0);
+        let o = ray.origin + shift * d;
+        // Quartic in s for p = o + s·d (|d| = 1), with G = |p|² − R² − r²:
+        // G² + 4R²(y² − r²) = 0.
+        let e = o.length_squared() - big * big - small * small;
+        let g = o.dot(d);
+        let four_r2 = 4.0 * big * big;
+        let c: Poly = [
+            e * e + four_r2 * (o.y * o.y - small * small),
+            4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
+            4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
+            4.0 * g,
+            1.0,
+        ];
+        let margin = 1e-9 * bound;
+        let roots = roots_in(&c, 4, (enter - shift) - margin, (exit - shift) + margin);
+        let mut out = Crossings::NONE;
+        for &s in roots.as_slice() {
+            let t = (shift + s) / length;
+            if ray.contains(t) {
+                out.push(t, 0);
+            }
+        }
+        out
+    }
+
+    /// Outward normal (not unit length) at `p`.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let g = p.length_squared() - self.major * self.major - self.minor * self.minor;
+        g * p + DVec3::new(0.0, 2.0 * self.major * self.major * p.y, 0.0)
+    }
+
+    /// Whether `p` is inside the tube.
+    pub fn contains(&self, p: DVec3) -> bool {
+        let ring = (p.x * p.x + p.z * p.z).sqrt() - self.major;
+        ring * ring + p.y * p.y < self.minor * self.minor
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn torus() -> Torus {
+        Torus {
+            major: 2.0,
+            minor: 0.5,
+        }
+    }
+
+    #[test]
+    fn torus_ray_through_both_tubes_hits_four_times() {
+        let r = Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X);
+        let c = torus().intersect(&r);
+        let expected = [7.5, 8.5, 11.5, 12.5];
+        assert_eq!(c.len(), 4);
+        for (a, b) in c.as_slice().iter().zip(expected) {
+            assert!((a - b).abs() < 1e-9, "{:?}", c.as_slice());
+        }
+    }
+
+    #[test]
+    fn torus_ray_through_hole_misses() {
+        let r = Ray::new(DVec3::new(0.0, 10.0, 0.0), -DVec3::Y);
+        assert!(torus().intersect(&r).is_empty());
+    }
+
+    #[test]
+    fn torus_ray_down_onto_tube_hits_top() {
+        let r = Ray::new(DVec3::new(2.0, 10.0, 0.0), -DVec3::Y);
+        let t = torus().intersect(&r).first().expect("hit");
+        assert!((t - 9.5).abs() < 1e-9);
+        assert!((torus().normal(r.at(t)).normalize() - DVec3::Y).length() < 1e-9);
+    }
+
+    #[test]
+    fn torus_from_inside_tube_hits_once_going_out() {
+        let r = Ray::new(DVec3::new(2.0, 0.0, 0.0), DVec3::Y);
+        assert_eq!(torus().intersect(&r).len(), 1);
+    }
+
+    #[test]
+    fn torus_far_origin_keeps_precision() {
+        let r = Ray::new(DVec3::new(-1e5, 0.0, 0.0), DVec3::X);
+        let t = torus().intersect(&r).first().expect("hit");
+        assert!((t - (1e5 - 2.5)).abs() < 1e-7, "t = {t}");
+    }
+
+    #[test]
+    fn torus_grazing_top_does_not_produce_nan() {
+        // Tangent to the top of the tube along x.
+        let r = Ray::new(DVec3::new(-10.0, 0.5, 0.0), DVec3::X);
+        for &t in torus().intersect(&r).as_slice() {
+            assert!(t.is_finite());
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn torus_hits_lie_on_surface(
+            ox in -20.0..20.0f64, oy in -20.0..20.0f64, oz in -20.0..20.0f64,
+            tx in -2.5..2.5f64, ty in -0.5..0.5f64, tz in -2.5..2.5f64,
+        ) {
+            let t = torus();
+            let origin = DVec3::new(ox, oy, oz);
+            let r = Ray::new(origin, DVec3::new(tx, ty, tz) - origin);
+            for &s in t.intersect(&r).as_slice() {
+                let p = r.at(s);
+                let ring = (p.x * p.x + p.z * p.z).sqrt() - 2.0;
+                let residual = ((ring * ring + p.y * p.y).sqrt() - 0.5).abs();
+                prop_assert!(residual < 1e-7, "residual {}", residual);
+            }
+        }
+    }
+}
