@@ -223,14 +223,16 @@ fn compare(
         trace::film::ImageError::SizeMismatch(..) => usage(e.to_string()),
         other => Failure::from(Error::from(other)),
     })?;
-    println!("mean FLIP  {:.6}", c.mean_flip);
-    println!("RMSE       {:.6}", c.rmse);
-    println!("max |diff| {:.6}", c.max_abs);
-    println!(
-        "NaN/inf    {} / {}",
+    let report = format!(
+        "mean FLIP  {:.6}\nRMSE       {:.6}\nmax |diff| {:.6}\nNaN/inf    {} / {}\n",
+        c.mean_flip,
+        c.rmse,
+        c.max_abs,
         a.non_finite_pixels(),
         b.non_finite_pixels()
     );
+    // A closed pipe (e.g. `| head`) is not an error worth a panic.
+    let _ = std::io::Write::write_all(&mut std::io::stdout(), report.as_bytes());
     if let Some(path) = diff {
         trace::film::write_rgb8_png(path, a.width, a.height, c.flip_map).map_err(Error::from)?;
     }
