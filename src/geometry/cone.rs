@@ -166,3 +166,29 @@ mod tests {
         assert!(cylinder(false).intersect(&r).is_empty());
     }
 }
+
+#[cfg(test)]
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn cone_hits_lie_on_side_or_caps(
+            r0 in 0.1..2.0f64, r1 in 0.0..2.0f64,
+            ox in -5.0..5.0f64, oy in -5.0..5.0f64, oz in -5.0..5.0f64,
+            tx in -0.5..0.5f64, ty in -0.5..0.5f64, tz in 0.05..0.95f64,
+        ) {
+            let cone = Cone { r0, r1, open: false };
+            let origin = DVec3::new(ox, oy, oz) + DVec3::new(0.0, 0.0, 0.5);
+            let r = Ray::new(origin, DVec3::new(tx * r0.min(r1.max(0.1)), ty * r0.min(r1.max(0.1)), tz) - origin);
+            for (k, &t) in cone.intersect(&r).as_slice().iter().enumerate() {
+                let p = r.at(t);
+                let radius = r0 + (r1 - r0) * p.z;
+                let side = ((p.x * p.x + p.y * p.y).sqrt() - radius).abs();
+                let cap = p.z.abs().min((p.z - 1.0).abs());
+                prop_assert!(side < 1e-9 || cap < 1e-9, "crossing {} off the surface: side {}, cap {}", k, side, cap);
+            }
+        }
+    }
+}

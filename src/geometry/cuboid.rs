@@ -120,3 +120,34 @@ mod tests {
         assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0]);
     }
 }
+
+#[cfg(test)]
+mod properties {
+    use super::*;
+    use crate::geometry::offset_origin;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn box_hits_lie_on_surface_and_leaving_rays_do_not_return(
+            cx in -1e5..1e5f64, size in prop::sample::select(vec![1e-3, 1.0, 1e3]),
+            ox in -1.0..1.0f64, oy in -1.0..1.0f64, oz in -1.0..1.0f64,
+            tx in -0.9..0.9f64, ty in -0.9..0.9f64, tz in -0.9..0.9f64,
+        ) {
+            let c = DVec3::splat(cx);
+            let b = Cuboid { min: c - size, max: c + size };
+            let origin = c + DVec3::new(ox, oy, oz).normalize_or(DVec3::X) * size * 4.0;
+            let r = Ray::new(origin, c + DVec3::new(tx, ty, tz) * size - origin);
+            let t = b.intersect(&r).first();
+            prop_assert!(t.is_some());
+            let p = r.at(t.unwrap());
+            let q = ((p - c).abs() - size).abs().min_element();
+            prop_assert!(q <= 1e-12 * (cx.abs() + size), "off surface by {}", q);
+            // Leave the surface along a direction with a positive component along the normal.
+            let n = b.normal(p);
+            let d = (n + DVec3::new(ty, tz, tx) * 0.5).normalize();
+            let out = Ray::new(offset_origin(p, n, d, 0.0), d);
+            prop_assert!(b.intersect(&out).is_empty());
+        }
+    }
+}
