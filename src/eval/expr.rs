@@ -31,6 +31,10 @@ impl Evaluator<'_> {
                 }
                 Ok(Value::Vector(Vector::new(&comps)))
             }
+            ExprKind::Str(_) => Err(Diagnostic::error(
+                "unsupported: strings outside image_map (not supported by trace yet)",
+                expr.span,
+            )),
             ExprKind::PlainVector(c, len) => Ok(Value::Vector(Vector {
                 c: *c,
                 len: *len as usize,

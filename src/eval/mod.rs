@@ -5,6 +5,7 @@
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 
 mod expr;
+mod material;
 mod object;
 mod transform;
 mod unsupported;
@@ -16,7 +17,7 @@ use crate::syntax::{self, Node, NodeKind};
 use glam::DVec3;
 pub use object::ObjectValue;
 use std::collections::HashMap;
-use value::{Value, colour5, rgb, to_colour};
+use value::{Value, colour5, rgb};
 
 type Result<T> = std::result::Result<T, Diagnostic>;
 
@@ -84,7 +85,13 @@ pub struct Evaluated {
 /// Evaluates the file `file` of `sources` into a scene.
 pub fn evaluate(sources: &SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
     let nodes = syntax::parse_scene(&sources.file(file).text, file)?;
-    let mut ev = Evaluator::new(options);
+    let base_dir = sources
+        .file(file)
+        .path
+        .parent()
+        .map(|p| p.to_path_buf())
+        .unwrap_or_default();
+    let mut ev = Evaluator::new(options, base_dir);
     for node in &nodes {
         ev.statement(node)?;
     }
@@ -94,6 +101,9 @@ pub fn evaluate(sources: &SourceMap, file: FileId, options: &LoadOptions) -> Res
 /// The evaluation state: declarations, defaults and the scene gathered so far.
 pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
+    /// The scene file's folder: relative image files are read from here.
+    base_dir: std::path::PathBuf,
+    sky_sphere: Option<ir::Pigment>,
     env: HashMap<String, Value>,
     version: Option<f64>,
     assumed_gamma: Option<f64>,
@@ -107,9 +117,11 @@ pub(crate) struct Evaluator<'a> {
 }
 
 impl<'a> Evaluator<'a> {
-    fn new(options: &'a LoadOptions) -> Evaluator<'a> {
+    fn new(options: &'a LoadOptions, base_dir: std::path::PathBuf) -> Evaluator<'a> {
         Evaluator {
             options,
+            base_dir,
+            sky_sphere: None,
             env: HashMap::new(),
             version: None,
             assumed_gamma: None,
@@ -218,6 +230,32 @@ impl<'a> Evaluator<'a> {
                 self.background = Rgb::new(c[0], c[1], c[2]) * (1.0 - c[4]);
             }
             NodeKind::GlobalSettings => self.global_settings(node)?,
+            NodeKind::SkySphere => {
+                let mut pigment: Option<ir::Pigment> = None;
+                for item in &node.children {
+                    match item.kind {
+                        NodeKind::Pigment => {
+                            if pigment.is_some() {
+                                return Err(Diagnostic::error(
+                                    "unsupported: a sky_sphere with several (layered) pigments",
+                                    item.word_span,
+                                ));
+                            }
+                            pigment = Some(
+                                self.pigment(item, ir::Pigment::solid(ir::Colour::default()))?,
+                            );
+                        }
+                        _ if Self::is_transform(item) => {
+                            let t = self.transform(item)?;
+                            if let Some(p) = &mut pigment {
+                                material::move_pigment(p, t);
+                            }
+                        }
+                        _ => return Err(self.unknown_item(item, "sky_sphere")),
+                    }
+                }
+                self.sky_sphere = pigment;
+            }
             _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
                 self.place(object);
@@ -252,6 +290,8 @@ impl<'a> Evaluator<'a> {
                 Value::Finish(self.finish_block(node, base)?)
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
+            NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
+            NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
@@ -299,20 +339,148 @@ impl<'a> Evaluator<'a> {
         let mut position = self.vec3(&node.args[0])?;
         // A light without a colour is black (POV-Ray accepts it silently).
         let colour = match node.args.get(1) {
-            Some(e) => {
-                let v = self.eval(e)?;
-                rgb(&v).ok_or_else(|| expr::type_error("a colour", &v, e.span))?
-            }
+            Some(e) => self.rgb_arg(e)?,
             None => Rgb::ZERO,
         };
+        let (mut spot, mut parallel, mut shadowless) = (false, false, false);
+        let mut point_at = DVec3::Z;
+        let (mut radius, mut falloff, mut tightness) = (None, None, None);
+        let (mut fade_distance, mut fade_power) = (0.0, 0.0);
+        let mut area: Option<ir::AreaLight> = None;
+        // Area-light modifiers may come before or after `area_light`; the first one is kept
+        // for the error if there is no area_light at all.
+        let (mut jitter, mut circular, mut orient, mut illumination) = (false, false, false, false);
+        let mut adaptive = 100;
+        let mut area_modifier: Option<&Node> = None;
+        let mut transform: Option<Transform> = None;
         for item in &node.children {
-            if Self::is_transform(item) {
-                position = self.transform(item)?.matrix.transform_point3(position);
-            } else {
-                return Err(self.unknown_item(item, "light_source"));
+            let arg = |i: usize| &item.args[i];
+            match item.kind {
+                NodeKind::LightFlag => match item.word.as_str() {
+                    "spotlight" => spot = true,
+                    "parallel" => parallel = true,
+                    "shadowless" => shadowless = true,
+                    flag => {
+                        area_modifier = area_modifier.or(Some(item));
+                        match flag {
+                            "jitter" => jitter = true,
+                            "circular" => circular = true,
+                            _ => orient = true,
+                        }
+                    }
+                },
+                NodeKind::PointAt => point_at = self.vec3(arg(0))?,
+                NodeKind::Radius => radius = Some(self.float(arg(0))?),
+                NodeKind::Falloff => falloff = Some(self.float(arg(0))?),
+                NodeKind::Tightness => tightness = Some(self.float(arg(0))?),
+                NodeKind::FadeDistance => fade_distance = self.float(arg(0))?,
+                NodeKind::FadePower => fade_power = self.float(arg(0))?,
+                NodeKind::AreaLight => {
+                    let axis1 = self.vec3(arg(0))?;
+                    let axis2 = self.vec3(arg(1))?;
+                    let size = |ev: &mut Self, i: usize| -> Result<u32> {
+                        let n = ev.float(&item.args[i])?;
+                        if !(1.0..=1024.0).contains(&n) {
+                            return Err(Diagnostic::error(
+                                "area_light sizes must be between 1 and 1024",
+                                item.args[i].span,
+                            ));
+                        }
+                        Ok(n as u32)
+                    };
+                    let (size1, size2) = (size(self, 2)?, size(self, 3)?);
+                    area = Some(ir::AreaLight {
+                        axis1,
+                        axis2,
+                        size1,
+                        size2,
+                        adaptive,
+                        jitter,
+                        circular,
+                        orient,
+                        area_illumination: illumination,
+                    });
+                }
+                NodeKind::Adaptive => {
+                    area_modifier = area_modifier.or(Some(item));
+                    adaptive = self.float(arg(0))?.max(0.0) as u32;
+                }
+                NodeKind::AreaIllumination => {
+                    area_modifier = area_modifier.or(Some(item));
+                    illumination = self.optional_float(item, 1.0)? != 0.0;
+                }
+                _ if Self::is_transform(item) => {
+                    let t = self.transform(item)?;
+                    transform = Some(transform.unwrap_or(Transform::IDENTITY).then(t));
+                }
+                _ => return Err(self.unknown_item(item, "light_source")),
             }
         }
-        Ok(ir::Light { position, colour })
+        match (&mut area, area_modifier) {
+            (Some(a), _) => {
+                (
+                    a.jitter,
+                    a.circular,
+                    a.orient,
+                    a.adaptive,
+                    a.area_illumination,
+                ) = (jitter, circular || orient, orient, adaptive, illumination);
+                if a.circular && (a.size1 < 2 || a.size2 < 2) {
+                    let m = area_modifier.expect("circular was given");
+                    return Err(Diagnostic::error(
+                        "a circular area_light must have more than 1 point per axis",
+                        m.word_span,
+                    ));
+                }
+                if illumination {
+                    let m = area_modifier.expect("area_illumination was given");
+                    return Err(Diagnostic::error(
+                        "unsupported: `area_illumination` (not supported by trace yet)",
+                        m.word_span,
+                    ));
+                }
+            }
+            (None, Some(m)) => {
+                return Err(Diagnostic::error(
+                    format!("`{}` needs an area_light", m.word),
+                    m.word_span,
+                ));
+            }
+            (None, None) => {}
+        }
+        if let Some(t) = transform {
+            position = t.matrix.transform_point3(position);
+            point_at = t.matrix.transform_point3(point_at);
+            if let Some(a) = &mut area {
+                a.axis1 = t.matrix.transform_vector3(a.axis1);
+                a.axis2 = t.matrix.transform_vector3(a.axis2);
+            }
+        }
+        let kind = if parallel {
+            ir::LightKind::Parallel { point_at }
+        } else if spot {
+            ir::LightKind::Spot {
+                point_at,
+                radius_deg: radius.unwrap_or(30.0),
+                falloff_deg: falloff.unwrap_or(45.0),
+                tightness: tightness.unwrap_or(0.0),
+            }
+        } else {
+            ir::LightKind::Point
+        };
+        // Fade applies only when both are given and positive (POV-Ray §8.1).
+        let fade = (fade_power > 0.0 && fade_distance.abs() > 1e-10).then_some(ir::LightFade {
+            distance: fade_distance,
+            power: fade_power,
+        });
+        Ok(ir::Light {
+            position,
+            colour,
+            kind,
+            shadowless,
+            fade,
+            area,
+        })
     }
 
     fn camera_items(&mut self, node: &Node, mut c: CameraItems) -> Result<CameraItems> {
@@ -357,134 +525,6 @@ impl<'a> Evaluator<'a> {
         Ok(c)
     }
 
-    /// `texture { [Name] pigment {…} finish {…} transforms }`, starting from the default texture.
-    fn texture(&mut self, node: &Node) -> Result<Texture> {
-        let mut texture = self.default_texture.clone();
-        for item in &node.children {
-            match item.kind {
-                NodeKind::IdentRef => match self.lookup(item)? {
-                    Value::Texture(t) => texture = t,
-                    other => return Err(expr::type_error("a texture", &other, item.span)),
-                },
-                NodeKind::Pigment => {
-                    texture.pigment = self.pigment(item, texture.pigment.clone())?
-                }
-                NodeKind::Finish => {
-                    texture.finish = self.finish_block(item, texture.finish.clone())?
-                }
-                _ if Self::is_transform(item) => {
-                    let t = self.transform(item)?;
-                    texture.transform =
-                        Some(texture.transform.unwrap_or(Transform::IDENTITY).then(t));
-                }
-                _ => return Err(self.unknown_item(item, "texture")),
-            }
-        }
-        Ok(texture)
-    }
-
-    /// `pigment { [colour | Name] transforms }`.
-    fn pigment(&mut self, node: &Node, mut pigment: ir::Pigment) -> Result<ir::Pigment> {
-        if let Some(e) = node.args.first() {
-            let v = self.eval(e)?;
-            pigment = match v {
-                Value::Pigment(p) => p,
-                other => match colour5(&other) {
-                    Some(c) => ir::Pigment::Solid(to_colour(c)),
-                    None => return Err(expr::type_error("a colour or pigment", &other, e.span)),
-                },
-            };
-        }
-        for item in &node.children {
-            if Self::is_transform(item) {
-                self.transform(item)?;
-            } else {
-                return Err(self.unknown_item(item, "pigment"));
-            }
-        }
-        Ok(pigment)
-    }
-
-    /// `finish { [Name] items }`, modifying `finish`.
-    fn finish_block(&mut self, node: &Node, mut f: ir::Finish) -> Result<ir::Finish> {
-        for item in &node.children {
-            let arg = |i: usize| &item.args[i];
-            match item.kind {
-                NodeKind::IdentRef => match self.lookup(item)? {
-                    Value::Finish(declared) => f = declared,
-                    other => return Err(expr::type_error("a finish", &other, item.span)),
-                },
-                NodeKind::Ambient => f.ambient = self.rgb_arg(arg(0))?,
-                NodeKind::Emission => f.emission = self.rgb_arg(arg(0))?,
-                NodeKind::Diffuse | NodeKind::Phong | NodeKind::Specular
-                    if item.children.iter().any(|c| c.kind == NodeKind::Albedo) =>
-                {
-                    return Err(self.unknown_word("albedo", item.children[0].word_span));
-                }
-                NodeKind::Diffuse => {
-                    f.diffuse = self.float(arg(0))?;
-                    if let Some(back) = item.args.get(1) {
-                        f.diffuse_back = self.float(back)?;
-                        if f.diffuse_back != 0.0 {
-                            return Err(Diagnostic::error(
-                                "unsupported: back-side `diffuse` (not supported by trace yet)",
-                                back.span,
-                            ));
-                        }
-                    }
-                }
-                NodeKind::Brilliance => f.brilliance = self.float(arg(0))?,
-                NodeKind::Phong => f.phong = self.float(arg(0))?,
-                NodeKind::PhongSize => f.phong_size = self.float(arg(0))?,
-                NodeKind::Specular => f.specular = self.float(arg(0))?,
-                NodeKind::Roughness => {
-                    let r = self.float(arg(0))?;
-                    if r == 0.0 {
-                        self.warn(Diagnostic::warning(
-                            "zero roughness: using 0.0001 instead",
-                            item.span,
-                        ));
-                    }
-                    f.roughness = if r == 0.0 { 1e-4 } else { r };
-                }
-                NodeKind::Metallic => f.metallic = self.optional_float(item, 1.0)?,
-                NodeKind::ConserveEnergy => f.conserve_energy = true,
-                NodeKind::Reflection => self.reflection(item, &mut f.reflection)?,
-                _ => return Err(self.unknown_item(item, "finish")),
-            }
-        }
-        Ok(f)
-    }
-
-    fn reflection(&mut self, node: &Node, r: &mut ir::Reflection) -> Result<()> {
-        let first = self.rgb_arg(&node.args[0])?;
-        match node.args.get(1) {
-            Some(second) => {
-                r.min = first;
-                r.max = self.rgb_arg(second)?;
-            }
-            None => {
-                r.min = first;
-                r.max = first;
-            }
-        }
-        let single = node.args.len() == 1;
-        for item in &node.children {
-            match item.kind {
-                NodeKind::Falloff => r.falloff = self.float(&item.args[0])?,
-                NodeKind::Exponent => r.exponent = self.float(&item.args[0])?,
-                NodeKind::Metallic => r.metallic = self.optional_float(item, 1.0)?,
-                NodeKind::Fresnel => r.fresnel = self.optional_float(item, 1.0)? != 0.0,
-                _ => return Err(self.unknown_item(item, "reflection")),
-            }
-        }
-        // With `fresnel` and a single colour, POV-Ray resets the minimum to 0.
-        if r.fresnel && single {
-            r.min = Rgb::ZERO;
-        }
-        Ok(())
-    }
-
     fn optional_float(&mut self, node: &Node, default: f64) -> Result<f64> {
         match node.args.first() {
             Some(e) => self.float(e),
@@ -515,6 +555,7 @@ impl<'a> Evaluator<'a> {
                 lights: self.lights,
                 objects: self.objects,
                 background: self.background,
+                sky_sphere: self.sky_sphere,
                 settings: self.settings,
             },
             warnings: self.warnings,

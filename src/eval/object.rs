@@ -4,9 +4,10 @@
 //! modifiers on the group apply to every member, and the group's texture to the members that
 //! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
 
+use super::material::move_pigment;
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
-use crate::ir::{self, FLAT, Mesh, Shape, Texture, Transform};
+use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
 use crate::syntax::{Expr, Node, NodeKind};
 use glam::DVec3;
 use std::sync::Arc;
@@ -18,6 +19,8 @@ struct Part {
     transform: Option<Transform>,
     /// The member's own texture (for a union member), if any.
     texture: Option<Texture>,
+    /// The member's own interior, if any.
+    interior: Option<Interior>,
     inverse: bool,
     no_shadow: bool,
 }
@@ -28,6 +31,8 @@ pub struct ObjectValue {
     parts: Vec<Part>,
     /// The object's (or group's) texture, applied to parts without their own.
     texture: Option<Texture>,
+    /// The object's (or group's) interior, applied to parts without their own.
+    interior: Option<Interior>,
 }
 
 /// Whether a node is an object statement.
@@ -62,10 +67,12 @@ impl ObjectValue {
                 shape,
                 transform: None,
                 texture: None,
+                interior: None,
                 inverse: false,
                 no_shadow: false,
             }],
             texture: None,
+            interior: None,
         }
     }
 
@@ -73,6 +80,7 @@ impl ObjectValue {
         ObjectValue {
             parts: Vec::new(),
             texture: None,
+            interior: None,
         }
     }
 
@@ -81,11 +89,11 @@ impl ObjectValue {
         for part in &mut self.parts {
             part.transform = compose(part.transform, t);
             if let Some(tex) = &mut part.texture {
-                tex.transform = compose(tex.transform, t);
+                move_pigment(&mut tex.pigment, t);
             }
         }
         if let Some(tex) = &mut self.texture {
-            tex.transform = compose(tex.transform, t);
+            move_pigment(&mut tex.pigment, t);
         }
     }
 }
@@ -239,6 +247,7 @@ impl Evaluator<'_> {
                     let m = self.object(member)?;
                     for mut part in m.parts {
                         part.texture = part.texture.or_else(|| m.texture.clone());
+                        part.interior = part.interior.or(m.interior);
                         group.parts.push(part);
                     }
                 }
@@ -281,8 +290,8 @@ impl Evaluator<'_> {
                 let texture = self.texture(m)?;
                 // A second texture is layered on top of the first in POV-Ray. An opaque top
                 // layer hides the one below, so replacing it is exact; a see-through one is not.
-                let ir::Pigment::Solid(c) = &texture.pigment;
-                if object.texture.is_some() && (c.filter != 0.0 || c.transmit != 0.0) {
+                let opaque = matches!(&texture.pigment.pattern, ir::Pattern::Solid(c) if c.filter == 0.0 && c.transmit == 0.0);
+                if object.texture.is_some() && !opaque {
                     return Err(Diagnostic::error(
                         "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",
                         m.word_span,
@@ -301,6 +310,10 @@ impl Evaluator<'_> {
                     texture.finish = self.finish_block(m, texture.finish.clone())?;
                 }
                 object.texture = Some(texture);
+            }
+            NodeKind::Interior => {
+                let base = object.interior.unwrap_or_default();
+                object.interior = Some(self.interior(m, base)?);
             }
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
@@ -337,6 +350,7 @@ impl Evaluator<'_> {
                 shape: part.shape,
                 transform: part.transform,
                 texture,
+                interior: part.interior.or(object.interior).unwrap_or_default(),
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
             });

@@ -44,6 +44,8 @@ pub enum Value {
     Object(Box<super::ObjectValue>),
     Transform(ir::Transform),
     Camera(Box<super::CameraItems>),
+    Interior(ir::Interior),
+    ColourMap(ir::ColourMap),
 }
 
 impl Value {
@@ -59,6 +61,8 @@ impl Value {
             Value::Object(_) => "an object",
             Value::Transform(_) => "a transform",
             Value::Camera(_) => "a camera",
+            Value::Interior(_) => "an interior",
+            Value::ColourMap(_) => "a color_map",
         }
     }
 

@@ -23,6 +23,8 @@ pub struct TriangleMesh {
     /// Per triangle (BVH order), indices into `normals`, or [`FLAT`]; empty if all flat.
     normal_indices: Vec<[u32; 3]>,
     bvh: Bvh2,
+    /// `inside_vector`, if given.
+    pub inside_vector: Option<DVec3>,
     /// Bounding box in object space.
     pub bounds: (DVec3, DVec3),
 }
@@ -115,6 +117,7 @@ impl TriangleMesh {
             normals,
             normal_indices,
             bvh,
+            inside_vector: None,
             bounds: (lo, hi),
         }
     }
@@ -147,17 +150,22 @@ impl TriangleMesh {
         out
     }
 
-    /// The number of crossings along the ray (for shadows through transparent meshes).
-    pub fn count_crossings(&self, ray: &Ray) -> usize {
+    /// Calls `f` with the distance of every crossing along the ray (in no particular order).
+    pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        let mut n = 0;
         self.bvh
             .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, i| {
                 let [a, b, c] = self.corners(i);
-                if sheared.intersect(a, b, c, ray.tmin, ray.tmax).is_some() {
-                    n += 1;
+                if let Some(t) = sheared.intersect(a, b, c, ray.tmin, ray.tmax) {
+                    f(t);
                 }
             });
+    }
+
+    /// The number of crossings along the ray.
+    pub fn count_crossings(&self, ray: &Ray) -> usize {
+        let mut n = 0;
+        self.for_each_crossing(ray, |_| n += 1);
         n
     }
 
@@ -194,9 +202,13 @@ impl TriangleMesh {
         }
     }
 
-    /// Whether a point is inside the (closed) mesh: an odd number of crossings along `dir`.
-    pub fn contains(&self, p: DVec3, dir: DVec3) -> bool {
-        self.count_crossings(&Ray::new(p, dir)) % 2 == 1
+    /// Whether a point is inside: only a mesh with an `inside_vector` has an inside (an odd
+    /// number of crossings along that vector), as in POV-Ray.
+    pub fn contains(&self, p: DVec3) -> bool {
+        match self.inside_vector {
+            Some(dir) => self.count_crossings(&Ray::new(p, dir)) % 2 == 1,
+            None => false,
+        }
     }
 }
 
@@ -253,7 +265,10 @@ mod tests {
         let m = cube(DVec3::ZERO, 1.0);
         let r = Ray::new(DVec3::ZERO, DVec3::new(0.3, 0.2, 1.0));
         assert_eq!(m.count_crossings(&r), 1);
-        assert!(m.contains(DVec3::ZERO, DVec3::new(0.3, 0.2, 1.0)));
+        let mut m = m;
+        assert!(!m.contains(DVec3::ZERO));
+        m.inside_vector = Some(DVec3::new(0.3, 0.2, 1.0));
+        assert!(m.contains(DVec3::ZERO));
     }
 
     #[test]

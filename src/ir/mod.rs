@@ -36,6 +36,8 @@ pub struct Scene {
     /// Colour of rays that hit nothing (`background { color C }`), already multiplied by
     /// `1 − transmit` as POV-Ray does without alpha output.
     pub background: Rgb,
+    /// `sky_sphere { pigment }`: the colour of escaped rays by direction, over the background.
+    pub sky_sphere: Option<Pigment>,
     /// Scene-wide settings.
     pub settings: Settings,
 }
@@ -97,6 +99,69 @@ pub struct Light {
     pub position: DVec3,
     /// Colour (intensity; not clamped).
     pub colour: Rgb,
+    /// Point, spot or parallel.
+    pub kind: LightKind,
+    /// `shadowless`: no shadow test and no highlights.
+    pub shadowless: bool,
+    /// `fade_distance`/`fade_power`, when both are given and positive.
+    pub fade: Option<LightFade>,
+    /// `area_light`: soft shadows from a grid of points.
+    pub area: Option<AreaLight>,
+}
+
+/// How a light emits.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum LightKind {
+    /// Equally in every direction.
+    Point,
+    /// `spotlight`: a cone toward `point_at`.
+    Spot {
+        /// Where the cone's axis points.
+        point_at: DVec3,
+        /// Full-intensity half angle (degrees, default 30).
+        radius_deg: f64,
+        /// Half angle where the light reaches zero (degrees, default 45).
+        falloff_deg: f64,
+        /// Exponent of the cosine fall-off inside the cone (default 0).
+        tightness: f64,
+    },
+    /// `parallel`: every point lit from the direction `location − point_at`.
+    Parallel {
+        /// Target point.
+        point_at: DVec3,
+    },
+}
+
+/// Light attenuation `2 / (1 + (d / distance)^power)`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct LightFade {
+    /// `fade_distance`.
+    pub distance: f64,
+    /// `fade_power`.
+    pub power: f64,
+}
+
+/// `area_light <axis1>, <axis2>, size1, size2 [adaptive a] [jitter] [circular] [orient]`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AreaLight {
+    /// First grid axis (full length).
+    pub axis1: DVec3,
+    /// Second grid axis.
+    pub axis2: DVec3,
+    /// Grid points along `axis1`.
+    pub size1: u32,
+    /// Grid points along `axis2`.
+    pub size2: u32,
+    /// `adaptive` level (default 100: the whole grid).
+    pub adaptive: u32,
+    /// `jitter`: grid points moved at random within their cell (deterministically in trace).
+    pub jitter: bool,
+    /// `circular`: the grid mapped onto a disc.
+    pub circular: bool,
+    /// `orient`: the grid turned to face the shaded point.
+    pub orient: bool,
+    /// `area_illumination`: each grid point also lights the surface on its own.
+    pub area_illumination: bool,
 }
 
 /// A renderable object: a shape, where it is, and what it is made of.
@@ -108,6 +173,8 @@ pub struct Object {
     pub transform: Option<Transform>,
     /// The resolved surface.
     pub texture: Texture,
+    /// What is inside (index of refraction, fade).
+    pub interior: Interior,
     /// `no_shadow`: the object casts no shadow.
     pub no_shadow: bool,
     /// `inverse`: inside and outside swapped.
@@ -252,17 +319,121 @@ pub struct Texture {
     pub pigment: Pigment,
     /// How light interacts with the surface.
     pub finish: Finish,
-    /// World from texture space: the transformations applied after the texture was attached
-    /// (POV-Ray moves a texture with its object only if it was attached first). `None` is the
-    /// identity.
+}
+
+/// A pigment: a pattern of colours placed in space.
+///
+/// `.rt`: `pigment { color rgb <..> }`, `pigment { checker C0, C1 scale 2 }`,
+/// `pigment { gradient y color_map { [0 C0] [1 C1] } }`, `pigment { image_map { png "f.png" } }`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Pigment {
+    /// The colours.
+    pub pattern: Pattern,
+    /// World from pattern space: the pigment's own transformations, then those of its texture
+    /// and of its object made after it was attached (POV-Ray moves a texture with its object
+    /// only if it was attached first). `None` is the identity.
     pub transform: Option<Transform>,
 }
 
-/// Pigments.
+impl Pigment {
+    /// A solid colour.
+    pub fn solid(c: Colour) -> Pigment {
+        Pigment {
+            pattern: Pattern::Solid(c),
+            transform: None,
+        }
+    }
+}
+
+/// Colour patterns.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub enum Pigment {
-    /// One colour everywhere. `.rt`: `pigment { color rgb <..> }`.
+pub enum Pattern {
+    /// One colour everywhere.
     Solid(Colour),
+    /// `checker C0, C1`: unit cubes, `C0` where ⌊x⌋ + ⌊y⌋ + ⌊z⌋ is even.
+    Checker([Colour; 2]),
+    /// `gradient V`: the colour map at the fraction of `p·V̂`.
+    Gradient {
+        /// Unit direction.
+        axis: DVec3,
+        /// The colour map.
+        map: ColourMap,
+    },
+    /// `image_map { png "file" … }`: planar projection onto the unit square of the x-y plane.
+    ImageMap(Arc<ImageMap>),
+}
+
+/// `color_map { [v C] … }`: colours at increasing values, interpolated between.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ColourMap {
+    /// (value, colour), by increasing value.
+    pub entries: Vec<(f64, Colour)>,
+}
+
+impl Default for ColourMap {
+    /// POV-Ray's default map: black at 0 to white at 1.
+    fn default() -> ColourMap {
+        let c = |v: f64| Colour {
+            rgb: Rgb::splat(v),
+            filter: 0.0,
+            transmit: 0.0,
+        };
+        ColourMap {
+            entries: vec![(0.0, c(0.0)), (1.0, c(1.0))],
+        }
+    }
+}
+
+/// A decoded image for `image_map`.
+#[derive(Clone, PartialEq, Serialize)]
+pub struct ImageMap {
+    /// The file as named in the scene.
+    pub file: String,
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Pixels, top row first: linear (working-gamma) rgb and transmit (1 − alpha).
+    pub pixels: Vec<[f32; 4]>,
+    /// `once`: no tiling; outside the unit square the pigment is fully transparent.
+    pub once: bool,
+    /// `interpolate 2` (bilinear) or none (nearest pixel).
+    pub bilinear: bool,
+}
+
+impl std::fmt::Debug for ImageMap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ImageMap")
+            .field("file", &self.file)
+            .field("size", &(self.width, self.height))
+            .field("once", &self.once)
+            .field("bilinear", &self.bilinear)
+            .finish()
+    }
+}
+
+/// `interior { ior fade_distance fade_power fade_color }`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Interior {
+    /// Index of refraction (default 1).
+    pub ior: f64,
+    /// `fade_distance` (default 0: no fade).
+    pub fade_distance: f64,
+    /// `fade_power` (default 0).
+    pub fade_power: f64,
+    /// `fade_color` (default black).
+    pub fade_colour: Rgb,
+}
+
+impl Default for Interior {
+    fn default() -> Interior {
+        Interior {
+            ior: 1.0,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            fade_colour: Rgb::ZERO,
+        }
+    }
 }
 
 /// POV-Ray's finish, every default filled in (`Create_Finish`).
@@ -356,9 +527,8 @@ impl Default for Texture {
     /// POV-Ray's default texture: black pigment, default finish.
     fn default() -> Texture {
         Texture {
-            pigment: Pigment::Solid(Colour::default()),
+            pigment: Pigment::solid(Colour::default()),
             finish: Finish::default(),
-            transform: None,
         }
     }
 }

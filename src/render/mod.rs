@@ -5,6 +5,7 @@
 //! parallel, and every pixel depends only on the scene and its own block, so the output is
 //! the same for any number of threads.
 
+mod lights;
 mod shade;
 
 pub use shade::RayCounts;
@@ -13,7 +14,7 @@ use crate::film::Film;
 use crate::geometry::Ray;
 use crate::scene::{Gamma, Projection, Rgb, Scene};
 use rayon::prelude::*;
-use shade::Tracer;
+use shade::{Interiors, Tracer};
 
 /// POV-Ray's render block size (`+BS`), in pixels.
 const BLOCK_SIZE: u32 = 32;
@@ -143,6 +144,12 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Ray {
     }
 }
 
+/// Traces a camera ray, which starts inside the objects that contain its origin.
+fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray: &Ray) -> Rgb {
+    let interiors = camera_interiors.unwrap_or_else(|| Interiors::at(tracer.scene, ray.origin));
+    tracer.trace(ray, 1, 1.0, &interiors)
+}
+
 /// POV-Ray's "colours differ" test for anti-aliasing: the sum over channels of the
 /// differences of gamma-2.5-encoded values reaches the threshold.
 fn differ(a: Rgb, b: Rgb, gamma: Gamma, threshold: f64) -> bool {
@@ -163,11 +170,16 @@ fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> Blo
     let x1 = (x0 + BLOCK_SIZE).min(w);
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
+    // A perspective camera's rays all start inside the same objects.
+    let camera_interiors = match scene.camera.projection {
+        Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
+        Projection::Orthographic => None,
+    };
     let mut samples = 0u64;
     let centre = |tracer: &mut Tracer, x: u32, y: u32| {
         tracer.counts.camera += 1;
         let ray = camera_ray(scene, w, h, x as f64, y as f64);
-        tracer.trace(&ray, 1, 1.0)
+        trace_primary(tracer, &camera_interiors, &ray)
     };
 
     // Local grid with one extra row above and one extra column on the left.
@@ -219,7 +231,7 @@ fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> Blo
                 let oy = -0.5 + step / 2.0 + b as f64 * step;
                 tracer.counts.camera += 1;
                 let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
-                sum += tracer.trace(&ray, 1, 1.0);
+                sum += trace_primary(tracer, &camera_interiors, &ray);
             }
         }
         value[index(x, y)] = sum / (n * n + 1) as f64;

@@ -1,14 +1,22 @@
-//! POV-Ray's shading model and Whitted recursion (pov-semantics §6–7).
+//! POV-Ray's shading model and Whitted recursion (pov-semantics §6–9): ambient, emission,
+//! diffuse, phong, specular, metallic, reflection (plain and Fresnel), transmission through
+//! filter and transmit, refraction with POV-Ray's interior bookkeeping, interior fade.
 
+use super::lights::LightSample;
 use crate::geometry::Ray;
-use crate::scene::{Material, Rgb, Scene, SurfaceHit};
+use crate::scene::{
+    Colour, Material, ObjectId, Rgb, Scene, SurfaceHit, filter_colour, interior_fade,
+};
 use glam::DVec3;
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
 const MAX_DISTANCE: f64 = 1e7;
 
-/// POV-Ray ignores a light whose cosine with the normal is below this.
-const MIN_LIGHT_COSINE: f64 = 1e-10;
+/// |η − 1| below this counts as "no change of medium" (POV-Ray's test).
+const SAME_IOR: f64 = 1e-10;
+
+/// Most interiors a ray can be inside at once (deeper nesting is not tracked).
+const MAX_NESTING: usize = 8;
 
 /// Counts of rays traced, for statistics.
 #[derive(Clone, Copy, Debug, Default)]
@@ -17,7 +25,7 @@ pub struct RayCounts {
     pub camera: u64,
     /// Reflected rays.
     pub reflected: u64,
-    /// Rays continued through transparent surfaces.
+    /// Refracted rays and rays continued through transparent surfaces.
     pub transmitted: u64,
     /// Shadow rays.
     pub shadow: u64,
@@ -33,11 +41,63 @@ impl RayCounts {
     }
 }
 
-/// Traces rays through one scene; holds the per-thread ray tally.
+/// The objects a ray is inside, in the order it entered them (POV-Ray's interior list).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Interiors {
+    ids: [u32; MAX_NESTING],
+    len: usize,
+}
+
+impl Interiors {
+    /// The objects of `scene` whose inside contains `p` (a camera ray's list). The order is
+    /// POV-Ray's: scene order for fewer than three objects and lights; otherwise, as its
+    /// bounding does, unbounded objects (planes) first.
+    pub fn at(scene: &Scene, p: DVec3) -> Interiors {
+        let mut list = Interiors::default();
+        let bounded_last = scene.objects.len() + scene.lights.len() >= 3;
+        for pass in [false, true] {
+            for (i, object) in scene.objects.iter().enumerate() {
+                let second = bounded_last && object.bounds.is_some();
+                if second == pass && scene.contains(object, p) {
+                    list.push(ObjectId(i as u32));
+                }
+            }
+        }
+        list
+    }
+
+    fn push(&mut self, id: ObjectId) {
+        if self.len < MAX_NESTING {
+            self.ids[self.len] = id.0;
+            self.len += 1;
+        }
+    }
+
+    fn position(&self, id: ObjectId) -> Option<usize> {
+        self.ids[..self.len].iter().position(|&i| i == id.0)
+    }
+
+    fn remove(&mut self, index: usize) {
+        self.ids.copy_within(index + 1..self.len, index);
+        self.len -= 1;
+    }
+
+    fn last(&self) -> Option<ObjectId> {
+        (self.len > 0).then(|| ObjectId(self.ids[self.len - 1]))
+    }
+
+    fn second_last(&self) -> Option<ObjectId> {
+        (self.len > 1).then(|| ObjectId(self.ids[self.len - 2]))
+    }
+}
+
+/// Traces rays through one scene; holds the per-thread ray tally and scratch space.
 pub struct Tracer<'a> {
-    scene: &'a Scene,
+    pub(super) scene: &'a Scene,
     /// Rays traced so far by this tracer.
     pub counts: RayCounts,
+    /// Area-light visibility cache, reused between shading points.
+    pub(super) area_cache: Vec<Option<Rgb>>,
 }
 
 /// grey(c) = 0.297 r + 0.589 g + 0.114 b (POV-Ray's luminance weights).
@@ -51,45 +111,80 @@ fn metallic_fresnel(cos: f64) -> f64 {
     (0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903).clamp(0.0, 1.0)
 }
 
+/// Fresnel reflectance for relative index `eta` (n_to / n_from) and incidence cosine `c`
+/// (POV-Ray §7.5): 1 beyond the critical angle.
+fn fresnel(eta: f64, c: f64) -> f64 {
+    let g2 = eta * eta + c * c - 1.0;
+    if g2 <= 0.0 {
+        return 1.0;
+    }
+    let g = g2.sqrt();
+    let a = (g - c) / (g + c);
+    let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+    (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+}
+
 impl<'a> Tracer<'a> {
     /// A tracer over `scene`.
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
         Tracer {
             scene,
             counts: RayCounts::default(),
+            area_cache: Vec::new(),
         }
     }
 
-    /// The colour seen along `ray` (unit direction). `level` is the ray's trace level (a camera
-    /// ray is 1) and `weight` its contribution to the pixel; rays past `max_trace_level` or
-    /// below `adc_bailout` return black, as in POV-Ray.
-    pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64) -> Rgb {
+    /// The colour seen along `ray` (unit direction), which is inside `interiors`. `level` is the
+    /// ray's trace level (a camera ray is 1) and `weight` its contribution to the pixel; rays
+    /// past `max_trace_level` or below `adc_bailout` return black, as in POV-Ray.
+    pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
         if level > self.scene.max_trace_level || weight < self.scene.adc_bailout {
             return Rgb::ZERO;
         }
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let ray = &ray;
-        let Some(hit) = self.scene.intersect(ray) else {
-            return self.scene.background;
+        let Some(hit) = self.scene.intersect(&ray) else {
+            return self.escaped(ray.direction);
         };
-        let surface = self.scene.surface(ray, &hit);
-        self.shade(ray, &surface, level, weight)
+        let surface = self.scene.surface(&ray, &hit);
+        self.shade(&ray, hit.t, &surface, level, weight, interiors)
     }
 
-    fn shade(&mut self, ray: &Ray, hit: &SurfaceHit, level: u32, weight: f64) -> Rgb {
+    /// The colour of a ray that hits nothing: the sky_sphere over the background.
+    fn escaped(&self, direction: DVec3) -> Rgb {
+        match &self.scene.sky_sphere {
+            None => self.scene.background,
+            Some(sky) => {
+                let c = sky.colour_at(direction.normalize());
+                c.rgb * (1.0 - c.transmit - c.filter)
+                    + self.scene.background * c.transmit
+                    + self.scene.background * c.rgb * c.filter
+            }
+        }
+    }
+
+    fn shade(
+        &mut self,
+        ray: &Ray,
+        t: f64,
+        hit: &SurfaceHit,
+        level: u32,
+        weight: f64,
+        interiors: &Interiors,
+    ) -> Rgb {
         let scene = self.scene;
         let material = scene.material(hit.material);
         let finish = &material.finish;
-        let colour = material.colour;
+        let colour = material.pigment.colour_at(hit.point);
         let d = ray.direction;
-        // Shade the side facing the ray.
-        let n = if hit.normal.dot(d) > 0.0 {
-            -hit.normal
+        // Shade the side facing the ray (decided by the geometric normal).
+        let facing = if hit.geometric_normal.dot(d) > 0.0 {
+            -1.0
         } else {
-            hit.normal
+            1.0
         };
+        let n = hit.normal * facing;
         let pigment = colour.rgb;
         let att = if scene.legacy_transparency {
             1.0 - (colour.filter * pigment.max_element() + colour.transmit)
@@ -101,125 +196,213 @@ impl<'a> Tracer<'a> {
         let mut result =
             pigment * finish.ambient * scene.ambient_light * att + pigment * finish.emission * att;
 
-        // Direct light: diffuse, phong, specular, with (coloured) shadows.
-        for light in &scene.lights {
-            if light.colour == Rgb::ZERO {
+        // Direct light.
+        for index in 0..scene.lights.len() {
+            let Some(sample) =
+                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
+            else {
                 continue;
-            }
-            let to_light = light.position - hit.point;
-            let distance = to_light.length();
-            let l = to_light / distance;
-            let cos_nl = n.dot(l);
-            if cos_nl < MIN_LIGHT_COSINE {
-                continue;
-            }
-            let mut shadow_ray = scene.spawn(hit, ray.origin, l);
-            shadow_ray.tmax = (light.position - shadow_ray.origin).length();
-            self.counts.shadow += 1;
-            let lc = light.colour * scene.transmittance(&shadow_ray);
-            if lc == Rgb::ZERO {
-                continue;
-            }
-            if finish.diffuse > 0.0 {
-                result += pigment * lc * finish.diffuse * att * cos_nl.powf(finish.brilliance);
-            }
-            if finish.phong > 0.0 || finish.specular > 0.0 {
-                let lc_metal = if finish.metallic != 0.0 {
-                    let f = metallic_fresnel(cos_nl);
-                    lc * (Rgb::ONE + finish.metallic * (1.0 - f) * (pigment - Rgb::ONE))
-                } else {
-                    lc
-                };
-                if finish.phong > 0.0 {
-                    // Phong: the mirrored view ray against the light direction.
-                    let r = d - 2.0 * d.dot(n) * n;
-                    let c = r.dot(l);
-                    if c > 0.0 {
-                        result += finish.phong * c.powf(finish.phong_size) * lc_metal;
-                    }
-                }
-                if finish.specular > 0.0 {
-                    // Blinn: the half vector against the normal.
-                    let h = (l - d).normalize_or_zero();
-                    let c = n.dot(h);
-                    if c > 0.0 {
-                        result += finish.specular * c.powf(1.0 / finish.roughness) * lc_metal;
-                    }
-                }
-            }
+            };
+            result += self.lit(material, &colour, att, d, n, &sample);
         }
 
+        // Relative indices for this crossing (POV-Ray §9.1).
+        let object = &scene.objects[hit.object.0 as usize];
+        let crossing = Crossing::new(scene, interiors, hit.object);
         let cos_i = -d.dot(n);
-        let reflectivity = self.reflectivity(material, cos_i);
+        let reflectivity = reflectivity(material, &colour, cos_i, crossing.fresnel_eta);
+        let fade = if crossing.inside && object.interior.fade_distance.abs() > 1e-10 {
+            interior_fade(&object.interior, t * d.length())
+        } else {
+            Rgb::ONE
+        };
 
-        // Transmission through a surface of relative ior 1: the ray goes on unbent, at the same
-        // trace level; but, as in POV-Ray, no secondary ray at all leaves a ray already at
-        // max_trace_level (with max_trace_level 1, transparent objects show black).
-        if material.is_transparent() && level < scene.max_trace_level {
-            let mut filter = material.filter_colour();
-            if finish.conserve_energy {
-                filter *= (Rgb::ONE - reflectivity).min(Rgb::ONE);
-            }
-            if grey(filter).abs().min(1.0) > scene.adc_bailout {
+        // Transmission: straight on through ior-1 surfaces (same trace level), refracted
+        // otherwise; no secondary ray leaves a ray already at max_trace_level.
+        let mut total_internal_reflection = false;
+        let mut filter = filter_colour(&colour);
+        if finish.conserve_energy {
+            filter *= (Rgb::ONE - reflectivity).min(Rgb::ONE);
+        }
+        if filter != Rgb::ZERO
+            && level < scene.max_trace_level
+            && grey(filter).abs().min(1.0) > scene.adc_bailout
+        {
+            let w = weight * filter.abs().max_element();
+            let eta = crossing.refraction_eta;
+            if (eta - 1.0).abs() < SAME_IOR {
                 let through = scene.spawn(hit, ray.origin, d);
                 self.counts.transmitted += 1;
-                let w = weight * filter.abs().max_element();
-                result += self.trace(&through, level, w) * filter;
+                result += fade * self.trace(&through, level, w, &crossing.after) * filter;
+            } else {
+                // Heckbert's refraction, c = −D·N with N facing the ray.
+                let k = 1.0 + eta * eta * (cos_i * cos_i - 1.0);
+                if k < 0.0 {
+                    // Total internal reflection: the mirror ray at full weight, instead of the
+                    // surface's own reflection.
+                    total_internal_reflection = true;
+                    let r = (d + 2.0 * cos_i * n).normalize();
+                    let mirror = scene.spawn(hit, ray.origin, r);
+                    self.counts.reflected += 1;
+                    result += fade * self.trace(&mirror, level + 1, weight, interiors);
+                } else {
+                    let dir = (eta * d + (eta * cos_i - k.sqrt()) * n).normalize();
+                    let refracted = scene.spawn(hit, ray.origin, dir);
+                    self.counts.transmitted += 1;
+                    result += fade * self.trace(&refracted, level + 1, w, &crossing.after) * filter;
+                }
             }
         }
 
         // Mirror reflection.
-        if reflectivity.max_element() > 0.0 {
-            let r = (d - 2.0 * d.dot(n) * n).normalize();
+        if !total_internal_reflection
+            && reflectivity.max_element() > 0.0
+            && level < scene.max_trace_level
+        {
+            let r = (d + 2.0 * cos_i * n).normalize();
             let reflected = scene.spawn(hit, ray.origin, r);
             self.counts.reflected += 1;
             // POV-Ray weighs a plain reflection by its largest possible value (max of min and
             // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
-            let r = &finish.reflection;
-            let bound = if r.fresnel {
+            let rf = &finish.reflection;
+            let bound = if rf.fresnel {
                 reflectivity.max_element()
             } else {
-                r.max.max_element().max(r.min.max_element())
+                rf.max.max_element().max(rf.min.max_element())
             };
-            let w = weight * bound;
-            let mut seen = self.trace(&reflected, level + 1, w);
-            if finish.reflection.exponent != 1.0 {
-                seen = seen.max(DVec3::ZERO).powf(1.0 / finish.reflection.exponent);
+            let mut seen = self.trace(&reflected, level + 1, weight * bound, interiors);
+            if rf.exponent != 1.0 {
+                seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
             }
             result += reflectivity * seen;
         }
         result
     }
 
-    /// POV-Ray's reflectivity for incidence cosine `cos_i` (§7.5), for a ray in air hitting a
-    /// surface of ior 1 (trace has no interiors yet, so the Fresnel term sees η = 1).
-    fn reflectivity(&self, material: &Material, cos_i: f64) -> Rgb {
-        let r = &material.finish.reflection;
-        if !r.is_some() {
-            return Rgb::ZERO;
+    /// Diffuse, phong and specular from one light sample (§7.3).
+    fn lit(
+        &self,
+        material: &Material,
+        colour: &Colour,
+        att: f64,
+        d: DVec3,
+        n: DVec3,
+        s: &LightSample,
+    ) -> Rgb {
+        let finish = &material.finish;
+        let pigment = colour.rgb;
+        let lc = s.colour;
+        let mut result = Rgb::ZERO;
+        let cos_nl = n.dot(s.direction);
+        if cos_nl >= 0.0 {
+            if finish.diffuse > 0.0 {
+                result += pigment * lc * finish.diffuse * att * cos_nl.powf(finish.brilliance);
+            }
+        } else if finish.diffuse_back > 0.0 {
+            // A light behind the surface lights it through, with the back-side diffuse.
+            result += pigment * lc * finish.diffuse_back * att * (-cos_nl).powf(finish.brilliance);
         }
-        let mut reflec = if r.fresnel {
-            let eta: f64 = 1.0;
-            let g2 = eta * eta + cos_i * cos_i - 1.0;
-            let f = if g2 <= 0.0 {
-                1.0
+        if s.highlights && cos_nl > 0.0 && (finish.phong > 0.0 || finish.specular > 0.0) {
+            let lc_metal = if finish.metallic != 0.0 {
+                let f = metallic_fresnel(cos_nl);
+                lc * (Rgb::ONE + finish.metallic * (1.0 - f) * (pigment - Rgb::ONE))
             } else {
-                let g = g2.sqrt();
-                let c = cos_i;
-                let a = (g - c) / (g + c);
-                let b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
-                (0.5 * a * a * (1.0 + b * b)).clamp(0.0, 1.0)
+                lc
             };
-            f * r.max + (1.0 - f) * r.min
-        } else {
-            let frac = (1.0 - cos_i).max(0.0).powf(r.falloff);
-            frac * r.max + (1.0 - frac) * r.min
-        };
-        if r.metallic != 0.0 {
-            let f = metallic_fresnel(cos_i);
-            reflec *= Rgb::ONE + r.metallic * (1.0 - f) * (material.colour.rgb - Rgb::ONE);
+            if finish.phong > 0.0 {
+                // Phong: the mirrored view ray against the light direction.
+                let r = d - 2.0 * d.dot(n) * n;
+                let c = r.dot(s.direction);
+                if c > 0.0 {
+                    result += finish.phong * c.powf(finish.phong_size) * lc_metal;
+                }
+            }
+            if finish.specular > 0.0 {
+                // Blinn: the half vector against the normal.
+                let h = (s.direction - d).normalize_or_zero();
+                let c = n.dot(h);
+                if c > 0.0 {
+                    result += finish.specular * c.powf(1.0 / finish.roughness) * lc_metal;
+                }
+            }
         }
-        reflec
+        result
+    }
+}
+
+/// POV-Ray's reflectivity for incidence cosine `cos_i` (§7.5); `eta` is the relative index
+/// the Fresnel term uses.
+fn reflectivity(material: &Material, colour: &Colour, cos_i: f64, eta: f64) -> Rgb {
+    let r = &material.finish.reflection;
+    if !r.is_some() {
+        return Rgb::ZERO;
+    }
+    let mut reflec = if r.fresnel {
+        let f = fresnel(eta, cos_i);
+        f * r.max + (1.0 - f) * r.min
+    } else {
+        let frac = (1.0 - cos_i).max(0.0).powf(r.falloff);
+        frac * r.max + (1.0 - frac) * r.min
+    };
+    if r.metallic != 0.0 {
+        let f = metallic_fresnel(cos_i);
+        reflec *= Rgb::ONE + r.metallic * (1.0 - f) * (colour.rgb - Rgb::ONE);
+    }
+    reflec
+}
+
+/// What crossing one object's surface means for a ray (POV-Ray §9.1).
+struct Crossing {
+    /// The ray was inside the object.
+    inside: bool,
+    /// n_from / n_to for the refraction direction.
+    refraction_eta: f64,
+    /// n_to / n_from as POV-Ray's `ComputeRelativeIOR` gives it to the Fresnel term.
+    fresnel_eta: f64,
+    /// The interior list of the transmitted ray.
+    after: Interiors,
+}
+
+impl Crossing {
+    fn new(scene: &Scene, list: &Interiors, o: ObjectId) -> Crossing {
+        let ior = |id: ObjectId| scene.objects[id.0 as usize].interior.ior;
+        let n_o = ior(o);
+        let mut after = *list;
+        let position = list.position(o);
+        let refraction_eta = match (position, list.last()) {
+            // Entering from air.
+            (None, None) => {
+                after.push(o);
+                1.0 / n_o
+            }
+            // Entering while inside others.
+            (None, Some(last)) => {
+                after.push(o);
+                ior(last) / n_o
+            }
+            // Leaving the innermost object.
+            (Some(i), Some(last)) if last == o => {
+                after.remove(i);
+                n_o / list.second_last().map_or(1.0, ior)
+            }
+            // Leaving an object that is not the innermost: no bending.
+            (Some(i), _) => {
+                after.remove(i);
+                1.0
+            }
+        };
+        let fresnel_eta = match (position.is_some(), list.last()) {
+            (_, None) => n_o,
+            (true, Some(_)) if list.len == 1 => 1.0 / n_o,
+            (true, Some(last)) => ior(last) / n_o,
+            (false, Some(last)) => n_o / ior(last),
+        };
+        Crossing {
+            inside: position.is_some(),
+            refraction_eta,
+            fresnel_eta,
+            after,
+        }
     }
 }
 
@@ -239,5 +422,13 @@ mod tests {
     fn grey_uses_povray_weights() {
         assert!((grey(Rgb::ONE) - 1.0).abs() < 1e-12);
         assert_eq!(grey(Rgb::X), 0.297);
+    }
+
+    #[test]
+    fn fresnel_of_glass_at_normal_incidence_is_four_percent() {
+        assert!((fresnel(1.5, 1.0) - 0.04).abs() < 1e-12);
+        assert_eq!(fresnel(1.0, 0.7), 0.0);
+        // Leaving glass beyond the critical angle: total reflection.
+        assert_eq!(fresnel(1.0 / 1.5, 0.3), 1.0);
     }
 }

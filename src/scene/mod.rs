@@ -11,7 +11,12 @@ use glam::{DMat3, DMat4, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
 
-pub use crate::ir::{Colour, Finish, Gamma, Projection, Reflection, Rgb};
+mod pigment;
+
+pub use crate::ir::{
+    AreaLight, Colour, Finish, Gamma, Interior, LightFade, LightKind, Projection, Reflection, Rgb,
+};
+pub use pigment::Pigment;
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,6 +39,8 @@ pub struct Scene {
     pub materials: Vec<Material>,
     /// Colour of escaped rays.
     pub background: Rgb,
+    /// `sky_sphere`: the colour of escaped rays by direction.
+    pub sky_sphere: Option<Pigment>,
     /// Rays at a deeper level return black.
     pub max_trace_level: u32,
     /// Rays of lower weight return black.
@@ -62,32 +69,48 @@ pub struct Camera {
 }
 
 /// A point light.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Light {
     /// World position.
     pub position: DVec3,
     /// Colour.
     pub colour: Rgb,
+    /// Point, spot or parallel.
+    pub kind: LightKind,
+    /// No shadows, no highlights.
+    pub shadowless: bool,
+    /// Distance attenuation.
+    pub fade: Option<LightFade>,
+    /// Soft-shadow grid.
+    pub area: Option<AreaLight>,
 }
 
 /// A resolved surface material.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
-    /// Pigment colour (solid).
-    pub colour: Colour,
+    /// Pigment.
+    pub pigment: Pigment,
     /// Finish.
     pub finish: Finish,
 }
 
-impl Material {
-    /// Whether light passes through the surface (filter or transmit non-zero).
-    pub fn is_transparent(&self) -> bool {
-        self.colour.filter != 0.0 || self.colour.transmit != 0.0
-    }
+/// `rgb·filter + transmit`: what a surface of colour `c` lets through, per channel.
+pub fn filter_colour(c: &Colour) -> Rgb {
+    c.rgb * c.filter + Rgb::splat(c.transmit)
+}
 
-    /// `rgb·filter + transmit`: what the surface lets through, per channel.
-    pub fn filter_colour(&self) -> Rgb {
-        self.colour.rgb * self.colour.filter + Rgb::splat(self.colour.transmit)
+/// POV-Ray's interior fade over a distance `d` inside (§9.2).
+pub fn interior_fade(interior: &Interior, d: f64) -> Rgb {
+    let fc = interior.fade_colour;
+    if interior.fade_power >= 1000.0 {
+        let k = d / interior.fade_distance;
+        Rgb::new(
+            (-(1.0 - fc.x) * k).exp(),
+            (-(1.0 - fc.y) * k).exp(),
+            (-(1.0 - fc.z) * k).exp(),
+        )
+    } else {
+        fc + (Rgb::ONE - fc) / (1.0 + (d / interior.fade_distance).powf(interior.fade_power))
     }
 }
 
@@ -123,11 +146,26 @@ impl Shape {
         }
     }
 
-    /// Number of surface crossings along the ray, for shadow rays.
-    fn crossing_count(&self, ray: &Ray) -> usize {
+    /// Calls `f` with the distance of every surface crossing along the ray (in increasing
+    /// order, except for meshes).
+    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64)) {
         match self {
-            Shape::Mesh(m) => m.count_crossings(ray),
-            other => other.intersect(ray).len(),
+            Shape::Mesh(m) => m.for_each_crossing(ray, f),
+            other => other.intersect(ray).as_slice().iter().for_each(|&t| f(t)),
+        }
+    }
+
+    /// Whether an object-space point is inside.
+    fn contains(&self, p: DVec3) -> bool {
+        match self {
+            Shape::Sphere(s) => s.contains(p),
+            Shape::Plane(pl) => pl.contains(p),
+            Shape::Box(b) => b.contains(p),
+            Shape::Cone(c) => c.contains(p),
+            Shape::Torus(t) => t.contains(p),
+            // POV-Ray: the half-space on the disc's back side.
+            Shape::Disc(d) => (p - d.centre).dot(d.normal) < 0.0,
+            Shape::Mesh(m) => m.contains(p),
         }
     }
 
@@ -208,6 +246,10 @@ pub struct Object {
     pub material: MaterialId,
     /// Casts no shadow.
     pub no_shadow: bool,
+    /// Inside swapped with outside.
+    pub inverse: bool,
+    /// Index of refraction and fade.
+    pub interior: Interior,
 }
 
 /// The nearest hit of a ray: cheap, no surface details yet.
@@ -232,6 +274,8 @@ pub struct SurfaceHit {
     pub geometric_normal: DVec3,
     /// The object's material.
     pub material: MaterialId,
+    /// The object hit.
+    pub object: ObjectId,
 }
 
 impl Scene {
@@ -243,9 +287,8 @@ impl Scene {
             .objects
             .iter()
             .map(|o| {
-                let ir::Pigment::Solid(colour) = o.texture.pigment.clone();
                 let material = Material {
-                    colour,
+                    pigment: Pigment::new(&o.texture.pigment),
                     finish: o.texture.finish.clone(),
                 };
                 let id = match materials.iter().position(|m| *m == material) {
@@ -266,6 +309,8 @@ impl Scene {
                     transform: transform.map(ObjectTransform::new),
                     material: MaterialId(id as u32),
                     no_shadow: o.no_shadow,
+                    inverse: o.inverse,
+                    interior: o.interior,
                 }
             })
             .collect();
@@ -284,11 +329,16 @@ impl Scene {
                 .map(|l| Light {
                     position: l.position,
                     colour: l.colour,
+                    kind: l.kind.clone(),
+                    shadowless: l.shadowless,
+                    fade: l.fade,
+                    area: l.area.clone(),
                 })
                 .collect(),
             objects,
             materials,
             background: ir.background,
+            sky_sphere: ir.sky_sphere.as_ref().map(Pigment::new),
             max_trace_level: ir.settings.max_trace_level,
             adc_bailout: ir.settings.adc_bailout,
             ambient_light: ir.settings.ambient_light,
@@ -356,15 +406,19 @@ impl Scene {
             normal,
             geometric_normal,
             material: object.material,
+            object: hit.object,
         }
     }
 
     /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
     /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
-    /// objects (POV-Ray filters at each surface crossing). Objects with `no_shadow` are skipped.
+    /// objects (POV-Ray filters at each surface crossing), times the interior fade of each
+    /// segment run inside an object whose fade_power is positive. Objects with `no_shadow`
+    /// are skipped; refraction is ignored, as in POV-Ray.
     pub fn transmittance(&self, ray: &Ray) -> Rgb {
         let mut through = Rgb::ONE;
         let inv = ray.direction.recip();
+        let length = ray.direction.length();
         for object in self.objects.iter().filter(|o| !o.no_shadow) {
             if !may_hit(object.bounds, ray, inv) {
                 continue;
@@ -374,20 +428,42 @@ impl Scene {
                 Some(t) => ray.transformed(&t.object_from_world),
             };
             let material = self.material(object.material);
-            if !material.is_transparent() {
+            if !material.pigment.may_be_transparent() {
                 if object.shape.occludes(&local) {
                     return Rgb::ZERO;
                 }
                 continue;
             }
-            for _ in 0..object.shape.crossing_count(&local) {
-                through *= material.filter_colour();
-            }
+            let interior = &object.interior;
+            let fades = interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10;
+            let mut inside = fades && self.contains(object, ray.origin);
+            let mut last_t = 0.0;
+            object.shape.for_each_crossing(&local, |t| {
+                let c = material.pigment.colour_at(ray.at(t));
+                through *= filter_colour(&c);
+                if fades {
+                    if inside {
+                        through *= interior_fade(interior, (t - last_t) * length);
+                    }
+                    inside = !inside;
+                    last_t = t;
+                }
+            });
             if through == Rgb::ZERO {
                 return through;
             }
         }
         through
+    }
+
+    /// Whether world point `p` is inside `object` (POV-Ray's inside test; thin shapes have no
+    /// inside; `inverse` swaps).
+    pub fn contains(&self, object: &Object, p: DVec3) -> bool {
+        let local = object
+            .transform
+            .as_ref()
+            .map_or(p, |t| t.object_from_world.transform_point3(p));
+        object.shape.contains(local) != object.inverse
     }
 
     /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
@@ -524,12 +600,14 @@ fn build_shape(
         ),
         ir::Shape::Mesh(mesh) => {
             let built = meshes.entry(Arc::as_ptr(mesh)).or_insert_with(|| {
-                Arc::new(TriangleMesh::new(
+                let mut built = TriangleMesh::new(
                     mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
                     mesh.triangles.clone(),
                     mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
                     mesh.normal_indices.clone(),
-                ))
+                );
+                built.inside_vector = mesh.inside_vector;
+                Arc::new(built)
             });
             (Shape::Mesh(built.clone()), transform)
         }
@@ -548,10 +626,12 @@ mod tests {
                 shape,
                 transform: Some(ir::Transform { matrix: transform }),
                 texture: ir::Texture::default(),
+                interior: ir::Interior::default(),
                 no_shadow: false,
                 inverse: false,
             }],
             background: Rgb::ZERO,
+            sky_sphere: None,
             settings: ir::Settings::default(),
         };
         Scene::build(&ir)

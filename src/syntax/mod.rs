@@ -89,6 +89,29 @@ pub enum NodeKind {
     Falloff,
     Exponent,
     Fresnel,
+    // Lights, patterns, interiors.
+    SkySphere,
+    LightFlag,
+    PointAt,
+    Radius,
+    Tightness,
+    AreaLight,
+    Adaptive,
+    AreaIllumination,
+    Checker,
+    Gradient,
+    ColourMap,
+    MapEntry,
+    ImageMap,
+    ImageType,
+    MapType,
+    Once,
+    Interpolate,
+    Interior,
+    Ior,
+    FadeDistance,
+    FadePower,
+    FadeColour,
     /// A reference to a declared identifier where an item may stand (`texture { T }`).
     IdentRef,
     /// A word the grammar does not know at this place (see `name`).
@@ -180,6 +203,8 @@ pub enum ExprKind {
     Member(Box<Expr>, String, Span),
     /// `color rgb <...> filter 0.5`.
     Colour(Vec<ColourPart>),
+    /// A string literal (without the quotes).
+    Str(String),
     /// A vector of plain number literals (`<1, -2.5, 3>`), read without building a tree: the
     /// bulk of a large mesh. `len` components (2..=5) are used.
     PlainVector([f64; 5], u8),
@@ -341,6 +366,28 @@ impl Lower {
             Rule::falloff => NodeKind::Falloff,
             Rule::exponent => NodeKind::Exponent,
             Rule::fresnel => NodeKind::Fresnel,
+            Rule::sky_sphere => NodeKind::SkySphere,
+            Rule::light_flag => NodeKind::LightFlag,
+            Rule::point_at => NodeKind::PointAt,
+            Rule::radius => NodeKind::Radius,
+            Rule::tightness => NodeKind::Tightness,
+            Rule::area_light => NodeKind::AreaLight,
+            Rule::adaptive => NodeKind::Adaptive,
+            Rule::area_illumination => NodeKind::AreaIllumination,
+            Rule::checker => NodeKind::Checker,
+            Rule::gradient => NodeKind::Gradient,
+            Rule::colour_map => NodeKind::ColourMap,
+            Rule::map_entry => NodeKind::MapEntry,
+            Rule::image_map => NodeKind::ImageMap,
+            Rule::image_type => NodeKind::ImageType,
+            Rule::map_type => NodeKind::MapType,
+            Rule::once => NodeKind::Once,
+            Rule::interpolate => NodeKind::Interpolate,
+            Rule::interior => NodeKind::Interior,
+            Rule::ior => NodeKind::Ior,
+            Rule::fade_distance => NodeKind::FadeDistance,
+            Rule::fade_power => NodeKind::FadePower,
+            Rule::fade_colour => NodeKind::FadeColour,
             Rule::ident => NodeKind::IdentRef,
             Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
@@ -515,6 +562,13 @@ impl Lower {
                     }
                 }
             }
+            Rule::string => {
+                let text = pair.as_str();
+                Expr {
+                    kind: ExprKind::Str(text[1..text.len() - 1].to_string()),
+                    span,
+                }
+            }
             Rule::number => Expr {
                 kind: ExprKind::Number(pair.as_str().parse().unwrap_or(f64::NAN)),
                 span,
@@ -567,7 +621,10 @@ impl Lower {
 }
 
 fn is_expr(rule: Rule) -> bool {
-    matches!(rule, Rule::expr | Rule::sum | Rule::plain_vector)
+    matches!(
+        rule,
+        Rule::expr | Rule::sum | Rule::plain_vector | Rule::string
+    )
 }
 
 fn is_word(rule: Rule) -> bool {
@@ -646,6 +703,34 @@ fn is_word(rule: Rule) -> bool {
             | kw_triangle
             | kw_union
             | kw_vertex_vectors
+            | kw_spotlight
+            | kw_parallel
+            | kw_shadowless
+            | kw_jitter
+            | kw_circular
+            | kw_orient
+            | kw_point_at
+            | kw_radius
+            | kw_tightness
+            | kw_area_light
+            | kw_adaptive
+            | kw_area_illumination
+            | kw_sky_sphere
+            | kw_checker
+            | kw_gradient
+            | kw_color_map
+            | kw_colour_map
+            | kw_image_map
+            | kw_png
+            | kw_map_type
+            | kw_once
+            | kw_interpolate
+            | kw_interior
+            | kw_ior
+            | kw_fade_distance
+            | kw_fade_power
+            | kw_fade_color
+            | kw_fade_colour
     )
 }
 

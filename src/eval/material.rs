@@ -1,0 +1,347 @@
+//! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
+
+use super::value::{colour5, to_colour};
+use super::{Evaluator, Result, Value, expr::type_error};
+use crate::diag::Diagnostic;
+use crate::ir::{
+    self, Colour, ColourMap, ImageMap, Interior, Pattern, Pigment, Rgb, Texture, Transform,
+};
+use crate::syntax::{ExprKind, Node, NodeKind};
+use std::sync::Arc;
+
+/// Appends a transformation to a pigment's placement.
+pub(super) fn move_pigment(p: &mut Pigment, t: Transform) {
+    p.transform = Some(p.transform.unwrap_or(Transform::IDENTITY).then(t));
+}
+
+impl Evaluator<'_> {
+    /// `texture { [Name] pigment {…} finish {…} transforms }`, starting from the default texture.
+    pub(super) fn texture(&mut self, node: &Node) -> Result<Texture> {
+        let mut texture = self.default_texture.clone();
+        for item in &node.children {
+            match item.kind {
+                NodeKind::IdentRef => match self.lookup(item)? {
+                    Value::Texture(t) => texture = t,
+                    other => return Err(type_error("a texture", &other, item.span)),
+                },
+                NodeKind::Pigment => {
+                    texture.pigment = self.pigment(item, texture.pigment.clone())?
+                }
+                NodeKind::Finish => {
+                    texture.finish = self.finish_block(item, texture.finish.clone())?
+                }
+                _ if Self::is_transform(item) => {
+                    let t = self.transform(item)?;
+                    move_pigment(&mut texture.pigment, t);
+                }
+                _ => return Err(self.unknown_item(item, "texture")),
+            }
+        }
+        Ok(texture)
+    }
+
+    /// `pigment { [colour | Name | checker … | gradient … | image_map {…}] [color_map] transforms }`.
+    pub(super) fn pigment(&mut self, node: &Node, mut pigment: Pigment) -> Result<Pigment> {
+        if let Some(e) = node.args.first() {
+            let v = self.eval(e)?;
+            pigment = match v {
+                Value::Pigment(p) => p,
+                other => match colour5(&other) {
+                    Some(c) => Pigment::solid(to_colour(c)),
+                    None => return Err(type_error("a colour or pigment", &other, e.span)),
+                },
+            };
+        }
+        let mut map: Option<(ColourMap, &Node)> = None;
+        for item in &node.children {
+            match item.kind {
+                NodeKind::Checker => {
+                    let blue = Colour {
+                        rgb: Rgb::new(0.0, 0.0, 1.0),
+                        ..Colour::default()
+                    };
+                    let green = Colour {
+                        rgb: Rgb::new(0.0, 1.0, 0.0),
+                        ..Colour::default()
+                    };
+                    let mut colours = [blue, green];
+                    for (slot, e) in colours.iter_mut().zip(&item.args) {
+                        let v = self.eval(e)?;
+                        *slot = to_colour(
+                            colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?,
+                        );
+                    }
+                    pigment = Pigment {
+                        pattern: Pattern::Checker(colours),
+                        transform: None,
+                    };
+                }
+                NodeKind::Gradient => {
+                    let axis = self.vec3(&item.args[0])?;
+                    if axis.length_squared() == 0.0 {
+                        return Err(Diagnostic::error(
+                            "gradient direction is the zero vector",
+                            item.args[0].span,
+                        ));
+                    }
+                    pigment = Pigment {
+                        pattern: Pattern::Gradient {
+                            axis: axis.normalize(),
+                            map: ColourMap::default(),
+                        },
+                        transform: None,
+                    };
+                }
+                NodeKind::ImageMap => {
+                    let image = self.image_map(item)?;
+                    pigment = Pigment {
+                        pattern: Pattern::ImageMap(Arc::new(image)),
+                        transform: None,
+                    };
+                }
+                NodeKind::ColourMap => map = Some((self.colour_map(item)?, item)),
+                _ if Self::is_transform(item) => {
+                    let t = self.transform(item)?;
+                    move_pigment(&mut pigment, t);
+                }
+                _ => return Err(self.unknown_item(item, "pigment")),
+            }
+        }
+        if let Some((m, item)) = map {
+            match &mut pigment.pattern {
+                Pattern::Gradient { map, .. } => *map = m,
+                _ => {
+                    return Err(Diagnostic::error(
+                        "color_map applies only to a pattern such as gradient",
+                        item.word_span,
+                    ));
+                }
+            }
+        }
+        Ok(pigment)
+    }
+
+    /// `color_map { [v C] … }` or `color_map { Name }`.
+    pub(super) fn colour_map(&mut self, node: &Node) -> Result<ColourMap> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return match self.lookup(ident)? {
+                Value::ColourMap(m) => Ok(m),
+                other => Err(type_error("a color_map", &other, ident.span)),
+            };
+        }
+        let mut entries = Vec::new();
+        for entry in &node.children {
+            let value = self.float(&entry.args[0])?;
+            let v = self.eval(&entry.args[1])?;
+            let colour = to_colour(
+                colour5(&v).ok_or_else(|| type_error("a colour", &v, entry.args[1].span))?,
+            );
+            if entries
+                .last()
+                .is_some_and(|(last, _): &(f64, Colour)| value < *last)
+            {
+                return Err(Diagnostic::error(
+                    "color_map values must not decrease",
+                    entry.args[0].span,
+                ));
+            }
+            entries.push((value, colour));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error(
+                "color_map has no entries",
+                node.word_span,
+            ));
+        }
+        Ok(ColourMap { entries })
+    }
+
+    /// `image_map { [png] "file" [map_type 0] [once] [interpolate n] }`.
+    fn image_map(&mut self, node: &Node) -> Result<ImageMap> {
+        let file_expr = &node.args[0];
+        let ExprKind::Str(file) = &file_expr.kind else {
+            return Err(Diagnostic::error(
+                "expected a file name in quotes",
+                file_expr.span,
+            ));
+        };
+        let (mut once, mut bilinear) = (false, false);
+        for item in &node.children {
+            match item.kind {
+                NodeKind::ImageType => {}
+                NodeKind::Once => once = true,
+                NodeKind::MapType => {
+                    let t = self.float(&item.args[0])?;
+                    if t != 0.0 {
+                        return Err(Diagnostic::error(
+                            "unsupported: map_type other than 0 (planar) (not supported by trace yet)",
+                            item.args[0].span,
+                        ));
+                    }
+                }
+                NodeKind::Interpolate => {
+                    let n = self.float(&item.args[0])?;
+                    bilinear = match n as i64 {
+                        0 => false,
+                        2 => true,
+                        _ => {
+                            return Err(Diagnostic::error(
+                                "unsupported: interpolate other than 0 or 2 (bilinear) (not supported by trace yet)",
+                                item.args[0].span,
+                            ));
+                        }
+                    };
+                }
+                _ => return Err(self.unknown_item(item, "image_map")),
+            }
+        }
+        if !file.to_ascii_lowercase().ends_with(".png") {
+            return Err(Diagnostic::error(
+                "unsupported: image_map reads PNG files only",
+                file_expr.span,
+            ));
+        }
+        let path = self.base_dir.join(file);
+        let img = image::ImageReader::open(&path)
+            .map_err(|e| {
+                Diagnostic::error(
+                    format!("cannot open image {}: {e}", path.display()),
+                    file_expr.span,
+                )
+            })?
+            .decode()
+            .map_err(|e| {
+                Diagnostic::error(
+                    format!("cannot decode image {}: {e}", path.display()),
+                    file_expr.span,
+                )
+            })?
+            .into_rgba16();
+        // PNG values are sRGB-encoded: decode to linear, then into the working gamma.
+        let gamma = self.assumed_gamma.unwrap_or(1.0);
+        let to_working = |v: u16| {
+            let linear = super::value::srgb_decode(v as f64 / 65535.0);
+            (if gamma == 1.0 {
+                linear
+            } else {
+                linear.powf(1.0 / gamma)
+            }) as f32
+        };
+        let pixels = img
+            .pixels()
+            .map(|p| {
+                [
+                    to_working(p.0[0]),
+                    to_working(p.0[1]),
+                    to_working(p.0[2]),
+                    1.0 - p.0[3] as f32 / 65535.0,
+                ]
+            })
+            .collect();
+        Ok(ImageMap {
+            file: file.clone(),
+            width: img.width(),
+            height: img.height(),
+            pixels,
+            once,
+            bilinear,
+        })
+    }
+
+    /// `finish { [Name] items }`, modifying `finish`.
+    pub(super) fn finish_block(&mut self, node: &Node, mut f: ir::Finish) -> Result<ir::Finish> {
+        for item in &node.children {
+            let arg = |i: usize| &item.args[i];
+            match item.kind {
+                NodeKind::IdentRef => match self.lookup(item)? {
+                    Value::Finish(declared) => f = declared,
+                    other => return Err(type_error("a finish", &other, item.span)),
+                },
+                NodeKind::Ambient => f.ambient = self.rgb_arg(arg(0))?,
+                NodeKind::Emission => f.emission = self.rgb_arg(arg(0))?,
+                NodeKind::Diffuse | NodeKind::Phong | NodeKind::Specular
+                    if item.children.iter().any(|c| c.kind == NodeKind::Albedo) =>
+                {
+                    return Err(self.unknown_word("albedo", item.children[0].word_span));
+                }
+                NodeKind::Diffuse => {
+                    f.diffuse = self.float(arg(0))?;
+                    if let Some(back) = item.args.get(1) {
+                        f.diffuse_back = self.float(back)?;
+                    }
+                }
+                NodeKind::Brilliance => f.brilliance = self.float(arg(0))?,
+                NodeKind::Phong => f.phong = self.float(arg(0))?,
+                NodeKind::PhongSize => f.phong_size = self.float(arg(0))?,
+                NodeKind::Specular => f.specular = self.float(arg(0))?,
+                NodeKind::Roughness => {
+                    let r = self.float(arg(0))?;
+                    if r == 0.0 {
+                        self.warn(Diagnostic::warning(
+                            "zero roughness: using 0.0001 instead",
+                            item.span,
+                        ));
+                    }
+                    f.roughness = if r == 0.0 { 1e-4 } else { r };
+                }
+                NodeKind::Metallic => f.metallic = self.optional_float(item, 1.0)?,
+                NodeKind::ConserveEnergy => f.conserve_energy = true,
+                NodeKind::Reflection => self.reflection(item, &mut f.reflection)?,
+                _ => return Err(self.unknown_item(item, "finish")),
+            }
+        }
+        Ok(f)
+    }
+
+    fn reflection(&mut self, node: &Node, r: &mut ir::Reflection) -> Result<()> {
+        let first = self.rgb_arg(&node.args[0])?;
+        match node.args.get(1) {
+            Some(second) => {
+                r.min = first;
+                r.max = self.rgb_arg(second)?;
+            }
+            None => {
+                r.min = first;
+                r.max = first;
+            }
+        }
+        let single = node.args.len() == 1;
+        for item in &node.children {
+            match item.kind {
+                NodeKind::Falloff => r.falloff = self.float(&item.args[0])?,
+                NodeKind::Exponent => r.exponent = self.float(&item.args[0])?,
+                NodeKind::Metallic => r.metallic = self.optional_float(item, 1.0)?,
+                NodeKind::Fresnel => r.fresnel = self.optional_float(item, 1.0)? != 0.0,
+                _ => return Err(self.unknown_item(item, "reflection")),
+            }
+        }
+        // With `fresnel` and a single colour, POV-Ray resets the minimum to 0.
+        if r.fresnel && single {
+            r.min = Rgb::ZERO;
+        }
+        Ok(())
+    }
+
+    /// `interior { [Name] ior fade_distance fade_power fade_color }`.
+    pub(super) fn interior(&mut self, node: &Node, mut interior: Interior) -> Result<Interior> {
+        for item in &node.children {
+            match item.kind {
+                NodeKind::IdentRef => match self.lookup(item)? {
+                    Value::Interior(i) => interior = i,
+                    other => return Err(type_error("an interior", &other, item.span)),
+                },
+                NodeKind::Ior => {
+                    interior.ior = self.float(&item.args[0])?;
+                    if interior.ior <= 0.0 {
+                        return Err(Diagnostic::error("ior must be positive", item.args[0].span));
+                    }
+                }
+                NodeKind::FadeDistance => interior.fade_distance = self.float(&item.args[0])?,
+                NodeKind::FadePower => interior.fade_power = self.float(&item.args[0])?,
+                NodeKind::FadeColour => interior.fade_colour = self.rgb_arg(&item.args[0])?,
+                _ => return Err(self.unknown_item(item, "interior")),
+            }
+        }
+        Ok(interior)
+    }
+}

@@ -1,0 +1,300 @@
+//! Light sources (pov-semantics §8): point, spot and parallel lights, distance fade,
+//! shadowless lights, and area lights with POV-Ray's recursive grid average.
+
+use super::shade::Tracer;
+use crate::geometry::Ray;
+use crate::scene::{AreaLight, Light, LightKind, Rgb, SurfaceHit};
+use glam::DVec3;
+
+/// POV-Ray ignores a light whose cosine with the normal is below this.
+const MIN_LIGHT_COSINE: f64 = 1e-10;
+
+/// Two area-light samples differ when their colours differ by more than this (Σ|Δrgb|).
+const AREA_DIFFERENCE: f64 = 0.1;
+
+/// What one light contributes at a point, before the surface's finish.
+pub struct LightSample {
+    /// Unit direction from the point toward the light (its centre for area lights).
+    pub direction: DVec3,
+    /// Light colour after attenuation and shadows.
+    pub colour: Rgb,
+    /// Whether the light makes highlights (shadowless lights do not).
+    pub highlights: bool,
+}
+
+/// Smooth step from `lo` to `hi` (POV-Ray's spotlight edge).
+fn smooth_step(lo: f64, hi: f64, p: f64) -> f64 {
+    if p < lo {
+        0.0
+    } else if p >= hi {
+        1.0
+    } else {
+        let s = (p - lo) / (hi - lo);
+        s * s * (3.0 - 2.0 * s)
+    }
+}
+
+/// A hash of a point and two grid indices to [−½, ½)², for deterministic area-light jitter:
+/// the same point always gets the same offsets, whatever thread shades it.
+fn jitter(p: DVec3, u: u32, v: u32) -> (f64, f64) {
+    let mut h: u64 = 0x9E37_79B9_7F4A_7C15;
+    for word in [
+        p.x.to_bits(),
+        p.y.to_bits(),
+        p.z.to_bits(),
+        ((u as u64) << 32) | v as u64,
+    ] {
+        h ^= word;
+        h = h.wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        h ^= h >> 31;
+    }
+    let a = (h >> 11) as f64 / (1u64 << 53) as f64;
+    let b = ((h.wrapping_mul(0x94D0_49BB_1331_11EB) >> 11) as f64) / (1u64 << 53) as f64;
+    (a - 0.5, b - 0.5)
+}
+
+impl Tracer<'_> {
+    /// The light `index` as seen from `hit` (normal `n` facing the viewer), or `None` if it
+    /// contributes nothing there.
+    pub(super) fn light_sample(
+        &mut self,
+        index: usize,
+        hit: &SurfaceHit,
+        from: DVec3,
+        n: DVec3,
+        back: bool,
+    ) -> Option<LightSample> {
+        let scene = self.scene;
+        let light = &scene.lights[index];
+        if light.colour == Rgb::ZERO {
+            return None;
+        }
+        let (direction, distance) = match &light.kind {
+            LightKind::Parallel { point_at } => {
+                let l = (light.position - *point_at).normalize();
+                (l, (light.position - hit.point).dot(l))
+            }
+            _ => {
+                let to = light.position - hit.point;
+                let distance = to.length();
+                (to / distance, distance)
+            }
+        };
+        let cos = n.dot(direction);
+        if cos < MIN_LIGHT_COSINE && !(back && cos < 0.0) {
+            return None;
+        }
+        let mut colour = light.colour * attenuation(light, direction, distance);
+        if colour == Rgb::ZERO {
+            return None;
+        }
+        if !light.shadowless {
+            let visible = match &light.area {
+                Some(area) if area.size1 * area.size2 > 1 => {
+                    self.area_visibility(light, area, hit, from)
+                }
+                _ => {
+                    let mut shadow = scene.spawn(hit, from, direction);
+                    shadow.tmax = shadow_length(light, &shadow, distance);
+                    self.counts.shadow += 1;
+                    scene.transmittance(&shadow)
+                }
+            };
+            colour *= visible;
+            if colour == Rgb::ZERO {
+                return None;
+            }
+        }
+        Some(LightSample {
+            direction,
+            colour,
+            highlights: !light.shadowless,
+        })
+    }
+
+    /// The average visibility (0..1 per channel) of an area light's grid from `hit`, by POV-Ray's
+    /// recursive subdivision: grid points get equal weight only for sizes 1, 2, 4, 8, …
+    fn area_visibility(
+        &mut self,
+        light: &Light,
+        area: &AreaLight,
+        hit: &SurfaceHit,
+        from: DVec3,
+    ) -> Rgb {
+        let cells = (area.size1 * area.size2) as usize;
+        self.area_cache.clear();
+        self.area_cache.resize(cells, None);
+        let (a1, a2) = grid_axes(light, area, hit.point);
+        let mut visibility = |tracer: &mut Tracer, u: u32, v: u32| -> Rgb {
+            let k = (v * area.size1 + u) as usize;
+            if let Some(c) = tracer.area_cache[k] {
+                return c;
+            }
+            let (mut fu, mut fv) = (u as f64, v as f64);
+            if area.jitter {
+                let (ju, jv) = jitter(hit.point, u, v);
+                fu += ju;
+                fv += jv;
+            }
+            let s1 = if area.size1 > 1 {
+                fu / (area.size1 - 1) as f64 - 0.5
+            } else {
+                0.0
+            };
+            let s2 = if area.size2 > 1 {
+                fv / (area.size2 - 1) as f64 - 0.5
+            } else {
+                0.0
+            };
+            let (s1, s2) = if area.circular || area.orient {
+                square_to_disc(s1, s2)
+            } else {
+                (s1, s2)
+            };
+            let point = light.position + a1 * s1 + a2 * s2;
+            let to = point - hit.point;
+            let distance = to.length();
+            let mut shadow = tracer.scene.spawn(hit, from, to / distance);
+            shadow.tmax = (point - shadow.origin).length();
+            tracer.counts.shadow += 1;
+            let c = tracer.scene.transmittance(&shadow);
+            tracer.area_cache[k] = Some(c);
+            c
+        };
+        subdivide(
+            self,
+            &mut visibility,
+            area,
+            [0, 0, area.size1 - 1, area.size2 - 1],
+            0,
+        )
+    }
+}
+
+/// POV-Ray's recursive area-light average over the grid rectangle `r = [u1, v1, u2, v2]`.
+fn subdivide(
+    tracer: &mut Tracer,
+    visibility: &mut impl FnMut(&mut Tracer, u32, u32) -> Rgb,
+    area: &AreaLight,
+    r: [u32; 4],
+    level: u32,
+) -> Rgb {
+    let [u1, v1, u2, v2] = r;
+    let s = [
+        visibility(tracer, u1, v1),
+        visibility(tracer, u2, v1),
+        visibility(tracer, u1, v2),
+        visibility(tracer, u2, v2),
+    ];
+    let differ = |a: Rgb, b: Rgb| (a - b).abs().element_sum() > AREA_DIFFERENCE;
+    let corners_differ =
+        differ(s[0], s[1]) || differ(s[1], s[3]) || differ(s[3], s[2]) || differ(s[2], s[0]);
+    if (u2 - u1 > 1 || v2 - v1 > 1) && (level < area.adaptive || corners_differ) {
+        let (ulo, uhi) = ((u1 + u2) / 2, (u1 + u2).div_ceil(2));
+        let (vlo, vhi) = ((v1 + v2) / 2, (v1 + v2).div_ceil(2));
+        let quads = [
+            [u1, v1, ulo, vlo],
+            [uhi, v1, u2, vlo],
+            [u1, vhi, ulo, v2],
+            [uhi, vhi, u2, v2],
+        ];
+        let mut sum = Rgb::ZERO;
+        for q in quads {
+            sum += subdivide(tracer, visibility, area, q, level + 1);
+        }
+        return sum / 4.0;
+    }
+    (s[0] + s[1] + s[2] + s[3]) / 4.0
+}
+
+/// The grid axes, turned to face `p` when the light is `orient`ed (POV-Ray: both axes
+/// perpendicular to the direction toward the light, with the length of the first axis).
+fn grid_axes(light: &Light, area: &AreaLight, p: DVec3) -> (DVec3, DVec3) {
+    if !area.orient {
+        return (area.axis1, area.axis2);
+    }
+    let d = (light.position - p).normalize_or(DVec3::Y);
+    let t = if (d.z.abs() - 1.0).abs() < 0.01 {
+        DVec3::Y
+    } else {
+        DVec3::Z
+    };
+    let a1 = d.cross(t).normalize();
+    let a2 = d.cross(a1).normalize();
+    let length = area.axis1.length();
+    (a1 * length, a2 * length)
+}
+
+/// POV-Ray's `circular` mapping of grid offsets in [−½, ½]²: square shells onto circles
+/// (with its constant 0.001 bias, so the centre point is slightly off centre).
+fn square_to_disc(x: f64, y: f64) -> (f64, f64) {
+    const BIAS: f64 = 0.001;
+    let (a, b) = (x + BIAS, y + BIAS);
+    let s = a.abs().max(b.abs()) / (a * a + b * b).sqrt();
+    (a * s, b * s)
+}
+
+/// Spotlight cone and distance fade (POV-Ray §8.1–8.2).
+fn attenuation(light: &Light, direction: DVec3, distance: f64) -> f64 {
+    let mut a = 1.0;
+    if let LightKind::Spot {
+        point_at,
+        radius_deg,
+        falloff_deg,
+        tightness,
+    } = &light.kind
+    {
+        let axis = (*point_at - light.position).normalize_or_zero();
+        let cos = (-direction).dot(axis);
+        if cos <= 0.0 {
+            return 0.0;
+        }
+        if *tightness != 0.0 {
+            a *= cos.powf(*tightness);
+        }
+        let cos_radius = radius_deg.to_radians().cos();
+        if *radius_deg < 90.0 && cos < cos_radius {
+            a *= smooth_step(falloff_deg.to_radians().cos(), cos_radius, cos);
+        }
+    }
+    if let Some(f) = &light.fade {
+        a *= 2.0 / (1.0 + (distance / f.distance).powf(f.power));
+    }
+    a
+}
+
+/// How far a shadow ray toward the light goes.
+fn shadow_length(light: &Light, shadow: &Ray, distance: f64) -> f64 {
+    match light.kind {
+        LightKind::Parallel { .. } => distance.max(0.0),
+        _ => (light.position - shadow.origin).length(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn smooth_step_edges() {
+        assert_eq!(smooth_step(0.5, 0.8, 0.4), 0.0);
+        assert_eq!(smooth_step(0.5, 0.8, 0.9), 1.0);
+        assert!((smooth_step(0.5, 0.8, 0.65) - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn jitter_is_deterministic_and_in_range() {
+        let p = DVec3::new(1.0, 2.0, 3.0);
+        assert_eq!(jitter(p, 1, 2), jitter(p, 1, 2));
+        let (a, b) = jitter(p, 3, 4);
+        assert!((-0.5..0.5).contains(&a) && (-0.5..0.5).contains(&b));
+    }
+
+    #[test]
+    fn circular_grid_keeps_direction_at_shell_radius() {
+        let (x, y) = square_to_disc(0.5 - 0.001, 0.5 - 0.001);
+        assert!(((x * x + y * y).sqrt() - 0.5).abs() < 1e-12);
+        let (x, y) = square_to_disc(0.5 - 0.001, -0.001);
+        assert!((x - 0.5).abs() < 1e-12 && y.abs() < 1e-12);
+    }
+}

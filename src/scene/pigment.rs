@@ -1,0 +1,211 @@
+//! Pigment evaluation: the colour of a pattern at a point (POV-Ray §12.2).
+
+use super::{Colour, Rgb};
+use crate::ir::{ColourMap, ImageMap, Pattern};
+use glam::{DMat4, DVec3};
+
+/// POV-Ray's tolerance in the checker pattern: `floor(x + 1e-10)`.
+const CHECKER_TOLERANCE: f64 = 1e-10;
+
+/// A pigment placed in the world.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pigment {
+    /// The colours.
+    pub pattern: Pattern,
+    /// Pattern space from world space; `None` is the identity.
+    pub pattern_from_world: Option<DMat4>,
+}
+
+impl Pigment {
+    /// The pigment as placed by the IR.
+    pub fn new(p: &crate::ir::Pigment) -> Pigment {
+        Pigment {
+            pattern: p.pattern.clone(),
+            pattern_from_world: p.transform.map(|t| t.matrix.inverse()),
+        }
+    }
+
+    /// The colour everywhere, if the pigment is a solid colour.
+    pub fn solid(&self) -> Option<Colour> {
+        match &self.pattern {
+            Pattern::Solid(c) => Some(*c),
+            _ => None,
+        }
+    }
+
+    /// Whether the pigment may let light through somewhere (filter or transmit non-zero).
+    pub fn may_be_transparent(&self) -> bool {
+        let see_through = |c: &Colour| c.filter != 0.0 || c.transmit != 0.0;
+        match &self.pattern {
+            Pattern::Solid(c) => see_through(c),
+            Pattern::Checker(cs) => cs.iter().any(see_through),
+            Pattern::Gradient { map, .. } => map.entries.iter().any(|(_, c)| see_through(c)),
+            Pattern::ImageMap(_) => true,
+        }
+    }
+
+    /// The colour at world point `p`.
+    pub fn colour_at(&self, p: DVec3) -> Colour {
+        if let Pattern::Solid(c) = &self.pattern {
+            return *c;
+        }
+        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        match &self.pattern {
+            Pattern::Solid(c) => *c,
+            Pattern::Checker(cs) => {
+                let k = (q.x + CHECKER_TOLERANCE).floor()
+                    + (q.y + CHECKER_TOLERANCE).floor()
+                    + (q.z + CHECKER_TOLERANCE).floor();
+                cs[(k.rem_euclid(2.0) != 0.0) as usize]
+            }
+            Pattern::Gradient { axis, map } => {
+                // POV-Ray: values above 1 wrap with fmod 1 (so 1.0 stays 1.0), then everything
+                // wraps with fmod 1.00001 and negatives are lifted into [0, 1): negative values
+                // drift by 1e-5 per unit, as in POV-Ray.
+                let mut v = q.dot(*axis);
+                if v > 1.0 {
+                    v %= 1.0;
+                }
+                v %= 1.00001;
+                if v < 0.0 {
+                    v -= v.floor();
+                }
+                lookup(map, v)
+            }
+            Pattern::ImageMap(image) => image_colour(image, q),
+        }
+    }
+}
+
+/// The colour map at `v`: the first colour below the first entry, the last at or above the
+/// last, otherwise linear interpolation of all five channels toward the first entry whose
+/// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).
+pub fn lookup(map: &ColourMap, v: f64) -> Colour {
+    let entries = &map.entries;
+    let Some(i) = entries.iter().position(|(value, _)| *value >= v) else {
+        return entries[entries.len() - 1].1;
+    };
+    if i == 0 {
+        return entries[0].1;
+    }
+    let ((v0, c0), (v1, c1)) = (entries[i - 1], entries[i]);
+    let t = if v1 > v0 { (v - v0) / (v1 - v0) } else { 1.0 };
+    Colour {
+        rgb: c0.rgb + (c1.rgb - c0.rgb) * t,
+        filter: c0.filter + (c1.filter - c0.filter) * t,
+        transmit: c0.transmit + (c1.transmit - c0.transmit) * t,
+    }
+}
+
+/// Planar image map (POV-Ray `planar_image_map`, `image_map`): the unit square of the x-y
+/// plane, image row 0 at y = 1, tiled unless `once`.
+fn image_colour(image: &ImageMap, q: DVec3) -> Colour {
+    const EDGE: f64 = 1e-10;
+    if image.once && !((0.0..=1.0).contains(&q.x) && (0.0..=1.0).contains(&q.y)) {
+        // Outside a `once` image: fully transparent (white, transmit 1).
+        return Colour {
+            rgb: Rgb::ONE,
+            filter: 0.0,
+            transmit: 1.0,
+        };
+    }
+    let (w, h) = (image.width as f64, image.height as f64);
+    let mut u = (q.x * w) % w + EDGE;
+    if u < 0.0 {
+        u += w;
+    }
+    let mut y = h - ((q.y * h) % h + EDGE);
+    if y < 0.0 {
+        y += h;
+    } else if y >= h {
+        y -= h;
+    }
+    let (iw, ih) = (image.width as i64, image.height as i64);
+    let texel = |x: i64, y: i64| {
+        let (x, y) = if image.once {
+            (x.clamp(0, iw - 1), y.clamp(0, ih - 1))
+        } else {
+            (x.rem_euclid(iw), y.rem_euclid(ih))
+        };
+        image.pixels[y as usize * image.width as usize + x as usize]
+    };
+    let px = if image.bilinear {
+        // Pixel centres at integer + ½: blend pixel i−1 and i with the fraction of u + ½.
+        let (x, yy) = (u + 0.5, y + 0.5);
+        let (i, j) = (x.floor() as i64, yy.floor() as i64);
+        let (p, r) = ((x - x.floor()) as f32, (yy - yy.floor()) as f32);
+        let mix = |a: [f32; 4], b: [f32; 4], t: f32| {
+            std::array::from_fn::<f32, 4, _>(|k| a[k] + (b[k] - a[k]) * t)
+        };
+        let top = mix(texel(i - 1, j - 1), texel(i, j - 1), p);
+        let bottom = mix(texel(i - 1, j), texel(i, j), p);
+        mix(top, bottom, r)
+    } else {
+        texel(
+            (u.floor() as i64).min(iw - 1),
+            (y.floor() as i64).min(ih - 1),
+        )
+    };
+    Colour {
+        rgb: Rgb::new(px[0] as f64, px[1] as f64, px[2] as f64),
+        filter: 0.0,
+        transmit: px[3] as f64,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(v: f64) -> Colour {
+        Colour {
+            rgb: Rgb::splat(v),
+            filter: 0.0,
+            transmit: 0.0,
+        }
+    }
+
+    #[test]
+    fn checker_alternates_by_unit_cube() {
+        let p = Pigment {
+            pattern: Pattern::Checker([c(0.0), c(1.0)]),
+            pattern_from_world: None,
+        };
+        assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.0));
+        assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(1.0));
+        assert_eq!(p.colour_at(DVec3::new(-0.5, 0.5, 0.5)), c(1.0));
+        assert_eq!(p.colour_at(DVec3::new(1.5, 1.5, 0.5)), c(0.0));
+    }
+
+    #[test]
+    fn colour_map_interpolates_and_clamps() {
+        let map = ColourMap {
+            entries: vec![(0.2, c(0.0)), (0.6, c(1.0))],
+        };
+        assert_eq!(lookup(&map, 0.0), c(0.0));
+        assert!((lookup(&map, 0.4).rgb.x - 0.5).abs() < 1e-12);
+        assert_eq!(lookup(&map, 0.9), c(1.0));
+        // Two entries at the same value: the earlier one wins exactly at that value.
+        let map = ColourMap {
+            entries: vec![(0.0, c(0.0)), (0.5, c(0.2)), (0.5, c(0.8)), (1.0, c(1.0))],
+        };
+        assert_eq!(lookup(&map, 0.5), c(0.2));
+        assert!(lookup(&map, 0.5000001).rgb.x > 0.79);
+    }
+
+    #[test]
+    fn gradient_wraps_negative_values() {
+        let p = Pigment {
+            pattern: Pattern::Gradient {
+                axis: DVec3::Y,
+                map: ColourMap::default(),
+            },
+            pattern_from_world: None,
+        };
+        assert!((p.colour_at(DVec3::new(0.0, -0.25, 0.0)).rgb.x - 0.75).abs() < 1e-4);
+        // POV-Ray's drift on the negative side: −50.5 gives 0.5005.
+        assert!((p.colour_at(DVec3::new(0.0, -50.5, 0.0)).rgb.x - 0.5005).abs() < 1e-9);
+        assert!((p.colour_at(DVec3::new(0.0, 1.0, 0.0)).rgb.x - 1.0).abs() < 1e-12);
+        assert!((p.colour_at(DVec3::new(0.0, 1.25, 0.0)).rgb.x - 0.25).abs() < 1e-12);
+    }
+}
