@@ -172,9 +172,9 @@ impl Tracer<'_> {
 }
 
 /// POV-Ray's recursive area-light average over the grid rectangle `r = [u1, v1, u2, v2]`.
-fn subdivide(
-    tracer: &mut Tracer,
-    visibility: &mut impl FnMut(&mut Tracer, u32, u32) -> Rgb,
+fn subdivide<C>(
+    tracer: &mut C,
+    visibility: &mut impl FnMut(&mut C, u32, u32) -> Rgb,
     area: &AreaLight,
     r: [u32; 4],
     level: u32,
@@ -280,6 +280,44 @@ mod tests {
         assert_eq!(smooth_step(0.5, 0.8, 0.4), 0.0);
         assert_eq!(smooth_step(0.5, 0.8, 0.9), 1.0);
         assert!((smooth_step(0.5, 0.8, 0.65) - 0.5).abs() < 1e-12);
+    }
+
+    fn grid_weights(n: u32, adaptive: u32) -> Vec<f64> {
+        let area = AreaLight {
+            axis1: DVec3::X,
+            axis2: DVec3::Z,
+            size1: n,
+            size2: n,
+            adaptive,
+            jitter: false,
+            circular: false,
+            orient: false,
+            area_illumination: false,
+        };
+        (0..n * n)
+            .map(|k| {
+                let mut only = |_: &mut (), u: u32, v: u32| if v * n + u == k { Rgb::ONE } else { Rgb::ZERO };
+                subdivide(&mut (), &mut only, &area, [0, 0, n - 1, n - 1], 0).x
+            })
+            .collect()
+    }
+
+    #[test]
+    fn three_by_three_area_light_weights_are_a_tent() {
+        // POV-Ray's recursive average: centre 4/16, edges 2/16, corners 1/16.
+        let w = grid_weights(3, 100);
+        let expected = [1.0, 2.0, 1.0, 2.0, 4.0, 2.0, 1.0, 2.0, 1.0].map(|x| x / 16.0);
+        for (a, b) in w.iter().zip(expected) {
+            assert!((a - b).abs() < 1e-12, "{w:?}");
+        }
+    }
+
+    #[test]
+    fn power_of_two_plus_one_grids_are_not_uniform_but_two_by_two_is() {
+        assert!(grid_weights(2, 100).iter().all(|&w| (w - 0.25).abs() < 1e-12));
+        let w = grid_weights(5, 100);
+        assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!(w[12] > w[0]);
     }
 
     #[test]

@@ -8,6 +8,7 @@ fn centre_pixel(scene: &str) -> [f32; 3] {
     render_text(scene, 1, 1, Antialias::Off).get(0, 0)
 }
 
+/// Compares a film pixel (f32, so about 1e-7 relative precision) with a value computed by hand.
 fn assert_close(actual: [f32; 3], expected: [f64; 3], tolerance: f64) {
     for c in 0..3 {
         assert!(
@@ -185,4 +186,112 @@ fn adaptive_antialiasing_supersamples_only_where_colours_differ() {
         trace::render(&scene, &options).expect("renders").samples,
         40 * 40 * 10
     );
+}
+
+// ---- POV-Ray 3.7 behaviours trace reproduces on purpose (docs/povray-behaviours.md) ----
+
+const GLASS_BALL: &str = "sphere { 0, 1 pigment { rgbt <1,1,1,1> } finish { ambient 0 diffuse 0 } ";
+
+#[test]
+fn fade_distance_without_fade_power_is_a_constant_half() {
+    // The documentation says fade is off; POV-Ray 3.7 applies fade_color + (1 − fade_color)/2
+    // whatever the distance.
+    for distance in [1.0, 100.0] {
+        let scene = format!(
+            "{HEADER} background {{ rgb 1 }} camera {{ location <0,0,-5> look_at 0 }}
+             {GLASS_BALL} interior {{ fade_distance {distance} }} }}"
+        );
+        assert_close(centre_pixel(&scene), [0.5; 3], 1e-6);
+    }
+}
+
+#[test]
+fn fade_power_1000_or_more_is_exponential() {
+    // Through the centre the ray runs 2 units inside: exp(−2).
+    let scene = format!(
+        "{HEADER} background {{ rgb 1 }} camera {{ location <0,0,-5> look_at 0 }}
+         {GLASS_BALL} interior {{ fade_distance 1 fade_power 1001 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [(-2.0f64).exp(); 3], 1e-6);
+}
+
+#[test]
+fn fresnel_inside_two_interiors_loses_the_exit_reflection() {
+    // A glass ball before an emitting plane. When the plane's inside holds the camera, the ray
+    // is inside two interiors at the exit and POV-Ray computes no Fresnel loss there: 0.96.
+    // The same surface written the other way round gives both losses: 0.96².
+    let ball = "sphere { 0, 1 pigment { rgbt <1,1,1,1> }
+                 finish { ambient 0 diffuse 0 reflection { 0, 1 fresnel } conserve_energy }
+                 interior { ior 1.5 } }";
+    let wall = |plane: &str| {
+        format!(
+            "#version 3.7; global_settings {{ assumed_gamma 1.0 max_trace_level 10 }}
+             camera {{ location <0,0,-5> look_at 0 }} {ball}
+             plane {{ {plane} pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 0 emission 1 }} }}"
+        )
+    };
+    assert_close(centre_pixel(&wall("z, 3")), [0.96; 3], 1e-6);
+    assert_close(centre_pixel(&wall("-z, -3")), [0.9216; 3], 1e-6);
+}
+
+#[test]
+fn highlights_ignore_transparency() {
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }} light_source {{ <0,0,-5>, rgb 1 }}
+         plane {{ -z, 0 pigment {{ rgbt <1,1,1,0.9> }} finish {{ ambient 0 diffuse 0 phong 1 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [1.0; 3], 1e-6);
+}
+
+#[test]
+fn shadowless_lights_make_no_highlights() {
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }} light_source {{ <0,0,-5>, rgb 1 shadowless }}
+         plane {{ -z, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 0 phong 1 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [0.0; 3], 1e-6);
+}
+
+#[test]
+fn spotlight_edge_follows_povray_smooth_step() {
+    // Light at the camera pointing at the plane; the centre ray sees the axis (full light),
+    // so the centre pixel is the plain diffuse value; a light aimed 15° away falls in the
+    // smooth edge between radius 10° and falloff 20°.
+    let at = |target: &str| {
+        format!(
+            "{HEADER} camera {{ location <0,0,-5> look_at 0 }}
+             light_source {{ <0,0,-5>, rgb 1 spotlight point_at {target} radius 10 falloff 20 }}
+             plane {{ -z, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+        )
+    };
+    assert_close(centre_pixel(&at("0")), [1.0; 3], 1e-6);
+    let off = 5.0 * 15f64.to_radians().tan();
+    let (lo, hi, p) = (20f64.to_radians().cos(), 10f64.to_radians().cos(), 15f64.to_radians().cos());
+    let s = (p - lo) / (hi - lo);
+    assert_close(centre_pixel(&at(&format!("<{off}, 0, 0>"))), [s * s * (3.0 - 2.0 * s); 3], 1e-6);
+}
+
+#[test]
+fn light_fade_needs_both_distance_and_power() {
+    // 2 / (1 + (d / fade_distance)^fade_power) at d = 5, fade_distance 5: exactly 1; at
+    // fade_distance 2.5 with power 2: 2/5.
+    let scene = |fade: &str| {
+        format!(
+            "{HEADER} camera {{ location <0,0,-5> look_at 0 }} light_source {{ <0,0,-5>, rgb 1 {fade} }}
+             plane {{ -z, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+        )
+    };
+    assert_close(centre_pixel(&scene("fade_distance 5 fade_power 2")), [1.0; 3], 1e-6);
+    assert_close(centre_pixel(&scene("fade_distance 2.5 fade_power 2")), [0.4; 3], 1e-6);
+    assert_close(centre_pixel(&scene("fade_distance 2.5")), [1.0; 3], 1e-6);
+}
+
+#[test]
+fn back_side_diffuse_lights_a_surface_from_behind() {
+    // Light behind a disc at |N·L| = 1: the back-side value 0.3, no highlight.
+    let scene = format!(
+        "{HEADER} camera {{ location <0,0,-5> look_at 0 }} light_source {{ <0,0,5>, rgb 1 }}
+         disc {{ 0, z, 2 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 0.6, 0.3 phong 1 }} }}"
+    );
+    assert_close(centre_pixel(&scene), [0.3; 3], 1e-6);
 }
