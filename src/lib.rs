@@ -51,6 +51,8 @@ pub struct Loaded {
     pub scene: ir::Scene,
     /// Warnings, each rendered with its source excerpt.
     pub warnings: Vec<String>,
+    /// What the scene's `#debug` directives printed.
+    pub debug_output: String,
 }
 
 /// Errors of the whole pipeline.
@@ -88,7 +90,7 @@ pub fn load(path: &Path, options: &LoadOptions) -> Result<Loaded, Error> {
 pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
-    match eval::evaluate(&sources, file, options) {
+    match eval::evaluate(&mut sources, file, options) {
         Ok(evaluated) => Ok(Loaded {
             scene: evaluated.scene,
             warnings: evaluated
@@ -96,6 +98,7 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
                 .iter()
                 .map(|w| w.render(&sources))
                 .collect(),
+            debug_output: evaluated.debug_output,
         }),
         Err(diagnostic) => Err(Error::Scene(LoadError {
             diagnostic,

@@ -54,6 +54,10 @@ struct RenderArgs {
     /// Print render statistics (rays by kind, samples, time per phase).
     #[arg(long)]
     stats: bool,
+    /// A folder to search for `#include` files, after the scene's own folder (repeatable).
+    /// POV-Ray's standard includes: -L /usr/share/povray-3.7/include
+    #[arg(short = 'L', long = "include-path", value_name = "DIR")]
+    include_path: Vec<PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -146,8 +150,12 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
     let load_options = LoadOptions {
         width: args.width,
         height: args.height,
+        include_paths: args.include_path.clone(),
     };
     let loaded = trace::load(scene_path, &load_options)?;
+    if !args.quiet {
+        eprint!("{}", loaded.debug_output);
+    }
     for warning in &loaded.warnings {
         eprint!("{warning}");
     }

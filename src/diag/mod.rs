@@ -137,9 +137,16 @@ impl Diagnostic {
         }
     }
 
-    /// Adds a note line.
+    /// Adds a note line (after eight, a single "…" line stands for the rest, so that deep
+    /// macro recursion does not flood the message).
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
-        self.notes.push(note.into());
+        const MAX_NOTES: usize = 8;
+        if self.notes.len() < MAX_NOTES {
+            self.notes.push(note.into());
+        } else if self.notes.len() == MAX_NOTES {
+            self.notes
+                .push("… (more calls and includes omitted)".to_string());
+        }
         self
     }
 

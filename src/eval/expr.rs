@@ -31,10 +31,13 @@ impl Evaluator<'_> {
                 }
                 Ok(Value::Vector(Vector::new(&comps)))
             }
-            ExprKind::Str(_) => Err(Diagnostic::error(
-                "unsupported: strings outside image_map (not supported by trace yet)",
-                expr.span,
-            )),
+            ExprKind::Str(_) => Ok(Value::Str(self.string(expr)?)),
+            ExprKind::Call(name, _, _) if name == "concat" || name == "str" => {
+                Ok(Value::Str(self.string(expr)?))
+            }
+            ExprKind::Call(name, name_span, args) if self.macros.contains_key(name) => {
+                self.macro_value(name, *name_span, args, expr.span)
+            }
             ExprKind::PlainVector(c, len) => Ok(Value::Vector(Vector {
                 c: *c,
                 len: *len as usize,
@@ -95,7 +98,7 @@ impl Evaluator<'_> {
 
     fn ident(&mut self, name: &str, span: Span) -> Result<Value> {
         if let Some(v) = self.env.get(name) {
-            return Ok(v.clone());
+            return self.usable(name, v.clone(), span);
         }
         let v3 = |x, y, z| Value::Vector(Vector::new(&[x, y, z]));
         Ok(match name {

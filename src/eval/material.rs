@@ -18,25 +18,24 @@ impl Evaluator<'_> {
     /// `texture { [Name] pigment {…} finish {…} transforms }`, starting from the default texture.
     pub(super) fn texture(&mut self, node: &Node) -> Result<Texture> {
         let mut texture = self.default_texture.clone();
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
-                NodeKind::IdentRef => match self.lookup(item)? {
+                NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Texture(t) => texture = t,
                     other => return Err(type_error("a texture", &other, item.span)),
                 },
-                NodeKind::Pigment => {
-                    texture.pigment = self.pigment(item, texture.pigment.clone())?
-                }
+                NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
                 NodeKind::Finish => {
-                    texture.finish = self.finish_block(item, texture.finish.clone())?
+                    texture.finish = ev.finish_block(item, texture.finish.clone())?
                 }
                 _ if Self::is_transform(item) => {
-                    let t = self.transform(item)?;
+                    let t = ev.transform(item)?;
                     move_pigment(&mut texture.pigment, t);
                 }
-                _ => return Err(self.unknown_item(item, "texture")),
+                _ => return Err(ev.unknown_item(item, "texture")),
             }
-        }
+            Ok(())
+        })?;
         Ok(texture)
     }
 
@@ -52,8 +51,8 @@ impl Evaluator<'_> {
                 },
             };
         }
-        let mut map: Option<(ColourMap, &Node)> = None;
-        for item in &node.children {
+        let mut map: Option<(ColourMap, crate::diag::Span)> = None;
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::Checker => {
                     let blue = Colour {
@@ -66,7 +65,7 @@ impl Evaluator<'_> {
                     };
                     let mut colours = [blue, green];
                     for (slot, e) in colours.iter_mut().zip(&item.args) {
-                        let v = self.eval(e)?;
+                        let v = ev.eval(e)?;
                         *slot = to_colour(
                             colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?,
                         );
@@ -77,7 +76,7 @@ impl Evaluator<'_> {
                     };
                 }
                 NodeKind::Gradient => {
-                    let axis = self.vec3(&item.args[0])?;
+                    let axis = ev.vec3(&item.args[0])?;
                     if axis.length_squared() == 0.0 {
                         return Err(Diagnostic::error(
                             "gradient direction is the zero vector",
@@ -93,27 +92,28 @@ impl Evaluator<'_> {
                     };
                 }
                 NodeKind::ImageMap => {
-                    let image = self.image_map(item)?;
+                    let image = ev.image_map(item)?;
                     pigment = Pigment {
                         pattern: Pattern::ImageMap(Arc::new(image)),
                         transform: None,
                     };
                 }
-                NodeKind::ColourMap => map = Some((self.colour_map(item)?, item)),
+                NodeKind::ColourMap => map = Some((ev.colour_map(item)?, item.word_span)),
                 _ if Self::is_transform(item) => {
-                    let t = self.transform(item)?;
+                    let t = ev.transform(item)?;
                     move_pigment(&mut pigment, t);
                 }
-                _ => return Err(self.unknown_item(item, "pigment")),
+                _ => return Err(ev.unknown_item(item, "pigment")),
             }
-        }
-        if let Some((m, item)) = map {
+            Ok(())
+        })?;
+        if let Some((m, map_span)) = map {
             match &mut pigment.pattern {
                 Pattern::Gradient { map, .. } => *map = m,
                 _ => {
                     return Err(Diagnostic::error(
                         "color_map applies only to a pattern such as gradient",
-                        item.word_span,
+                        map_span,
                     ));
                 }
             }
@@ -166,12 +166,12 @@ impl Evaluator<'_> {
             ));
         };
         let (mut once, mut bilinear) = (false, false);
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::ImageType => {}
                 NodeKind::Once => once = true,
                 NodeKind::MapType => {
-                    let t = self.float(&item.args[0])?;
+                    let t = ev.float(&item.args[0])?;
                     if t != 0.0 {
                         return Err(Diagnostic::error(
                             "unsupported: map_type other than 0 (planar) (not supported by trace yet)",
@@ -180,7 +180,7 @@ impl Evaluator<'_> {
                     }
                 }
                 NodeKind::Interpolate => {
-                    let n = self.float(&item.args[0])?;
+                    let n = ev.float(&item.args[0])?;
                     bilinear = match n as i64 {
                         0 => false,
                         2 => true,
@@ -192,9 +192,10 @@ impl Evaluator<'_> {
                         }
                     };
                 }
-                _ => return Err(self.unknown_item(item, "image_map")),
+                _ => return Err(ev.unknown_item(item, "image_map")),
             }
-        }
+            Ok(())
+        })?;
         if !file.to_ascii_lowercase().ends_with(".png") {
             return Err(Diagnostic::error(
                 "unsupported: image_map reads PNG files only",
@@ -250,46 +251,53 @@ impl Evaluator<'_> {
 
     /// `finish { [Name] items }`, modifying `finish`.
     pub(super) fn finish_block(&mut self, node: &Node, mut f: ir::Finish) -> Result<ir::Finish> {
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             let arg = |i: usize| &item.args[i];
             match item.kind {
-                NodeKind::IdentRef => match self.lookup(item)? {
+                NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Finish(declared) => f = declared,
                     other => return Err(type_error("a finish", &other, item.span)),
                 },
-                NodeKind::Ambient => f.ambient = self.rgb_arg(arg(0))?,
-                NodeKind::Emission => f.emission = self.rgb_arg(arg(0))?,
+                NodeKind::Ambient => f.ambient = ev.rgb_arg(arg(0))?,
+                NodeKind::Emission => f.emission = ev.rgb_arg(arg(0))?,
                 NodeKind::Diffuse | NodeKind::Phong | NodeKind::Specular
                     if item.children.iter().any(|c| c.kind == NodeKind::Albedo) =>
                 {
-                    return Err(self.unknown_word("albedo", item.children[0].word_span));
+                    return Err(ev.unknown_word("albedo", item.children[0].word_span));
                 }
                 NodeKind::Diffuse => {
-                    f.diffuse = self.float(arg(0))?;
+                    f.diffuse = ev.float(arg(0))?;
                     if let Some(back) = item.args.get(1) {
-                        f.diffuse_back = self.float(back)?;
+                        f.diffuse_back = ev.float(back)?;
                     }
                 }
-                NodeKind::Brilliance => f.brilliance = self.float(arg(0))?,
-                NodeKind::Phong => f.phong = self.float(arg(0))?,
-                NodeKind::PhongSize => f.phong_size = self.float(arg(0))?,
-                NodeKind::Specular => f.specular = self.float(arg(0))?,
+                NodeKind::Brilliance => f.brilliance = ev.float(arg(0))?,
+                NodeKind::Phong => f.phong = ev.float(arg(0))?,
+                NodeKind::PhongSize => f.phong_size = ev.float(arg(0))?,
+                NodeKind::Specular => f.specular = ev.float(arg(0))?,
                 NodeKind::Roughness => {
-                    let r = self.float(arg(0))?;
+                    let r = ev.float(arg(0))?;
                     if r == 0.0 {
-                        self.warn(Diagnostic::warning(
+                        ev.warn(Diagnostic::warning(
                             "zero roughness: using 0.0001 instead",
                             item.span,
                         ));
                     }
                     f.roughness = if r == 0.0 { 1e-4 } else { r };
                 }
-                NodeKind::Metallic => f.metallic = self.optional_float(item, 1.0)?,
+                NodeKind::Metallic => f.metallic = ev.optional_float(item, 1.0)?,
                 NodeKind::ConserveEnergy => f.conserve_energy = true,
-                NodeKind::Reflection => self.reflection(item, &mut f.reflection)?,
-                _ => return Err(self.unknown_item(item, "finish")),
+                NodeKind::Reflection => ev.reflection(item, &mut f.reflection)?,
+                NodeKind::Ior => {
+                    return Err(Diagnostic::error(
+                        "unsupported: `ior` inside finish (POV-Ray's old syntax); write `interior { ior … }`",
+                        item.word_span,
+                    ))
+                }
+                _ => return Err(ev.unknown_item(item, "finish")),
             }
-        }
+            Ok(())
+        })?;
         Ok(f)
     }
 
@@ -306,15 +314,16 @@ impl Evaluator<'_> {
             }
         }
         let single = node.args.len() == 1;
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
-                NodeKind::Falloff => r.falloff = self.float(&item.args[0])?,
-                NodeKind::Exponent => r.exponent = self.float(&item.args[0])?,
-                NodeKind::Metallic => r.metallic = self.optional_float(item, 1.0)?,
-                NodeKind::Fresnel => r.fresnel = self.optional_float(item, 1.0)? != 0.0,
-                _ => return Err(self.unknown_item(item, "reflection")),
+                NodeKind::Falloff => r.falloff = ev.float(&item.args[0])?,
+                NodeKind::Exponent => r.exponent = ev.float(&item.args[0])?,
+                NodeKind::Metallic => r.metallic = ev.optional_float(item, 1.0)?,
+                NodeKind::Fresnel => r.fresnel = ev.optional_float(item, 1.0)? != 0.0,
+                _ => return Err(ev.unknown_item(item, "reflection")),
             }
-        }
+            Ok(())
+        })?;
         // With `fresnel` and a single colour, POV-Ray resets the minimum to 0.
         if r.fresnel && single {
             r.min = Rgb::ZERO;
@@ -324,24 +333,25 @@ impl Evaluator<'_> {
 
     /// `interior { [Name] ior fade_distance fade_power fade_color }`.
     pub(super) fn interior(&mut self, node: &Node, mut interior: Interior) -> Result<Interior> {
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
-                NodeKind::IdentRef => match self.lookup(item)? {
+                NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Interior(i) => interior = i,
                     other => return Err(type_error("an interior", &other, item.span)),
                 },
                 NodeKind::Ior => {
-                    interior.ior = self.float(&item.args[0])?;
+                    interior.ior = ev.float(&item.args[0])?;
                     if interior.ior <= 0.0 {
                         return Err(Diagnostic::error("ior must be positive", item.args[0].span));
                     }
                 }
-                NodeKind::FadeDistance => interior.fade_distance = self.float(&item.args[0])?,
-                NodeKind::FadePower => interior.fade_power = self.float(&item.args[0])?,
-                NodeKind::FadeColour => interior.fade_colour = self.rgb_arg(&item.args[0])?,
-                _ => return Err(self.unknown_item(item, "interior")),
+                NodeKind::FadeDistance => interior.fade_distance = ev.float(&item.args[0])?,
+                NodeKind::FadePower => interior.fade_power = ev.float(&item.args[0])?,
+                NodeKind::FadeColour => interior.fade_colour = ev.rgb_arg(&item.args[0])?,
+                _ => return Err(ev.unknown_item(item, "interior")),
             }
-        }
+            Ok(())
+        })?;
         Ok(interior)
     }
 }

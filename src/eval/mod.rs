@@ -5,6 +5,7 @@
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 
 mod expr;
+mod flow;
 mod material;
 mod object;
 mod transform;
@@ -28,6 +29,8 @@ pub struct LoadOptions {
     pub width: u32,
     /// Image height in pixels (`image_height`).
     pub height: u32,
+    /// Folders searched for `#include` files after the scene's own folder (`-L`).
+    pub include_paths: Vec<std::path::PathBuf>,
 }
 
 impl Default for LoadOptions {
@@ -35,6 +38,7 @@ impl Default for LoadOptions {
         LoadOptions {
             width: 800,
             height: 600,
+            include_paths: Vec::new(),
         }
     }
 }
@@ -78,12 +82,14 @@ impl Default for CameraItems {
 pub struct Evaluated {
     /// The scene.
     pub scene: ir::Scene,
+    /// What the scene's `#debug` directives printed.
+    pub debug_output: String,
     /// Warnings, in source order.
     pub warnings: Vec<Diagnostic>,
 }
 
 /// Evaluates the file `file` of `sources` into a scene.
-pub fn evaluate(sources: &SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
+pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
     let nodes = syntax::parse_scene(&sources.file(file).text, file)?;
     let base_dir = sources
         .file(file)
@@ -91,16 +97,20 @@ pub fn evaluate(sources: &SourceMap, file: FileId, options: &LoadOptions) -> Res
         .parent()
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
-    let mut ev = Evaluator::new(options, base_dir);
-    for node in &nodes {
-        ev.statement(node)?;
-    }
+    let mut ev = Evaluator::new(options, base_dir, sources);
+    ev.each_item(&nodes, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
 
 /// The evaluation state: declarations, defaults and the scene gathered so far.
 pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
+    sources: &'a mut SourceMap,
+    macros: HashMap<String, flow::Macro>,
+    frames: Vec<flow::Frame>,
+    include_depth: usize,
+    /// What `#debug` printed.
+    debug_output: String,
     /// The scene file's folder: relative image files are read from here.
     base_dir: std::path::PathBuf,
     sky_sphere: Option<ir::Pigment>,
@@ -117,9 +127,18 @@ pub(crate) struct Evaluator<'a> {
 }
 
 impl<'a> Evaluator<'a> {
-    fn new(options: &'a LoadOptions, base_dir: std::path::PathBuf) -> Evaluator<'a> {
+    fn new(
+        options: &'a LoadOptions,
+        base_dir: std::path::PathBuf,
+        sources: &'a mut SourceMap,
+    ) -> Evaluator<'a> {
         Evaluator {
             options,
+            sources,
+            macros: HashMap::new(),
+            frames: Vec::new(),
+            include_depth: 0,
+            debug_output: String::new(),
             base_dir,
             sky_sphere: None,
             env: HashMap::new(),
@@ -166,53 +185,48 @@ impl<'a> Evaluator<'a> {
     }
 
     fn lookup(&self, ident: &Node) -> Result<Value> {
-        self.env
-            .get(&ident.word)
-            .cloned()
-            .ok_or_else(|| self.unknown_word(&ident.word, ident.span))
+        match self.env.get(&ident.word) {
+            Some(v) => self.usable(&ident.word, v.clone(), ident.span),
+            None => Err(self.unknown_word(&ident.word, ident.span)),
+        }
+    }
+
+    /// A declared value, or the error of a declaration that was outside the subset.
+    fn usable(&self, name: &str, v: Value, span: Span) -> Result<Value> {
+        match v {
+            Value::Unsupported(d) => {
+                let mut e =
+                    Diagnostic::error(format!("`{name}` cannot be used: {}", d.message), span);
+                if let Some(s) = d.span {
+                    e = e.with_note(format!(
+                        "`{name}` is declared using it at {}",
+                        self.location(s)
+                    ));
+                }
+                Err(e)
+            }
+            v => Ok(v),
+        }
     }
 
     fn statement(&mut self, node: &Node) -> Result<()> {
         match node.kind {
-            NodeKind::Version => {
-                let v = self.float(&node.args[0])?;
-                self.version = Some(v);
-            }
-            NodeKind::Declare | NodeKind::Local => {
-                let name = node.children[0].word.clone();
-                let value = match node.children.get(1) {
-                    Some(item) => self.item_value(item)?,
-                    None => self.eval(&node.args[0])?,
-                };
-                self.env.insert(name, value);
-            }
             NodeKind::Default => {
-                for child in &node.children {
+                self.each_item(&node.children, &mut |ev, child| {
                     match child.kind {
-                        NodeKind::Texture => self.default_texture = self.texture(child)?,
+                        NodeKind::Texture => ev.default_texture = ev.texture(child)?,
                         NodeKind::Pigment => {
-                            let base = self.default_texture.pigment.clone();
-                            self.default_texture.pigment = self.pigment(child, base)?;
+                            let base = ev.default_texture.pigment.clone();
+                            ev.default_texture.pigment = ev.pigment(child, base)?;
                         }
                         NodeKind::Finish => {
-                            let base = self.default_texture.finish.clone();
-                            self.default_texture.finish = self.finish_block(child, base)?;
+                            let base = ev.default_texture.finish.clone();
+                            ev.default_texture.finish = ev.finish_block(child, base)?;
                         }
-                        _ => return Err(self.unknown_item(child, "#default")),
+                        _ => return Err(ev.unknown_item(child, "#default")),
                     }
-                }
-            }
-            NodeKind::UnknownDirective => {
-                let span = Span {
-                    start: node.span.start,
-                    ..node.word_span
-                };
-                return Err(match unsupported::reason(&node.word) {
-                    Some(reason) => {
-                        Diagnostic::error(format!("unsupported: `#{}` ({reason})", node.word), span)
-                    }
-                    None => Diagnostic::error(format!("unknown directive `#{}`", node.word), span),
-                });
+                    Ok(())
+                })?;
             }
             NodeKind::Camera => {
                 let items = self.camera_items(node, CameraItems::default())?;
@@ -232,7 +246,7 @@ impl<'a> Evaluator<'a> {
             NodeKind::GlobalSettings => self.global_settings(node)?,
             NodeKind::SkySphere => {
                 let mut pigment: Option<ir::Pigment> = None;
-                for item in &node.children {
+                self.each_item(&node.children, &mut |ev, item| {
                     match item.kind {
                         NodeKind::Pigment => {
                             if pigment.is_some() {
@@ -241,19 +255,19 @@ impl<'a> Evaluator<'a> {
                                     item.word_span,
                                 ));
                             }
-                            pigment = Some(
-                                self.pigment(item, ir::Pigment::solid(ir::Colour::default()))?,
-                            );
+                            pigment =
+                                Some(ev.pigment(item, ir::Pigment::solid(ir::Colour::default()))?);
                         }
                         _ if Self::is_transform(item) => {
-                            let t = self.transform(item)?;
+                            let t = ev.transform(item)?;
                             if let Some(p) = &mut pigment {
                                 material::move_pigment(p, t);
                             }
                         }
-                        _ => return Err(self.unknown_item(item, "sky_sphere")),
+                        _ => return Err(ev.unknown_item(item, "sky_sphere")),
                     }
-                }
+                    Ok(())
+                })?;
                 self.sky_sphere = pigment;
             }
             _ if object::is_object(node.kind) => {
@@ -272,7 +286,7 @@ impl<'a> Evaluator<'a> {
                     ),
                 });
             }
-            _ => unreachable!("{:?} is not a statement", node.kind),
+            _ => return Err(self.unknown_item(node, "the scene's top level")),
         }
         Ok(())
     }
@@ -301,12 +315,12 @@ impl<'a> Evaluator<'a> {
     }
 
     fn global_settings(&mut self, node: &Node) -> Result<()> {
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::AssumedGamma => {
-                    let g = self.float(&item.args[0])?;
-                    if self.assumed_gamma.is_some() {
-                        self.warn(Diagnostic::warning(
+                    let g = ev.float(&item.args[0])?;
+                    if ev.assumed_gamma.is_some() {
+                        ev.warn(Diagnostic::warning(
                             "a second assumed_gamma is ignored (as in POV-Ray)",
                             item.span,
                         ));
@@ -316,22 +330,23 @@ impl<'a> Evaluator<'a> {
                             item.args[0].span,
                         ));
                     } else {
-                        self.assumed_gamma = Some(g);
+                        ev.assumed_gamma = Some(g);
                     }
                 }
                 NodeKind::MaxTraceLevel => {
-                    let n = self.float(&item.args[0])?;
-                    self.settings.max_trace_level = (n as i64).clamp(1, 256) as u32;
+                    let n = ev.float(&item.args[0])?;
+                    ev.settings.max_trace_level = (n as i64).clamp(1, 256) as u32;
                 }
-                NodeKind::AdcBailout => self.settings.adc_bailout = self.float(&item.args[0])?,
+                NodeKind::AdcBailout => ev.settings.adc_bailout = ev.float(&item.args[0])?,
                 NodeKind::AmbientLight => {
-                    let v = self.eval(&item.args[0])?;
-                    self.settings.ambient_light = rgb(&v)
+                    let v = ev.eval(&item.args[0])?;
+                    ev.settings.ambient_light = rgb(&v)
                         .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
                 }
-                _ => return Err(self.unknown_item(item, "global_settings")),
+                _ => return Err(ev.unknown_item(item, "global_settings")),
             }
-        }
+            Ok(())
+        })?;
         Ok(())
     }
 
@@ -351,9 +366,9 @@ impl<'a> Evaluator<'a> {
         // for the error if there is no area_light at all.
         let (mut jitter, mut circular, mut orient, mut illumination) = (false, false, false, false);
         let mut adaptive = 100;
-        let mut area_modifier: Option<&Node> = None;
+        let mut area_modifier: Option<(String, Span)> = None;
         let mut transform: Option<Transform> = None;
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             let arg = |i: usize| &item.args[i];
             match item.kind {
                 NodeKind::LightFlag => match item.word.as_str() {
@@ -361,7 +376,7 @@ impl<'a> Evaluator<'a> {
                     "parallel" => parallel = true,
                     "shadowless" => shadowless = true,
                     flag => {
-                        area_modifier = area_modifier.or(Some(item));
+                        area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
                         match flag {
                             "jitter" => jitter = true,
                             "circular" => circular = true,
@@ -369,15 +384,15 @@ impl<'a> Evaluator<'a> {
                         }
                     }
                 },
-                NodeKind::PointAt => point_at = self.vec3(arg(0))?,
-                NodeKind::Radius => radius = Some(self.float(arg(0))?),
-                NodeKind::Falloff => falloff = Some(self.float(arg(0))?),
-                NodeKind::Tightness => tightness = Some(self.float(arg(0))?),
-                NodeKind::FadeDistance => fade_distance = self.float(arg(0))?,
-                NodeKind::FadePower => fade_power = self.float(arg(0))?,
+                NodeKind::PointAt => point_at = ev.vec3(arg(0))?,
+                NodeKind::Radius => radius = Some(ev.float(arg(0))?),
+                NodeKind::Falloff => falloff = Some(ev.float(arg(0))?),
+                NodeKind::Tightness => tightness = Some(ev.float(arg(0))?),
+                NodeKind::FadeDistance => fade_distance = ev.float(arg(0))?,
+                NodeKind::FadePower => fade_power = ev.float(arg(0))?,
                 NodeKind::AreaLight => {
-                    let axis1 = self.vec3(arg(0))?;
-                    let axis2 = self.vec3(arg(1))?;
+                    let axis1 = ev.vec3(arg(0))?;
+                    let axis2 = ev.vec3(arg(1))?;
                     let size = |ev: &mut Self, i: usize| -> Result<u32> {
                         let n = ev.float(&item.args[i])?;
                         if !(1.0..=1024.0).contains(&n) {
@@ -388,7 +403,7 @@ impl<'a> Evaluator<'a> {
                         }
                         Ok(n as u32)
                     };
-                    let (size1, size2) = (size(self, 2)?, size(self, 3)?);
+                    let (size1, size2) = (size(ev, 2)?, size(ev, 3)?);
                     area = Some(ir::AreaLight {
                         axis1,
                         axis2,
@@ -402,21 +417,22 @@ impl<'a> Evaluator<'a> {
                     });
                 }
                 NodeKind::Adaptive => {
-                    area_modifier = area_modifier.or(Some(item));
-                    adaptive = self.float(arg(0))?.max(0.0) as u32;
+                    area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
+                    adaptive = ev.float(arg(0))?.max(0.0) as u32;
                 }
                 NodeKind::AreaIllumination => {
-                    area_modifier = area_modifier.or(Some(item));
-                    illumination = self.optional_float(item, 1.0)? != 0.0;
+                    area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
+                    illumination = ev.optional_float(item, 1.0)? != 0.0;
                 }
                 _ if Self::is_transform(item) => {
-                    let t = self.transform(item)?;
+                    let t = ev.transform(item)?;
                     transform = Some(transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
-                _ => return Err(self.unknown_item(item, "light_source")),
+                _ => return Err(ev.unknown_item(item, "light_source")),
             }
-        }
-        match (&mut area, area_modifier) {
+            Ok(())
+        })?;
+        match (&mut area, area_modifier.clone()) {
             (Some(a), _) => {
                 (
                     a.jitter,
@@ -426,24 +442,24 @@ impl<'a> Evaluator<'a> {
                     a.area_illumination,
                 ) = (jitter, circular || orient, orient, adaptive, illumination);
                 if a.circular && (a.size1 < 2 || a.size2 < 2) {
-                    let m = area_modifier.expect("circular was given");
+                    let m = area_modifier.clone().expect("circular was given");
                     return Err(Diagnostic::error(
                         "a circular area_light must have more than 1 point per axis",
-                        m.word_span,
+                        m.1,
                     ));
                 }
                 if illumination {
-                    let m = area_modifier.expect("area_illumination was given");
+                    let m = area_modifier.clone().expect("area_illumination was given");
                     return Err(Diagnostic::error(
                         "unsupported: `area_illumination` (not supported by trace yet)",
-                        m.word_span,
+                        m.1,
                     ));
                 }
             }
-            (None, Some(m)) => {
+            (None, Some((word, span))) => {
                 return Err(Diagnostic::error(
-                    format!("`{}` needs an area_light", m.word),
-                    m.word_span,
+                    format!("`{word}` needs an area_light"),
+                    span,
                 ));
             }
             (None, None) => {}
@@ -485,24 +501,24 @@ impl<'a> Evaluator<'a> {
 
     fn camera_items(&mut self, node: &Node, mut c: CameraItems) -> Result<CameraItems> {
         c.span = node.word_span;
-        for item in &node.children {
+        self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::Perspective => c.projection = ir::Projection::Perspective,
                 NodeKind::Orthographic => c.projection = ir::Projection::Orthographic,
-                NodeKind::Location => c.location = self.vec3(&item.args[0])?,
-                NodeKind::LookAt => c.look_at = Some(self.vec3(&item.args[0])?),
-                NodeKind::Direction => c.direction = self.vec3(&item.args[0])?,
+                NodeKind::Location => c.location = ev.vec3(&item.args[0])?,
+                NodeKind::LookAt => c.look_at = Some(ev.vec3(&item.args[0])?),
+                NodeKind::Direction => c.direction = ev.vec3(&item.args[0])?,
                 NodeKind::Up => {
-                    c.up = self.vec3(&item.args[0])?;
+                    c.up = ev.vec3(&item.args[0])?;
                     c.up_or_right_given = true;
                 }
                 NodeKind::Right => {
-                    c.right = self.vec3(&item.args[0])?;
+                    c.right = ev.vec3(&item.args[0])?;
                     c.up_or_right_given = true;
                 }
-                NodeKind::Sky => c.sky = self.vec3(&item.args[0])?,
+                NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
                 NodeKind::Angle => {
-                    let a = self.float(&item.args[0])?;
+                    let a = ev.float(&item.args[0])?;
                     if !(a > 0.0 && a < 180.0) {
                         return Err(Diagnostic::error(
                             "camera angle must be between 0 and 180 degrees",
@@ -511,17 +527,18 @@ impl<'a> Evaluator<'a> {
                     }
                     c.angle = Some((a, item.span));
                 }
-                NodeKind::IdentRef => match self.lookup(item)? {
+                NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Camera(declared) => c = *declared,
                     other => return Err(expr::type_error("a camera", &other, item.span)),
                 },
                 _ if Self::is_transform(item) => {
-                    let t = self.transform(item)?;
+                    let t = ev.transform(item)?;
                     c.transform = Some(c.transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
-                _ => return Err(self.unknown_item(item, "camera")),
+                _ => return Err(ev.unknown_item(item, "camera")),
             }
-        }
+            Ok(())
+        })?;
         Ok(c)
     }
 
@@ -559,6 +576,7 @@ impl<'a> Evaluator<'a> {
                 settings: self.settings,
             },
             warnings: self.warnings,
+            debug_output: self.debug_output,
         })
     }
 }

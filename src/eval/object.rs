@@ -35,6 +35,28 @@ pub struct ObjectValue {
     interior: Option<Interior>,
 }
 
+/// Whether a node is a directive (run by `each_item` wherever it stands).
+fn is_directive(kind: NodeKind) -> bool {
+    use NodeKind::*;
+    matches!(
+        kind,
+        Version
+            | Declare
+            | Local
+            | Undef
+            | If
+            | IfDef
+            | While
+            | For
+            | Switch
+            | Message
+            | MacroDef
+            | MacroCall
+            | Include
+            | UnknownDirective
+    )
+}
+
 /// Whether a node is an object statement.
 pub(super) fn is_object(kind: NodeKind) -> bool {
     use NodeKind::*;
@@ -197,21 +219,24 @@ impl Evaluator<'_> {
             }
             NodeKind::Mesh => {
                 let mut mesh = Mesh::default();
-                let split = node
-                    .children
-                    .iter()
-                    .position(|c| !matches!(c.kind, NodeKind::Triangle | NodeKind::SmoothTriangle));
+                let split = node.children.iter().position(|c| {
+                    !matches!(c.kind, NodeKind::Triangle | NodeKind::SmoothTriangle)
+                        && !is_directive(c.kind)
+                });
                 let (triangles, rest) =
                     node.children.split_at(split.unwrap_or(node.children.len()));
-                for t in triangles {
+                self.each_item(triangles, &mut |ev, t| {
+                    if !matches!(t.kind, NodeKind::Triangle | NodeKind::SmoothTriangle) {
+                        return Err(Diagnostic::error("expected a triangle or smooth_triangle here", t.word_span));
+                    }
                     if let Some(m) = t.children.first() {
                         return Err(Diagnostic::error(
                             "unsupported: modifiers on a triangle inside a mesh (not supported by trace yet)",
                             m.span,
                         ));
                     }
-                    self.add_triangle(&mut mesh, t)?;
-                }
+                    ev.add_triangle(&mut mesh, t)
+                })?;
                 modifiers = self.inside_vector(&mut mesh, rest)?;
                 if mesh.triangles.is_empty() {
                     self.warn(Diagnostic::warning(
@@ -229,28 +254,21 @@ impl Evaluator<'_> {
                 ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
             }
             NodeKind::Union => {
-                let split = node
-                    .children
-                    .iter()
-                    .position(|c| !is_object(c.kind))
-                    .unwrap_or(node.children.len());
-                let (members, rest) = node.children.split_at(split);
-                if let Some(late) = rest.iter().find(|c| is_object(c.kind)) {
-                    return Err(Diagnostic::error(
-                        "union members must come before the union's modifiers",
-                        late.word_span,
-                    ));
-                }
-                modifiers = rest;
+                // Members and the group's modifiers, in order (POV-Ray puts the modifiers last).
+                modifiers = &[];
                 let mut group = ObjectValue::empty();
-                for member in members {
-                    let m = self.object(member)?;
+                self.each_item(&node.children, &mut |ev, item| {
+                    if !is_object(item.kind) {
+                        return ev.object_modifier(&mut group, item, false);
+                    }
+                    let m = ev.object(item)?;
                     for mut part in m.parts {
                         part.texture = part.texture.or_else(|| m.texture.clone());
                         part.interior = part.interior.or(m.interior);
                         group.parts.push(part);
                     }
-                }
+                    Ok(())
+                })?;
                 group
             }
             NodeKind::ObjectRef => {
@@ -267,9 +285,9 @@ impl Evaluator<'_> {
             _ => unreachable!("{:?} is not an object", node.kind),
         };
         let is_cone = matches!(node.kind, NodeKind::Cylinder | NodeKind::Cone);
-        for m in modifiers {
-            self.object_modifier(&mut object, m, is_cone)?;
-        }
+        self.each_item(modifiers, &mut |ev, m| {
+            ev.object_modifier(&mut object, m, is_cone)
+        })?;
         Ok(object)
     }
 

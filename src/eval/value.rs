@@ -46,6 +46,9 @@ pub enum Value {
     Camera(Box<super::CameraItems>),
     Interior(ir::Interior),
     ColourMap(ir::ColourMap),
+    Str(String),
+    /// A declaration trace could not evaluate: the reason, reported when the name is used.
+    Unsupported(Box<crate::diag::Diagnostic>),
 }
 
 impl Value {
@@ -63,6 +66,8 @@ impl Value {
             Value::Camera(_) => "a camera",
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a color_map",
+            Value::Str(_) => "a string",
+            Value::Unsupported(_) => "an unsupported value",
         }
     }
 

@@ -296,7 +296,8 @@ mod tests {
         };
         (0..n * n)
             .map(|k| {
-                let mut only = |_: &mut (), u: u32, v: u32| if v * n + u == k { Rgb::ONE } else { Rgb::ZERO };
+                let mut only =
+                    |_: &mut (), u: u32, v: u32| if v * n + u == k { Rgb::ONE } else { Rgb::ZERO };
                 subdivide(&mut (), &mut only, &area, [0, 0, n - 1, n - 1], 0).x
             })
             .collect()
@@ -314,7 +315,11 @@ mod tests {
 
     #[test]
     fn power_of_two_plus_one_grids_are_not_uniform_but_two_by_two_is() {
-        assert!(grid_weights(2, 100).iter().all(|&w| (w - 0.25).abs() < 1e-12));
+        assert!(
+            grid_weights(2, 100)
+                .iter()
+                .all(|&w| (w - 0.25).abs() < 1e-12)
+        );
         let w = grid_weights(5, 100);
         assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
         assert!(w[12] > w[0]);

@@ -112,6 +112,28 @@ pub enum NodeKind {
     FadeDistance,
     FadePower,
     FadeColour,
+    // Directives.
+    Undef,
+    If,
+    ElseIf,
+    Else,
+    IfDef,
+    While,
+    For,
+    Switch,
+    SwitchClause,
+    CaseHead,
+    RangeHead,
+    Include,
+    Message,
+    Body,
+    MacroDef,
+    MacroBody,
+    MacroCall,
+    /// `#declare X = texture {…} texture {…}`: layered textures.
+    LayeredTexture,
+    /// A declared value the grammar cannot read.
+    Unparsed,
     /// A reference to a declared identifier where an item may stand (`texture { T }`).
     IdentRef,
     /// A word the grammar does not know at this place (see `name`).
@@ -218,14 +240,80 @@ pub fn is_keyword(word: &str) -> bool {
 
 /// Parses a whole scene file into its top-level statements.
 pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
-    let mut pairs = SceneParser::parse(Rule::scene, text).map_err(|e| syntax_error(e, file))?;
-    let scene = pairs.next().expect("the scene rule always yields one pair");
-    let lower = Lower { file };
-    Ok(scene
+    parse_items(text, file, 0, Rule::scene)
+}
+
+/// Parses the part `text` of a file, which starts at byte `offset`, as a sequence of items
+/// (a macro body used as statements or modifiers).
+pub fn parse_fragment_items(
+    text: &str,
+    file: FileId,
+    offset: usize,
+) -> Result<Vec<Node>, Diagnostic> {
+    parse_items(text, file, offset, Rule::items)
+}
+
+/// A macro body used as a value: directives to run, the expression, directives to run after.
+pub struct FragmentExpr {
+    /// Directives before the expression (typically `#local`s).
+    pub before: Vec<Node>,
+    /// The value.
+    pub expr: Expr,
+    /// Directives after the expression.
+    pub after: Vec<Node>,
+}
+
+/// Parses the part `text` of a file, which starts at byte `offset`, as one expression with
+/// directives around it (a macro body used as a value).
+pub fn parse_fragment_expr(
+    text: &str,
+    file: FileId,
+    offset: usize,
+) -> Result<FragmentExpr, Diagnostic> {
+    let mut pairs =
+        SceneParser::parse(Rule::expression, text).map_err(|e| syntax_error_at(e, file, offset))?;
+    let top = pairs.next().expect("the expression rule yields one pair");
+    let lower = Lower { file, offset };
+    let (mut before, mut after, mut expr) = (Vec::new(), Vec::new(), None);
+    for p in top.into_inner().filter(|p| p.as_rule() != Rule::EOI) {
+        if p.as_rule() == Rule::expr {
+            expr = Some(lower.expr(p));
+        } else if expr.is_none() {
+            before.push(lower.node(p));
+        } else {
+            after.push(lower.node(p));
+        }
+    }
+    Ok(FragmentExpr {
+        before,
+        expr: expr.expect("the rule requires an expression"),
+        after,
+    })
+}
+
+fn parse_items(
+    text: &str,
+    file: FileId,
+    offset: usize,
+    rule: Rule,
+) -> Result<Vec<Node>, Diagnostic> {
+    let mut pairs = SceneParser::parse(rule, text).map_err(|e| syntax_error_at(e, file, offset))?;
+    let top = pairs.next().expect("the entry rule always yields one pair");
+    let lower = Lower { file, offset };
+    Ok(top
         .into_inner()
         .filter(|p| p.as_rule() != Rule::EOI)
         .map(|p| lower.node(p))
         .collect())
+}
+
+fn syntax_error_at(e: pest::error::Error<Rule>, file: FileId, offset: usize) -> Diagnostic {
+    let mut d = syntax_error(e, file);
+    if let Some(span) = &mut d.span {
+        span.start += offset as u32;
+        span.end += offset as u32;
+    }
+    d
 }
 
 fn syntax_error(e: pest::error::Error<Rule>, file: FileId) -> Diagnostic {
@@ -277,7 +365,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         background => "`background`",
         global_settings => "`global_settings`",
         version | declare | default_block | unknown_directive => "a directive",
-        unknown_item | unknown_tail | balanced | leftover => "a statement",
+        unknown_item | unknown_tail | balanced | leftover | any_item | body => "a statement",
+        macro_call => "a macro call",
         semicolon => "`;`",
         flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => {
             "an object modifier"
@@ -290,12 +379,14 @@ fn describe(rule: Rule) -> Option<&'static str> {
 /// Lowering from pest pairs to the syntax tree, one method per family of rules.
 struct Lower {
     file: FileId,
+    /// Byte offset of the parsed text in its file.
+    offset: usize,
 }
 
 impl Lower {
     fn span(&self, pair: &Pair<'_, Rule>) -> Span {
         let s = pair.as_span();
-        Span::new(self.file, s.start(), s.end())
+        Span::new(self.file, s.start() + self.offset, s.end() + self.offset)
     }
 
     fn node(&self, pair: Pair<'_, Rule>) -> Node {
@@ -388,7 +479,26 @@ impl Lower {
             Rule::fade_distance => NodeKind::FadeDistance,
             Rule::fade_power => NodeKind::FadePower,
             Rule::fade_colour => NodeKind::FadeColour,
-            Rule::ident => NodeKind::IdentRef,
+            Rule::undef => NodeKind::Undef,
+            Rule::if_directive => NodeKind::If,
+            Rule::elseif_clause => NodeKind::ElseIf,
+            Rule::else_clause => NodeKind::Else,
+            Rule::ifdef_directive => NodeKind::IfDef,
+            Rule::while_directive => NodeKind::While,
+            Rule::for_directive => NodeKind::For,
+            Rule::switch_directive => NodeKind::Switch,
+            Rule::switch_clause => NodeKind::SwitchClause,
+            Rule::case_head => NodeKind::CaseHead,
+            Rule::range_head => NodeKind::RangeHead,
+            Rule::include => NodeKind::Include,
+            Rule::message => NodeKind::Message,
+            Rule::body => NodeKind::Body,
+            Rule::macro_def => NodeKind::MacroDef,
+            Rule::macro_body => NodeKind::MacroBody,
+            Rule::macro_call => NodeKind::MacroCall,
+            Rule::layered_texture => NodeKind::LayeredTexture,
+            Rule::unparsed_value => NodeKind::Unparsed,
+            Rule::ident | Rule::name_ref => NodeKind::IdentRef,
             Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
@@ -400,8 +510,12 @@ impl Lower {
             args: Vec::new(),
             children: Vec::new(),
         };
-        if rule == Rule::ident {
-            node.word = pair.as_str().to_string();
+        if matches!(
+            rule,
+            Rule::ident | Rule::name_ref | Rule::macro_body | Rule::unparsed_value
+        ) {
+            // A name, or a macro body kept as source text (its span) to be parsed at each call.
+            node.word = pair.as_str().trim().to_string();
             return node;
         }
         if rule == Rule::leftover {
@@ -412,7 +526,10 @@ impl Lower {
                 .unwrap_or(text.len())
                 .max(1);
             node.word = text[..len].to_string();
-            node.word_span = Span::new(self.file, span.start as usize, span.start as usize + len);
+            node.word_span = Span {
+                end: span.start + len as u32,
+                ..span
+            };
             return node;
         }
         let mut first_word = true;
@@ -731,6 +848,24 @@ fn is_word(rule: Rule) -> bool {
             | kw_fade_power
             | kw_fade_color
             | kw_fade_colour
+            | kw_if
+            | kw_ifdef
+            | kw_ifndef
+            | kw_elseif
+            | kw_else
+            | kw_end
+            | kw_while
+            | kw_for
+            | kw_switch
+            | kw_case
+            | kw_range
+            | kw_break
+            | kw_macro
+            | kw_undef
+            | kw_include
+            | kw_debug
+            | kw_warning
+            | kw_error
     )
 }
 

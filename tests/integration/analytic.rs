@@ -266,9 +266,17 @@ fn spotlight_edge_follows_povray_smooth_step() {
     };
     assert_close(centre_pixel(&at("0")), [1.0; 3], 1e-6);
     let off = 5.0 * 15f64.to_radians().tan();
-    let (lo, hi, p) = (20f64.to_radians().cos(), 10f64.to_radians().cos(), 15f64.to_radians().cos());
+    let (lo, hi, p) = (
+        20f64.to_radians().cos(),
+        10f64.to_radians().cos(),
+        15f64.to_radians().cos(),
+    );
     let s = (p - lo) / (hi - lo);
-    assert_close(centre_pixel(&at(&format!("<{off}, 0, 0>"))), [s * s * (3.0 - 2.0 * s); 3], 1e-6);
+    assert_close(
+        centre_pixel(&at(&format!("<{off}, 0, 0>"))),
+        [s * s * (3.0 - 2.0 * s); 3],
+        1e-6,
+    );
 }
 
 #[test]
@@ -281,8 +289,16 @@ fn light_fade_needs_both_distance_and_power() {
              plane {{ -z, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
         )
     };
-    assert_close(centre_pixel(&scene("fade_distance 5 fade_power 2")), [1.0; 3], 1e-6);
-    assert_close(centre_pixel(&scene("fade_distance 2.5 fade_power 2")), [0.4; 3], 1e-6);
+    assert_close(
+        centre_pixel(&scene("fade_distance 5 fade_power 2")),
+        [1.0; 3],
+        1e-6,
+    );
+    assert_close(
+        centre_pixel(&scene("fade_distance 2.5 fade_power 2")),
+        [0.4; 3],
+        1e-6,
+    );
     assert_close(centre_pixel(&scene("fade_distance 2.5")), [1.0; 3], 1e-6);
 }
 

@@ -8,6 +8,7 @@ fn bad_scenes_give_located_messages() {
         let options = trace::LoadOptions {
             width: 320,
             height: 240,
+            ..Default::default()
         };
         let message = match trace::load_str(&name, text, &options) {
             Ok(_) => panic!("{} should not load", path.display()),

@@ -15,6 +15,7 @@ fn check(stem: &str, antialias: Antialias, reference_name: &str) -> Result<f32, 
     let options = trace::LoadOptions {
         width: 320,
         height: 240,
+        ..Default::default()
     };
     let loaded = trace::load(&scene_path, &options).map_err(|e| e.to_string())?;
     let render = trace::RenderOptions {

@@ -6,6 +6,7 @@ fn snapshot_ir(path: &Path) {
     let options = trace::LoadOptions {
         width: 320,
         height: 240,
+        ..Default::default()
     };
     let loaded = trace::load(path, &options).unwrap_or_else(|e| panic!("{e}"));
     insta::assert_debug_snapshot!(loaded.scene);

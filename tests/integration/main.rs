@@ -15,7 +15,11 @@ pub fn root() -> PathBuf {
 
 /// Loads scene text at a given image size, panicking with the rendered diagnostic on error.
 pub fn load_text(text: &str, width: u32, height: u32) -> trace::ir::Scene {
-    let options = trace::LoadOptions { width, height };
+    let options = trace::LoadOptions {
+        width,
+        height,
+        ..Default::default()
+    };
     match trace::load_str(Path::new("test.rt"), text.to_string(), &options) {
         Ok(loaded) => loaded.scene,
         Err(e) => panic!("{e}"),

@@ -1,0 +1,491 @@
+//! Directives that steer evaluation: `#declare`/`#local`/`#undef`, `#if`/`#ifdef`/`#while`/
+//! `#for`/`#switch`, `#macro` and macro calls, `#include`, `#debug`/`#warning`/`#error`.
+//!
+//! Every block of the scene (the file, an object's modifiers, a finish …) is run through
+//! [`Evaluator::each_item`], which executes these directives in order and hands every other
+//! item to the block's own handler. Loops, macro recursion and include depth are bounded.
+
+use super::{Evaluator, Result, Value, expr::type_error};
+use crate::diag::{Diagnostic, Span};
+use crate::syntax::{self, ExprKind, Node, NodeKind};
+use std::path::PathBuf;
+
+/// Most iterations of one `#while` or `#for` loop.
+pub const MAX_LOOP_ITERATIONS: u64 = 1_000_000;
+/// Deepest nesting of macro calls.
+pub const MAX_MACRO_DEPTH: usize = 200;
+/// Deepest nesting of include files.
+pub const MAX_INCLUDE_DEPTH: usize = 64;
+
+/// A declared macro: its parameters and where its body's text lies.
+#[derive(Clone, Debug)]
+pub struct Macro {
+    params: Vec<String>,
+    body: Span,
+    name_span: Span,
+}
+
+/// One macro call in progress: the variables its parameters and `#local`s shadow (restored
+/// when it returns) and its by-reference arguments (parameter, caller's variable).
+#[derive(Default)]
+pub(super) struct Frame {
+    saved: Vec<(String, Option<Value>)>,
+    by_reference: Vec<(String, String)>,
+}
+
+/// A block item handler.
+pub(super) type Handler<'h, 'a> = dyn FnMut(&mut Evaluator<'a>, &Node) -> Result<()> + 'h;
+
+impl<'a> Evaluator<'a> {
+    /// Runs `items` in order: directives are executed here, every other item goes to `f`.
+    pub(super) fn each_item(&mut self, items: &[Node], f: &mut Handler<'_, 'a>) -> Result<()> {
+        for item in items {
+            self.one_item(item, f)?;
+        }
+        Ok(())
+    }
+
+    fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+        match item.kind {
+            NodeKind::Version => self.version = Some(self.float(&item.args[0])?),
+            NodeKind::Declare | NodeKind::Local => self.declare(item)?,
+            NodeKind::Undef => {
+                self.env.remove(&item.children[0].word);
+            }
+            NodeKind::If => {
+                // #if (c) body [#elseif (c) body]* [#else body] #end
+                if self.truth(&item.args[0])? {
+                    return self.each_item(&item.children[0].children, f);
+                }
+                for clause in &item.children[1..] {
+                    match clause.kind {
+                        NodeKind::ElseIf if self.truth(&clause.args[0])? => {
+                            return self.each_item(&clause.children[0].children, f);
+                        }
+                        NodeKind::Else => return self.each_item(&clause.children[0].children, f),
+                        _ => {}
+                    }
+                }
+            }
+            NodeKind::IfDef => {
+                let defined = self.env.contains_key(&item.children[0].word);
+                let wanted = item.word == "ifdef";
+                if defined == wanted {
+                    return self.each_item(&item.children[1].children, f);
+                }
+                if let Some(clause) = item.children.get(2) {
+                    return self.each_item(&clause.children[0].children, f);
+                }
+            }
+            NodeKind::While => {
+                let mut n = 0u64;
+                while self.truth(&item.args[0])? {
+                    n += 1;
+                    if n > MAX_LOOP_ITERATIONS {
+                        return Err(Diagnostic::error(
+                            format!(
+                                "#while ran more than {MAX_LOOP_ITERATIONS} times; stopped (an endless loop?)"
+                            ),
+                            item.word_span,
+                        ));
+                    }
+                    self.each_item(&item.children[0].children, f)?;
+                }
+            }
+            NodeKind::For => self.for_loop(item, f)?,
+            NodeKind::Switch => self.switch(item, f)?,
+            NodeKind::Message => {
+                let text = self.string(&item.args[0])?;
+                match item.word.as_str() {
+                    "error" => {
+                        return Err(Diagnostic::error(format!("#error: {text}"), item.word_span));
+                    }
+                    "warning" => self.warn(Diagnostic::warning(text, item.word_span)),
+                    _ => self.debug_output.push_str(&text),
+                }
+            }
+            NodeKind::MacroDef => {
+                let name = item.children[0].word.clone();
+                let params = item.children[1..item.children.len() - 1]
+                    .iter()
+                    .map(|p| p.word.clone())
+                    .collect();
+                let body = item.children[item.children.len() - 1].span;
+                self.macros.insert(
+                    name,
+                    Macro {
+                        params,
+                        body,
+                        name_span: item.children[0].span,
+                    },
+                );
+            }
+            NodeKind::MacroCall => {
+                let nodes = self.macro_items(item)?;
+                let result = self.each_item(&nodes, f);
+                self.end_macro(item, result)?;
+            }
+            NodeKind::Include => self.include(item, f)?,
+            NodeKind::UnknownDirective => {
+                let span = Span {
+                    start: item.span.start,
+                    ..item.word_span
+                };
+                return Err(match super::unsupported::reason(&item.word) {
+                    Some(reason) => {
+                        Diagnostic::error(format!("unsupported: `#{}` ({reason})", item.word), span)
+                    }
+                    None => Diagnostic::error(format!("unknown directive `#{}`", item.word), span),
+                });
+            }
+            _ => f(self, item)?,
+        }
+        Ok(())
+    }
+
+    /// `#declare Name = value;` / `#local Name = value;`.
+    fn declare(&mut self, node: &Node) -> Result<()> {
+        let name = node.children[0].word.clone();
+        let value = match node.children.get(1) {
+            Some(item) if item.kind == NodeKind::LayeredTexture => {
+                Value::Unsupported(Box::new(Diagnostic::error(
+                    "unsupported: layered textures (not supported by trace yet)",
+                    item.children[1].word_span,
+                )))
+            }
+            Some(item) if item.kind == NodeKind::Unparsed => {
+                Value::Unsupported(Box::new(Diagnostic::error(
+                    "this declaration is outside the language trace reads",
+                    Span {
+                        end: item.span.start
+                            + item
+                                .word
+                                .chars()
+                                .take_while(|c| !c.is_whitespace())
+                                .map(char::len_utf8)
+                                .sum::<usize>()
+                                .max(1) as u32,
+                        ..item.span
+                    },
+                )))
+            }
+            Some(item) => self.item_value(item).or_else(unsupported_later)?,
+            None => self.eval(&node.args[0]).or_else(unsupported_later)?,
+        };
+        if node.kind == NodeKind::Local {
+            self.shadow(&name);
+        }
+        self.env.insert(name, value);
+        Ok(())
+    }
+
+    /// Records the current value of `name` in the innermost macro frame (once), so that it is
+    /// restored when the macro returns.
+    fn shadow(&mut self, name: &str) {
+        if let Some(frame) = self.frames.last_mut() {
+            if !frame.saved.iter().any(|(n, _)| n == name) {
+                frame
+                    .saved
+                    .push((name.to_string(), self.env.get(name).cloned()));
+            }
+        }
+    }
+
+    fn truth(&mut self, e: &syntax::Expr) -> Result<bool> {
+        Ok(self.float(e)?.abs() > 1e-10)
+    }
+
+    /// `#for (I, start, end [, step]) body #end`: inclusive, with POV-Ray's 1e-10 slack.
+    fn for_loop(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+        let name = item.children[0].word.clone();
+        let start = self.float(&item.args[0])?;
+        let end = self.float(&item.args[1])?;
+        let step = match item.args.get(2) {
+            Some(e) => self.float(e)?,
+            None => 1.0,
+        };
+        if step == 0.0 {
+            return Err(Diagnostic::error(
+                "#for step must not be zero",
+                item.args[2].span,
+            ));
+        }
+        let body = &item.children[1].children;
+        let mut i = start;
+        let mut n = 0u64;
+        while (step > 0.0 && i <= end + 1e-10) || (step < 0.0 && i >= end - 1e-10) {
+            n += 1;
+            if n > MAX_LOOP_ITERATIONS {
+                return Err(Diagnostic::error(
+                    format!("#for ran more than {MAX_LOOP_ITERATIONS} times; stopped"),
+                    item.word_span,
+                ));
+            }
+            self.env.insert(name.clone(), Value::Float(i));
+            self.each_item(body, f)?;
+            // The body may change the counter, as in POV-Ray.
+            i = match self.env.get(&name) {
+                Some(Value::Float(v)) => *v,
+                _ => i,
+            } + step;
+        }
+        Ok(())
+    }
+
+    /// `#switch (v) #case (a) … #break #range (lo, hi) … #else … #end`: the first matching
+    /// clause runs, and falls through into the next ones until a `#break`.
+    fn switch(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+        let v = self.float(&item.args[0])?;
+        let mut running = false;
+        for clause in &item.children {
+            match clause.kind {
+                NodeKind::SwitchClause => {
+                    let head = &clause.children[0];
+                    if !running {
+                        running = match head.kind {
+                            NodeKind::CaseHead => (self.float(&head.args[0])? - v).abs() <= 1e-10,
+                            _ => {
+                                let (lo, hi) =
+                                    (self.float(&head.args[0])?, self.float(&head.args[1])?);
+                                lo <= v && v <= hi
+                            }
+                        };
+                    }
+                    if running {
+                        self.each_item(&clause.children[1].children, f)?;
+                        if clause.word == "break" {
+                            return Ok(());
+                        }
+                    }
+                }
+                _ => return self.each_item(&clause.children[0].children, f),
+            }
+        }
+        Ok(())
+    }
+
+    /// A string value: a literal, `concat(…)`, `str(v, w, p)`, or a declared string.
+    pub(super) fn string(&mut self, e: &syntax::Expr) -> Result<String> {
+        match &e.kind {
+            ExprKind::Str(s) => Ok(s
+                .replace("\\n", "\n")
+                .replace("\\t", "\t")
+                .replace("\\\\", "\\")),
+            ExprKind::Call(name, _, args) if name == "concat" => {
+                let mut out = String::new();
+                for a in args {
+                    out += &self.string(a)?;
+                }
+                Ok(out)
+            }
+            ExprKind::Call(name, _, args) if name == "str" && args.len() == 3 => {
+                let v = self.float(&args[0])?;
+                let width = self.float(&args[1])?.max(0.0) as usize;
+                let precision = self.float(&args[2])?;
+                Ok(if precision < 0.0 {
+                    format!("{v:width$}")
+                } else {
+                    format!("{v:width$.*}", precision as usize)
+                })
+            }
+            _ => match self.eval(e)? {
+                Value::Str(s) => Ok(s),
+                other => Err(type_error("a string", &other, e.span)),
+            },
+        }
+    }
+
+    /// Parses a macro's body for a call at item level, binding its parameters.
+    fn macro_items(&mut self, call: &Node) -> Result<Vec<Node>> {
+        let name = &call.children[0];
+        let (text, file, offset) = self.begin_macro(&name.word, name.span, &call.args)?;
+        syntax::parse_fragment_items(&text, file, offset).map_err(|d| {
+            d.with_note(format!(
+                "in macro {}, called at {}",
+                name.word,
+                self.location(call.span)
+            ))
+        })
+    }
+
+    /// Evaluates a macro called inside an expression: its body is one expression.
+    pub(super) fn macro_value(
+        &mut self,
+        name: &str,
+        name_span: Span,
+        args: &[syntax::Expr],
+        call_span: Span,
+    ) -> Result<Value> {
+        let (text, file, offset) = self.begin_macro(name, name_span, args)?;
+        let result = syntax::parse_fragment_expr(&text, file, offset).and_then(|fragment| {
+            let mut only_directives = |_: &mut Evaluator<'a>, n: &Node| {
+                Err(Diagnostic::error(
+                    "a macro used as a value may hold only directives besides its value",
+                    n.word_span,
+                ))
+            };
+            self.each_item(&fragment.before, &mut only_directives)?;
+            let value = self.eval(&fragment.expr)?;
+            self.each_item(&fragment.after, &mut only_directives)?;
+            Ok(value)
+        });
+        let result = result.map_err(|d| {
+            d.with_note(format!(
+                "in macro {name}, called at {}",
+                self.location(call_span)
+            ))
+        });
+        self.return_from_macro();
+        result
+    }
+
+    /// Binds a macro's parameters in a new frame and returns its body text.
+    fn begin_macro(
+        &mut self,
+        name: &str,
+        span: Span,
+        args: &[syntax::Expr],
+    ) -> Result<(String, crate::diag::FileId, usize)> {
+        let Some(m) = self.macros.get(name).cloned() else {
+            return Err(self.unknown_word(name, span));
+        };
+        if args.len() != m.params.len() {
+            return Err(Diagnostic::error(
+                format!(
+                    "macro `{name}` takes {} argument(s), found {}",
+                    m.params.len(),
+                    args.len()
+                ),
+                span,
+            )
+            .with_note(format!(
+                "`{name}` is declared at {}",
+                self.location(m.name_span)
+            )));
+        }
+        if self.frames.len() >= MAX_MACRO_DEPTH {
+            return Err(Diagnostic::error(
+                format!("macros nested more than {MAX_MACRO_DEPTH} deep (endless recursion?)"),
+                span,
+            ));
+        }
+        let mut values = Vec::with_capacity(args.len());
+        for a in args {
+            values.push(self.eval(a)?);
+        }
+        // Arguments that are plain identifiers are passed by reference: their final value is
+        // copied back when the macro returns.
+        let by_reference = args
+            .iter()
+            .zip(&m.params)
+            .filter_map(|(a, p)| match &a.kind {
+                ExprKind::Ident(n) if self.env.contains_key(n) => Some((p.clone(), n.clone())),
+                _ => None,
+            })
+            .collect();
+        self.frames.push(Frame {
+            saved: Vec::new(),
+            by_reference,
+        });
+        for (param, value) in m.params.iter().zip(values) {
+            self.shadow(param);
+            self.env.insert(param.clone(), value);
+        }
+        let file = m.body.file;
+        let text =
+            self.sources.file(file).text[m.body.start as usize..m.body.end as usize].to_string();
+        Ok((text, file, m.body.start as usize))
+    }
+
+    /// Ends an item-level macro call: restores shadowed variables, copies back by-reference
+    /// arguments, and notes the call site on an error.
+    fn end_macro(&mut self, call: &Node, result: Result<()>) -> Result<()> {
+        self.return_from_macro();
+        result.map_err(|d| {
+            d.with_note(format!(
+                "in macro {}, called at {}",
+                call.children[0].word,
+                self.location(call.span)
+            ))
+        })
+    }
+
+    /// Leaves the innermost macro: copies by-reference arguments back, restores shadowed
+    /// variables.
+    fn return_from_macro(&mut self) {
+        let frame = self.frames.pop().expect("a macro frame");
+        let back: Vec<(String, Value)> = frame
+            .by_reference
+            .iter()
+            .filter_map(|(param, caller)| self.env.get(param).map(|v| (caller.clone(), v.clone())))
+            .collect();
+        for (name, old) in frame.saved.into_iter().rev() {
+            match old {
+                Some(v) => self.env.insert(name, v),
+                None => self.env.remove(&name),
+            };
+        }
+        for (caller, v) in back {
+            self.env.insert(caller, v);
+        }
+    }
+
+    /// `#include "file"`: read from the scene's folder or the include paths, evaluated here.
+    fn include(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+        let name = self.string(&item.args[0])?;
+        if self.include_depth >= MAX_INCLUDE_DEPTH {
+            return Err(Diagnostic::error(
+                format!("includes nested more than {MAX_INCLUDE_DEPTH} deep"),
+                item.args[0].span,
+            ));
+        }
+        let mut searched: Vec<PathBuf> = vec![self.base_dir.clone()];
+        searched.extend(self.options.include_paths.iter().cloned());
+        let Some(path) = searched
+            .iter()
+            .map(|dir| dir.join(&name))
+            .find(|p| p.is_file())
+        else {
+            let folders: Vec<String> = searched
+                .iter()
+                .map(|p| format!("`{}`", p.display()))
+                .collect();
+            return Err(Diagnostic::error(
+                format!("cannot find include file \"{name}\""),
+                item.args[0].span,
+            )
+            .with_note(format!("searched {}", folders.join(", ")))
+            .with_note(
+                "add folders with -L DIR (e.g. -L /usr/share/povray-3.7/include for POV-Ray's own)",
+            ));
+        };
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            Diagnostic::error(
+                format!("cannot read {}: {e}", path.display()),
+                item.args[0].span,
+            )
+        })?;
+        let file = self.sources.add(&path, text);
+        let nodes = syntax::parse_scene(&self.sources.file(file).text, file)
+            .map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))?;
+        self.include_depth += 1;
+        let result = self.each_item(&nodes, f);
+        self.include_depth -= 1;
+        result.map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))
+    }
+
+    /// `file:line:col` of a span.
+    pub(super) fn location(&self, span: Span) -> String {
+        self.sources.location(span)
+    }
+}
+
+/// A declaration that failed because it uses something outside the subset is kept, to be
+/// reported only if the scene uses it (standard include files declare many such things).
+fn unsupported_later(d: Diagnostic) -> Result<Value> {
+    if d.message.starts_with("unsupported:") {
+        Ok(Value::Unsupported(Box::new(d)))
+    } else {
+        Err(d)
+    }
+}
