@@ -268,6 +268,7 @@ impl<'a> Evaluator<'a> {
     pub(super) fn string(&mut self, e: &syntax::Expr) -> Result<String> {
         match &e.kind {
             ExprKind::Str(s) => Ok(s
+                .replace("\\\"", "\"")
                 .replace("\\n", "\n")
                 .replace("\\t", "\t")
                 .replace("\\\\", "\\")),
@@ -293,6 +294,24 @@ impl<'a> Evaluator<'a> {
                 other => Err(type_error("a string", &other, e.span)),
             },
         }
+    }
+
+    /// The single object a macro call expands to (`object { Macro(…) modifiers }`).
+    pub(super) fn macro_object(&mut self, call: &Node) -> Result<super::ObjectValue> {
+        let nodes = self.macro_items(call)?;
+        let mut object = None;
+        let result = self.each_item(&nodes, &mut |ev, n| {
+            if object.is_some() || !super::object::is_object(n.kind) {
+                return Err(Diagnostic::error(
+                    "expected the macro to give exactly one object",
+                    n.word_span,
+                ));
+            }
+            object = Some(ev.object(n)?);
+            Ok(())
+        });
+        self.end_macro(call, result)?;
+        object.ok_or_else(|| Diagnostic::error("the macro gives no object", call.span))
     }
 
     /// Parses a macro's body for a call at item level, binding its parameters.

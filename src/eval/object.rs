@@ -8,7 +8,7 @@ use super::material::move_pigment;
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
-use crate::syntax::{Expr, Node, NodeKind};
+use crate::syntax::{Expr, ExprKind, Node, NodeKind};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -58,7 +58,7 @@ fn is_directive(kind: NodeKind) -> bool {
 }
 
 /// Whether a node is an object statement.
-pub(super) fn is_object(kind: NodeKind) -> bool {
+pub(crate) fn is_object(kind: NodeKind) -> bool {
     use NodeKind::*;
     matches!(
         kind,
@@ -275,6 +275,7 @@ impl Evaluator<'_> {
                 let (first, rest) = node.children.split_first().expect("object {} has a body");
                 modifiers = rest;
                 match first.kind {
+                    NodeKind::MacroCall => self.macro_object(first)?,
                     NodeKind::IdentRef => match self.lookup(first)? {
                         Value::Object(o) => *o,
                         other => return Err(type_error("an object", &other, first.span)),
@@ -333,6 +334,11 @@ impl Evaluator<'_> {
                 let base = object.interior.unwrap_or_default();
                 object.interior = Some(self.interior(m, base)?);
             }
+            // `hollow off`, `no_shadow false` …: the flag is not set.
+            NodeKind::Flag
+                if m.args
+                    .first()
+                    .is_some_and(|e| matches!(e.kind, ExprKind::Number(v) if v == 0.0)) => {}
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
                 "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),

@@ -11,6 +11,7 @@ use glam::{DMat3, DMat4, DVec3};
 use std::collections::HashMap;
 use std::sync::Arc;
 
+mod accel;
 mod pigment;
 
 pub use crate::ir::{
@@ -27,7 +28,7 @@ pub struct MaterialId(pub u32);
 pub struct ObjectId(pub u32);
 
 /// The scene as the tracer reads it.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Scene {
     /// The camera.
     pub camera: Camera,
@@ -51,6 +52,8 @@ pub struct Scene {
     pub legacy_transparency: bool,
     /// Working gamma (applied when the film is written).
     pub gamma: Gamma,
+    /// Top-level BVH over the objects (`None` for small scenes).
+    pub index: Option<accel::ObjectIndex>,
 }
 
 /// The camera's four vectors.
@@ -283,6 +286,7 @@ impl Scene {
     pub fn build(ir: &ir::Scene) -> Scene {
         let mut materials: Vec<Material> = Vec::new();
         let mut meshes: HashMap<*const ir::Mesh, Arc<TriangleMesh>> = HashMap::new();
+        let mut material_ids: HashMap<String, usize> = HashMap::new();
         let objects = ir
             .objects
             .iter()
@@ -291,13 +295,13 @@ impl Scene {
                     pigment: Pigment::new(&o.texture.pigment),
                     finish: o.texture.finish.clone(),
                 };
-                let id = match materials.iter().position(|m| *m == material) {
-                    Some(i) => i,
-                    None => {
-                        materials.push(material);
-                        materials.len() - 1
-                    }
-                };
+                // Deduplicate by the material's full printed value (exact: `{:?}` of an f64
+                // round-trips), in constant time per object.
+                let key = format!("{material:?}");
+                let id = *material_ids.entry(key).or_insert_with(|| {
+                    materials.push(material);
+                    materials.len() - 1
+                });
                 let (shape, transform) =
                     build_shape(&o.shape, o.transform.map(|t| t.matrix), &mut meshes);
                 let bounds = shape
@@ -315,7 +319,7 @@ impl Scene {
             })
             .collect();
         let c = &ir.camera;
-        Scene {
+        let mut scene = Scene {
             camera: Camera {
                 projection: c.projection,
                 location: c.location,
@@ -344,7 +348,11 @@ impl Scene {
             ambient_light: ir.settings.ambient_light,
             legacy_transparency: ir.settings.legacy_transparency,
             gamma: ir.settings.gamma,
-        }
+            index: None,
+        };
+        let bounds: Vec<_> = scene.objects.iter().map(|o| o.bounds).collect();
+        scene.index = accel::ObjectIndex::build(&bounds);
+        scene
     }
 
     /// The material with id `id`.
@@ -367,18 +375,34 @@ impl Scene {
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
-        let inv = ray.direction.recip();
-        for (i, object) in self.objects.iter().enumerate() {
-            if !may_hit(object.bounds, &ray, inv) {
-                continue;
+        let mut test = |i: u32, ray: &Ray| -> Option<f64> {
+            let object = &self.objects[i as usize];
+            let (t, part) = Self::crossings(object, ray).first_part()?;
+            best = Some(Hit {
+                t,
+                object: ObjectId(i),
+                part,
+            });
+            Some(t)
+        };
+        match &self.index {
+            Some(index) => {
+                for &i in &index.unbounded {
+                    if let Some(t) = test(i, &ray) {
+                        ray.tmax = t;
+                    }
+                }
+                index.closest(&ray, |i, tmax| test(i, &Ray { tmax, ..ray }));
             }
-            if let Some((t, part)) = Self::crossings(object, &ray).first_part() {
-                ray.tmax = t;
-                best = Some(Hit {
-                    t,
-                    object: ObjectId(i as u32),
-                    part,
-                });
+            None => {
+                let inv = ray.direction.recip();
+                for (i, object) in self.objects.iter().enumerate() {
+                    if may_hit(object.bounds, &ray, inv) {
+                        if let Some(t) = test(i as u32, &ray) {
+                            ray.tmax = t;
+                        }
+                    }
+                }
             }
         }
         best
@@ -416,44 +440,75 @@ impl Scene {
     /// segment run inside an object whose fade_power is positive. Objects with `no_shadow`
     /// are skipped; refraction is ignored, as in POV-Ray.
     pub fn transmittance(&self, ray: &Ray) -> Rgb {
+        let opaque_blocks = |i: u32| {
+            let object = &self.objects[i as usize];
+            !object.no_shadow
+                && !self.material(object.material).pigment.may_be_transparent()
+                && object.shape.occludes(&Self::local_ray(object, ray))
+        };
         let mut through = Rgb::ONE;
-        let inv = ray.direction.recip();
-        let length = ray.direction.length();
-        for object in self.objects.iter().filter(|o| !o.no_shadow) {
-            if !may_hit(object.bounds, ray, inv) {
-                continue;
-            }
-            let local = match &object.transform {
-                None => *ray,
-                Some(t) => ray.transformed(&t.object_from_world),
-            };
-            let material = self.material(object.material);
-            if !material.pigment.may_be_transparent() {
-                if object.shape.occludes(&local) {
+        match &self.index {
+            Some(index) => {
+                // First any opaque blocker (stops at the first), then the transparent ones.
+                if index.unbounded.iter().any(|&i| opaque_blocks(i))
+                    || index.any(ray, opaque_blocks)
+                {
                     return Rgb::ZERO;
                 }
-                continue;
+                for &i in &index.unbounded {
+                    self.filter_through(i, ray, &mut through);
+                }
+                index.each(ray, |i| self.filter_through(i, ray, &mut through));
             }
-            let interior = &object.interior;
-            let fades = interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10;
-            let mut inside = fades && self.contains(object, ray.origin);
-            let mut last_t = 0.0;
-            object.shape.for_each_crossing(&local, |t| {
+            None => {
+                let inv = ray.direction.recip();
+                for (i, object) in self.objects.iter().enumerate() {
+                    if !may_hit(object.bounds, ray, inv) {
+                        continue;
+                    }
+                    if opaque_blocks(i as u32) {
+                        return Rgb::ZERO;
+                    }
+                    self.filter_through(i as u32, ray, &mut through);
+                }
+            }
+        }
+        through
+    }
+
+    fn local_ray(object: &Object, ray: &Ray) -> Ray {
+        match &object.transform {
+            None => *ray,
+            Some(t) => ray.transformed(&t.object_from_world),
+        }
+    }
+
+    /// Multiplies `through` by what a transparent object lets through along a shadow ray: the
+    /// filter colour at each crossing and the fade of each inside segment.
+    fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
+        let object = &self.objects[i as usize];
+        let material = self.material(object.material);
+        if object.no_shadow || !material.pigment.may_be_transparent() {
+            return;
+        }
+        let interior = &object.interior;
+        let fades = interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10;
+        let mut inside = fades && self.contains(object, ray.origin);
+        let mut last_t = 0.0;
+        let length = ray.direction.length();
+        object
+            .shape
+            .for_each_crossing(&Self::local_ray(object, ray), |t| {
                 let c = material.pigment.colour_at(ray.at(t));
-                through *= filter_colour(&c);
+                *through *= filter_colour(&c);
                 if fades {
                     if inside {
-                        through *= interior_fade(interior, (t - last_t) * length);
+                        *through *= interior_fade(interior, (t - last_t) * length);
                     }
                     inside = !inside;
                     last_t = t;
                 }
             });
-            if through == Rgb::ZERO {
-                return through;
-            }
-        }
-        through
     }
 
     /// Whether world point `p` is inside `object` (POV-Ray's inside test; thin shapes have no

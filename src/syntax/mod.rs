@@ -544,6 +544,13 @@ impl Lower {
                     node.word_span = self.span(&inner);
                     first_word = false;
                 }
+            } else if r == Rule::flag_value {
+                let on = matches!(inner.as_str(), "on" | "true" | "yes");
+                let span = self.span(&inner);
+                node.args.push(Expr {
+                    kind: ExprKind::Number(if on { 1.0 } else { 0.0 }),
+                    span,
+                });
             } else if r == Rule::declare_kind {
                 if inner.as_str().trim() == "local" {
                     node.kind = NodeKind::Local;
@@ -655,7 +662,8 @@ impl Lower {
             Rule::plain_vector => {
                 let text = pair.as_str();
                 let numbers: Vec<f64> = text[1..text.len() - 1]
-                    .split(',')
+                    .split(|c: char| c == ',' || c.is_whitespace())
+                    .filter(|n| !n.is_empty())
                     .map(|n| n.trim().parse().unwrap_or(f64::NAN))
                     .collect();
                 if numbers.len() <= 5 {
@@ -686,7 +694,7 @@ impl Lower {
                     span,
                 }
             }
-            Rule::number => Expr {
+            Rule::plain_float | Rule::number => Expr {
                 kind: ExprKind::Number(pair.as_str().parse().unwrap_or(f64::NAN)),
                 span,
             },
@@ -740,7 +748,7 @@ impl Lower {
 fn is_expr(rule: Rule) -> bool {
     matches!(
         rule,
-        Rule::expr | Rule::sum | Rule::plain_vector | Rule::string
+        Rule::expr | Rule::sum | Rule::plain_vector | Rule::plain_float | Rule::string
     )
 }
 

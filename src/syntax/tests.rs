@@ -30,7 +30,19 @@ fn keywords_need_a_word_boundary() {
 
 #[test]
 fn vector_elements_stop_before_closing_angle() {
+    // A general vector (with expressions) and a plain one (numbers only, the fast path).
+    let nodes = parse("sphere { <1, 2*2, -3>, 1 }").expect("parses");
+    let ExprKind::Vector(items) = &nodes[0].args[0].kind else {
+        panic!("vector expected")
+    };
+    assert_eq!(items.len(), 3);
     let nodes = parse("sphere { <1, 2, -3>, 1 }").expect("parses");
+    assert!(matches!(nodes[0].args[0].kind, ExprKind::PlainVector(_, 3)));
+}
+
+#[test]
+fn vector_commas_are_optional_as_in_povray() {
+    let nodes = parse("sphere { <4 0 x.y>, 1 }").expect("parses");
     let ExprKind::Vector(items) = &nodes[0].args[0].kind else {
         panic!("vector expected")
     };
@@ -83,4 +95,13 @@ fn missing_brace_is_a_located_syntax_error() {
     let err = parse("sphere { 0, 1 ").expect_err("fails");
     assert!(err.message.starts_with("syntax error"), "{}", err.message);
     assert_eq!(err.span.map(|s| s.start), Some(14));
+}
+
+#[test]
+fn signed_number_after_a_space_in_a_vector_is_a_subtraction() {
+    let nodes = parse("sphere { <4 -1>, 1 }").expect("parses");
+    let ExprKind::Vector(items) = &nodes[0].args[0].kind else {
+        panic!("general vector expected")
+    };
+    assert_eq!(items.len(), 1);
 }

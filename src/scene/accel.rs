@@ -1,0 +1,103 @@
+//! The top-level structure over objects: an obvhs `Bvh2` over the world boxes of the bounded
+//! objects, with unbounded ones (planes) kept in a list beside it. Scenes with few objects
+//! skip it and test every object (see [`MIN_OBJECTS_FOR_BVH`]).
+
+use crate::geometry::Ray;
+use crate::geometry::mesh::{bvh_ray, outward_aabb};
+use obvhs::BvhBuildParams;
+use obvhs::aabb::Aabb;
+use obvhs::bvh2::Bvh2;
+use obvhs::ray::RayHit;
+use std::time::Duration;
+
+/// Below this many bounded objects a linear scan (with a box test per object) is as fast as
+/// a BVH (measured with `benches/`-style runs on sphere grids: 8 spheres ran at parity).
+pub const MIN_OBJECTS_FOR_BVH: usize = 8;
+
+/// Objects organised for ray queries.
+pub struct ObjectIndex {
+    bvh: Bvh2,
+    /// Object ids in BVH primitive order.
+    bounded: Vec<u32>,
+    /// Objects without bounds, tested for every ray.
+    pub unbounded: Vec<u32>,
+}
+
+impl std::fmt::Debug for ObjectIndex {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ObjectIndex")
+            .field("bounded", &self.bounded.len())
+            .field("unbounded", &self.unbounded.len())
+            .finish()
+    }
+}
+
+impl ObjectIndex {
+    /// Builds the index if the scene is big enough to gain from one.
+    pub fn build(bounds: &[Option<(glam::DVec3, glam::DVec3)>]) -> Option<ObjectIndex> {
+        let ids: Vec<u32> = (0..bounds.len() as u32)
+            .filter(|&i| bounds[i as usize].is_some())
+            .collect();
+        if ids.len() < MIN_OBJECTS_FOR_BVH {
+            return None;
+        }
+        let boxes: Vec<Aabb> = ids
+            .iter()
+            .map(|&i| {
+                let (lo, hi) = bounds[i as usize].expect("filtered above");
+                outward_aabb(lo, hi)
+            })
+            .collect();
+        let bvh = obvhs::bvh2::builder::build_bvh2(
+            &boxes,
+            BvhBuildParams::very_fast_build(),
+            &mut Duration::default(),
+        );
+        let bounded = bvh
+            .primitive_indices
+            .iter()
+            .map(|&k| ids[k as usize])
+            .collect();
+        let unbounded = (0..bounds.len() as u32)
+            .filter(|&i| bounds[i as usize].is_none())
+            .collect();
+        Some(ObjectIndex {
+            bvh,
+            bounded,
+            unbounded,
+        })
+    }
+
+    /// Closest-hit traversal: `f(object, tmax)` returns the object's nearest distance below
+    /// `tmax`, if any; the best is kept and prunes the rest.
+    pub fn closest(&self, ray: &Ray, mut f: impl FnMut(u32, f64) -> Option<f64>) {
+        let mut tmax = ray.tmax;
+        self.bvh
+            .ray_traverse(bvh_ray(ray, tmax), &mut RayHit::none(), |_, k| {
+                match f(self.bounded[k], tmax) {
+                    Some(t) => {
+                        tmax = t;
+                        ((t * (1.0 + 1e-6)) as f32).next_up()
+                    }
+                    None => f32::INFINITY,
+                }
+            });
+    }
+
+    /// Visits every bounded object whose box the ray meets, stopping when `f` returns true.
+    pub fn any(&self, ray: &Ray, mut f: impl FnMut(u32) -> bool) -> bool {
+        !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, k| {
+            if f(self.bounded[k]) {
+                0.0
+            } else {
+                f32::INFINITY
+            }
+        })
+    }
+
+    /// Visits every bounded object whose box the ray meets.
+    pub fn each(&self, ray: &Ray, mut f: impl FnMut(u32)) {
+        self.bvh
+            .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, k| f(self.bounded[k]));
+    }
+}
