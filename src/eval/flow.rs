@@ -154,20 +154,7 @@ impl<'a> Evaluator<'a> {
                 )))
             }
             Some(item) if item.kind == NodeKind::Unparsed => {
-                Value::Unsupported(Box::new(Diagnostic::error(
-                    "this declaration is outside the language trace reads",
-                    Span {
-                        end: item.span.start
-                            + item
-                                .word
-                                .chars()
-                                .take_while(|c| !c.is_whitespace())
-                                .map(char::len_utf8)
-                                .sum::<usize>()
-                                .max(1) as u32,
-                        ..item.span
-                    },
-                )))
+                Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
             Some(item) => self.item_value(item).or_else(unsupported_later)?,
             None => self.eval(&node.args[0]).or_else(unsupported_later)?,
@@ -177,6 +164,30 @@ impl<'a> Evaluator<'a> {
         }
         self.env.insert(name, value);
         Ok(())
+    }
+
+    /// Why a declared value could not be read: an unsupported construct named by its first
+    /// word, or the grammar's error.
+    fn why_unparsed(&self, item: &Node) -> Diagnostic {
+        let word: String = item
+            .word
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let word_span = Span {
+            end: item.span.start + word.len().max(1) as u32,
+            ..item.span
+        };
+        if let Some(reason) = super::unsupported::reason(&word) {
+            return Diagnostic::error(format!("unsupported: `{word}` ({reason})"), word_span);
+        }
+        let text = &self.sources.file(item.span.file).text;
+        syntax::explain_value(text, item.span.file, item.span.start as usize).unwrap_or_else(|| {
+            Diagnostic::error(
+                "this declaration is outside the language trace reads",
+                word_span,
+            )
+        })
     }
 
     /// Records the current value of `name` in the innermost macro frame (once), so that it is

@@ -216,16 +216,17 @@ impl TriangleMesh {
 mod tests {
     use super::*;
 
+    /// Corner `i` (0..8) of the cube [−1, 1]³.
+    fn cube_corner(i: u32) -> DVec3 {
+        let bit = |k: u32| ((i >> k) & 1) as f64 * 2.0 - 1.0;
+        DVec3::new(bit(0), bit(1), bit(2))
+    }
+
     /// A closed unit cube (12 triangles) centred at `c` with half-size `h`.
     fn cube(c: DVec3, h: f64) -> TriangleMesh {
         let mut v = Vec::new();
         for i in 0..8 {
-            let s = DVec3::new(
-                (i & 1) as f64 * 2.0 - 1.0,
-                ((i >> 1) & 1) as f64 * 2.0 - 1.0,
-                ((i >> 2) & 1) as f64 * 2.0 - 1.0,
-            );
-            v.push(c + s * h);
+            v.push(c + cube_corner(i) * h);
         }
         let quads = [
             [0, 1, 3, 2],
@@ -281,11 +282,7 @@ mod tests {
             let m = cube(c, 1.0);
             let mut targets = Vec::new();
             for i in 0..8 {
-                let s = DVec3::new(
-                    (i & 1) as f64 * 2.0 - 1.0,
-                    ((i >> 1) & 1) as f64 * 2.0 - 1.0,
-                    ((i >> 2) & 1) as f64 * 2.0 - 1.0,
-                );
+                let s = cube_corner(i);
                 targets.push(s);
                 for axis in 0..3 {
                     for k in 1..8 {

@@ -291,6 +291,14 @@ pub fn parse_fragment_expr(
     })
 }
 
+/// The syntax error that keeps the declared value starting at byte `offset` of `text` from
+/// being read, if the grammar finds one.
+pub fn explain_value(text: &str, file: FileId, offset: usize) -> Option<Diagnostic> {
+    SceneParser::parse(Rule::value_probe, &text[offset..])
+        .err()
+        .map(|e| syntax_error_at(e, file, offset))
+}
+
 fn parse_items(
     text: &str,
     file: FileId,

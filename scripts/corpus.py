@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Runs trace over POV-Ray's sample scenes (Debian package povray-examples) and compares the
+ones it renders with POV-Ray 3.7 in the same run.
+
+Usage: scripts/corpus.py [--out docs/corpus.csv]
+Writes one CSV row per scene (scene, trace exit code, first message line, mean FLIP, RMSE,
+NaN pixels, trace seconds, POV-Ray seconds) and prints a summary: how many render, how many
+match (mean FLIP <= 0.01), and the messages that stop the rest, most frequent first.
+"""
+import collections, csv, os, shutil, subprocess, sys, tempfile, time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXAMPLES = "/usr/share/doc/povray/examples"
+INCLUDE = "/usr/share/povray-3.7/include"
+
+
+def main():
+    out = sys.argv[sys.argv.index("--out") + 1] if "--out" in sys.argv else os.path.join(ROOT, "docs/corpus.csv")
+    if not os.path.isdir(EXAMPLES):
+        subprocess.run(["apt-get", "install", "-y", "povray", "povray-examples", "povray-includes"], check=True)
+    subprocess.run(["cargo", "build", "--release", "--quiet", "--manifest-path", os.path.join(ROOT, "Cargo.toml")], check=True)
+    trace = os.path.join(ROOT, "target/release/trace")
+    work = tempfile.mkdtemp()
+    shutil.copytree(EXAMPLES, os.path.join(work, "examples"))
+    base = os.path.join(work, "examples")
+    scenes = sorted(os.path.relpath(os.path.join(d, f), base)
+                    for d, _, fs in os.walk(base) for f in fs if f.endswith(".pov"))
+    rows, reasons = [], collections.Counter()
+    for rel in scenes:
+        folder, name = os.path.split(os.path.join(base, rel))
+        t0 = time.time()
+        try:
+            p = subprocess.run([trace, name, "-o", "t.exr", "--width", "320", "--height", "240", "--aa", "off", "-q",
+                                "-L", INCLUDE], cwd=folder, capture_output=True, text=True, timeout=60)
+            code, message = p.returncode, next((l for l in p.stderr.splitlines() if l.startswith("error")), "")
+        except subprocess.TimeoutExpired:
+            code, message = -1, "timeout"
+        trace_s = time.time() - t0
+        row = {"scene": rel, "trace_exit": code, "trace_message": message, "flip": "", "rmse": "", "nan": "",
+               "trace_s": f"{trace_s:.2f}", "povray_s": ""}
+        if code == 0:
+            t0 = time.time()
+            subprocess.run(["povray", "+I" + name, "+Op.exr", "+FE", "+W320", "+H240", "-D", "-GA", "-A", "-J",
+                            "+L" + INCLUDE], cwd=folder, capture_output=True, timeout=300)
+            row["povray_s"] = f"{time.time() - t0:.2f}"
+            c = subprocess.run([trace, "compare", "p.exr", "t.exr"], cwd=folder, capture_output=True, text=True)
+            for line in c.stdout.splitlines():
+                if line.startswith("mean FLIP"):
+                    row["flip"] = line.split()[-1]
+                elif line.startswith("RMSE"):
+                    row["rmse"] = line.split()[-1]
+                elif line.startswith("NaN/inf"):
+                    row["nan"] = line.split()[-1]
+        else:
+            reasons[message.split(" (")[0][:90]] += 1
+        rows.append(row)
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    rendered = [r for r in rows if r["trace_exit"] == 0]
+    passing = [r for r in rendered if r["flip"] and float(r["flip"]) <= 0.01]
+    print(f"{len(rows)} scenes; trace renders {len(rendered)}; {len(passing)} match POV-Ray (mean FLIP <= 0.01)")
+    bad = [r for r in rows if r["trace_exit"] not in (0, 2)]
+    print(f"crashes, timeouts or I/O failures: {len(bad)}")
+    for r in bad:
+        print("  ", r["scene"], r["trace_exit"], r["trace_message"])
+    print("most frequent reasons for the rest:")
+    for reason, n in reasons.most_common(25):
+        print(f"  {n:4d}  {reason}")
+    shutil.rmtree(work)
+
+
+if __name__ == "__main__":
+    main()
