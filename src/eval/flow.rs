@@ -156,6 +156,9 @@ impl<'a> Evaluator<'a> {
             Some(item) if item.kind == NodeKind::Unparsed => {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
+            Some(item) if item.kind == NodeKind::IdentRef => {
+                self.lookup(item).or_else(unsupported_later)?
+            }
             Some(item) => self.item_value(item).or_else(unsupported_later)?,
             None => self.eval(&node.args[0]).or_else(unsupported_later)?,
         };
@@ -440,8 +443,8 @@ impl<'a> Evaluator<'a> {
         })
     }
 
-    /// Leaves the innermost macro: copies by-reference arguments back, restores shadowed
-    /// variables.
+    /// Leaves the innermost macro (or include file): copies by-reference arguments back,
+    /// restores shadowed variables.
     fn return_from_macro(&mut self) {
         let frame = self.frames.pop().expect("a macro frame");
         let back: Vec<(String, Value)> = frame
@@ -498,8 +501,11 @@ impl<'a> Evaluator<'a> {
         let file = self.sources.add(&path, text);
         let nodes = syntax::parse_scene(&self.sources.file(file).text, file)
             .map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))?;
+        // An include file is a scope for its #local declarations, like a macro.
         self.include_depth += 1;
+        self.frames.push(Frame::default());
         let result = self.each_item(&nodes, f);
+        self.return_from_macro();
         self.include_depth -= 1;
         result.map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))
     }

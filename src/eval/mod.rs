@@ -310,7 +310,7 @@ impl<'a> Evaluator<'a> {
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
             }
-            _ => unreachable!("{:?} is not a declarable item", node.kind),
+            _ => return Err(self.unknown_item(node, "a declaration")),
         })
     }
 
