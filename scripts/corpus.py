@@ -2,7 +2,7 @@
 """Runs trace over POV-Ray's sample scenes (Debian package povray-examples) and compares the
 ones it renders with POV-Ray 3.7 in the same run.
 
-Usage: scripts/corpus.py [--out docs/corpus.csv]
+Usage: scripts/corpus.py [--out docs/corpus.csv]   (also writes docs/corpus.md beside the CSV)
 Writes one CSV row per scene (scene, trace exit code, first message line, mean FLIP, RMSE,
 NaN pixels, trace seconds, POV-Ray seconds) and prints a summary: how many render, how many
 match (mean FLIP <= 0.01), and the messages that stop the rest, most frequent first.
@@ -68,7 +68,39 @@ def main():
     print("most frequent reasons for the rest:")
     for reason, n in reasons.most_common(25):
         print(f"  {n:4d}  {reason}")
+    write_report(out[:-4] + ".md", rows, rendered, passing, reasons)
     shutil.rmtree(work)
+
+
+def write_report(path, rows, rendered, passing, reasons):
+    commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    lines = [
+        "# POV-Ray's sample scenes in trace",
+        "",
+        f"Made by `scripts/corpus.py` on {time.strftime('%Y-%m-%d')} (trace commit `{commit}`): every `*.pov` of",
+        "Debian's `povray-examples` rendered by trace at 320×240 without anti-aliasing",
+        "(`--aa off -L /usr/share/povray-3.7/include`, from the scene's folder); the ones it renders are",
+        "rendered by POV-Ray 3.7 with the same settings (`+FE -A -J`) and compared (mean FLIP, RMSE).",
+        "Raw results: `docs/corpus.csv`.",
+        "",
+        f"**{len(rows)} scenes: trace renders {len(rendered)}, and {len(passing)} of those match POV-Ray**",
+        "(mean FLIP ≤ 0.01). No scene crashes trace; every other scene stops with a located error",
+        "(below: most name the construct; a plain `syntax error` marks a form the grammar does not read yet).",
+        "",
+        "## Scenes trace renders",
+        "",
+        "| scene | mean FLIP | RMSE | NaN | trace (s) | POV-Ray (s) |",
+        "|---|---:|---:|---:|---:|---:|",
+    ]
+    for r in rendered:
+        lines.append(f"| {r['scene']} | {r['flip']} | {r['rmse']} | {r['nan']} | {r['trace_s']} | {r['povray_s']} |")
+    lines += ["", "## What stops the others (first error, most frequent first)", "", "| scenes | first error |", "|---:|---|"]
+    for reason, n in reasons.most_common(40):
+        lines.append(f"| {n} | {reason.replace('|', '/') or '(none)'} |")
+    rest = sum(reasons.values()) - sum(n for _, n in reasons.most_common(40))
+    if rest:
+        lines.append(f"| {rest} | (other messages, see the CSV) |")
+    open(path, "w").write("\n".join(lines) + "\n")
 
 
 if __name__ == "__main__":
