@@ -5,6 +5,10 @@ use super::{Evaluator, unsupported};
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
+/// Functions whose value is a string (evaluated by `Evaluator::string`).
+pub(super) const STRING_FUNCTIONS: [&str; 6] =
+    ["concat", "str", "chr", "substr", "strupr", "strlwr"];
+
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
 const EQUALITY_TOLERANCE: f64 = 1e-10;
 
@@ -32,7 +36,7 @@ impl Evaluator<'_> {
                 Ok(Value::Vector(Vector::new(&comps)))
             }
             ExprKind::Str(_) => Ok(Value::Str(self.string(expr)?)),
-            ExprKind::Call(name, _, _) if name == "concat" || name == "str" => {
+            ExprKind::Call(name, _, _) if STRING_FUNCTIONS.contains(&name.as_str()) => {
                 Ok(Value::Str(self.string(expr)?))
             }
             ExprKind::Call(name, name_span, args) if self.macros.contains_key(name) => {
@@ -287,6 +291,9 @@ impl Evaluator<'_> {
     }
 
     fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Value> {
+        if let Some(v) = self.call_special(name, args, span)? {
+            return Ok(v);
+        }
         let mut values = Vec::with_capacity(args.len());
         for a in args {
             values.push(self.eval(a)?);
@@ -480,4 +487,88 @@ pub(super) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnosti
         format!("expected {expected}, found {}", found.kind_name()),
         span,
     )
+}
+
+impl Evaluator<'_> {
+    /// Functions that do not simply take numbers: `defined(Name)`, the string functions that
+    /// give numbers, `file_exists`, and the bitwise ones.
+    fn call_special(&mut self, name: &str, args: &[Expr], span: Span) -> Result<Option<Value>> {
+        let want = |n: usize| -> Result<()> {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(Diagnostic::error(
+                    format!("`{name}` takes {n} argument(s), found {}", args.len()),
+                    span,
+                ))
+            }
+        };
+        let f = match name {
+            "defined" => {
+                want(1)?;
+                let ExprKind::Ident(id) = &args[0].kind else {
+                    return Err(Diagnostic::error(
+                        "`defined` takes an identifier",
+                        args[0].span,
+                    ));
+                };
+                bool_value(self.env.contains_key(id))
+            }
+            "strlen" => {
+                want(1)?;
+                self.string(&args[0])?.chars().count() as f64
+            }
+            "strcmp" => {
+                want(2)?;
+                let (a, b) = (self.string(&args[0])?, self.string(&args[1])?);
+                match a.cmp(&b) {
+                    std::cmp::Ordering::Less => -1.0,
+                    std::cmp::Ordering::Equal => 0.0,
+                    std::cmp::Ordering::Greater => 1.0,
+                }
+            }
+            "val" => {
+                want(1)?;
+                let text = self.string(&args[0])?;
+                // Like C's atof: the longest leading number, 0 if none.
+                let t = text.trim_start();
+                (1..=t.len())
+                    .rev()
+                    .find_map(|n| t.get(..n).and_then(|p| p.parse::<f64>().ok()))
+                    .unwrap_or(0.0)
+            }
+            "asc" => {
+                want(1)?;
+                self.string(&args[0])?
+                    .chars()
+                    .next()
+                    .map_or(0.0, |c| c as u32 as f64)
+            }
+            "file_exists" => {
+                want(1)?;
+                let file = self.string(&args[0])?;
+                let found = std::iter::once(&self.base_dir)
+                    .chain(&self.options.include_paths)
+                    .any(|dir| dir.join(&file).is_file());
+                bool_value(found)
+            }
+            "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
+                if args.is_empty() {
+                    return Err(Diagnostic::error(format!("`{name}` needs arguments"), span));
+                }
+                let mut acc = self.float(&args[0])? as i64;
+                for a in &args[1..] {
+                    let x = self.float(a)? as i64;
+                    acc = match name {
+                        "bitwise_and" => acc & x,
+                        "bitwise_or" => acc | x,
+                        _ => acc ^ x,
+                    };
+                }
+                acc as f64
+            }
+            _ => return Ok(None),
+        };
+        Ok(Some(Value::Float(f)))
+    }
 }

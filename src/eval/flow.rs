@@ -293,6 +293,34 @@ impl<'a> Evaluator<'a> {
                 }
                 Ok(out)
             }
+            ExprKind::Call(name, _, args) if name == "chr" && args.len() == 1 => {
+                let code = self.float(&args[0])? as u32;
+                Ok(char::from_u32(code).map(String::from).unwrap_or_default())
+            }
+            ExprKind::Call(name, _, args) if name == "substr" && args.len() == 3 => {
+                let text = self.string(&args[0])?;
+                let (start, len) = (
+                    self.float(&args[1])? as usize,
+                    self.float(&args[2])? as usize,
+                );
+                if start < 1 || start - 1 + len > text.chars().count() {
+                    return Err(Diagnostic::error(
+                        "substr: position and length outside the string",
+                        e.span,
+                    ));
+                }
+                Ok(text.chars().skip(start - 1).take(len).collect())
+            }
+            ExprKind::Call(name, _, args)
+                if (name == "strupr" || name == "strlwr") && args.len() == 1 =>
+            {
+                let text = self.string(&args[0])?;
+                Ok(if name == "strupr" {
+                    text.to_uppercase()
+                } else {
+                    text.to_lowercase()
+                })
+            }
             ExprKind::Call(name, _, args) if name == "str" && args.len() == 3 => {
                 let v = self.float(&args[0])?;
                 let width = self.float(&args[1])?.max(0.0) as usize;
