@@ -443,6 +443,13 @@ impl Evaluator<'_> {
                 domain(v.length() > 0.0)?;
                 return Ok(Value::Vector(Vector::from_vec3(v.normalize())));
             }
+            "vaxis_rotate" => {
+                arity(3)?;
+                let axis = v3(1)?;
+                domain(axis.length() > 0.0)?;
+                let m = glam::DMat3::from_axis_angle(axis.normalize(), f(2, self)?.to_radians());
+                return Ok(Value::Vector(Vector::from_vec3(m * v3(0)?)));
+            }
             "vrotate" => {
                 arity(2)?;
                 let m = super::transform::rotation(v3(1)?);
