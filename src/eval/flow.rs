@@ -146,6 +146,12 @@ impl<'a> Evaluator<'a> {
     /// `#declare Name = value;` / `#local Name = value;`.
     fn declare(&mut self, node: &Node) -> Result<()> {
         let name = node.children[0].word.clone();
+        if let Some(sub) = node.children.iter().find(|c| c.kind == NodeKind::Subscript) {
+            return Err(Diagnostic::error(
+                "unsupported: array elements (arrays are not supported by trace yet)",
+                sub.span,
+            ));
+        }
         let value = match node.children.get(1) {
             Some(item) if item.kind == NodeKind::LayeredTexture => {
                 Value::Unsupported(Box::new(Diagnostic::error(

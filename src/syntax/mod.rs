@@ -134,6 +134,8 @@ pub enum NodeKind {
     LayeredTexture,
     /// A declared value the grammar cannot read.
     Unparsed,
+    /// `[i]` after a declared name (an array element).
+    Subscript,
     /// A reference to a declared identifier where an item may stand (`texture { T }`).
     IdentRef,
     /// A word the grammar does not know at this place (see `name`).
@@ -506,6 +508,7 @@ impl Lower {
             Rule::macro_call => NodeKind::MacroCall,
             Rule::layered_texture => NodeKind::LayeredTexture,
             Rule::unparsed_value => NodeKind::Unparsed,
+            Rule::subscript => NodeKind::Subscript,
             Rule::ident | Rule::name_ref => NodeKind::IdentRef,
             Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
