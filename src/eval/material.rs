@@ -46,7 +46,12 @@ impl Evaluator<'_> {
             pigment = match v {
                 Value::Pigment(p) => p,
                 other => match colour5(&other) {
-                    Some(c) => Pigment::solid(to_colour(c)),
+                    // A new colour or pattern keeps the placement of the pigment it replaces, as
+                    // in POV-Ray (a pigment block modifies the current pigment).
+                    Some(c) => Pigment {
+                        pattern: Pattern::Solid(to_colour(c)),
+                        transform: pigment.transform,
+                    },
                     None => return Err(type_error("a colour or pigment", &other, e.span)),
                 },
             };
@@ -70,10 +75,7 @@ impl Evaluator<'_> {
                             colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?,
                         );
                     }
-                    pigment = Pigment {
-                        pattern: Pattern::Checker(colours),
-                        transform: None,
-                    };
+                    pigment.pattern = Pattern::Checker(colours);
                 }
                 NodeKind::Gradient => {
                     let axis = ev.vec3(&item.args[0])?;
@@ -83,20 +85,14 @@ impl Evaluator<'_> {
                             item.args[0].span,
                         ));
                     }
-                    pigment = Pigment {
-                        pattern: Pattern::Gradient {
-                            axis: axis.normalize(),
-                            map: ColourMap::default(),
-                        },
-                        transform: None,
+                    pigment.pattern = Pattern::Gradient {
+                        axis: axis.normalize(),
+                        map: ColourMap::default(),
                     };
                 }
                 NodeKind::ImageMap => {
                     let image = ev.image_map(item)?;
-                    pigment = Pigment {
-                        pattern: Pattern::ImageMap(Arc::new(image)),
-                        transform: None,
-                    };
+                    pigment.pattern = Pattern::ImageMap(Arc::new(image));
                 }
                 NodeKind::ColourMap => map = Some((ev.colour_map(item)?, item.word_span)),
                 _ if Self::is_transform(item) => {
