@@ -309,7 +309,7 @@ impl Evaluator<'_> {
                 let texture = self.texture(m)?;
                 // A second texture is layered on top of the first in POV-Ray. An opaque top
                 // layer hides the one below, so replacing it is exact; a see-through one is not.
-                let opaque = matches!(&texture.pigment.pattern, ir::Pattern::Solid(c) if c.filter == 0.0 && c.transmit == 0.0);
+                let opaque = texture.pigment.is_opaque();
                 if object.texture.is_some() && !opaque {
                     return Err(Diagnostic::error(
                         "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",

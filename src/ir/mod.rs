@@ -336,6 +336,17 @@ pub struct Pigment {
 }
 
 impl Pigment {
+    /// Whether no point of the pigment lets light through (an image map may, by its alpha).
+    pub fn is_opaque(&self) -> bool {
+        let opaque = |c: &Colour| c.filter == 0.0 && c.transmit == 0.0;
+        match &self.pattern {
+            Pattern::Solid(c) => opaque(c),
+            Pattern::Checker(cs) => cs.iter().all(opaque),
+            Pattern::Gradient { map, .. } => map.entries.iter().all(|(_, c)| opaque(c)),
+            Pattern::ImageMap(_) => false,
+        }
+    }
+
     /// A solid colour.
     pub fn solid(c: Colour) -> Pigment {
         Pigment {
