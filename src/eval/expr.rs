@@ -6,8 +6,8 @@ use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
 /// Functions whose value is a string (evaluated by `Evaluator::string`).
-pub(super) const STRING_FUNCTIONS: [&str; 6] =
-    ["concat", "str", "chr", "substr", "strupr", "strlwr"];
+pub(super) const STRING_FUNCTIONS: [&str; 7] =
+    ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr"];
 
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
 const EQUALITY_TOLERANCE: f64 = 1e-10;
@@ -74,6 +74,7 @@ impl Evaluator<'_> {
                 self.member(&v, name, *span, base.span)
             }
             ExprKind::Colour(parts) => self.colour(parts),
+            ExprKind::Index(..) => self.index_expr(expr),
         }
     }
 
@@ -558,6 +559,27 @@ impl Evaluator<'_> {
                     .chain(&self.options.include_paths)
                     .any(|dir| dir.join(&file).is_file());
                 bool_value(found)
+            }
+            "dimensions" | "dimension_size" => self.array_dimensions(name, args, span)?,
+            "seed" => {
+                want(1)?;
+                // POV-Ray converts the seed to a C int (truncation), then to an unsigned long.
+                let seed = self.float(&args[0])? as i64 as u32;
+                self.rand_streams.push(seed);
+                (self.rand_streams.len() - 1) as f64
+            }
+            "rand" => {
+                want(1)?;
+                let i = self.float(&args[0])?;
+                let Some(state) = self.rand_streams.get_mut(i as usize).filter(|_| i >= 0.0) else {
+                    return Err(Diagnostic::error(
+                        "`rand` needs a stream made by `seed(…)`",
+                        args[0].span,
+                    ));
+                };
+                // POV-Ray's stream: a 32-bit linear congruential generator, scaled to [0, 1].
+                *state = state.wrapping_mul(1_812_433_253).wrapping_add(12_345);
+                f64::from(*state) / f64::from(u32::MAX)
             }
             "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
                 if args.is_empty() {

@@ -146,13 +146,12 @@ impl<'a> Evaluator<'a> {
     /// `#declare Name = value;` / `#local Name = value;`.
     fn declare(&mut self, node: &Node) -> Result<()> {
         let name = node.children[0].word.clone();
-        if let Some(sub) = node.children.iter().find(|c| c.kind == NodeKind::Subscript) {
-            return Err(Diagnostic::error(
-                "unsupported: array elements (arrays are not supported by trace yet)",
-                sub.span,
-            ));
-        }
-        let value = match node.children.get(1) {
+        let subs: Vec<&Node> = node
+            .children
+            .iter()
+            .filter(|c| c.kind == NodeKind::Subscript)
+            .collect();
+        let value = match node.children.get(1 + subs.len()) {
             Some(item) if item.kind == NodeKind::LayeredTexture => {
                 Value::Unsupported(Box::new(Diagnostic::error(
                     "unsupported: layered textures (not supported by trace yet)",
@@ -162,12 +161,19 @@ impl<'a> Evaluator<'a> {
             Some(item) if item.kind == NodeKind::Unparsed => {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
+            Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
             Some(item) if item.kind == NodeKind::IdentRef => {
                 self.lookup(item).or_else(unsupported_later)?
             }
             Some(item) => self.item_value(item).or_else(unsupported_later)?,
             None => self.eval(&node.args[0]).or_else(unsupported_later)?,
         };
+        if !subs.is_empty() {
+            if let Value::Unsupported(d) = value {
+                return Err(*d);
+            }
+            return self.assign_element(&node.children[0], &subs, value);
+        }
         if node.kind == NodeKind::Local {
             self.shadow(&name);
         }
@@ -329,13 +335,22 @@ impl<'a> Evaluator<'a> {
             }
             ExprKind::Call(name, _, args) if name == "str" && args.len() == 3 => {
                 let v = self.float(&args[0])?;
-                let width = self.float(&args[1])?.max(0.0) as usize;
-                let precision = self.float(&args[2])?;
-                Ok(if precision < 0.0 {
-                    format!("{v:width$}")
-                } else {
-                    format!("{v:width$.*}", precision as usize)
-                })
+                let (width, precision) = (self.float(&args[1])?, self.float(&args[2])?);
+                Ok(format_float(v, width, precision))
+            }
+            ExprKind::Call(name, _, args) if name == "vstr" && args.len() == 5 => {
+                let n = self.float(&args[0])?.clamp(1.0, 5.0) as usize;
+                let v = self.eval(&args[1])?;
+                let Some((components, _)) = v.components() else {
+                    return Err(type_error("a vector", &v, args[1].span));
+                };
+                let separator = self.string(&args[2])?;
+                let (width, precision) = (self.float(&args[3])?, self.float(&args[4])?);
+                let parts: Vec<String> = (0..n)
+                    // Missing components (and all but the first of a float) are zeros.
+                    .map(|i| format_float(components[i], width, precision))
+                    .collect();
+                Ok(parts.join(&separator))
             }
             _ => match self.eval(e)? {
                 Value::Str(s) => Ok(s),
@@ -557,5 +572,21 @@ fn unsupported_later(d: Diagnostic) -> Result<Value> {
         Ok(Value::Unsupported(Box::new(d)))
     } else {
         Err(d)
+    }
+}
+
+/// A number as `str(V, L, P)` writes it: at least `width` characters (padded with zeros when
+/// `width` is negative), `precision` decimals (6 when negative).
+fn format_float(v: f64, width: f64, precision: f64) -> String {
+    let precision = if precision < 0.0 {
+        6
+    } else {
+        precision as usize
+    };
+    let w = width.abs() as usize;
+    if width < 0.0 {
+        format!("{v:0w$.precision$}")
+    } else {
+        format!("{v:w$.precision$}")
     }
 }

@@ -4,6 +4,7 @@
 //! fixed evaluation orders (camera, texture attachment), and rejects by name anything outside
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 
+mod array;
 mod expr;
 mod flow;
 mod material;
@@ -124,6 +125,8 @@ pub(crate) struct Evaluator<'a> {
     background: Rgb,
     default_texture: Texture,
     warnings: Vec<Diagnostic>,
+    /// The state of each `seed()` stream, read and advanced by `rand()`.
+    rand_streams: Vec<u32>,
 }
 
 impl<'a> Evaluator<'a> {
@@ -151,6 +154,7 @@ impl<'a> Evaluator<'a> {
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             warnings: Vec::new(),
+            rand_streams: Vec::new(),
         }
     }
 
@@ -184,11 +188,8 @@ impl<'a> Evaluator<'a> {
         }
     }
 
-    fn lookup(&self, ident: &Node) -> Result<Value> {
-        match self.env.get(&ident.word) {
-            Some(v) => self.usable(&ident.word, v.clone(), ident.span),
-            None => Err(self.unknown_word(&ident.word, ident.span)),
-        }
+    fn lookup(&mut self, ident: &Node) -> Result<Value> {
+        self.item_ref(ident)
     }
 
     /// A declared value, or the error of a declaration that was outside the subset.

@@ -47,8 +47,17 @@ pub enum Value {
     Interior(ir::Interior),
     ColourMap(ir::ColourMap),
     Str(String),
+    /// `array[…]`: its elements row-major, `None` where none was assigned yet.
+    Array(Box<Array>),
     /// A declaration trace could not evaluate: the reason, reported when the name is used.
     Unsupported(Box<crate::diag::Diagnostic>),
+}
+
+/// A POV-Ray array: its size along each dimension and its elements in row-major order.
+#[derive(Clone, Debug)]
+pub struct Array {
+    pub dims: Vec<usize>,
+    pub items: Vec<Option<Value>>,
 }
 
 impl Value {
@@ -67,6 +76,7 @@ impl Value {
             Value::Interior(_) => "an interior",
             Value::ColourMap(_) => "a color_map",
             Value::Str(_) => "a string",
+            Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",
         }
     }

@@ -136,8 +136,16 @@ pub enum NodeKind {
     Unparsed,
     /// `[i]` after a declared name (an array element).
     Subscript,
-    /// A reference to a declared identifier where an item may stand (`texture { T }`).
+    /// A reference to a declared identifier where an item may stand (`texture { T }`); its
+    /// children are the subscripts of an array element (`object { A[i] }`).
     IdentRef,
+    /// `array[N]…` with an optional [`NodeKind::ArrayInit`] child after the subscripts.
+    Array,
+    /// `{ a, b, … }`: the elements of an array, one [`NodeKind::ArrayElem`] each.
+    ArrayInit,
+    /// One element of an array initializer: an expression (in `args`), an item, or a nested
+    /// [`NodeKind::ArrayInit`] (in `children`).
+    ArrayElem,
     /// A word the grammar does not know at this place (see `name`).
     Unknown,
 }
@@ -223,6 +231,8 @@ pub enum ExprKind {
     Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
     /// `f(a, b)`; the function name and its span.
     Call(String, Span, Vec<Expr>),
+    /// `a[i]`: an array element.
+    Index(Box<Expr>, Box<Expr>),
     /// `v.x`; the member name and its span.
     Member(Box<Expr>, String, Span),
     /// `color rgb <...> filter 0.5`.
@@ -509,7 +519,10 @@ impl Lower {
             Rule::layered_texture => NodeKind::LayeredTexture,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
-            Rule::ident | Rule::name_ref => NodeKind::IdentRef,
+            Rule::ident | Rule::name_ref | Rule::item_ref => NodeKind::IdentRef,
+            Rule::array_value => NodeKind::Array,
+            Rule::array_init => NodeKind::ArrayInit,
+            Rule::array_elem => NodeKind::ArrayElem,
             Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
@@ -527,6 +540,14 @@ impl Lower {
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
+            return node;
+        }
+        if rule == Rule::item_ref {
+            let mut inner = pair.into_inner();
+            let name = inner.next().expect("item_ref starts with a name");
+            node.word = name.as_str().to_string();
+            node.word_span = self.span(&name);
+            node.children = inner.map(|p| self.node(p)).collect();
             return node;
         }
         if rule == Rule::leftover {
@@ -667,6 +688,20 @@ impl Lower {
                 }
                 e
             }
+            Rule::indexed => {
+                let mut inner = pair.into_inner();
+                let mut e = self.expr(inner.next().expect("indexed starts with a name"));
+                for sub in inner {
+                    let end = self.span(&sub).end;
+                    let index = self.expr(sub.into_inner().next().expect("subscript has a value"));
+                    let span = Span { end, ..e.span };
+                    e = Expr {
+                        kind: ExprKind::Index(Box::new(e), Box::new(index)),
+                        span,
+                    };
+                }
+                e
+            }
             Rule::paren | Rule::colour_base => {
                 self.expr(pair.into_inner().next().expect("parenthesised expression"))
             }
@@ -768,6 +803,7 @@ fn is_word(rule: Rule) -> bool {
     matches!(
         rule,
         word | kw_adc_bailout
+            | kw_array
             | kw_albedo
             | kw_ambient
             | kw_ambient_light

@@ -10,6 +10,10 @@ fn snapshot_ir(path: &Path) {
     };
     let loaded = trace::load(path, &options).unwrap_or_else(|e| panic!("{e}"));
     insta::assert_debug_snapshot!(loaded.scene);
+    if !loaded.debug_output.is_empty() {
+        // What `#debug` printed (string functions are checked against POV-Ray's output).
+        insta::assert_snapshot!("debug_output", loaded.debug_output);
+    }
 }
 
 #[test]

@@ -1,0 +1,291 @@
+//! Arrays: `#declare A = array[3] {…}`, `#declare A[i] = …`, `A[i]` in expressions and where
+//! an item may stand (`object { A[i] }`), `dimensions(A)` and `dimension_size(A, n)`.
+//!
+//! As in POV-Ray, an array is a value: `#declare B = A;` copies it, subscripts truncate toward
+//! zero, every element has the same type, and reading an element never assigned is an error.
+
+use super::Evaluator;
+use super::value::{Array, Value};
+use crate::diag::{Diagnostic, Span};
+use crate::syntax::{Expr, ExprKind, Node, NodeKind};
+
+type Result<T> = std::result::Result<T, Diagnostic>;
+
+/// More elements than this in one array is an error (a typo such as `array[1e9]`, not a scene).
+const MAX_ELEMENTS: usize = 1 << 24;
+
+impl Evaluator<'_> {
+    /// `array[d1][d2]… { … }`.
+    pub(super) fn array_value(&mut self, node: &Node) -> Result<Value> {
+        let mut dims = Vec::new();
+        for sub in node
+            .children
+            .iter()
+            .filter(|c| c.kind == NodeKind::Subscript)
+        {
+            let n = self.float(&sub.args[0])?.trunc();
+            if !(1.0..=MAX_ELEMENTS as f64).contains(&n) {
+                return Err(Diagnostic::error(
+                    format!("an array dimension must be from 1 to {MAX_ELEMENTS}, found {n}"),
+                    sub.span,
+                ));
+            }
+            dims.push(n as usize);
+        }
+        let total = dims.iter().try_fold(1usize, |acc, &d| acc.checked_mul(d));
+        let Some(total) = total.filter(|&t| t <= MAX_ELEMENTS) else {
+            return Err(Diagnostic::error(
+                format!("an array may hold at most {MAX_ELEMENTS} elements"),
+                node.span,
+            ));
+        };
+        let mut array = Array {
+            dims,
+            items: Vec::new(),
+        };
+        match node.children.iter().find(|c| c.kind == NodeKind::ArrayInit) {
+            Some(init) => {
+                let dims = array.dims.clone();
+                self.array_init(init, &dims, &mut array.items)?;
+            }
+            None => array.items = vec![None; total],
+        }
+        Ok(Value::Array(Box::new(array)))
+    }
+
+    /// The elements of `init`, which must have the shape `dims`, appended to `out`.
+    fn array_init(
+        &mut self,
+        init: &Node,
+        dims: &[usize],
+        out: &mut Vec<Option<Value>>,
+    ) -> Result<()> {
+        let elems = &init.children;
+        if elems.len() != dims[0] {
+            return Err(Diagnostic::error(
+                format!(
+                    "this array dimension has {} elements, the initializer gives {}",
+                    dims[0],
+                    elems.len()
+                ),
+                init.span,
+            ));
+        }
+        for elem in elems {
+            let nested = elem
+                .children
+                .first()
+                .filter(|c| c.kind == NodeKind::ArrayInit);
+            match (nested, dims.len()) {
+                (Some(inner), n) if n > 1 => self.array_init(inner, &dims[1..], out)?,
+                (None, 1) => {
+                    let value = match elem.children.first() {
+                        Some(item) => self.item_value(item)?,
+                        None => self.eval(&elem.args[0])?,
+                    };
+                    if let Some(Some(first)) = out.first() {
+                        same_kind(first, &value, elem.span)?;
+                    }
+                    out.push(Some(value));
+                }
+                (Some(_), _) => {
+                    return Err(Diagnostic::error(
+                        "expected an element, found `{` (the array has fewer dimensions)",
+                        elem.span,
+                    ));
+                }
+                (None, _) => {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "expected `{{` opening the {} elements of a dimension",
+                            dims[1]
+                        ),
+                        elem.span,
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The row-major position of the element `name[subscripts…]`.
+    fn element_position(&mut self, name: &str, name_span: Span, subs: &[&Expr]) -> Result<usize> {
+        let mut indices = Vec::with_capacity(subs.len());
+        for sub in subs {
+            indices.push((self.float(sub)?.trunc(), sub.span));
+        }
+        let array = match self.env.get(name) {
+            Some(Value::Array(a)) => a,
+            Some(other) => {
+                return Err(Diagnostic::error(
+                    format!("`{name}` is {}, not an array", other.kind_name()),
+                    name_span,
+                ));
+            }
+            None => return Err(self.unknown_word(name, name_span)),
+        };
+        if indices.len() != array.dims.len() {
+            let last = indices.last().map_or(name_span, |(_, s)| *s);
+            return Err(Diagnostic::error(
+                format!(
+                    "`{name}` has {} dimension(s), {} subscript(s) given",
+                    array.dims.len(),
+                    indices.len()
+                ),
+                Span {
+                    start: name_span.start,
+                    ..last
+                },
+            ));
+        }
+        let mut pos = 0usize;
+        for ((i, span), &d) in indices.iter().zip(&array.dims) {
+            if *i < 0.0 || *i >= d as f64 {
+                return Err(Diagnostic::error(
+                    format!(
+                        "array subscript {i} out of range: this dimension of `{name}` runs from 0 to {}",
+                        d - 1
+                    ),
+                    *span,
+                ));
+            }
+            pos = pos * d + *i as usize;
+        }
+        Ok(pos)
+    }
+
+    /// `A[i]…` in an expression.
+    pub(super) fn index_expr(&mut self, expr: &Expr) -> Result<Value> {
+        let mut subs = Vec::new();
+        let mut base = expr;
+        while let ExprKind::Index(inner, index) = &base.kind {
+            subs.push(index.as_ref());
+            base = inner;
+        }
+        subs.reverse();
+        let ExprKind::Ident(name) = &base.kind else {
+            return Err(Diagnostic::error(
+                "only a declared array can be subscripted",
+                base.span,
+            ));
+        };
+        self.element(name, base.span, &subs, expr.span)
+    }
+
+    /// A copy of the element `name[subs…]`.
+    fn element(
+        &mut self,
+        name: &str,
+        name_span: Span,
+        subs: &[&Expr],
+        span: Span,
+    ) -> Result<Value> {
+        let pos = self.element_position(name, name_span, subs)?;
+        match self.env.get(name) {
+            Some(Value::Array(a)) => match &a.items[pos] {
+                Some(v) => Ok(v.clone()),
+                None => Err(Diagnostic::error(
+                    "this array element has not been given a value",
+                    span,
+                )),
+            },
+            _ => unreachable!("element_position checked that `{name}` is an array"),
+        }
+    }
+
+    /// `T` or `A[i]` where an item may stand.
+    pub(super) fn item_ref(&mut self, node: &Node) -> Result<Value> {
+        if node.children.is_empty() {
+            return match self.env.get(&node.word) {
+                Some(v) => self.usable(&node.word, v.clone(), node.span),
+                None => Err(self.unknown_word(&node.word, node.span)),
+            };
+        }
+        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        self.element(&node.word, node.word_span, &subs, node.span)
+    }
+
+    /// `#declare A[i]… = value`.
+    pub(super) fn assign_element(
+        &mut self,
+        name: &Node,
+        subs: &[&Node],
+        value: Value,
+    ) -> Result<()> {
+        let exprs: Vec<&Expr> = subs.iter().map(|s| &s.args[0]).collect();
+        let pos = self.element_position(&name.word, name.span, &exprs)?;
+        let Some(Value::Array(array)) = self.env.get_mut(&name.word) else {
+            unreachable!("element_position checked that the name is an array");
+        };
+        if let Some(existing) = array.items.iter().flatten().next() {
+            let span = Span {
+                end: subs.last().map_or(name.span.end, |s| s.span.end),
+                ..name.span
+            };
+            same_kind(existing, &value, span)?;
+        }
+        array.items[pos] = Some(value);
+        Ok(())
+    }
+
+    /// `dimensions(A)` and `dimension_size(A, n)`.
+    pub(super) fn array_dimensions(
+        &mut self,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<f64> {
+        let want = if name == "dimensions" { 1 } else { 2 };
+        if args.len() != want {
+            return Err(Diagnostic::error(
+                format!("`{name}` takes {want} argument(s), found {}", args.len()),
+                span,
+            ));
+        }
+        let dims = match &args[0].kind {
+            ExprKind::Ident(id) => match self.env.get(id) {
+                Some(Value::Array(a)) => a.dims.clone(),
+                Some(other) => {
+                    return Err(super::expr::type_error("an array", other, args[0].span));
+                }
+                None => return Err(self.unknown_word(id, args[0].span)),
+            },
+            _ => {
+                return Err(Diagnostic::error(
+                    "expected the name of an array",
+                    args[0].span,
+                ));
+            }
+        };
+        if want == 1 {
+            return Ok(dims.len() as f64);
+        }
+        let n = self.float(&args[1])?.trunc();
+        if n < 1.0 || n > dims.len() as f64 {
+            // POV-Ray's answer here is not consistent (0, or a stale size): an error instead.
+            return Err(Diagnostic::error(
+                format!("the array has dimensions 1 to {}, not {n}", dims.len()),
+                args[1].span,
+            ));
+        }
+        Ok(dims[n as usize - 1] as f64)
+    }
+}
+
+/// POV-Ray keeps one type per array: an element of another kind is an error.
+fn same_kind(existing: &Value, new: &Value, span: Span) -> Result<()> {
+    if std::mem::discriminant(existing) == std::mem::discriminant(new) {
+        return Ok(());
+    }
+    Err(Diagnostic::error(
+        format!(
+            "this array holds {}s; an element cannot be {}",
+            existing
+                .kind_name()
+                .trim_start_matches("an ")
+                .trim_start_matches("a "),
+            new.kind_name()
+        ),
+        span,
+    ))
+}
