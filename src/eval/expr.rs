@@ -75,6 +75,7 @@ impl Evaluator<'_> {
             }
             ExprKind::Colour(parts) => self.colour(parts),
             ExprKind::Index(..) => self.index_expr(expr),
+            ExprKind::Item(node) => self.item_value(node),
         }
     }
 

@@ -145,13 +145,17 @@ impl<'a> Evaluator<'a> {
 
     /// `#declare Name = value;` / `#local Name = value;`.
     fn declare(&mut self, node: &Node) -> Result<()> {
-        let name = node.children[0].word.clone();
-        let subs: Vec<&Node> = node
+        let deprecation = node
             .children
+            .first()
+            .filter(|c| c.kind == NodeKind::Deprecation);
+        let children = &node.children[usize::from(deprecation.is_some())..];
+        let name = children[0].word.clone();
+        let subs: Vec<&Node> = children
             .iter()
             .filter(|c| c.kind == NodeKind::Subscript)
             .collect();
-        let value = match node.children.get(1 + subs.len()) {
+        let value = match children.get(1 + subs.len()) {
             Some(item) if item.kind == NodeKind::LayeredTexture => {
                 Value::Unsupported(Box::new(Diagnostic::error(
                     "unsupported: layered textures (not supported by trace yet)",
@@ -172,10 +176,19 @@ impl<'a> Evaluator<'a> {
             if let Value::Unsupported(d) = value {
                 return Err(*d);
             }
-            return self.assign_element(&node.children[0], &subs, value);
+            return self.assign_element(&children[0], &subs, value);
         }
         if node.kind == NodeKind::Local {
             self.shadow(&name);
+        }
+        match deprecation {
+            Some(d) => {
+                let message = self.string(&d.args[0])?;
+                self.deprecated.insert(name.clone(), message);
+            }
+            None => {
+                self.deprecated.remove(&name);
+            }
         }
         self.env.insert(name, value);
         Ok(())

@@ -355,4 +355,32 @@ impl Evaluator<'_> {
         })?;
         Ok(interior)
     }
+
+    /// `material { [Name] texture {…} interior {…} transforms }`: what it sets, the texture and
+    /// interior each only if given (transforms move the texture).
+    pub(super) fn material(&mut self, node: &Node) -> Result<(Option<Texture>, Option<Interior>)> {
+        let (mut texture, mut interior): (Option<Texture>, Option<Interior>) = (None, None);
+        self.each_item(&node.children, &mut |ev, item| {
+            match item.kind {
+                NodeKind::IdentRef => match ev.lookup(item)? {
+                    Value::Material(t, i) => (texture, interior) = (t, i),
+                    other => return Err(type_error("a material", &other, item.span)),
+                },
+                NodeKind::Texture => texture = Some(ev.texture(item)?),
+                NodeKind::Interior => {
+                    let base = interior.unwrap_or_default();
+                    interior = Some(ev.interior(item, base)?);
+                }
+                _ if Self::is_transform(item) => {
+                    let t = ev.transform(item)?;
+                    if let Some(texture) = &mut texture {
+                        move_pigment(&mut texture.pigment, t);
+                    }
+                }
+                _ => return Err(ev.unknown_item(item, "material")),
+            }
+            Ok(())
+        })?;
+        Ok((texture, interior))
+    }
 }

@@ -127,6 +127,8 @@ pub(crate) struct Evaluator<'a> {
     warnings: Vec<Diagnostic>,
     /// The state of each `seed()` stream, read and advanced by `rand()`.
     rand_streams: Vec<u32>,
+    /// Names declared `deprecated`, with their message: the first use warns.
+    deprecated: HashMap<String, String>,
 }
 
 impl<'a> Evaluator<'a> {
@@ -155,6 +157,7 @@ impl<'a> Evaluator<'a> {
             default_texture: Texture::default(),
             warnings: Vec::new(),
             rand_streams: Vec::new(),
+            deprecated: HashMap::new(),
         }
     }
 
@@ -193,7 +196,13 @@ impl<'a> Evaluator<'a> {
     }
 
     /// A declared value, or the error of a declaration that was outside the subset.
-    fn usable(&self, name: &str, v: Value, span: Span) -> Result<Value> {
+    fn usable(&mut self, name: &str, v: Value, span: Span) -> Result<Value> {
+        if let Some(message) = self.deprecated.remove(name) {
+            self.warnings.push(Diagnostic::warning(
+                format!("`{name}` is deprecated: {message}"),
+                span,
+            ));
+        }
         match v {
             Value::Unsupported(d) => {
                 let mut e =
@@ -306,6 +315,10 @@ impl<'a> Evaluator<'a> {
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
             NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
+            NodeKind::Material => {
+                let (texture, interior) = self.material(node)?;
+                Value::Material(texture, interior)
+            }
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {
@@ -535,6 +548,12 @@ impl<'a> Evaluator<'a> {
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
                     c.transform = Some(c.transform.unwrap_or(Transform::IDENTITY).then(t));
+                }
+                NodeKind::Unknown if item.word == "cylinder" => {
+                    return Err(Diagnostic::error(
+                        "unsupported: the cylinder camera (this camera type is outside trace's subset)",
+                        item.word_span,
+                    ));
                 }
                 _ => return Err(ev.unknown_item(item, "camera")),
             }

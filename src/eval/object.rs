@@ -305,19 +305,20 @@ impl Evaluator<'_> {
 
     fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, is_cone: bool) -> Result<()> {
         match m.kind {
+            NodeKind::Material => {
+                let (texture, interior) = self.material(m)?;
+                if let Some(texture) = texture {
+                    self.set_texture(object, texture, m)?;
+                }
+                if interior.is_some() {
+                    object.interior = interior;
+                }
+            }
             NodeKind::Texture => {
                 let texture = self.texture(m)?;
-                // A second texture is layered on top of the first in POV-Ray. An opaque top
-                // layer hides the one below, so replacing it is exact; a see-through one is not.
-                let opaque = texture.pigment.is_opaque();
-                if object.texture.is_some() && !opaque {
-                    return Err(Diagnostic::error(
-                        "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",
-                        m.word_span,
-                    ));
-                }
-                object.texture = Some(texture);
+                self.set_texture(object, texture, m)?;
             }
+
             NodeKind::Pigment | NodeKind::Finish => {
                 let mut texture = object
                     .texture
@@ -360,6 +361,25 @@ impl Evaluator<'_> {
             }
             _ => return Err(self.unknown_item(m, "an object")),
         }
+        Ok(())
+    }
+
+    /// A texture given to an object by `texture {…}` or `material {…}`.
+    fn set_texture(
+        &mut self,
+        object: &mut ObjectValue,
+        texture: ir::Texture,
+        m: &Node,
+    ) -> Result<()> {
+        // A second texture is layered on top of the first in POV-Ray. An opaque top layer
+        // hides the one below, so replacing it is exact; a see-through one is not.
+        if object.texture.is_some() && !texture.pigment.is_opaque() {
+            return Err(Diagnostic::error(
+                "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",
+                m.word_span,
+            ));
+        }
+        object.texture = Some(texture);
         Ok(())
     }
 

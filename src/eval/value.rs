@@ -45,6 +45,8 @@ pub enum Value {
     Transform(ir::Transform),
     Camera(Box<super::CameraItems>),
     Interior(ir::Interior),
+    /// `material {…}`: a texture and an interior, each only if given.
+    Material(Option<ir::Texture>, Option<ir::Interior>),
     ColourMap(ir::ColourMap),
     Str(String),
     /// `array[…]`: its elements row-major, `None` where none was assigned yet.
@@ -74,6 +76,7 @@ impl Value {
             Value::Transform(_) => "a transform",
             Value::Camera(_) => "a camera",
             Value::Interior(_) => "an interior",
+            Value::Material(..) => "a material",
             Value::ColourMap(_) => "a color_map",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",

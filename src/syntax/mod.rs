@@ -74,6 +74,8 @@ pub enum NodeKind {
     Texture,
     Pigment,
     Finish,
+    /// `material { texture interior }`.
+    Material,
     Ambient,
     Emission,
     Diffuse,
@@ -139,6 +141,8 @@ pub enum NodeKind {
     /// A reference to a declared identifier where an item may stand (`texture { T }`); its
     /// children are the subscripts of an array element (`object { A[i] }`).
     IdentRef,
+    /// `deprecated [once] "message"` in a declaration.
+    Deprecation,
     /// `array[N]…` with an optional [`NodeKind::ArrayInit`] child after the subscripts.
     Array,
     /// `{ a, b, … }`: the elements of an array, one [`NodeKind::ArrayElem`] each.
@@ -239,6 +243,8 @@ pub enum ExprKind {
     Colour(Vec<ColourPart>),
     /// A string literal (without the quotes).
     Str(String),
+    /// An item passed as a macro argument (`Align(text {…}, x, 0)`).
+    Item(Box<Node>),
     /// A vector of plain number literals (`<1, -2.5, 3>`), read without building a tree: the
     /// bulk of a large mesh. `len` components (2..=5) are used.
     PlainVector([f64; 5], u8),
@@ -366,7 +372,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
     use Rule::*;
     Some(match rule {
         EOI => "end of file",
-        expr | logical | relation | sum | product | unary | postfix | colour_base => {
+        expr | logical | relation | sum | product | unary | postfix | colour_base | macro_arg => {
             "an expression"
         }
         number => "a number",
@@ -462,6 +468,7 @@ impl Lower {
             Rule::texture => NodeKind::Texture,
             Rule::pigment => NodeKind::Pigment,
             Rule::finish => NodeKind::Finish,
+            Rule::material => NodeKind::Material,
             Rule::ambient => NodeKind::Ambient,
             Rule::emission => NodeKind::Emission,
             Rule::diffuse => NodeKind::Diffuse,
@@ -521,9 +528,10 @@ impl Lower {
             Rule::subscript => NodeKind::Subscript,
             Rule::ident | Rule::name_ref | Rule::item_ref => NodeKind::IdentRef,
             Rule::array_value => NodeKind::Array,
+            Rule::deprecation => NodeKind::Deprecation,
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
-            Rule::unknown_item | Rule::leftover => NodeKind::Unknown,
+            Rule::unknown_item | Rule::leftover | Rule::cylinder_camera => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
         let mut node = Node {
@@ -702,6 +710,17 @@ impl Lower {
                 }
                 e
             }
+            Rule::macro_arg => {
+                let inner = pair.into_inner().next().expect("macro_arg has a value");
+                if inner.as_rule() == Rule::expr {
+                    self.expr(inner)
+                } else {
+                    Expr {
+                        kind: ExprKind::Item(Box::new(self.node(inner))),
+                        span,
+                    }
+                }
+            }
             Rule::paren | Rule::colour_base => {
                 self.expr(pair.into_inner().next().expect("parenthesised expression"))
             }
@@ -794,7 +813,12 @@ impl Lower {
 fn is_expr(rule: Rule) -> bool {
     matches!(
         rule,
-        Rule::expr | Rule::sum | Rule::plain_vector | Rule::plain_float | Rule::string
+        Rule::expr
+            | Rule::sum
+            | Rule::plain_vector
+            | Rule::plain_float
+            | Rule::string
+            | Rule::macro_arg
     )
 }
 
@@ -804,6 +828,7 @@ fn is_word(rule: Rule) -> bool {
         rule,
         word | kw_adc_bailout
             | kw_array
+            | kw_deprecated
             | kw_albedo
             | kw_ambient
             | kw_ambient_light
@@ -834,6 +859,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_location
             | kw_look_at
             | kw_matrix
+            | kw_material
             | kw_max_trace_level
             | kw_metallic
             | kw_no_image
