@@ -19,7 +19,7 @@ def main():
     if not os.path.isdir(EXAMPLES):
         subprocess.run(["apt-get", "install", "-y", "povray", "povray-examples", "povray-includes"], check=True)
     subprocess.run(["cargo", "build", "--release", "--quiet", "--manifest-path", os.path.join(ROOT, "Cargo.toml")], check=True)
-    trace = os.path.join(ROOT, "target/release/trace")
+    trace = os.environ.get("TRACE", os.path.join(ROOT, "target/release/trace"))
     work = tempfile.mkdtemp()
     shutil.copytree(EXAMPLES, os.path.join(work, "examples"))
     base = os.path.join(work, "examples")

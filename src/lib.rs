@@ -109,6 +109,10 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
 
 /// Renders a scene (building the render-ready scene inside).
 pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
+    let start = std::time::Instant::now();
     let built = scene::Scene::build(scene);
-    Ok(render::render(&built, options)?)
+    let build_time = start.elapsed();
+    let mut rendered = render::render(&built, options)?;
+    rendered.build_time = build_time;
+    Ok(rendered)
 }

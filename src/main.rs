@@ -5,7 +5,7 @@
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 use trace::{Antialias, Error, LoadOptions, RenderOptions};
 
 /// Render POV-Ray 3.7 scenes (a CSG-free subset) with a Whitted ray tracer.
@@ -178,34 +178,18 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
     rendered.film.write(output).map_err(Error::from)?;
     let done = Instant::now();
     if args.stats {
-        let c = &rendered.counts;
-        let pixels = (args.width * args.height) as u64;
-        let rays = c.camera + c.reflected + c.transmitted + c.shadow;
-        let trace_s = (traced - parsed).as_secs_f64();
-        eprintln!("Render statistics");
-        eprintln!("  Image resolution   {} x {}", args.width, args.height);
-        eprintln!("  Pixels             {pixels}");
-        eprintln!(
-            "  Samples            {} ({:.2} per pixel)",
-            rendered.samples,
-            rendered.samples as f64 / pixels as f64
-        );
-        eprintln!("  Camera rays        {}", c.camera);
-        eprintln!("  Reflected rays     {}", c.reflected);
-        eprintln!("  Transmitted rays   {}", c.transmitted);
-        eprintln!("  Shadow rays        {}", c.shadow);
-        eprintln!(
-            "  Parse time         {:.3} s",
-            (parsed - start).as_secs_f64()
-        );
-        eprintln!(
-            "  Trace time         {:.3} s ({:.0} rays/s)",
-            trace_s,
-            rays as f64 / trace_s.max(1e-9)
-        );
-        eprintln!(
-            "  Write time         {:.3} s",
-            (done - traced).as_secs_f64()
+        eprint!(
+            "{}",
+            stats_block(
+                args,
+                &rendered,
+                [
+                    parsed - start,
+                    rendered.build_time,
+                    (traced - parsed).saturating_sub(rendered.build_time),
+                    done - traced,
+                ]
+            )
         );
     }
     if !args.quiet {
@@ -218,6 +202,61 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         );
     }
     Ok(())
+}
+
+/// POV-Ray-style statistics: resolution, rays by kind, intersection tests by shape, and the
+/// time of each phase (parse, build, trace, write).
+fn stats_block(args: &RenderArgs, r: &trace::Rendered, phases: [Duration; 4]) -> String {
+    use std::fmt::Write;
+    let line = "-".repeat(76);
+    let c = &r.counts;
+    let pixels = u64::from(args.width) * u64::from(args.height);
+    let rays = c.camera + c.reflected + c.transmitted + c.shadow;
+    let mut out = String::new();
+    let _ = writeln!(out, "Render Statistics");
+    let _ = writeln!(out, "Image Resolution {} x {}", args.width, args.height);
+    let _ = writeln!(out, "{line}");
+    let _ = writeln!(
+        out,
+        "Pixels:    {pixels:>12}   Samples:   {:>12}   Smpls/Pxl: {:.2}",
+        r.samples,
+        r.samples as f64 / pixels.max(1) as f64
+    );
+    let _ = writeln!(
+        out,
+        "Rays:      {rays:>12}   Camera:    {:>12}   Shadow:    {:>12}",
+        c.camera, c.shadow
+    );
+    let _ = writeln!(
+        out,
+        "Reflected: {:>12}   Refracted: {:>12}",
+        c.reflected, c.transmitted
+    );
+    let _ = writeln!(out, "{line}");
+    let _ = writeln!(
+        out,
+        "{:<28}{:>16}{:>16}{:>12}",
+        "Ray->Shape Intersection", "Tests", "Succeeded", "Percentage"
+    );
+    let _ = writeln!(out, "{line}");
+    for (k, name) in trace::geometry::counters::KINDS.iter().enumerate() {
+        let (tried, hit) = (r.tests.tried[k], r.tests.hit[k]);
+        if tried > 0 {
+            let pct = 100.0 * hit as f64 / tried as f64;
+            let _ = writeln!(out, "{name:<28}{tried:>16}{hit:>16}{pct:>12.2}");
+        }
+    }
+    let _ = writeln!(out, "{line}");
+    let names = ["Parse Time", "Build Time", "Trace Time", "Write Time"];
+    for (name, d) in names.iter().zip(phases) {
+        let _ = writeln!(out, "{name:<12}{:>10.3} s", d.as_secs_f64());
+    }
+    let total: Duration = phases.iter().sum();
+    let _ = writeln!(out, "{:<12}{:>10.3} s", "Total Time", total.as_secs_f64());
+    let trace_s = phases[2].as_secs_f64().max(1e-9);
+    let _ = writeln!(out, "{:<12}{:>10.0} rays/s", "Speed", rays as f64 / trace_s);
+    let _ = writeln!(out, "{line}");
+    out
 }
 
 fn compare(

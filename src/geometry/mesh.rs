@@ -3,7 +3,7 @@
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
-use super::{Crossings, Ray};
+use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
@@ -134,7 +134,9 @@ impl TriangleMesh {
         self.bvh
             .ray_traverse(bvh_ray(ray, ray.tmax), &mut RayHit::none(), |_, i| {
                 let [a, b, c] = self.corners(i);
-                match sheared.intersect(a, b, c, ray.tmin, tmax) {
+                let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
+                counters::record(counters::TRIANGLE, crossing.is_some());
+                match crossing {
                     Some(t) => {
                         tmax = t;
                         best = Some((t, i as u32));
@@ -156,7 +158,9 @@ impl TriangleMesh {
         self.bvh
             .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, i| {
                 let [a, b, c] = self.corners(i);
-                if let Some(t) = sheared.intersect(a, b, c, ray.tmin, ray.tmax) {
+                let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
+                counters::record(counters::TRIANGLE, crossing.is_some());
+                if let Some(t) = crossing {
                     f(t);
                 }
             });
@@ -174,7 +178,9 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, i| {
             let [a, b, c] = self.corners(i);
-            match sheared.intersect(a, b, c, ray.tmin, ray.tmax) {
+            let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
+            counters::record(counters::TRIANGLE, crossing.is_some());
+            match crossing {
                 Some(_) => 0.0,
                 None => f32::INFINITY,
             }

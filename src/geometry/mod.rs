@@ -7,6 +7,7 @@
 //! the winning hit.
 
 mod cone;
+pub mod counters;
 mod cuboid;
 mod disc;
 pub mod mesh;

@@ -11,7 +11,7 @@ mod shade;
 pub use shade::RayCounts;
 
 use crate::film::Film;
-use crate::geometry::Ray;
+use crate::geometry::{Ray, counters};
 use crate::scene::{Gamma, Projection, Rgb, Scene};
 use rayon::prelude::*;
 use shade::{Interiors, Tracer};
@@ -59,6 +59,10 @@ pub struct Rendered {
     pub counts: RayCounts,
     /// Camera samples taken (centre samples plus supersamples).
     pub samples: u64,
+    /// Ray–shape intersection tests, by kind of shape.
+    pub tests: counters::Tests,
+    /// Time spent building the render-ready scene (acceleration structures included).
+    pub build_time: std::time::Duration,
 }
 
 /// Renders `scene` into a film of linear values.
@@ -87,6 +91,7 @@ pub fn render(
     });
     let mut film = Film::new(w, h);
     let mut counts = RayCounts::default();
+    let mut tests = counters::Tests::default();
     let mut samples = 0;
     for b in &blocks {
         for (k, value) in b.pixels.iter().enumerate() {
@@ -94,12 +99,15 @@ pub fn render(
             film.set(x, y, output_value(*value, scene.gamma));
         }
         counts.add(&b.counts);
+        tests.add(&b.tests);
         samples += b.samples;
     }
     Ok(Rendered {
         film,
         counts,
+        tests,
         samples,
+        build_time: std::time::Duration::ZERO,
     })
 }
 
@@ -122,6 +130,7 @@ struct BlockResult {
     width: u32,
     pixels: Vec<Rgb>,
     counts: RayCounts,
+    tests: counters::Tests,
     samples: u64,
 }
 
@@ -170,6 +179,7 @@ fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> Blo
     let x1 = (x0 + BLOCK_SIZE).min(w);
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
+    counters::take(); // (this block's counts start from zero)
     // A perspective camera's rays all start inside the same objects.
     let camera_interiors = match scene.camera.projection {
         Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
@@ -203,6 +213,7 @@ fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> Blo
             width: x1 - x0,
             pixels,
             counts: tracer.counts,
+            tests: counters::take(),
             samples,
         };
     };
@@ -272,6 +283,7 @@ fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> Blo
         width: x1 - x0,
         pixels,
         counts: tracer.counts,
+        tests: counters::take(),
         samples,
     }
 }

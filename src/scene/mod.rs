@@ -4,7 +4,7 @@
 //! once per distinct value; lights are collected. The renderer sees only this module's types.
 
 use crate::geometry::{
-    Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, offset_origin,
+    Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, counters, offset_origin,
 };
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
@@ -137,7 +137,26 @@ pub enum Shape {
 }
 
 impl Shape {
+    /// The kind of test in [`counters`].
+    fn test_kind(&self) -> usize {
+        match self {
+            Shape::Sphere(_) => counters::SPHERE,
+            Shape::Plane(_) => counters::PLANE,
+            Shape::Box(_) => counters::BOX,
+            Shape::Cone(_) => counters::CONE,
+            Shape::Disc(_) => counters::DISC,
+            Shape::Torus(_) => counters::TORUS,
+            Shape::Mesh(_) => counters::MESH,
+        }
+    }
+
     fn intersect(&self, ray: &Ray) -> Crossings {
+        let crossings = self.intersect_uncounted(ray);
+        counters::record(self.test_kind(), !crossings.is_empty());
+        crossings
+    }
+
+    fn intersect_uncounted(&self, ray: &Ray) -> Crossings {
         match self {
             Shape::Sphere(s) => s.intersect(ray),
             Shape::Plane(p) => p.intersect(ray),
@@ -153,7 +172,14 @@ impl Shape {
     /// order, except for meshes).
     fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64)) {
         match self {
-            Shape::Mesh(m) => m.for_each_crossing(ray, f),
+            Shape::Mesh(m) => {
+                let mut any = false;
+                m.for_each_crossing(ray, |t| {
+                    any = true;
+                    f(t)
+                });
+                counters::record(counters::MESH, any);
+            }
             other => other.intersect(ray).as_slice().iter().for_each(|&t| f(t)),
         }
     }
@@ -175,7 +201,11 @@ impl Shape {
     /// Whether anything of the shape lies on the ray.
     fn occludes(&self, ray: &Ray) -> bool {
         match self {
-            Shape::Mesh(m) => m.occluded(ray),
+            Shape::Mesh(m) => {
+                let blocked = m.occluded(ray);
+                counters::record(counters::MESH, blocked);
+                blocked
+            }
             other => !other.intersect(ray).is_empty(),
         }
     }
