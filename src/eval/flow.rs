@@ -581,7 +581,8 @@ impl<'a> Evaluator<'a> {
 /// A declaration that failed because it uses something outside the subset is kept, to be
 /// reported only if the scene uses it (standard include files declare many such things).
 fn unsupported_later(d: Diagnostic) -> Result<Value> {
-    if d.message.starts_with("unsupported:") {
+    // (Using a declaration that was itself outside the subset defers the same way.)
+    if d.message.starts_with("unsupported:") || d.message.contains("cannot be used: unsupported:") {
         Ok(Value::Unsupported(Box::new(d)))
     } else {
         Err(d)
