@@ -69,7 +69,41 @@ fi
 
 mkdir -p "$OUT_DIR"
 LOG="$(mktemp)"
-trap 'rm -f "$LOG"' EXIT
+MESH_TMP="$(mktemp -d)"
+trap 'rm -rf "$LOG" "$MESH_TMP"' EXIT
+
+# for_povray SCENE: the scene POV-Ray should read. A scene using trace's `mesh_file`
+# extension is rewritten: each mesh file is converted by `trace convert` into a mesh2 include
+# (TraceMesh_<stem>) and `mesh_file { "f.obj"` becomes `object { TraceMesh_f`.
+for_povray() {
+    local scene="$1"
+    if ! grep -q 'mesh_file' "$scene"; then
+        echo "$scene"
+        return
+    fi
+    cargo build --release --quiet --manifest-path "$ROOT/Cargo.toml"
+    python3 - "$scene" "$MESH_TMP" "$ROOT/target/release/trace" <<'PY'
+import os, re, subprocess, sys
+scene, tmp, trace = sys.argv[1:]
+text = open(scene).read()
+includes = []
+def repl(m):
+    path = m.group(1)
+    stem = re.sub(r"[^A-Za-z0-9]", "_", os.path.splitext(os.path.basename(path))[0])
+    name = "TraceMesh_" + stem
+    inc = os.path.join(tmp, name + ".inc")
+    if not os.path.exists(inc):
+        subprocess.run([trace, "convert", os.path.join(os.path.dirname(scene), path),
+                        "-o", inc, "--name", name], check=True, capture_output=True)
+    if '#include "%s"' % inc not in includes:
+        includes.append('#include "%s"' % inc)
+    return "object { " + name
+text = re.sub(r'mesh_file\s*\{\s*"([^"]+)"', repl, text)
+out = os.path.join(tmp, os.path.basename(scene))
+open(out, "w").write("\n".join(includes) + "\n" + text)
+print(out)
+PY
+}
 
 # render SCENE OUT SWITCH...: run POV-Ray from the scene's folder.
 render() {
@@ -79,10 +113,13 @@ render() {
     dir="$(dirname "$scene")"
     rel_out="$(realpath --relative-to="$dir" "$out")"
     rm -f "$out"
+    local input
+    input="$(for_povray "$scene")"
+    [ "$input" = "$scene" ] && input="$(basename "$scene")"
     # The output path is given relative to the scene's folder, exactly as
     # COMMANDS.md records it.
     if ! (cd "$dir" &&
-          povray "+I$(basename "$scene")" "+O$rel_out" "${COMMON[@]}" "$@") >"$LOG" 2>&1 ||
+          povray "+I$input" "+O$rel_out" "${COMMON[@]}" "$@") >"$LOG" 2>&1 ||
        [ ! -s "$out" ]; then
         cat "$LOG" >&2
         echo "povray failed on $scene" >&2
@@ -120,6 +157,9 @@ done
     echo "- \`NAME.exr\`: one centre ray per pixel (\`${PLAIN[*]}\`)."
     echo "- \`NAME.aa.exr\`: anti-aliasing method 1, threshold 0, depth 3, no jitter"
     echo "  (\`${AA[*]}\`): every pixel is (centre + 3x3 grid) / 10."
+    echo "- A scene using trace's \`mesh_file\` extension is given to POV-Ray rewritten: each"
+    echo "  mesh file becomes a mesh2 include (\`trace convert FILE -o TraceMesh_STEM.inc"
+    echo "  --name TraceMesh_STEM\`) and \`mesh_file { \"FILE\"\` becomes \`object { TraceMesh_STEM\`."
     echo
     echo "## Commands"
     echo

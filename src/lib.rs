@@ -16,6 +16,7 @@ pub mod eval;
 pub mod film;
 pub mod geometry;
 pub mod ir;
+pub mod meshfile;
 pub mod render;
 pub mod scene;
 pub mod syntax;

@@ -88,6 +88,18 @@ enum Command {
         #[arg(long)]
         diff: Option<PathBuf>,
     },
+    /// Convert a mesh file (OBJ or PLY) to a POV-Ray include declaring it as a mesh2, so a
+    /// scene using trace's `mesh_file` extension can be rendered by POV-Ray too.
+    Convert {
+        /// Mesh file (.obj or .ply).
+        mesh: PathBuf,
+        /// The include file to write.
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The declared name (default: from the file name, e.g. `Bunny` for bunny.obj).
+        #[arg(long)]
+        name: Option<String>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -98,6 +110,7 @@ fn main() -> ExitCode {
             test,
             diff,
         }) => compare(&reference, &test, diff.as_deref()),
+        Some(Command::Convert { mesh, output, name }) => convert(&mesh, &output, name),
         None => render(&cli.render),
     };
     match result {
@@ -201,6 +214,32 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
             (done - start).as_secs_f64()
         );
     }
+    Ok(())
+}
+
+fn convert(
+    mesh: &std::path::Path,
+    output: &std::path::Path,
+    name: Option<String>,
+) -> Result<(), Failure> {
+    let name = name.unwrap_or_else(|| trace::meshfile::identifier_for(mesh));
+    if !trace::syntax::is_identifier(&name) {
+        return Err(usage(format!("`{name}` is not a valid identifier")));
+    }
+    let data = trace::meshfile::read(mesh).map_err(|e| Failure {
+        message: format!("error: {e}"),
+        code: 2,
+    })?;
+    trace::meshfile::write_mesh2_file(&data, &name, output).map_err(|e| Failure {
+        message: format!("error: cannot write {}: {e}", output.display()),
+        code: 1,
+    })?;
+    eprintln!(
+        "trace: wrote {} ({name}: {} vertices, {} triangles)",
+        output.display(),
+        data.vertices.len(),
+        data.faces.len()
+    );
     Ok(())
 }
 

@@ -198,12 +198,7 @@ impl Evaluator<'_> {
                 file_expr.span,
             ));
         }
-        // Like POV-Ray: the scene's folder, then the include paths.
-        let path = std::iter::once(&self.base_dir)
-            .chain(&self.options.include_paths)
-            .map(|dir| dir.join(file))
-            .find(|p| p.is_file())
-            .unwrap_or_else(|| self.base_dir.join(file));
+        let path = self.find_file(&file);
         let img = image::ImageReader::open(&path)
             .map_err(|e| {
                 Diagnostic::error(

@@ -129,6 +129,8 @@ pub(crate) struct Evaluator<'a> {
     rand_streams: Vec<u32>,
     /// Names declared `deprecated`, with their message: the first use warns.
     deprecated: HashMap<String, String>,
+    /// Mesh files read so far: a file used twice is read and stored once.
+    mesh_files: HashMap<std::path::PathBuf, std::sync::Arc<ir::Mesh>>,
 }
 
 impl<'a> Evaluator<'a> {
@@ -158,7 +160,18 @@ impl<'a> Evaluator<'a> {
             warnings: Vec::new(),
             rand_streams: Vec::new(),
             deprecated: HashMap::new(),
+            mesh_files: HashMap::new(),
         }
+    }
+
+    /// A data file named in the scene (image, mesh): like POV-Ray, the scene's folder, then the
+    /// include paths; the scene's folder when none has it (the read then reports the error).
+    fn find_file(&self, file: &str) -> std::path::PathBuf {
+        std::iter::once(&self.base_dir)
+            .chain(&self.options.include_paths)
+            .map(|dir| dir.join(file))
+            .find(|p| p.is_file())
+            .unwrap_or_else(|| self.base_dir.join(file))
     }
 
     fn warn(&mut self, d: Diagnostic) {

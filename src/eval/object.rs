@@ -73,6 +73,7 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
             | SmoothTriangle
             | Mesh
             | Mesh2
+            | MeshFile
             | Union
             | ObjectRef
     )
@@ -252,6 +253,10 @@ impl Evaluator<'_> {
                 let (mesh, rest) = self.mesh2(node)?;
                 modifiers = rest;
                 ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+            }
+            NodeKind::MeshFile => {
+                modifiers = &node.children;
+                ObjectValue::single(Shape::Mesh(self.mesh_file(&node.args[0])?))
             }
             NodeKind::Union => {
                 // Members and the group's modifiers, in order (POV-Ray puts the modifiers last).
@@ -516,43 +521,8 @@ impl Evaluator<'_> {
                 normal_index_node.map_or(node.word_span, |n| n.word_span),
             ));
         }
-        let mut mesh = Mesh {
-            vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
-            normals: Vec::with_capacity(normals.len()),
-            triangles: Vec::with_capacity(faces.len()),
-            normal_indices: Vec::new(),
-            inside_vector: None,
-        };
-        let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
-        let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
-        for (k, face) in faces.iter().enumerate() {
-            let p = face.map(|i| vertices[i as usize]);
-            let ng = (p[1] - p[0]).cross(p[2] - p[0]);
-            if ng.length_squared() == 0.0 {
-                degenerate += 1;
-                continue;
-            }
-            let mut normal_index = FLAT;
-            if let Some(nf) = normal_faces.get(k) {
-                let n = nf.map(|i| unit_normals[i as usize]);
-                match smooth_normals(ng, &n) {
-                    SmoothNormals::Flat => {}
-                    SmoothNormals::Degenerate => {
-                        dropped_smooth += 1;
-                        continue;
-                    }
-                    SmoothNormals::Smooth(_) => normal_index = *nf,
-                }
-            }
-            mesh.triangles.push(*face);
-            if normal_index != FLAT || !mesh.normal_indices.is_empty() {
-                mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
-                mesh.normal_indices.push(normal_index);
-            }
-        }
-        if !mesh.normal_indices.is_empty() {
-            mesh.normals = unit_normals.iter().map(|v| v.as_vec3()).collect();
-        }
+        let (mut mesh, degenerate, dropped_smooth) =
+            assemble_mesh(&vertices, &normals, &faces, &normal_faces);
         if degenerate + dropped_smooth > 0 {
             self.warn(Diagnostic::warning(
                 format!(
@@ -569,6 +539,50 @@ impl Evaluator<'_> {
         }
         let rest = self.inside_vector(&mut mesh, &node.children[i..])?;
         Ok((mesh, rest))
+    }
+
+    /// `mesh_file { "name.obj" }`: the file's mesh, read once however often it is used.
+    fn mesh_file(&mut self, file_expr: &Expr) -> Result<Arc<Mesh>> {
+        let file = self.string(file_expr)?;
+        let path = self.find_file(&file);
+        if let Some(mesh) = self.mesh_files.get(&path) {
+            return Ok(Arc::clone(mesh));
+        }
+        let data = crate::meshfile::read(&path).map_err(|e| {
+            let line = e.location.map(|l| format!(":{l}")).unwrap_or_default();
+            let d = Diagnostic::error(
+                format!("cannot read mesh file {file}{line}: {}", e.message),
+                file_expr.span,
+            );
+            if path.is_file() {
+                d
+            } else {
+                d.with_note("looked in the scene's folder and the include paths (-L)")
+            }
+        })?;
+        let (mesh, degenerate, dropped_smooth) = assemble_mesh(
+            &data.vertices,
+            &data.normals,
+            &data.faces,
+            &data.normal_faces,
+        );
+        if degenerate + dropped_smooth > 0 {
+            self.warn(Diagnostic::warning(
+                format!(
+                    "{file}: {degenerate} zero-area and {dropped_smooth} straddling-normal triangles are not rendered (as POV-Ray would not render them in the converted mesh2)"
+                ),
+                file_expr.span,
+            ));
+        }
+        if mesh.triangles.is_empty() {
+            return Err(Diagnostic::error(
+                format!("{file} has no renderable triangle"),
+                file_expr.span,
+            ));
+        }
+        let mesh = Arc::new(mesh);
+        self.mesh_files.insert(path, Arc::clone(&mesh));
+        Ok(mesh)
     }
 
     /// The entries of `vertex_vectors { n, V… }`, checking the count.
@@ -647,4 +661,53 @@ fn smooth_normals(ng: DVec3, n: &[DVec3; 3]) -> SmoothNormals {
     } else {
         SmoothNormals::Degenerate
     }
+}
+
+/// A mesh from `mesh2`-style lists, with POV-Ray's rules: zero-area triangles are dropped, and
+/// so are smooth triangles whose normals straddle the face; returns the mesh and how many of
+/// each were dropped.
+pub(super) fn assemble_mesh(
+    vertices: &[DVec3],
+    normals: &[DVec3],
+    faces: &[[u32; 3]],
+    normal_faces: &[[u32; 3]],
+) -> (Mesh, usize, usize) {
+    let mut mesh = Mesh {
+        vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
+        normals: Vec::with_capacity(normals.len()),
+        triangles: Vec::with_capacity(faces.len()),
+        normal_indices: Vec::new(),
+        inside_vector: None,
+    };
+    let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
+    let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
+    for (k, face) in faces.iter().enumerate() {
+        let p = face.map(|i| vertices[i as usize]);
+        let ng = (p[1] - p[0]).cross(p[2] - p[0]);
+        if ng.length_squared() == 0.0 {
+            degenerate += 1;
+            continue;
+        }
+        let mut normal_index = FLAT;
+        if let Some(nf) = normal_faces.get(k) {
+            let n = nf.map(|i| unit_normals[i as usize]);
+            match smooth_normals(ng, &n) {
+                SmoothNormals::Flat => {}
+                SmoothNormals::Degenerate => {
+                    dropped_smooth += 1;
+                    continue;
+                }
+                SmoothNormals::Smooth(_) => normal_index = *nf,
+            }
+        }
+        mesh.triangles.push(*face);
+        if normal_index != FLAT || !mesh.normal_indices.is_empty() {
+            mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
+            mesh.normal_indices.push(normal_index);
+        }
+    }
+    if !mesh.normal_indices.is_empty() {
+        mesh.normals = unit_normals.iter().map(|v| v.as_vec3()).collect();
+    }
+    (mesh, degenerate, dropped_smooth)
 }

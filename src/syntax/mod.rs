@@ -57,6 +57,8 @@ pub enum NodeKind {
     Union,
     Mesh,
     Mesh2,
+    /// `mesh_file { "file.obj" }` (trace's extension).
+    MeshFile,
     InsideVector,
     VertexVectors,
     NormalVectors,
@@ -253,6 +255,12 @@ pub enum ExprKind {
 /// Whether `word` is one of the keywords of trace's grammar.
 pub fn is_keyword(word: &str) -> bool {
     SceneParser::parse(Rule::keyword, word)
+        .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
+}
+
+/// Whether `word` can name a declaration (a word that is not a keyword).
+pub fn is_identifier(word: &str) -> bool {
+    SceneParser::parse(Rule::ident, word)
         .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
 }
 
@@ -453,6 +461,7 @@ impl Lower {
             Rule::union => NodeKind::Union,
             Rule::mesh => NodeKind::Mesh,
             Rule::mesh2 => NodeKind::Mesh2,
+            Rule::mesh_file => NodeKind::MeshFile,
             Rule::inside_vector => NodeKind::InsideVector,
             Rule::vertex_vectors => NodeKind::VertexVectors,
             Rule::normal_vectors => NodeKind::NormalVectors,
@@ -860,6 +869,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_look_at
             | kw_matrix
             | kw_material
+            | kw_mesh_file
             | kw_max_trace_level
             | kw_metallic
             | kw_no_image

@@ -123,3 +123,64 @@ fn compare_prints_flip_and_rmse() {
     assert!(stdout.contains("mean FLIP  0.000000"), "{stdout}");
     assert!(stdout.contains("RMSE       0.000000"), "{stdout}");
 }
+
+#[test]
+fn convert_writes_a_mesh2_include_that_evaluates_to_the_same_mesh() {
+    let dir = temp_dir("convert");
+    for file in ["knot.obj", "terrain.ply"] {
+        let inc = dir.join(format!("{file}.inc"));
+        let output = trace()
+            .args(["convert", &format!("examples/meshes/{file}"), "-o"])
+            .arg(&inc)
+            .args(["--name", "Converted"])
+            .current_dir(crate::root())
+            .output()
+            .expect("runs");
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        // The same object through the extension and through the include.
+        let direct = format!(
+            "mesh_file {{ \"{}/examples/meshes/{file}\" }}",
+            crate::root().display()
+        );
+        let included = format!("#include \"{}\"\nobject {{ Converted }}", inc.display());
+        let load = |text: String| {
+            let path = dir.join("scene.rt");
+            trace::load_str(&path, text, &trace::LoadOptions::default())
+                .unwrap_or_else(|e| panic!("{e}"))
+                .scene
+        };
+        let (a, b) = (load(direct), load(included));
+        assert_eq!(
+            format!("{:?}", a.objects),
+            format!("{:?}", b.objects),
+            "{file}"
+        );
+        assert!(format!("{:?}", a.objects).contains("triangles"), "{file}");
+    }
+}
+
+#[test]
+fn convert_reports_a_malformed_file_with_its_line_and_writes_nothing() {
+    let dir = temp_dir("convert-bad");
+    let bad = dir.join("bad.obj");
+    std::fs::write(&bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n").expect("write");
+    let out = dir.join("bad.inc");
+    let output = trace()
+        .args(["convert"])
+        .arg(&bad)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("bad.obj:4: vertex index 9 is out of range"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+}
