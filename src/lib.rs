@@ -87,8 +87,30 @@ pub fn load(path: &Path, options: &LoadOptions) -> Result<Loaded, Error> {
     load_str(path, text, options)
 }
 
+/// Stack for parsing and evaluation: both recurse once per nesting level (bounded by
+/// [`syntax::MAX_NESTING`]) and per macro call; the pages are only committed when used.
+const LOAD_STACK_BYTES: usize = 1 << 30;
+
 /// Evaluates scene text (`path` names it in messages).
 pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
+    std::thread::scope(|scope| {
+        let worker = std::thread::Builder::new()
+            .name("trace-load".into())
+            .stack_size(LOAD_STACK_BYTES)
+            .spawn_scoped(scope, || load_on_this_thread(path, text, options));
+        match worker {
+            Ok(handle) => handle
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+            Err(e) => Err(Error::Read {
+                path: path.to_path_buf(),
+                source: e,
+            }),
+        }
+    })
+}
+
+fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
     match eval::evaluate(&mut sources, file, options) {
@@ -112,8 +134,24 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
 pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
     let start = std::time::Instant::now();
     let built = scene::Scene::build(scene);
-    let build_time = start.elapsed();
-    let mut rendered = render::render(&built, options)?;
+    render_built(&built, start.elapsed(), options)
+}
+
+/// Like [`render`], but frees the IR once the render-ready scene is built (less peak memory
+/// for big meshes: the IR's copy of every mesh is gone before rendering starts).
+pub fn render_owned(scene: ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
+    let start = std::time::Instant::now();
+    let built = scene::Scene::build(&scene);
+    drop(scene);
+    render_built(&built, start.elapsed(), options)
+}
+
+fn render_built(
+    built: &scene::Scene,
+    build_time: std::time::Duration,
+    options: &RenderOptions,
+) -> Result<Rendered, Error> {
+    let mut rendered = render::render(built, options)?;
     rendered.build_time = build_time;
     Ok(rendered)
 }

@@ -186,7 +186,7 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         antialias,
         threads: args.threads.map(|t| t as usize),
     };
-    let rendered = trace::render(&loaded.scene, &options)?;
+    let rendered = trace::render_owned(loaded.scene, &options)?;
     let traced = Instant::now();
     rendered.film.write(output).map_err(Error::from)?;
     let done = Instant::now();

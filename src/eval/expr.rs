@@ -76,6 +76,10 @@ impl Evaluator<'_> {
             ExprKind::Colour(parts) => self.colour(parts),
             ExprKind::Index(..) => self.index_expr(expr),
             ExprKind::Item(node) => self.item_value(node),
+            ExprKind::Bulk(_) => Err(Diagnostic::error(
+                "a list of mesh2 entries cannot stand here",
+                expr.span,
+            )),
         }
     }
 

@@ -587,6 +587,10 @@ impl Evaluator<'_> {
 
     /// The entries of `vertex_vectors { n, V… }`, checking the count.
     fn vector_list(&mut self, node: &Node) -> Result<Vec<DVec3>> {
+        if let Some(list) = bulk_list(node) {
+            check_bulk_count(node, list)?;
+            return Ok(list.values.iter().map(|v| DVec3::from_array(*v)).collect());
+        }
         let count = self.list_count(node)?;
         let mut out = Vec::with_capacity(count);
         for e in &node.args[1..] {
@@ -597,6 +601,30 @@ impl Evaluator<'_> {
 
     /// The entries of `face_indices { n, <a,b,c>… }`, truncated to integers and range-checked.
     fn index_list(&mut self, node: &Node, limit: usize) -> Result<Vec<[u32; 3]>> {
+        if let Some(list) = bulk_list(node) {
+            check_bulk_count(node, list)?;
+            let mut out = Vec::with_capacity(list.values.len());
+            for (k, v) in list.values.iter().enumerate() {
+                let mut face = [0u32; 3];
+                for (slot, &c) in face.iter_mut().zip(v) {
+                    let i = c.trunc();
+                    if !(i >= 0.0 && (i as usize) < limit) {
+                        let span = Span::new(
+                            node.span.file,
+                            list.offsets[k] as usize,
+                            list.offsets[k + 1] as usize,
+                        );
+                        return Err(Diagnostic::error(
+                            format!("index {i} is out of range (0..{limit})"),
+                            span,
+                        ));
+                    }
+                    *slot = i as u32;
+                }
+                out.push(face);
+            }
+            return Ok(out);
+        }
         let count = self.list_count(node)?;
         let mut out = Vec::with_capacity(count);
         for e in &node.args[1..] {
@@ -637,6 +665,35 @@ impl Evaluator<'_> {
         }
         Ok(given)
     }
+}
+
+/// The body of a list read by the syntax fast path, if it was.
+fn bulk_list(node: &Node) -> Option<&crate::syntax::bulk::BulkList> {
+    match node.args.as_slice() {
+        [
+            Expr {
+                kind: ExprKind::Bulk(list),
+                ..
+            },
+        ] => Some(list),
+        _ => None,
+    }
+}
+
+/// The announced count of a fast-path list must match its entries (as in [`Evaluator::list_count`]).
+fn check_bulk_count(node: &Node, list: &crate::syntax::bulk::BulkList) -> Result<()> {
+    let given = list.values.len();
+    if list.count.trunc() != given as f64 {
+        let (start, end) = list.count_range;
+        return Err(Diagnostic::error(
+            format!(
+                "`{}` announces {} entries but lists {given}",
+                node.word, list.count
+            ),
+            Span::new(node.span.file, start as usize, end as usize),
+        ));
+    }
+    Ok(())
 }
 
 enum SmoothNormals {

@@ -76,6 +76,11 @@ pub fn render(
     let (w, h) = (options.width, options.height);
     let blocks_x = w.div_ceil(BLOCK_SIZE);
     let blocks_y = h.div_ceil(BLOCK_SIZE);
+    // A perspective camera's rays all start inside the same objects: found once.
+    let camera_interiors = match scene.camera.projection {
+        Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
+        Projection::Orthographic => None,
+    };
     let blocks: Vec<BlockResult> = pool.install(|| {
         (0..blocks_x * blocks_y)
             .into_par_iter()
@@ -83,6 +88,7 @@ pub fn render(
                 render_block(
                     scene,
                     options,
+                    camera_interiors,
                     (i % blocks_x) * BLOCK_SIZE,
                     (i / blocks_x) * BLOCK_SIZE,
                 )
@@ -174,17 +180,18 @@ fn differ(a: Rgb, b: Rgb, gamma: Gamma, threshold: f64) -> bool {
 /// Renders the block whose top-left pixel is (x0, y0), with POV-Ray's method-1 logic: the
 /// row above and the column left of the block are traced (centre samples) for comparison
 /// and count as already supersampled.
-fn render_block(scene: &Scene, options: &RenderOptions, x0: u32, y0: u32) -> BlockResult {
+fn render_block(
+    scene: &Scene,
+    options: &RenderOptions,
+    camera_interiors: Option<Interiors>,
+    x0: u32,
+    y0: u32,
+) -> BlockResult {
     let (w, h) = (options.width, options.height);
     let x1 = (x0 + BLOCK_SIZE).min(w);
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
     counters::take(); // (this block's counts start from zero)
-    // A perspective camera's rays all start inside the same objects.
-    let camera_interiors = match scene.camera.projection {
-        Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
-        Projection::Orthographic => None,
-    };
     let mut samples = 0u64;
     let centre = |tracer: &mut Tracer, x: u32, y: u32| {
         tracer.counts.camera += 1;

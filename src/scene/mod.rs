@@ -311,12 +311,31 @@ pub struct SurfaceHit {
     pub object: ObjectId,
 }
 
+/// A cheap hash of the parts of a texture that most often differ (colour, main finish
+/// amounts); textures with equal fingerprints are then compared in full.
+fn fingerprint(t: &ir::Texture) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    std::mem::discriminant(&t.pigment.pattern).hash(&mut h);
+    if let ir::Pattern::Solid(c) = &t.pigment.pattern {
+        for v in [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit] {
+            v.to_bits().hash(&mut h);
+        }
+    }
+    let f = &t.finish;
+    for v in [f.ambient.x, f.diffuse, f.phong, f.specular] {
+        v.to_bits().hash(&mut h);
+    }
+    h.finish()
+}
+
 impl Scene {
     /// Builds the render-ready scene from the IR.
     pub fn build(ir: &ir::Scene) -> Scene {
         let mut materials: Vec<Material> = Vec::new();
         let mut meshes: HashMap<*const ir::Mesh, Arc<TriangleMesh>> = HashMap::new();
-        let mut material_ids: HashMap<String, usize> = HashMap::new();
+        // Materials by fingerprint; equal materials share one id (compared exactly with ==).
+        let mut material_ids: HashMap<u64, Vec<usize>> = HashMap::new();
         let objects = ir
             .objects
             .iter()
@@ -325,13 +344,15 @@ impl Scene {
                     pigment: Pigment::new(&o.texture.pigment),
                     finish: o.texture.finish.clone(),
                 };
-                // Deduplicate by the material's full printed value (exact: `{:?}` of an f64
-                // round-trips), in constant time per object.
-                let key = format!("{material:?}");
-                let id = *material_ids.entry(key).or_insert_with(|| {
-                    materials.push(material);
-                    materials.len() - 1
-                });
+                let candidates = material_ids.entry(fingerprint(&o.texture)).or_default();
+                let id = match candidates.iter().find(|&&i| materials[i] == material) {
+                    Some(&i) => i,
+                    None => {
+                        materials.push(material);
+                        candidates.push(materials.len() - 1);
+                        materials.len() - 1
+                    }
+                };
                 let (shape, transform) =
                     build_shape(&o.shape, o.transform.map(|t| t.matrix), &mut meshes);
                 let bounds = shape

@@ -4,6 +4,8 @@
 //! uniform: every construct is a [`Node`] (a keyword with its expressions and child nodes), and
 //! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
 
+pub mod bulk;
+
 mod grammar {
     #[derive(pest_derive::Parser)]
     #[grammar = "grammar/scene.pest"]
@@ -247,6 +249,8 @@ pub enum ExprKind {
     Str(String),
     /// An item passed as a macro argument (`Align(text {…}, x, 0)`).
     Item(Box<Node>),
+    /// A `mesh2` list body read by the fast path ([`bulk`]): count and entries.
+    Bulk(Box<bulk::BulkList>),
     /// A vector of plain number literals (`<1, -2.5, 3>`), read without building a tree: the
     /// bulk of a large mesh. `len` components (2..=5) are used.
     PlainVector([f64; 5], u8),
@@ -296,10 +300,15 @@ pub fn parse_fragment_expr(
     file: FileId,
     offset: usize,
 ) -> Result<FragmentExpr, Diagnostic> {
+    check_nesting(text, file, offset)?;
     let mut pairs =
         SceneParser::parse(Rule::expression, text).map_err(|e| syntax_error_at(e, file, offset))?;
     let top = pairs.next().expect("the expression rule yields one pair");
-    let lower = Lower { file, offset };
+    let lower = Lower {
+        file,
+        offset,
+        bulk: Default::default(),
+    };
     let (mut before, mut after, mut expr) = (Vec::new(), Vec::new(), None);
     for p in top.into_inner().filter(|p| p.as_rule() != Rule::EOI) {
         if p.as_rule() == Rule::expr {
@@ -325,15 +334,100 @@ pub fn explain_value(text: &str, file: FileId, offset: usize) -> Option<Diagnost
         .map(|e| syntax_error_at(e, file, offset))
 }
 
+/// Deepest nesting of brackets, braces, parentheses, vector brackets and `?:` in one file.
+pub const MAX_NESTING: usize = 1000;
+
+/// Rejects text nested deeper than [`MAX_NESTING`] (the parser and evaluator recurse once per
+/// level, so unbounded nesting could exhaust the stack). Comments and strings are skipped;
+/// `<`, `>`, `?` and `:` are counted within one expression (the count restarts at `{ } ; #`).
+pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<(), Diagnostic> {
+    let bytes = text.as_bytes();
+    let (mut blocks, mut inline) = (0usize, 0usize);
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+                continue;
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                // Block comments nest in trace's grammar: count them as blocks too.
+                let mut depth = 0usize;
+                while i < bytes.len() {
+                    if bytes[i..].starts_with(b"/*") {
+                        depth += 1;
+                        if blocks + depth > MAX_NESTING {
+                            return Err(too_deep(file, offset + i));
+                        }
+                        i += 2;
+                    } else if bytes[i..].starts_with(b"*/") {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+                continue;
+            }
+            b'"' => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'(' | b'[' | b'{' => {
+                blocks += 1;
+                if bytes[i] == b'{' {
+                    inline = 0;
+                }
+            }
+            b')' | b']' => blocks = blocks.saturating_sub(1),
+            b'}' => {
+                blocks = blocks.saturating_sub(1);
+                inline = 0;
+            }
+            b'<' | b'?' => inline += 1,
+            b'>' | b':' => inline = inline.saturating_sub(1),
+            b';' | b'#' => inline = 0,
+            _ => {}
+        }
+        if blocks + inline > MAX_NESTING {
+            return Err(too_deep(file, offset + i));
+        }
+        i += 1;
+    }
+    Ok(())
+}
+
+fn too_deep(file: FileId, at: usize) -> Diagnostic {
+    Diagnostic::error(
+        format!("nested more than {MAX_NESTING} levels deep"),
+        Span::new(file, at, at + 1),
+    )
+}
+
 fn parse_items(
     text: &str,
     file: FileId,
     offset: usize,
     rule: Rule,
 ) -> Result<Vec<Node>, Diagnostic> {
-    let mut pairs = SceneParser::parse(rule, text).map_err(|e| syntax_error_at(e, file, offset))?;
+    check_nesting(text, file, offset)?;
+    let prescanned = bulk::prescan(text, offset);
+    let source = prescanned.text.as_deref().unwrap_or(text);
+    let mut pairs =
+        SceneParser::parse(rule, source).map_err(|e| syntax_error_at(e, file, offset))?;
     let top = pairs.next().expect("the entry rule always yields one pair");
-    let lower = Lower { file, offset };
+    let lower = Lower {
+        file,
+        offset,
+        bulk: std::cell::RefCell::new(prescanned.lists),
+    };
     Ok(top
         .into_inner()
         .filter(|p| p.as_rule() != Rule::EOI)
@@ -415,6 +509,8 @@ struct Lower {
     file: FileId,
     /// Byte offset of the parsed text in its file.
     offset: usize,
+    /// List bodies read by the fast path, by file offset.
+    bulk: std::cell::RefCell<std::collections::HashMap<usize, bulk::BulkList>>,
 }
 
 impl Lower {
@@ -705,6 +801,17 @@ impl Lower {
                 }
                 e
             }
+            Rule::bulk_list => {
+                let list = self.bulk.borrow_mut().remove(&(span.start as usize));
+                Expr {
+                    // (Only a stray marker byte in the source has no list.)
+                    kind: list.map_or_else(
+                        || ExprKind::Ident("\u{1}".into()),
+                        |l| ExprKind::Bulk(Box::new(l)),
+                    ),
+                    span,
+                }
+            }
             Rule::indexed => {
                 let mut inner = pair.into_inner();
                 let mut e = self.expr(inner.next().expect("indexed starts with a name"));
@@ -828,6 +935,7 @@ fn is_expr(rule: Rule) -> bool {
             | Rule::plain_float
             | Rule::string
             | Rule::macro_arg
+            | Rule::bulk_list
     )
 }
 

@@ -22,3 +22,28 @@ fn bad_scenes_give_located_messages() {
         insta::assert_snapshot!(message);
     });
 }
+
+#[test]
+fn deep_nesting_is_an_error_not_a_stack_overflow() {
+    let load = |text: String| {
+        trace::load_str(
+            std::path::Path::new("deep.rt"),
+            text,
+            &trace::LoadOptions::default(),
+        )
+    };
+    let n = trace::syntax::MAX_NESTING - 10;
+    let parens = format!("sphere {{ 0, {}1{} }}", "(".repeat(n), ")".repeat(n));
+    let vectors = format!("#declare V = {}1{};", "<".repeat(n), ">".repeat(n));
+    assert!(load(parens).is_ok(), "{n} nested parentheses load");
+    assert!(
+        load(vectors).is_err(),
+        "a vector of one component is an error, not a crash"
+    );
+    for (open, close) in [("(", ")"), ("<", ">"), ("/*", "*/"), ("{", "}")] {
+        let n = 100_000;
+        let text = format!("sphere {{ 0, {}1{} }}", open.repeat(n), close.repeat(n));
+        let message = load(text).expect_err("too deep").to_string();
+        assert!(message.contains("nested more than"), "{open}: {message}");
+    }
+}
