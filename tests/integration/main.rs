@@ -5,6 +5,7 @@ mod cli;
 mod errors;
 mod golden;
 mod ir_snapshots;
+mod parsing;
 
 use std::path::{Path, PathBuf};
 

@@ -1,0 +1,63 @@
+//! The mesh2 fast path (src/syntax/bulk.rs) gives exactly what the grammar gives.
+
+use crate::load_text;
+
+/// A grid mesh2 of `n`×`n` vertices; `odd` is appended to the vertex list (an entry the fast
+/// path leaves to the grammar, or nothing).
+fn grid(n: usize, odd: &str, count_extra: usize) -> String {
+    let mut vertices = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let (x, z) = (i as f64 / 3.0 - 1.0, j as f64 * 0.37 - 2.0);
+            vertices.push(format!("<{x:.6}, {:.6},{z}>", (x * 1.7).sin() * 0.3));
+        }
+    }
+    let mut faces = Vec::new();
+    for j in 0..n - 1 {
+        for i in 0..n - 1 {
+            let a = j * n + i;
+            faces.push(format!("<{a},{},{}>", a + n, a + 1));
+            faces.push(format!("<{}, {}, {}>", a + 1, a + n, a + n + 1));
+        }
+    }
+    format!(
+        "mesh2 {{ vertex_vectors {{ {}, {}{odd} }} face_indices {{ {}, {} }} }}",
+        vertices.len() + count_extra,
+        vertices.join(",\n"),
+        faces.len(),
+        faces.join(", ")
+    )
+}
+
+#[test]
+fn fast_path_and_grammar_read_mesh2_lists_alike() {
+    // With a trailing expression entry the whole list goes through the grammar; the extra
+    // vertex is unused by the faces, so both meshes hold the same triangles.
+    let fast = load_text(&grid(12, ", <0, 0, 0>", 1), 32, 24);
+    let slow = load_text(&grid(12, ", <0, 0, 0> * 1", 1), 32, 24);
+    let (fast, slow) = (format!("{:?}", fast.objects), format!("{:?}", slow.objects));
+    assert!(fast.contains("triangles: 242"), "{fast}");
+    assert_eq!(fast, slow);
+}
+
+#[test]
+fn fast_path_errors_point_at_the_entry() {
+    let text = grid(12, "", 0).replace("<0,12,1>", "<0,12,999>");
+    let err = trace::load_str(
+        std::path::Path::new("m.rt"),
+        text.clone(),
+        &trace::LoadOptions::default(),
+    )
+    .expect_err("index out of range")
+    .to_string();
+    assert!(err.contains("index 999 is out of range (0..144)"), "{err}");
+    assert!(
+        err.contains("^^^^^^^^^^"),
+        "the caret spans the entry: {err}"
+    );
+    let short = grid(12, "", 0).replacen("vertex_vectors { 144", "vertex_vectors { 145", 1);
+    let err = trace::load_str(std::path::Path::new("m.rt"), short, &Default::default())
+        .expect_err("count mismatch")
+        .to_string();
+    assert!(err.contains("announces 145 entries but lists 144"), "{err}");
+}
