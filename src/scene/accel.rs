@@ -48,11 +48,12 @@ impl ObjectIndex {
                 outward_aabb(lo, hi)
             })
             .collect();
-        let bvh = obvhs::bvh2::builder::build_bvh2(
-            &boxes,
-            BvhBuildParams::very_fast_build(),
-            &mut Duration::default(),
-        );
+        // Object tests cost more than box tests (transforms, several shape kinds): small leaves.
+        let params = BvhBuildParams {
+            max_prims_per_leaf: 1,
+            ..BvhBuildParams::fast_build()
+        };
+        let bvh = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
         let bounded = bvh
             .primitive_indices
             .iter()

@@ -54,6 +54,9 @@ pub struct Scene {
     pub gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
     pub index: Option<accel::ObjectIndex>,
+    /// Whether any object may let light through to a shadow ray (else shadow rays stop at
+    /// the any-hit test for opaque blockers).
+    pub any_transparent: bool,
 }
 
 /// The camera's four vectors.
@@ -400,7 +403,14 @@ impl Scene {
             legacy_transparency: ir.settings.legacy_transparency,
             gamma: ir.settings.gamma,
             index: None,
+            any_transparent: false,
         };
+        scene.any_transparent = scene.objects.iter().any(|o| {
+            !o.no_shadow
+                && scene.materials[o.material.0 as usize]
+                    .pigment
+                    .may_be_transparent()
+        });
         let bounds: Vec<_> = scene.objects.iter().map(|o| o.bounds).collect();
         scene.index = accel::ObjectIndex::build(&bounds);
         scene
@@ -505,6 +515,9 @@ impl Scene {
                     || index.any(ray, opaque_blocks)
                 {
                     return Rgb::ZERO;
+                }
+                if !self.any_transparent {
+                    return through;
                 }
                 for &i in &index.unbounded {
                     self.filter_through(i, ray, &mut through);

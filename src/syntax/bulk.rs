@@ -30,7 +30,8 @@ pub struct BulkList {
 }
 
 /// Lists read by the fast path, by the file offset of their body's first byte, and the text
-/// pest should parse (`None`: the original text, nothing was read).
+/// pest should parse (`None`: the original text, nothing was read or blanked; a leading
+/// byte-order mark is blanked too).
 pub struct Prescanned {
     /// The text with the bodies blanked, if any was read.
     pub text: Option<String>,
@@ -90,10 +91,15 @@ pub fn prescan(text: &str, offset: usize) -> Prescanned {
             _ => i += 1,
         }
     }
-    if blank.is_empty() {
+    let bom = text.starts_with('\u{FEFF}');
+    if blank.is_empty() && !bom {
         return Prescanned { text: None, lists };
     }
     let mut copy = bytes.to_vec();
+    if bom {
+        // A byte-order mark becomes three blanks (offsets stay put).
+        copy[..3].fill(b' ');
+    }
     for (start, end) in blank {
         copy[start] = MARKER;
         copy[start + 1..end].fill(b' ');
