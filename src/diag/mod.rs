@@ -44,8 +44,8 @@ impl fmt::Debug for Span {
 pub struct SourceFile {
     /// The path as the user (or an include) named it.
     pub path: PathBuf,
-    /// Its whole text.
-    pub text: String,
+    /// Its whole text (shared: the parser reads it while the evaluator adds files).
+    pub text: std::sync::Arc<str>,
 }
 
 /// Every file read while loading a scene; spans index into it.
@@ -59,7 +59,7 @@ impl SourceMap {
     pub fn add(&mut self, path: &Path, text: String) -> FileId {
         self.files.push(SourceFile {
             path: path.to_path_buf(),
-            text,
+            text: text.into(),
         });
         FileId(self.files.len() as u32 - 1)
     }

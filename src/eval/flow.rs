@@ -45,6 +45,18 @@ impl<'a> Evaluator<'a> {
         Ok(())
     }
 
+    /// Runs a file's statements as they are parsed, like [`Evaluator::each_item`].
+    pub(super) fn each_statement(
+        &mut self,
+        statements: syntax::Statements,
+        f: &mut Handler<'_, 'a>,
+    ) -> Result<()> {
+        for statement in statements {
+            self.one_item(&statement?, f)?;
+        }
+        Ok(())
+    }
+
     fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
         match item.kind {
             NodeKind::Version => self.version = Some(self.float(&item.args[0])?),
@@ -561,12 +573,12 @@ impl<'a> Evaluator<'a> {
             )
         })?;
         let file = self.sources.add(&path, text);
-        let nodes = syntax::parse_scene(&self.sources.file(file).text, file)
+        let statements = syntax::statements(self.sources.file(file).text.clone(), file)
             .map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))?;
         // An include file is a scope for its #local declarations, like a macro.
         self.include_depth += 1;
         self.frames.push(Frame::default());
-        let result = self.each_item(&nodes, f);
+        let result = self.each_statement(statements, f);
         self.return_from_macro();
         self.include_depth -= 1;
         result.map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))

@@ -91,7 +91,7 @@ pub struct Evaluated {
 
 /// Evaluates the file `file` of `sources` into a scene.
 pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
-    let nodes = syntax::parse_scene(&sources.file(file).text, file)?;
+    let statements = syntax::statements(sources.file(file).text.clone(), file)?;
     let base_dir = sources
         .file(file)
         .path
@@ -99,7 +99,7 @@ pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) ->
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
     let mut ev = Evaluator::new(options, base_dir, sources);
-    ev.each_item(&nodes, &mut |ev, node| ev.statement(node))?;
+    ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
 

@@ -273,6 +273,67 @@ pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
     parse_items(text, file, 0, Rule::scene)
 }
 
+/// The top-level statements of a file, parsed one at a time as they are asked for: the syntax
+/// tree of a statement is gone once it has been evaluated, which keeps memory flat on scenes
+/// of many statements.
+pub struct Statements {
+    /// The text pest parses (the file's, or a copy with big lists blanked by [`bulk`]).
+    source: std::sync::Arc<str>,
+    /// Where the next statement may start.
+    pos: usize,
+    lower: Lower,
+    done: bool,
+}
+
+/// Starts reading the statements of `file`, whose text is `text`.
+pub fn statements(text: std::sync::Arc<str>, file: FileId) -> Result<Statements, Diagnostic> {
+    check_nesting(&text, file, 0)?;
+    let prescanned = bulk::prescan(&text, 0);
+    let source = match prescanned.text {
+        Some(copy) => copy.into(),
+        None => text,
+    };
+    Ok(Statements {
+        source,
+        pos: 0,
+        lower: Lower {
+            file,
+            offset: 0,
+            bulk: std::cell::RefCell::new(prescanned.lists),
+        },
+        done: false,
+    })
+}
+
+impl Iterator for Statements {
+    type Item = Result<Node, Diagnostic>;
+
+    fn next(&mut self) -> Option<Result<Node, Diagnostic>> {
+        if self.done {
+            return None;
+        }
+        let rest = &self.source[self.pos..];
+        let file = self.lower.file;
+        let mut pairs = match SceneParser::parse(Rule::next_statement, rest) {
+            Ok(pairs) => pairs,
+            Err(e) => {
+                self.done = true;
+                return Some(Err(syntax_error_at(e, file, self.pos)));
+            }
+        };
+        let top = pairs.next().expect("next_statement yields one pair");
+        let Some(statement) = top.into_inner().find(|p| p.as_rule() != Rule::EOI) else {
+            self.done = true;
+            return None;
+        };
+        self.lower.offset = self.pos;
+        let end = statement.as_span().end();
+        let node = self.lower.node(statement);
+        self.pos += end;
+        Some(Ok(node))
+    }
+}
+
 /// Parses the part `text` of a file, which starts at byte `offset`, as a sequence of items
 /// (a macro body used as statements or modifiers).
 pub fn parse_fragment_items(
