@@ -165,16 +165,18 @@ fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray:
     tracer.trace(ray, 1, 1.0, &interiors)
 }
 
+/// A colour as POV-Ray's anti-aliasing compares it: the output value, gamma-2.5 encoded.
+fn aa_encoded(c: Rgb, gamma: Gamma) -> Rgb {
+    let v = output_value(c, gamma);
+    Rgb::new(v[0] as f64, v[1] as f64, v[2] as f64)
+        .max(Rgb::ZERO)
+        .powf(1.0 / AA_COMPARISON_GAMMA)
+}
+
 /// POV-Ray's "colours differ" test for anti-aliasing: the sum over channels of the
-/// differences of gamma-2.5-encoded values reaches the threshold.
-fn differ(a: Rgb, b: Rgb, gamma: Gamma, threshold: f64) -> bool {
-    let enc = |c: Rgb| {
-        let v = output_value(c, gamma);
-        Rgb::new(v[0] as f64, v[1] as f64, v[2] as f64)
-            .max(Rgb::ZERO)
-            .powf(1.0 / AA_COMPARISON_GAMMA)
-    };
-    (enc(a) - enc(b)).abs().element_sum() >= threshold
+/// differences of the encoded values ([`aa_encoded`]) reaches the threshold.
+fn differ(a: Rgb, b: Rgb, threshold: f64) -> bool {
+    (a - b).abs().element_sum() >= threshold
 }
 
 /// Renders the block whose top-left pixel is (x0, y0), with POV-Ray's method-1 logic: the
@@ -203,6 +205,8 @@ fn render_block(
     let gw = (x1 - x0 + 1) as usize;
     let gh = (y1 - y0 + 1) as usize;
     let mut value = vec![Rgb::ZERO; gw * gh];
+    // Each value encoded for comparisons, kept in step with `value`.
+    let mut encoded = vec![Rgb::ZERO; gw * gh];
     let mut done = vec![false; gw * gh];
     let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
 
@@ -228,51 +232,57 @@ fn render_block(
     if y0 > 0 {
         for x in x0..x1 {
             value[index(x, y0 - 1)] = centre(&mut tracer, x, y0 - 1);
+            encoded[index(x, y0 - 1)] = aa_encoded(value[index(x, y0 - 1)], scene.gamma);
             done[index(x, y0 - 1)] = true;
         }
     }
     if x0 > 0 {
         for y in y0..y1 {
             value[index(x0 - 1, y)] = centre(&mut tracer, x0 - 1, y);
+            encoded[index(x0 - 1, y)] = aa_encoded(value[index(x0 - 1, y)], scene.gamma);
             done[index(x0 - 1, y)] = true;
         }
     }
 
     let n = depth.clamp(1, 9);
     let step = 1.0 / n as f64;
-    let supersample = |tracer: &mut Tracer, value: &mut [Rgb], x: u32, y: u32| {
-        // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
-        let mut sum = value[index(x, y)];
-        for b in 0..n {
-            for a in 0..n {
-                let ox = -0.5 + step / 2.0 + a as f64 * step;
-                let oy = -0.5 + step / 2.0 + b as f64 * step;
-                tracer.counts.camera += 1;
-                let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
-                sum += trace_primary(tracer, &camera_interiors, &ray);
+    let supersample =
+        |tracer: &mut Tracer, value: &mut [Rgb], encoded: &mut [Rgb], x: u32, y: u32| {
+            // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
+            let mut sum = value[index(x, y)];
+            for b in 0..n {
+                for a in 0..n {
+                    let ox = -0.5 + step / 2.0 + a as f64 * step;
+                    let oy = -0.5 + step / 2.0 + b as f64 * step;
+                    tracer.counts.camera += 1;
+                    let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
+                    sum += trace_primary(tracer, &camera_interiors, &ray);
+                }
             }
-        }
-        value[index(x, y)] = sum / (n * n + 1) as f64;
-        (n * n) as u64
-    };
+            value[index(x, y)] = sum / (n * n + 1) as f64;
+            encoded[index(x, y)] = aa_encoded(value[index(x, y)], scene.gamma);
+            (n * n) as u64
+        };
 
     for y in y0..y1 {
         for x in x0..x1 {
             let c = centre(&mut tracer, x, y);
             samples += 1;
             value[index(x, y)] = c;
-            let left_differs = x > 0 && differ(value[index(x - 1, y)], c, scene.gamma, threshold);
-            let top_differs = y > 0 && differ(value[index(x, y - 1)], c, scene.gamma, threshold);
+            let e = aa_encoded(c, scene.gamma);
+            encoded[index(x, y)] = e;
+            let left_differs = x > 0 && differ(encoded[index(x - 1, y)], e, threshold);
+            let top_differs = y > 0 && differ(encoded[index(x, y - 1)], e, threshold);
             if left_differs && !done[index(x - 1, y)] {
-                samples += supersample(&mut tracer, &mut value, x - 1, y);
+                samples += supersample(&mut tracer, &mut value, &mut encoded, x - 1, y);
                 done[index(x - 1, y)] = true;
             }
             if top_differs && !done[index(x, y - 1)] {
-                samples += supersample(&mut tracer, &mut value, x, y - 1);
+                samples += supersample(&mut tracer, &mut value, &mut encoded, x, y - 1);
                 done[index(x, y - 1)] = true;
             }
             if left_differs || top_differs {
-                samples += supersample(&mut tracer, &mut value, x, y);
+                samples += supersample(&mut tracer, &mut value, &mut encoded, x, y);
                 done[index(x, y)] = true;
             }
         }

@@ -296,11 +296,13 @@ impl<'a> Tracer<'a> {
         let cos_nl = n.dot(s.direction);
         if cos_nl >= 0.0 {
             if finish.diffuse > 0.0 {
-                result += pigment * lc * finish.diffuse * att * cos_nl.powf(finish.brilliance);
+                result +=
+                    pigment * lc * finish.diffuse * att * brilliance(cos_nl, finish.brilliance);
             }
         } else if finish.diffuse_back > 0.0 {
             // A light behind the surface lights it through, with the back-side diffuse.
-            result += pigment * lc * finish.diffuse_back * att * (-cos_nl).powf(finish.brilliance);
+            result +=
+                pigment * lc * finish.diffuse_back * att * brilliance(-cos_nl, finish.brilliance);
         }
         if s.highlights && cos_nl > 0.0 && (finish.phong > 0.0 || finish.specular > 0.0) {
             let lc_metal = if finish.metallic != 0.0 {
@@ -403,6 +405,15 @@ impl Crossing {
             fresnel_eta,
             after,
         }
+    }
+}
+
+/// `cos^brilliance`; brilliance 1 (the default) skips the `pow`, which gives the same value.
+fn brilliance(cos: f64, exponent: f64) -> f64 {
+    if exponent == 1.0 {
+        cos
+    } else {
+        cos.powf(exponent)
     }
 }
 
