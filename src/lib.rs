@@ -19,6 +19,7 @@ pub mod ir;
 pub mod meshfile;
 pub mod render;
 pub mod scene;
+pub mod stability;
 pub mod syntax;
 
 use diag::{Diagnostic, SourceMap};

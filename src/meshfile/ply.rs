@@ -65,7 +65,12 @@ enum Encoding {
 }
 
 pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, ParseError> {
-    let (elements, encoding, body, header_lines) = header(bytes)?;
+    let Header {
+        elements,
+        encoding,
+        body,
+        lines: header_lines,
+    } = header(bytes)?;
     let mut reader = match encoding {
         Encoding::Ascii => Reader::Ascii(AsciiReader::new(body, header_lines)?),
         _ => Reader::Binary {
@@ -166,8 +171,17 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, ParseError> {
     Ok(mesh)
 }
 
-/// The elements, the encoding, the bytes after `end_header`, and the header's line count.
-fn header(bytes: &[u8]) -> Result<(Vec<Element>, Encoding, &[u8], usize), ParseError> {
+/// What the header says, and where the data starts.
+struct Header<'a> {
+    elements: Vec<Element>,
+    encoding: Encoding,
+    /// The bytes after `end_header`.
+    body: &'a [u8],
+    /// The header's line count.
+    lines: usize,
+}
+
+fn header(bytes: &[u8]) -> Result<Header<'_>, ParseError> {
     let mut pos = 0;
     let mut line_no = 0;
     let mut next_line = || -> Option<(usize, &str)> {
@@ -250,7 +264,12 @@ fn header(bytes: &[u8]) -> Result<(Vec<Element>, Encoding, &[u8], usize), ParseE
         }
     }
     let encoding = encoding.ok_or((None, "the header has no `format` line".to_string()))?;
-    Ok((elements, encoding, &bytes[pos..], line_no))
+    Ok(Header {
+        elements,
+        encoding,
+        body: &bytes[pos..],
+        lines: line_no,
+    })
 }
 
 enum Reader<'a> {

@@ -6,6 +6,7 @@ mod errors;
 mod golden;
 mod ir_snapshots;
 mod parsing;
+mod stability;
 
 use std::path::{Path, PathBuf};
 

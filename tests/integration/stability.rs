@@ -1,0 +1,76 @@
+//! The stability suite's fast cases (the sweeps and the report: `cargo run --release --bin
+//! stability`): trace's methods fail nowhere in the supported range, and each textbook
+//! alternative fails where the literature says it does (so the counters can see failures).
+
+use trace::stability::{
+    OffsetMethod, SphereMethod, TriangleMethod, far_sphere, far_torus, mesh_leaks,
+    scale_invariance, sphere_acne,
+};
+
+#[test]
+fn shadow_rays_have_no_acne_and_no_leaks_across_the_supported_range() {
+    for radius in [1e-3, 1.0, 1e3] {
+        for distance in [0.0, 1e3, 1e5] {
+            let a = sphere_acne(OffsetMethod::Trace, radius, distance, 2000);
+            assert!(a.acne.rays > 500 && a.leaks.rays > 500, "{a:?}");
+            assert_eq!(
+                a.acne.failures + a.leaks.failures,
+                0,
+                "R {radius}, D {distance}: {a:?}"
+            );
+        }
+    }
+    // Without an offset half the lit-side rays hit their own sphere; POV-Ray's fixed shadow
+    // tolerance (1e-3) lets shadow rays through a 1 mm sphere.
+    assert!(sphere_acne(OffsetMethod::None, 1.0, 0.0, 2000).acne.rate() > 0.2);
+    assert!(
+        sphere_acne(OffsetMethod::TMin1e3, 1e-3, 0.0, 2000)
+            .leaks
+            .rate()
+            > 0.2
+    );
+}
+
+#[test]
+fn far_spheres_are_hit_exactly_where_the_textbook_formula_fails() {
+    for distance in [1e1, 1e3, 1e5, 1e7, 1e9] {
+        let c = far_sphere(SphereMethod::Trace, distance, 2000);
+        assert_eq!(c.failures, 0, "D {distance}: {c:?}");
+    }
+    assert!(far_sphere(SphereMethod::TextbookF32, 1e4, 2000).rate() > 0.1);
+    assert!(far_sphere(SphereMethod::TextbookF64, 1e8, 2000).rate() > 0.1);
+}
+
+#[test]
+fn rays_through_mesh_seams_never_leak_with_the_watertight_test() {
+    for scale in [1e-3, 1.0, 1e3] {
+        for shift in [0.0, 1e3, 1e5] {
+            let c = mesh_leaks(TriangleMethod::Watertight, scale, shift, 1000);
+            assert_eq!(c.failures, 0, "scale {scale}, shift {shift}: {c:?}");
+        }
+    }
+    assert!(mesh_leaks(TriangleMethod::MollerTrumboreF64, 1.0, 0.0, 1000).failures > 0);
+    assert_eq!(
+        mesh_leaks(TriangleMethod::MollerTrumboreF32Det, 1e-3, 0.0, 200).rate(),
+        1.0,
+        "the |det| cut-off drops every triangle of a 1 mm mesh"
+    );
+}
+
+#[test]
+fn the_torus_stays_exact_far_away_only_with_the_origin_shift() {
+    for distance in [3.0, 3e2, 3e4] {
+        let c = far_torus(true, distance, 500);
+        assert_eq!(c.failures, 0, "D {distance}: {c:?}");
+    }
+    assert!(far_torus(false, 3e3, 500).rate() > 0.1);
+}
+
+#[test]
+fn a_scene_renders_alike_at_every_scale_within_the_supported_range() {
+    // Distance from the origin up to 1e5 times the scene's size (README, "Numerical range").
+    for (k, shift) in [(1e-2, 0.0), (1e-2, 1e3), (1e3, 0.0), (1.0, 1e5)] {
+        let c = scale_invariance(k, shift, 80, 60);
+        assert_eq!(c.failures, 0, "k {k}, shift {shift}: {c:?}");
+    }
+}
