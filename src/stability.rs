@@ -523,3 +523,150 @@ pub fn scale_invariance(k: f64, shift: f64, width: u32, height: u32) -> Count {
     }
     count
 }
+
+/// Loads scene text (a panic names the error: the suite's scenes are fixed).
+fn load_scene(text: String, width: u32, height: u32) -> crate::ir::Scene {
+    let options = crate::LoadOptions {
+        width,
+        height,
+        ..Default::default()
+    };
+    crate::load_str(std::path::Path::new("suite.rt"), text, &options)
+        .unwrap_or_else(|e| panic!("the suite's scene loads: {e}"))
+        .scene
+}
+
+fn render_built(
+    scene: &crate::scene::Scene,
+    width: u32,
+    height: u32,
+    threads: Option<usize>,
+) -> crate::Film {
+    let options = crate::RenderOptions {
+        width,
+        height,
+        antialias: crate::Antialias::Off,
+        threads,
+    };
+    crate::render::render(scene, &options)
+        .expect("renders")
+        .film
+}
+
+// ---------------------------------------------------------------------------------------------
+// S5: axis-aligned grazing rays.
+
+/// The S5 room: boxes whose faces lie on integer planes, seen by an orthographic camera whose
+/// pixel centres fall on multiples of 1/4, so rays run exactly along wall and box faces (zero
+/// direction components, origins on slab planes). The background is red: the room is closed
+/// (its walls overlap at the edges, and cover the whole view), so no ray may reach it.
+pub fn grazing_room() -> String {
+    "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\nbackground { rgb <1, 0, 0> }\n\
+     camera { orthographic location <8.125, 6.125, 0.5> direction z up y*12 right x*16 }\n\
+     light_source { <8, 11, 2>, rgb 1 }\n\
+     #declare W = pigment { rgb 0.8 }\n\
+     box { <-1, -1, 0>, <17, 0, 21> pigment { W } }\n\
+     box { <-1, 12, 0>, <17, 13, 21> pigment { W } }\n\
+     box { <-1, 0, 0>, <0, 12, 20> pigment { rgb <0.8, 0.3, 0.3> } }\n\
+     box { <16, 0, 0>, <17, 12, 20> pigment { rgb <0.3, 0.8, 0.3> } }\n\
+     box { <-1, -1, 20>, <17, 13, 21> pigment { W } }\n\
+     box { <2, 0, 5>, <4, 3, 7> pigment { rgb <0.2, 0.4, 0.9> } }\n\
+     box { <8, 0, 10>, <10, 6, 12> pigment { rgb <0.9, 0.7, 0.2> } }\n\
+     box { <12, 2, 3>, <14, 4, 5> pigment { rgb <0.6, 0.2, 0.8> } }\n\
+     box { <5, 8, 8>, <7, 9, 9> pigment { rgb <0.2, 0.8, 0.8> } }\n"
+        .to_string()
+}
+
+/// S5 counts at `width`×`height` (multiples of 64×48 keep pixel centres on quarter units):
+/// (NaN or infinite pixels, background pixels, pixels where the BVH render and the
+/// brute-force render differ).
+pub fn grazing(width: u32, height: u32) -> [Count; 3] {
+    let ir = load_scene(grazing_room(), width, height);
+    let with_bvh = crate::scene::Scene::build(&ir);
+    assert!(
+        with_bvh.index.is_some(),
+        "the room has enough objects for a BVH"
+    );
+    let mut brute = crate::scene::Scene::build(&ir);
+    brute.index = None;
+    let (a, b) = (
+        render_built(&with_bvh, width, height, None),
+        render_built(&brute, width, height, None),
+    );
+    let n = a.pixels.len() as u64;
+    let nan = a
+        .pixels
+        .iter()
+        .filter(|p| p.iter().any(|v| !v.is_finite()))
+        .count() as u64;
+    let background = a
+        .pixels
+        .iter()
+        .filter(|p| p[0] > 0.99 && p[1] < 0.01 && p[2] < 0.01)
+        .count() as u64;
+    let differ = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .filter(|(x, y)| x != y)
+        .count() as u64;
+    [nan, background, differ].map(|failures| Count { failures, rays: n })
+}
+
+// ---------------------------------------------------------------------------------------------
+// S8: normals under non-uniform scale.
+
+/// S8: a sphere scaled by (4, 1, 1) hit by random rays; the shading normal must be the
+/// ellipsoid's, (x/16, y, z) normalised, within 0.01°. Counts hits whose normal is further off.
+pub fn ellipsoid_normals(rays: u64) -> Count {
+    let ir = load_scene("sphere { 0, 1 scale <4, 1, 1> }".to_string(), 64, 48);
+    let scene = crate::scene::Scene::build(&ir);
+    let mut rng = Rng::new(0x5EED_0008);
+    let mut count = Count::default();
+    let limit = 0.01f64.to_radians();
+    while count.rays < rays {
+        let o = rng.unit() * 10.0;
+        let target = DVec3::new(
+            4.0 * rng.uniform() - 2.0,
+            rng.uniform() - 0.5,
+            rng.uniform() - 0.5,
+        );
+        let ray = Ray::new(o, target - o);
+        let Some(hit) = scene.intersect(&ray) else {
+            continue;
+        };
+        let s = scene.surface(&ray, &hit);
+        let p = s.point;
+        let exact = DVec3::new(p.x / 16.0, p.y, p.z).normalize();
+        count.rays += 1;
+        if s.normal.angle_between(exact) > limit {
+            count.failures += 1;
+        }
+    }
+    count
+}
+
+// ---------------------------------------------------------------------------------------------
+// S10: determinism.
+
+/// S10: the S7 scene rendered with 1, 2 and 3 threads; counts pixels that differ from the
+/// single-thread render (bit for bit) in either of the others.
+pub fn thread_determinism(width: u32, height: u32) -> Count {
+    let ir = load_scene(scale_scene(1.0, 0.0), width, height);
+    let scene = crate::scene::Scene::build(&ir);
+    let one = render_built(&scene, width, height, Some(1));
+    let mut count = Count {
+        failures: 0,
+        rays: one.pixels.len() as u64,
+    };
+    for threads in [2, 3] {
+        let other = render_built(&scene, width, height, Some(threads));
+        count.failures += one
+            .pixels
+            .iter()
+            .zip(&other.pixels)
+            .filter(|(a, b)| a != b)
+            .count() as u64;
+    }
+    count
+}

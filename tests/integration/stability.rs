@@ -3,8 +3,8 @@
 //! alternative fails where the literature says it does (so the counters can see failures).
 
 use trace::stability::{
-    OffsetMethod, SphereMethod, TriangleMethod, far_sphere, far_torus, mesh_leaks,
-    scale_invariance, sphere_acne,
+    OffsetMethod, SphereMethod, TriangleMethod, ellipsoid_normals, far_sphere, far_torus, grazing,
+    mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
 };
 
 #[test]
@@ -73,4 +73,15 @@ fn a_scene_renders_alike_at_every_scale_within_the_supported_range() {
         let c = scale_invariance(k, shift, 80, 60);
         assert_eq!(c.failures, 0, "k {k}, shift {shift}: {c:?}");
     }
+}
+
+#[test]
+fn grazing_rays_normals_and_threads_give_no_failures() {
+    let [nan, background, differ] = grazing(64, 48);
+    assert_eq!(
+        (nan.failures, background.failures, differ.failures),
+        (0, 0, 0)
+    );
+    assert_eq!(ellipsoid_normals(2000).failures, 0);
+    assert_eq!(thread_determinism(64, 48).failures, 0);
 }
