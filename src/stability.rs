@@ -670,3 +670,51 @@ pub fn thread_determinism(width: u32, height: u32) -> Count {
     }
     count
 }
+
+// ---------------------------------------------------------------------------------------------
+// S2: contact shadows.
+
+/// S2: a cube of side `side` resting on the plane y = 0, lit at a grazing angle (direction
+/// (1, 0.2, 0)) from the +x side. Floor points on the far side at distance δ from the cube
+/// (δ from 1e-9 to 4.9 sides, log-uniform), found by camera rays as in a render, are in its
+/// shadow: a shadow ray that gets through is a gap between the cube and its shadow. Floor
+/// points on the lit side at the same distances must be lit: a blocked one is acne. Uses the
+/// renderer's own shadow test (`Scene::transmittance`); distances are world units (unit
+/// direction). Returns (gaps, acne).
+pub fn contact_shadow(method: OffsetMethod, side: f64, rays: u64) -> (Count, Count) {
+    let text = format!(
+        "plane {{ y, 0 pigment {{ rgb 1 }} }} box {{ <0, 0, 0>, <{side}, {side}, {side}> pigment {{ rgb 1 }} }}"
+    );
+    let scene = crate::scene::Scene::build(&load_scene(text, 64, 48));
+    let l = DVec3::new(1.0, 0.2, 0.0).normalize();
+    let up = DVec3::Y;
+    let mut rng = Rng::new(0x5EED_0002);
+    let (mut gaps, mut acne) = (Count::default(), Count::default());
+    for _ in 0..rays {
+        let delta = side * 10f64.powf(-9.0 + rng.uniform() * (9.0 + 4.9f64.log10()));
+        let z = side * (0.01 + 0.98 * rng.uniform());
+        for (target, shadowed) in [
+            (DVec3::new(-delta, 0.0, z), true),
+            (DVec3::new(side + delta, 0.0, z), false),
+        ] {
+            // The floor point as a camera ray from that side finds it (rounded, as in a render).
+            let eye_x = if shadowed { -2.3 } else { 3.1 };
+            let eye = DVec3::new(eye_x, 1.9, -1.7) * side;
+            let camera = Ray::new(eye, target - eye);
+            let Some(hit) = scene.intersect(&camera) else {
+                continue;
+            };
+            let p = camera.at(hit.t);
+            if (p - target).length() > 1e-6 * side {
+                continue; // (the camera ray met the cube first)
+            }
+            let mut ray = method.ray(p, up, l, side);
+            ray.tmax = 100.0 * side;
+            let blocked = scene.transmittance(&ray) == crate::ir::Rgb::ZERO;
+            let counter = if shadowed { &mut gaps } else { &mut acne };
+            counter.rays += 1;
+            counter.failures += u64::from(blocked != shadowed);
+        }
+    }
+    (gaps, acne)
+}

@@ -7,8 +7,8 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 use trace::stability::{
-    Count, OffsetMethod, SphereMethod, TriangleMethod, ellipsoid_normals, far_sphere, far_torus,
-    grazing, mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
+    Count, OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals,
+    far_sphere, far_torus, grazing, mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
 };
 
 const RADII: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -71,6 +71,25 @@ fn main() {
         }
     }
     eprintln!("S1 done");
+    for m in OffsetMethod::ALL {
+        for side in RADII {
+            let start = Instant::now();
+            let (gaps, acne) = contact_shadow(m, side, rays / 4);
+            let ns = start.elapsed().as_nanos() as f64 / (2 * gaps.rays.max(1)) as f64;
+            for (counter, count) in [("gap", gaps), ("acne", acne)] {
+                rows.push(Row {
+                    experiment: "S2",
+                    counter,
+                    method: m.label(),
+                    a: side,
+                    b: 0.0,
+                    count,
+                    ns_per_ray: ns,
+                });
+            }
+        }
+    }
+    eprintln!("S2 done");
     for m in SphereMethod::ALL {
         for d in FAR {
             let (count, ns) = timed(|| far_sphere(m, d, rays));
@@ -276,7 +295,11 @@ fn table(
 ) -> String {
     let mut s = format!("| method | {a_name} |");
     for b in b_values {
-        let _ = write!(s, " {b_name} = {b:e} |");
+        if b_name.is_empty() {
+            s.push_str(" failures |");
+        } else {
+            let _ = write!(s, " {b_name} = {b:e} |");
+        }
     }
     s.push_str(" ns/ray |\n|---|---:|");
     s.push_str(&"---:|".repeat(b_values.len() + 1));
@@ -322,11 +345,11 @@ fn report(rows: &[Row], rays: u64) -> String {
          it replaced, kept in the suite to show that the counters find failures where the\n\
          literature says they happen (../shared/stability.md). `ns/ray` is the cost of the\n\
          whole experiment per ray, on one thread: compare methods within a table.\n\n\
-         Covered so far: S1 (acne and leaks of shadow rays), S3 (far small spheres), S4 (leaks\n\
-         through mesh seams), S5 (axis-aligned grazing rays), S6 (the torus far away), S7\n\
-         (scale and translation invariance of a whole render), S8 (normals under non-uniform\n\
-         scale), S10 (determinism across thread counts). Not yet: S2 (contact shadows and thin\n\
-         walls), S9 (total internal reflection and stacked glass); POV-Ray runs only S7.\n"
+         Covered so far: S1 (acne and leaks of shadow rays), S2 (contact shadows), S3 (far\n\
+         small spheres), S4 (leaks through mesh seams), S5 (axis-aligned grazing rays), S6 (the\n\
+         torus far away), S7 (scale and translation invariance of a whole render), S8 (normals\n\
+         under non-uniform scale), S10 (determinism across thread counts). Not yet: S2's thin walls, S9 (total\n\
+         internal reflection and stacked glass); POV-Ray runs only S7.\n"
     );
     let _ = writeln!(
         s,
@@ -338,6 +361,17 @@ fn report(rows: &[Row], rays: u64) -> String {
     s += &table(rows, "S1", "acne", "R", "D", &DISTANCES);
     s += "\n### Leaks\n\n";
     s += &table(rows, "S1", "leaks", "R", "D", &DISTANCES);
+    let _ = writeln!(
+        s,
+        "\n## S2: contact shadows (a cube of side s on a plane, light at a grazing angle)\n\n\
+         Floor points at distance δ (1e-9 s to 4.9 s) from the cube, through the renderer's own\n\
+         shadow test: on the shadow side a ray that gets through is a gap between the cube and\n\
+         its shadow; on the lit side a blocked ray is acne.\n"
+    );
+    s += "### Gaps\n\n";
+    s += &table(rows, "S2", "gap", "s", "", &[0.0]);
+    s += "\n### Acne\n\n";
+    s += &table(rows, "S2", "acne", "s", "", &[0.0]);
     let _ = writeln!(
         s,
         "\n## S3: a small sphere far away (unit sphere at distance D)\n\n\

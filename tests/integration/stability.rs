@@ -3,8 +3,8 @@
 //! alternative fails where the literature says it does (so the counters can see failures).
 
 use trace::stability::{
-    OffsetMethod, SphereMethod, TriangleMethod, ellipsoid_normals, far_sphere, far_torus, grazing,
-    mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
+    OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals, far_sphere,
+    far_torus, grazing, mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
 };
 
 #[test]
@@ -84,4 +84,20 @@ fn grazing_rays_normals_and_threads_give_no_failures() {
     );
     assert_eq!(ellipsoid_normals(2000).failures, 0);
     assert_eq!(thread_determinism(64, 48).failures, 0);
+}
+
+#[test]
+fn contact_shadows_have_no_gap_and_no_acne() {
+    for side in [1e-3, 1.0, 1e3] {
+        let (gaps, acne) = contact_shadow(OffsetMethod::Trace, side, 2000);
+        assert!(gaps.rays > 1000 && acne.rays > 1000, "{gaps:?} {acne:?}");
+        assert_eq!((gaps.failures, acne.failures), (0, 0), "side {side}");
+    }
+    // A fixed 1e-4 offset lifts shadow rays off the floor by a tenth of a 1 mm cube.
+    assert!(
+        contact_shadow(OffsetMethod::Normal1e4, 1e-3, 4000)
+            .0
+            .failures
+            > 0
+    );
 }
