@@ -268,8 +268,8 @@ fn stats_block(args: &RenderArgs, r: &trace::Rendered, phases: [Duration; 4]) ->
     );
     let _ = writeln!(
         out,
-        "Reflected: {:>12}   Refracted: {:>12}",
-        c.reflected, c.transmitted
+        "Reflected: {:>12}   Refracted: {:>12}   Cut at max_trace_level: {}",
+        c.reflected, c.transmitted, c.depth_limited
     );
     let _ = writeln!(out, "{line}");
     let _ = writeln!(

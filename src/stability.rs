@@ -718,3 +718,73 @@ pub fn contact_shadow(method: OffsetMethod, side: f64, rays: u64) -> (Count, Cou
     }
     (gaps, acne)
 }
+
+// ---------------------------------------------------------------------------------------------
+// S9: glass.
+
+/// The S9 pane stack: `n` clear glass panes (ior 1.5) between the camera and a self-lit
+/// checkerboard, with `global_settings { max_trace_level }` if given (POV-Ray's default is 5).
+pub fn pane_scene(n: u32, max_trace_level: Option<u32>) -> String {
+    let mut s = String::from("#version 3.7;\n");
+    match max_trace_level {
+        Some(m) => s += &format!("global_settings {{ assumed_gamma 1.0 max_trace_level {m} }}\n"),
+        None => s += "global_settings { assumed_gamma 1.0 }\n",
+    }
+    s += "camera { location <0, 0, -2> look_at <0, 0, 10> angle 40 }\n\
+          plane { z, 12 pigment { checker rgb 1 rgb 0.5 } finish { ambient 1 diffuse 0 } }\n";
+    for i in 0..n {
+        let z = 1.0 + 0.5 * i as f64;
+        s += &format!(
+            "box {{ <-20, -20, {z}>, <20, 20, {}> pigment {{ rgbf <1, 1, 1, 1> }} finish {{ ambient 0 diffuse 0 }} interior {{ ior 1.5 }} }}\n",
+            z + 0.1
+        );
+    }
+    s
+}
+
+/// Black pixels in an image of sRGB bytes.
+pub fn black_pixels(rgb8: &[u8]) -> Count {
+    let mut c = Count::default();
+    for p in rgb8.chunks(3) {
+        c.rays += 1;
+        c.failures += u64::from(p.iter().all(|&v| v == 0));
+    }
+    c
+}
+
+/// S9c with trace at `width`×`height`: (black pixels, secondary rays cut at max_trace_level).
+pub fn pane_stack(n: u32, max_trace_level: Option<u32>, width: u32, height: u32) -> (Count, u64) {
+    let ir = load_scene(pane_scene(n, max_trace_level), width, height);
+    let scene = crate::scene::Scene::build(&ir);
+    let options = crate::RenderOptions {
+        width,
+        height,
+        antialias: crate::Antialias::Off,
+        threads: None,
+    };
+    let rendered = crate::render::render(&scene, &options).expect("renders");
+    (
+        black_pixels(&rendered.film.to_srgb8()),
+        rendered.counts.depth_limited,
+    )
+}
+
+/// S9a: a glass sphere (ior 1.5) in a white world, seen whole: rays inside it meet the
+/// surface beyond the critical angle (total internal reflection). Counts NaN or infinite
+/// pixels.
+pub fn glass_sphere_nan(width: u32, height: u32) -> Count {
+    let text = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 max_trace_level 20 }\n\
+                background { rgb 1 }\n\
+                camera { location <0, 0, -4> look_at 0 angle 40 }\n\
+                light_source { <3, 5, -4>, rgb 1 }\n\
+                sphere { 0, 1 pigment { rgbf <1, 1, 1, 1> } finish { reflection { 0, 1 fresnel on } conserve_energy } interior { ior 1.5 } }\n"
+        .to_string();
+    let ir = load_scene(text, width, height);
+    let film = render_built(&crate::scene::Scene::build(&ir), width, height, None);
+    let mut c = Count::default();
+    for p in &film.pixels {
+        c.rays += 1;
+        c.failures += u64::from(p.iter().any(|v| !v.is_finite()));
+    }
+    c
+}

@@ -29,6 +29,9 @@ pub struct RayCounts {
     pub transmitted: u64,
     /// Shadow rays.
     pub shadow: u64,
+    /// Secondary rays not traced because the ray was at `max_trace_level` (POV-Ray returns
+    /// black for them: stacked glass turns dark).
+    pub depth_limited: u64,
 }
 
 impl RayCounts {
@@ -38,6 +41,7 @@ impl RayCounts {
         self.reflected += o.reflected;
         self.transmitted += o.transmitted;
         self.shadow += o.shadow;
+        self.depth_limited += o.depth_limited;
     }
 }
 
@@ -224,10 +228,12 @@ impl<'a> Tracer<'a> {
         if finish.conserve_energy {
             filter *= (Rgb::ONE - reflectivity).min(Rgb::ONE);
         }
-        if filter != Rgb::ZERO
-            && level < scene.max_trace_level
-            && grey(filter).abs().min(1.0) > scene.adc_bailout
-        {
+        let wants_transmission =
+            filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout;
+        if wants_transmission && level >= scene.max_trace_level {
+            self.counts.depth_limited += 1;
+        }
+        if wants_transmission && level < scene.max_trace_level {
             let w = weight * filter.abs().max_element();
             let eta = crossing.refraction_eta;
             if (eta - 1.0).abs() < SAME_IOR {
@@ -255,10 +261,11 @@ impl<'a> Tracer<'a> {
         }
 
         // Mirror reflection.
-        if !total_internal_reflection
-            && reflectivity.max_element() > 0.0
-            && level < scene.max_trace_level
-        {
+        let wants_reflection = !total_internal_reflection && reflectivity.max_element() > 0.0;
+        if wants_reflection && level >= scene.max_trace_level {
+            self.counts.depth_limited += 1;
+        }
+        if wants_reflection && level < scene.max_trace_level {
             let r = (d + 2.0 * cos_i * n).normalize();
             let reflected = scene.spawn(hit, ray.origin, r);
             self.counts.reflected += 1;

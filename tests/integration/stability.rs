@@ -4,7 +4,8 @@
 
 use trace::stability::{
     OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals, far_sphere,
-    far_torus, grazing, mesh_leaks, scale_invariance, sphere_acne, thread_determinism,
+    far_torus, glass_sphere_nan, grazing, mesh_leaks, pane_stack, scale_invariance, sphere_acne,
+    thread_determinism,
 };
 
 #[test]
@@ -100,4 +101,17 @@ fn contact_shadows_have_no_gap_and_no_acne() {
             .failures
             > 0
     );
+}
+
+#[test]
+fn glass_has_no_nan_and_stacks_go_black_exactly_where_povray_does() {
+    assert_eq!(glass_sphere_nan(64, 48).failures, 0);
+    let (black, cut) = pane_stack(2, None, 40, 30);
+    assert_eq!((black.failures, cut), (0, 0));
+    // Three panes are six trace levels: POV-Ray's default limit of 5 returns black (and so does
+    // trace, to render what POV-Ray renders); the cut rays are counted.
+    let (black, cut) = pane_stack(3, None, 40, 30);
+    assert_eq!(black.failures, black.rays);
+    assert!(cut > 0);
+    assert_eq!(pane_stack(8, Some(20), 40, 30).0.failures, 0);
 }
