@@ -788,3 +788,39 @@ pub fn glass_sphere_nan(width: u32, height: u32) -> Count {
     }
     c
 }
+
+/// S2's thin wall: a wall 1e-3 sides thick standing on the plane y = 0 between the floor
+/// points (found by camera rays) and a light at a grazing angle; every shadow ray must be
+/// stopped by the wall. Counts the ones that get through.
+pub fn thin_wall(method: OffsetMethod, side: f64, rays: u64) -> Count {
+    let thickness = 1e-3 * side;
+    let text = format!(
+        "plane {{ y, 0 pigment {{ rgb 1 }} }} box {{ <0, 0, {}>, <{thickness}, {side}, {side}> pigment {{ rgb 1 }} }}",
+        -side
+    );
+    let scene = crate::scene::Scene::build(&load_scene(text, 64, 48));
+    let l = DVec3::new(1.0, 0.3, 0.0).normalize();
+    let mut rng = Rng::new(0x5EED_0012);
+    let mut count = Count::default();
+    let eye = DVec3::new(-2.3, 1.9, -1.7) * side;
+    while count.rays < rays {
+        let target = DVec3::new(
+            -3.0 * side * rng.uniform(),
+            0.0,
+            side * (1.8 * rng.uniform() - 0.9),
+        );
+        let camera = Ray::new(eye, target - eye);
+        let Some(hit) = scene.intersect(&camera) else {
+            continue;
+        };
+        let p = camera.at(hit.t);
+        if (p - target).length() > 1e-6 * side {
+            continue;
+        }
+        let mut ray = method.ray(p, DVec3::Y, l, side);
+        ray.tmax = 100.0 * side;
+        count.rays += 1;
+        count.failures += u64::from(scene.transmittance(&ray) != crate::ir::Rgb::ZERO);
+    }
+    count
+}
