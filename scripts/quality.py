@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Speed against accuracy: trace and POV-Ray 3.7 over their anti-aliasing settings.
 
-For each chart scene, both renderers render a converged reference (anti-aliasing method 1,
+For each chart scene (six examples and two scenes of the speed table), both renderers render a converged reference (anti-aliasing method 1,
 threshold 0, depth 8: 65 samples in every pixel, no jitter) and a sweep of quality settings
 (no anti-aliasing; thresholds 0.3, 0.1 and 0 at several depths; POV-Ray's method 2 too). Each
 image is compared with *its own renderer's* reference (mean FLIP and RMSE), so the curves show
@@ -23,7 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TRACE = os.path.join(ROOT, "target", "release", "trace")
 WIDTH = int(os.environ.get("WIDTH", 320))
 HEIGHT = int(os.environ.get("HEIGHT", 240))
-SCENES = ["basic_spheres", "mirrors", "glass", "lights", "meshes", "transparent"]
+SCENES = ["basic_spheres", "mirrors", "glass", "lights", "meshes", "transparent", "speed:spheres", "speed:terrain"]
 REFERENCE = ("0.0", "8")
 TRACE_SWEEP = [("off", None), ("0.3", "3"), ("0.1", "3"), ("0.0", "2"), ("0.0", "3"), ("0.0", "4"), ("0.0", "6")]
 POV_SWEEP = [("1", None, None), ("1", "0.3", "3"), ("1", "0.1", "3"), ("1", "0.0", "2"), ("1", "0.0", "3"),
@@ -115,7 +115,18 @@ def main():
     rows, refs = [], []
     with tempfile.TemporaryDirectory() as tmp:
         for name in scenes:
-            scene = os.path.join(ROOT, "examples", name + ".rt")
+            if name.startswith("speed:"):
+                # A scene of the speed table (scripts/speed.py): 10k spheres, 100k triangles.
+                sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+                import speed
+                name = name.split(":", 1)[1]
+                scene = os.path.join(tmp, name + ".pov")
+                if name == "spheres":
+                    speed.spheres(10000, scene)
+                else:
+                    speed.terrain(225, scene)
+            else:
+                scene = os.path.join(ROOT, "examples", name + ".rt")
             t_ref = os.path.join(tmp, name + ".tref.exr")
             p_ref = os.path.join(tmp, name + ".pref.exr")
             tt = trace_render(scene, t_ref, *REFERENCE)
