@@ -14,7 +14,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "examples", "meshes")
 
 
-def knot(segments=160, sides=12, radius=0.35):
+def knot_tube(segments, sides, radius):
+    """A trefoil-knot tube: vertices, unit normals, and quads (vertex indices, 0-based).
+    Also used by scripts/speed.py for its instanced mesh."""
     def centre(t):
         return (math.sin(t) + 2 * math.sin(2 * t), math.cos(t) - 2 * math.cos(2 * t), -math.sin(3 * t))
 
@@ -42,7 +44,12 @@ def knot(segments=160, sides=12, radius=0.35):
             b = i * sides + (j + 1) % sides
             c = ((i + 1) % segments) * sides + j
             d = ((i + 1) % segments) * sides + (j + 1) % sides
-            faces.append((a, c, d, b))  # a quad, split into a fan by the reader
+            faces.append((a, c, d, b))
+    return verts, norms, faces
+
+
+def knot(segments=160, sides=12, radius=0.35):
+    verts, norms, faces = knot_tube(segments, sides, radius)  # quads, split into fans by the reader
     lines = ["# trefoil knot tube, written by scripts/make_meshes.py", "o knot"]
     lines += ["v %.6f %.6f %.6f" % tuple(v) for v in verts]
     lines += ["vn %.6f %.6f %.6f" % tuple(n) for n in norms]

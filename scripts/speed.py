@@ -18,6 +18,8 @@ import subprocess
 import sys
 import tempfile
 
+import make_meshes  # (this folder)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WIDTH = int(os.environ.get("WIDTH", 640))
 HEIGHT = int(os.environ.get("HEIGHT", 480))
@@ -80,38 +82,13 @@ def terrain(side, path):
 
 
 def knot_mesh2(segments, sides, name):
-    """A trefoil-knot tube as a smooth mesh2 (2·segments·sides triangles)."""
-    def centre(t):
-        return (math.sin(t) + 2 * math.sin(2 * t), math.cos(t) - 2 * math.cos(2 * t), -math.sin(3 * t))
-
-    verts, norms = [], []
-    for i in range(segments):
-        t = 2 * math.pi * i / segments
-        c = centre(t)
-        d = [b - a for a, b in zip(centre(t - 1e-4), centre(t + 1e-4))]
-        dl = math.sqrt(sum(x * x for x in d))
-        d = [x / dl for x in d]
-        up = (0.0, 0.0, 1.0) if abs(d[2]) < 0.9 else (1.0, 0.0, 0.0)
-        u = [up[1] * d[2] - up[2] * d[1], up[2] * d[0] - up[0] * d[2], up[0] * d[1] - up[1] * d[0]]
-        ul = math.sqrt(sum(x * x for x in u))
-        u = [x / ul for x in u]
-        w = [d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0]]
-        for j in range(sides):
-            a = 2 * math.pi * j / sides
-            n = [math.cos(a) * u[k] + math.sin(a) * w[k] for k in range(3)]
-            verts.append("<%.5f,%.5f,%.5f>" % tuple(c[k] + 0.35 * n[k] for k in range(3)))
-            norms.append("<%.5f,%.5f,%.5f>" % tuple(n))
-    faces = []
-    for i in range(segments):
-        for j in range(sides):
-            a = i * sides + j
-            b = i * sides + (j + 1) % sides
-            c = ((i + 1) % segments) * sides + j
-            d = ((i + 1) % segments) * sides + (j + 1) % sides
-            faces.append("<%d,%d,%d>,<%d,%d,%d>" % (a, c, d, a, d, b))
+    """A trefoil-knot tube (scripts/make_meshes.py) as a smooth mesh2 (2·segments·sides triangles)."""
+    verts, norms, quads = make_meshes.knot_tube(segments, sides, 0.35)
+    vec = lambda v: "<%.5f,%.5f,%.5f>" % tuple(v)
+    faces = ["<%d,%d,%d>,<%d,%d,%d>" % (a, c, d, a, d, b) for a, c, d, b in quads]
     return ["#declare %s = mesh2 {" % name,
-            "vertex_vectors { %d,\n%s }" % (len(verts), ",\n".join(verts)),
-            "normal_vectors { %d,\n%s }" % (len(norms), ",\n".join(norms)),
+            "vertex_vectors { %d,\n%s }" % (len(verts), ",\n".join(map(vec, verts))),
+            "normal_vectors { %d,\n%s }" % (len(norms), ",\n".join(map(vec, norms))),
             "face_indices { %d,\n%s }" % (2 * len(verts), ",\n".join(faces)),
             "}"]
 

@@ -59,7 +59,10 @@ pub fn prescan(text: &str, offset: usize) -> Prescanned {
                     i += 1;
                 }
             }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => i = skip_block_comment(bytes, i),
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                // (Too deep a comment is check_nesting's error, reported before this runs.)
+                i = skip_block_comment(bytes, i, usize::MAX).unwrap_or(bytes.len());
+            }
             b'"' => {
                 i += 1;
                 while i < bytes.len() && bytes[i] != b'"' {
@@ -112,11 +115,20 @@ pub fn prescan(text: &str, offset: usize) -> Prescanned {
     }
 }
 
-fn skip_block_comment(bytes: &[u8], mut i: usize) -> usize {
+/// The end of the (nested) block comment starting at `i`, or, if its nesting passes
+/// `max_depth`, `Err` with the offset of the `/*` that does.
+pub(super) fn skip_block_comment(
+    bytes: &[u8],
+    mut i: usize,
+    max_depth: usize,
+) -> Result<usize, usize> {
     let mut depth = 0usize;
     while i < bytes.len() {
         if bytes[i..].starts_with(b"/*") {
             depth += 1;
+            if depth > max_depth {
+                return Err(i);
+            }
             i += 2;
         } else if bytes[i..].starts_with(b"*/") {
             depth -= 1;
@@ -128,7 +140,7 @@ fn skip_block_comment(bytes: &[u8], mut i: usize) -> usize {
             i += 1;
         }
     }
-    i
+    Ok(i)
 }
 
 fn skip_ws(bytes: &[u8], mut i: usize) -> usize {

@@ -415,24 +415,8 @@ pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<(), Diag
             }
             b'/' if bytes.get(i + 1) == Some(&b'*') => {
                 // Block comments nest in trace's grammar: count them as blocks too.
-                let mut depth = 0usize;
-                while i < bytes.len() {
-                    if bytes[i..].starts_with(b"/*") {
-                        depth += 1;
-                        if blocks + depth > MAX_NESTING {
-                            return Err(too_deep(file, offset + i));
-                        }
-                        i += 2;
-                    } else if bytes[i..].starts_with(b"*/") {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
+                i = bulk::skip_block_comment(bytes, i, MAX_NESTING - blocks)
+                    .map_err(|at| too_deep(file, offset + at))?;
                 continue;
             }
             b'"' => {
