@@ -133,26 +133,30 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
 
 /// Renders a scene (building the render-ready scene inside).
 pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
+    let pool = render::thread_pool(options)?;
     let start = std::time::Instant::now();
-    let built = scene::Scene::build(scene);
-    render_built(&built, start.elapsed(), options)
+    let built = pool.install(|| scene::Scene::build(scene));
+    Ok(render_built(&built, start.elapsed(), options, &pool))
 }
 
 /// Like [`render`], but frees the IR once the render-ready scene is built (less peak memory
 /// for big meshes: the IR's copy of every mesh is gone before rendering starts).
 pub fn render_owned(scene: ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
+    let pool = render::thread_pool(options)?;
     let start = std::time::Instant::now();
-    let built = scene::Scene::build(&scene);
+    let built = pool.install(|| scene::Scene::build(&scene));
     drop(scene);
-    render_built(&built, start.elapsed(), options)
+    Ok(render_built(&built, start.elapsed(), options, &pool))
 }
 
+/// The build runs on the render's threads too, so `threads` bounds both.
 fn render_built(
     built: &scene::Scene,
     build_time: std::time::Duration,
     options: &RenderOptions,
-) -> Result<Rendered, Error> {
-    let mut rendered = render::render(built, options)?;
+    pool: &rayon::ThreadPool,
+) -> Rendered {
+    let mut rendered = render::render(built, options, pool);
     rendered.build_time = build_time;
-    Ok(rendered)
+    rendered
 }

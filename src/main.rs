@@ -164,6 +164,7 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         width: args.width,
         height: args.height,
         include_paths: args.include_path.clone(),
+        threads: args.threads.map(|t| t as usize),
     };
     let loaded = trace::load(scene_path, &load_options)?;
     if !args.quiet {

@@ -548,9 +548,8 @@ fn render_built(
         antialias: crate::Antialias::Off,
         threads,
     };
-    crate::render::render(scene, &options)
-        .expect("renders")
-        .film
+    let pool = crate::render::thread_pool(&options).expect("a thread pool");
+    crate::render::render(scene, &options, &pool).film
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -762,7 +761,8 @@ pub fn pane_stack(n: u32, max_trace_level: Option<u32>, width: u32, height: u32)
         antialias: crate::Antialias::Off,
         threads: None,
     };
-    let rendered = crate::render::render(&scene, &options).expect("renders");
+    let pool = crate::render::thread_pool(&options).expect("a thread pool");
+    let rendered = crate::render::render(&scene, &options, &pool);
     (
         black_pixels(&rendered.film.to_srgb8()),
         rendered.counts.depth_limited,

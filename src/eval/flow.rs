@@ -573,7 +573,8 @@ impl<'a> Evaluator<'a> {
             )
         })?;
         let file = self.sources.add(&path, text);
-        let statements = syntax::statements(self.sources.file(file).text.clone(), file)
+        let helpers = self.options.parse_helpers();
+        let statements = syntax::statements(self.sources.file(file).text.clone(), file, helpers)
             .map_err(|d| d.with_note(format!("included from {}", self.location(item.span))))?;
         // An include file is a scope for its #local declarations, like a macro.
         self.include_depth += 1;

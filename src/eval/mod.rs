@@ -32,6 +32,18 @@ pub struct LoadOptions {
     pub height: u32,
     /// Folders searched for `#include` files after the scene's own folder (`-L`).
     pub include_paths: Vec<std::path::PathBuf>,
+    /// Threads for reading big files (`None`: one per core). The scene is the same for any count.
+    pub threads: Option<usize>,
+}
+
+impl LoadOptions {
+    /// Threads that may parse ahead of evaluation.
+    pub(crate) fn parse_helpers(&self) -> usize {
+        let threads = self
+            .threads
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+        threads.saturating_sub(1)
+    }
 }
 
 impl Default for LoadOptions {
@@ -40,6 +52,7 @@ impl Default for LoadOptions {
             width: 800,
             height: 600,
             include_paths: Vec::new(),
+            threads: None,
         }
     }
 }
@@ -91,7 +104,11 @@ pub struct Evaluated {
 
 /// Evaluates the file `file` of `sources` into a scene.
 pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
-    let statements = syntax::statements(sources.file(file).text.clone(), file)?;
+    let statements = syntax::statements(
+        sources.file(file).text.clone(),
+        file,
+        options.parse_helpers(),
+    )?;
     let base_dir = sources
         .file(file)
         .path

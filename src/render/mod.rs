@@ -65,14 +65,17 @@ pub struct Rendered {
     pub build_time: std::time::Duration,
 }
 
-/// Renders `scene` into a film of linear values.
-pub fn render(
-    scene: &Scene,
+/// The worker threads `options` ask for.
+pub fn thread_pool(
     options: &RenderOptions,
-) -> Result<Rendered, rayon::ThreadPoolBuildError> {
-    let pool = rayon::ThreadPoolBuilder::new()
+) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
+    rayon::ThreadPoolBuilder::new()
         .num_threads(options.threads.unwrap_or(0))
-        .build()?;
+        .build()
+}
+
+/// Renders `scene` into a film of linear values, on the threads of `pool`.
+pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) -> Rendered {
     let (w, h) = (options.width, options.height);
     let blocks_x = w.div_ceil(BLOCK_SIZE);
     let blocks_y = h.div_ceil(BLOCK_SIZE);
@@ -108,13 +111,13 @@ pub fn render(
         tests.add(&b.tests);
         samples += b.samples;
     }
-    Ok(Rendered {
+    Rendered {
         film,
         counts,
         tests,
         samples,
         build_time: std::time::Duration::ZERO,
-    })
+    }
 }
 
 /// A working-space colour as the linear value written to the film (POV-Ray §2).

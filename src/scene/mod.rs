@@ -8,6 +8,7 @@ use crate::geometry::{
 };
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
+use rayon::prelude::*;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -277,7 +278,7 @@ pub struct Object {
     /// World-space bounding box (`None` for unbounded shapes).
     pub bounds: Option<(DVec3, DVec3)>,
     /// `None` is the identity (the shape is in world space).
-    pub transform: Option<ObjectTransform>,
+    pub transform: Option<Box<ObjectTransform>>,
     /// Its material.
     pub material: MaterialId,
     /// Casts no shadow.
@@ -314,58 +315,118 @@ pub struct SurfaceHit {
     pub object: ObjectId,
 }
 
-/// A cheap hash of the parts of a texture that most often differ (colour, main finish
-/// amounts); textures with equal fingerprints are then compared in full.
+/// A cheap hash of the parts of a texture that most often differ (pattern kind, colour, main
+/// finish amounts); textures with equal fingerprints are then compared in full.
 fn fingerprint(t: &ir::Texture) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    std::mem::discriminant(&t.pigment.pattern).hash(&mut h);
-    if let ir::Pattern::Solid(c) = &t.pigment.pattern {
-        for v in [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit] {
-            v.to_bits().hash(&mut h);
+    let (kind, colour) = match &t.pigment.pattern {
+        ir::Pattern::Solid(c) => (0, Some(c)),
+        ir::Pattern::Checker(_) => (1, None),
+        ir::Pattern::Gradient { .. } => (2, None),
+        ir::Pattern::ImageMap(_) => (3, None),
+    };
+    let f = &t.finish;
+    let mut words = [kind, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+    for (w, v) in words[1..]
+        .iter_mut()
+        .zip([f.ambient.x, f.diffuse, f.phong, f.specular])
+    {
+        *w = v.to_bits();
+    }
+    if let Some(c) = colour {
+        for (w, v) in words[5..]
+            .iter_mut()
+            .zip([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit])
+        {
+            *w = v.to_bits();
         }
     }
-    let f = &t.finish;
-    for v in [f.ambient.x, f.diffuse, f.phong, f.specular] {
-        v.to_bits().hash(&mut h);
+    // A multiply–rotate mix (the keys are not adversarial; SipHash was a third of the
+    // per-object build time).
+    words.iter().fold(0u64, |h, &w| {
+        (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
+    })
+}
+
+/// A hasher for keys that are already hashes.
+#[derive(Default)]
+struct PassThrough(u64);
+
+impl std::hash::Hasher for PassThrough {
+    fn finish(&self) -> u64 {
+        self.0
     }
-    h.finish()
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0 << 8) | u64::from(b);
+        }
+    }
+    fn write_u64(&mut self, n: u64) {
+        self.0 = n;
+    }
+}
+
+/// Material ids for the objects of `ir`, equal textures sharing one, and the texture of each id.
+fn material_ids(ir: &ir::Scene) -> (Vec<MaterialId>, Vec<&ir::Texture>) {
+    let mut textures: Vec<&ir::Texture> = Vec::new();
+    let mut by_fingerprint: HashMap<u64, Vec<u32>, std::hash::BuildHasherDefault<PassThrough>> =
+        HashMap::default();
+    let ids = ir
+        .objects
+        .iter()
+        .map(|o| {
+            let candidates = by_fingerprint.entry(fingerprint(&o.texture)).or_default();
+            let id = match candidates
+                .iter()
+                .find(|&&i| *textures[i as usize] == o.texture)
+            {
+                Some(&i) => i,
+                None => {
+                    textures.push(&o.texture);
+                    candidates.push(textures.len() as u32 - 1);
+                    textures.len() as u32 - 1
+                }
+            };
+            MaterialId(id)
+        })
+        .collect();
+    (ids, textures)
 }
 
 impl Scene {
-    /// Builds the render-ready scene from the IR.
+    /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
-        let mut materials: Vec<Material> = Vec::new();
-        let mut meshes: HashMap<*const ir::Mesh, Arc<TriangleMesh>> = HashMap::new();
-        // Materials by fingerprint; equal materials share one id (compared exactly with ==).
-        let mut material_ids: HashMap<u64, Vec<usize>> = HashMap::new();
+        let (ids, textures) = material_ids(ir);
+        let materials = textures
+            .into_iter()
+            .map(|t| Material {
+                pigment: Pigment::new(&t.pigment),
+                finish: t.finish.clone(),
+            })
+            .collect();
+        // Each distinct mesh is built once, for all its instances (keyed by address).
+        let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
+        for o in &ir.objects {
+            if let ir::Shape::Mesh(mesh) = &o.shape {
+                meshes
+                    .entry(Arc::as_ptr(mesh) as usize)
+                    .or_insert_with(|| Arc::new(build_mesh(mesh)));
+            }
+        }
         let objects = ir
             .objects
-            .iter()
-            .map(|o| {
-                let material = Material {
-                    pigment: Pigment::new(&o.texture.pigment),
-                    finish: o.texture.finish.clone(),
-                };
-                let candidates = material_ids.entry(fingerprint(&o.texture)).or_default();
-                let id = match candidates.iter().find(|&&i| materials[i] == material) {
-                    Some(&i) => i,
-                    None => {
-                        materials.push(material);
-                        candidates.push(materials.len() - 1);
-                        materials.len() - 1
-                    }
-                };
+            .par_iter()
+            .zip(ids)
+            .map(|(o, material)| {
                 let (shape, transform) =
-                    build_shape(&o.shape, o.transform.map(|t| t.matrix), &mut meshes);
+                    build_shape(&o.shape, o.transform.map(|t| t.matrix), &meshes);
                 let bounds = shape
                     .bounds()
                     .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()));
                 Object {
                     shape,
                     bounds,
-                    transform: transform.map(ObjectTransform::new),
-                    material: MaterialId(id as u32),
+                    transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
+                    material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     interior: o.interior,
@@ -640,7 +701,7 @@ fn world_bounds(lo: DVec3, hi: DVec3, m: Option<&DMat4>) -> (DVec3, DVec3) {
 fn build_shape(
     shape: &ir::Shape,
     transform: Option<DMat4>,
-    meshes: &mut HashMap<*const ir::Mesh, Arc<TriangleMesh>>,
+    meshes: &HashMap<usize, Arc<TriangleMesh>>,
 ) -> (Shape, Option<DMat4>) {
     match shape {
         ir::Shape::Sphere { centre, radius } => {
@@ -718,19 +779,21 @@ fn build_shape(
             transform,
         ),
         ir::Shape::Mesh(mesh) => {
-            let built = meshes.entry(Arc::as_ptr(mesh)).or_insert_with(|| {
-                let mut built = TriangleMesh::new(
-                    mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
-                    mesh.triangles.clone(),
-                    mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
-                    mesh.normal_indices.clone(),
-                );
-                built.inside_vector = mesh.inside_vector;
-                Arc::new(built)
-            });
-            (Shape::Mesh(built.clone()), transform)
+            let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
+            (Shape::Mesh(Arc::clone(built)), transform)
         }
     }
+}
+
+fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
+    let mut built = TriangleMesh::new(
+        mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
+        mesh.triangles.clone(),
+        mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
+        mesh.normal_indices.clone(),
+    );
+    built.inside_vector = mesh.inside_vector;
+    built
 }
 
 #[cfg(test)]

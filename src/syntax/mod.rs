@@ -4,6 +4,7 @@
 //! uniform: every construct is a [`Node`] (a keyword with its expressions and child nodes), and
 //! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
 
+mod ahead;
 pub mod bulk;
 
 mod grammar {
@@ -276,6 +277,11 @@ pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
 /// The top-level statements of a file, parsed one at a time as they are asked for: the syntax
 /// tree of a statement is gone once it has been evaluated, which keeps memory flat on scenes
 /// of many statements.
+///
+/// On a big file, helper threads parse later parts of it meanwhile ([`ahead`]): each starts
+/// where a statement probably ends; the statements it read are used if that guess proves
+/// right (the statement before ends exactly there) and dropped otherwise, so the statements
+/// are the same as one thread would read.
 pub struct Statements {
     /// The text pest parses (the file's, or a copy with big lists blanked by [`bulk`]).
     source: std::sync::Arc<str>,
@@ -283,15 +289,31 @@ pub struct Statements {
     pos: usize,
     lower: Lower,
     done: bool,
+    /// Parts being parsed ahead, in file order.
+    ahead: std::collections::VecDeque<ahead::Part>,
+    /// Statements a part parsed ahead, handed over once `pos` reached its start.
+    ready: std::vec::IntoIter<Result<Node, Diagnostic>>,
 }
 
-/// Starts reading the statements of `file`, whose text is `text`.
-pub fn statements(text: std::sync::Arc<str>, file: FileId) -> Result<Statements, Diagnostic> {
-    check_nesting(&text, file, 0)?;
+/// Starts reading the statements of `file`, whose text is `text`, with up to `helpers` threads
+/// parsing ahead.
+pub fn statements(
+    text: std::sync::Arc<str>,
+    file: FileId,
+    helpers: usize,
+) -> Result<Statements, Diagnostic> {
+    let block_ends = check_nesting(&text, file, 0)?;
     let prescanned = bulk::prescan(&text, 0);
-    let source = match prescanned.text {
+    let source: std::sync::Arc<str> = match prescanned.text {
         Some(copy) => copy.into(),
         None => text,
+    };
+    // The fast path's lists are handed to the one parser that meets them, so a file with any
+    // is read by one thread (its time is in the lists, which the fast path reads).
+    let ahead = if prescanned.lists.is_empty() {
+        ahead::start(&source, file, &block_ends, helpers)
+    } else {
+        Default::default()
     };
     Ok(Statements {
         source,
@@ -302,6 +324,8 @@ pub fn statements(text: std::sync::Arc<str>, file: FileId) -> Result<Statements,
             bulk: std::cell::RefCell::new(prescanned.lists),
         },
         done: false,
+        ahead,
+        ready: Vec::new().into_iter(),
     })
 }
 
@@ -309,29 +333,63 @@ impl Iterator for Statements {
     type Item = Result<Node, Diagnostic>;
 
     fn next(&mut self) -> Option<Result<Node, Diagnostic>> {
-        if self.done {
-            return None;
-        }
-        let rest = &self.source[self.pos..];
-        let file = self.lower.file;
-        let mut pairs = match SceneParser::parse(Rule::next_statement, rest) {
-            Ok(pairs) => pairs,
-            Err(e) => {
-                self.done = true;
-                return Some(Err(syntax_error_at(e, file, self.pos)));
+        'next: loop {
+            if let Some(statement) = self.ready.next() {
+                return Some(statement);
             }
-        };
-        let top = pairs.next().expect("next_statement yields one pair");
-        let Some(statement) = top.into_inner().find(|p| p.as_rule() != Rule::EOI) else {
-            self.done = true;
-            return None;
-        };
-        self.lower.offset = self.pos;
-        let end = statement.as_span().end();
-        let node = self.lower.node(statement);
-        self.pos += end;
-        Some(Ok(node))
+            if self.done {
+                return None;
+            }
+            // A part that starts here holds the next statements; one that starts behind began
+            // inside a statement (a wrong guess) and is dropped.
+            while self
+                .ahead
+                .front()
+                .is_some_and(|part| part.start <= self.pos)
+            {
+                let part = self.ahead.pop_front().expect("there is a front part");
+                if part.start == self.pos {
+                    let parsed = part.finish();
+                    self.pos = parsed.end;
+                    self.done = parsed.last;
+                    self.ready = parsed.statements.into_iter();
+                    continue 'next;
+                }
+            }
+            return match next_statement(&self.source, self.pos, &mut self.lower) {
+                None => {
+                    self.done = true;
+                    None
+                }
+                Some(Err(e)) => {
+                    self.done = true;
+                    Some(Err(e))
+                }
+                Some(Ok((node, end))) => {
+                    self.pos = end;
+                    Some(Ok(node))
+                }
+            };
+        }
     }
+}
+
+/// Parses the statement after byte `pos` of `source`: the statement and where it ends, or
+/// `None` at the end of the file.
+fn next_statement(
+    source: &str,
+    pos: usize,
+    lower: &mut Lower,
+) -> Option<Result<(Node, usize), Diagnostic>> {
+    let mut pairs = match SceneParser::parse(Rule::next_statement, &source[pos..]) {
+        Ok(pairs) => pairs,
+        Err(e) => return Some(Err(syntax_error_at(e, lower.file, pos))),
+    };
+    let top = pairs.next().expect("next_statement yields one pair");
+    let statement = top.into_inner().find(|p| p.as_rule() != Rule::EOI)?;
+    lower.offset = pos;
+    let end = pos + statement.as_span().end();
+    Some(Ok((lower.node(statement), end)))
 }
 
 /// Parses the part `text` of a file, which starts at byte `offset`, as a sequence of items
@@ -401,9 +459,14 @@ pub const MAX_NESTING: usize = 1000;
 /// Rejects text nested deeper than [`MAX_NESTING`] (the parser and evaluator recurse once per
 /// level, so unbounded nesting could exhaust the stack). Comments and strings are skipped;
 /// `<`, `>`, `?` and `:` are counted within one expression (the count restarts at `{ } ; #`).
-pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<(), Diagnostic> {
+///
+/// Returns where top-level blocks end: the offsets (in `text`) just after each `}` that closes
+/// to depth 0 outside any `#if … #end`-style directive block. These are likely, not certain,
+/// statement ends; [`Statements`] uses them to guess where to start parsing ahead.
+pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<Vec<usize>, Diagnostic> {
     let bytes = text.as_bytes();
-    let (mut blocks, mut inline) = (0usize, 0usize);
+    let (mut blocks, mut inline, mut directives) = (0usize, 0usize, 0usize);
+    let mut block_ends = Vec::new();
     let mut i = 0;
     while i < bytes.len() {
         match bytes[i] {
@@ -435,10 +498,28 @@ pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<(), Diag
             b'}' => {
                 blocks = blocks.saturating_sub(1);
                 inline = 0;
+                if blocks == 0 && directives == 0 {
+                    block_ends.push(i + 1);
+                }
             }
             b'<' | b'?' => inline += 1,
             b'>' | b':' => inline = inline.saturating_sub(1),
-            b';' | b'#' => inline = 0,
+            b';' => inline = 0,
+            b'#' => {
+                inline = 0;
+                let word = &bytes[i + 1..];
+                let word = &word[..word
+                    .iter()
+                    .position(|b| !b.is_ascii_alphanumeric() && *b != b'_')
+                    .unwrap_or(word.len())];
+                match word {
+                    b"if" | b"ifdef" | b"ifndef" | b"while" | b"for" | b"switch" | b"macro" => {
+                        directives += 1
+                    }
+                    b"end" => directives = directives.saturating_sub(1),
+                    _ => {}
+                }
+            }
             _ => {}
         }
         if blocks + inline > MAX_NESTING {
@@ -446,7 +527,7 @@ pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<(), Diag
         }
         i += 1;
     }
-    Ok(())
+    Ok(block_ends)
 }
 
 fn too_deep(file: FileId, at: usize) -> Diagnostic {

@@ -105,3 +105,119 @@ fn signed_number_after_a_space_in_a_vector_is_a_subtraction() {
     };
     assert_eq!(items.len(), 1);
 }
+
+/// The statements of `text` as `Statements` yields them, rendered for comparison.
+fn statement_dump(statements: Statements) -> Vec<String> {
+    statements.map(|s| format!("{s:?}")).collect()
+}
+
+fn statements_with_parts(text: &str, starts: &[usize]) -> Statements {
+    let mut s = statements(text.into(), FileId(0), 0).expect("nesting is fine");
+    s.ahead = ahead::spawn(&s.source, FileId(0), starts);
+    s
+}
+
+/// Statements of every kind that a guessed start could land inside: blocks in directives,
+/// declarations ending in `;`, macro bodies, comments and strings holding braces.
+const MIXED: &str = "#declare R = 0.5;\n\
+    sphere { <0,0,0>, R pigment { rgb <1,0,0> } }\n\
+    #if (R > 0) sphere { 1, R } box { 0, 1 } #else plane { y, 0 } #end\n\
+    #declare S = sphere { 0, 1 };\n\
+    /* } a comment { */ #macro M(A) sphere { A, 1 } #end\n\
+    M(<1,2,3>)\n\
+    #debug \"}\"\n\
+    object { S translate x }\n";
+
+#[test]
+fn parts_parsed_ahead_give_the_statements_of_one_thread_wherever_they_start() {
+    let one_thread = statement_dump(statements(MIXED.into(), FileId(0), 0).unwrap());
+    assert_eq!(one_thread.len(), 8);
+    // Every offset as a start (most are not statement ends), alone and with a second part.
+    for a in 1..MIXED.len() {
+        let dump = statement_dump(statements_with_parts(MIXED, &[a]));
+        assert_eq!(dump, one_thread, "one part at {a}");
+        for b in (a + 1..MIXED.len()).step_by(7) {
+            let dump = statement_dump(statements_with_parts(MIXED, &[a, b]));
+            assert_eq!(dump, one_thread, "parts at {a} and {b}");
+        }
+    }
+}
+
+#[test]
+fn a_syntax_error_in_a_part_parsed_ahead_ends_the_statements_as_with_one_thread() {
+    let text = "sphere { 0, 1 }\nbox { 0, 1 }\nsphere { 0, 1 \nplane { y, 0 }\n";
+    let one_thread = statement_dump(statements(text.into(), FileId(0), 0).unwrap());
+    assert!(
+        one_thread.last().unwrap().starts_with("Err"),
+        "{one_thread:?}"
+    );
+    for a in 1..text.len() {
+        assert_eq!(
+            statement_dump(statements_with_parts(text, &[a])),
+            one_thread,
+            "part at {a}"
+        );
+    }
+}
+
+#[test]
+fn statements_dropped_early_stop_their_helpers() {
+    let mut s = statements_with_parts(MIXED, &[MIXED.find("box").unwrap() + 12]);
+    assert!(s.next().is_some());
+    drop(s); // (Must return: the helpers are told to stop and joined.)
+}
+
+#[test]
+fn guessed_part_starts_are_ends_of_top_level_blocks() {
+    let text =
+        "sphere { 0, 1 }\n#if (1) box { 0, 1 } #end\n#declare S = sphere { 0, 1 };\nplane { y, 0 }";
+    let ends = check_nesting(text, FileId(0), 0).unwrap();
+    let expected: Vec<usize> = [
+        "sphere { 0, 1 }".len(),
+        text.find("#declare").unwrap() + "#declare S = sphere { 0, 1 }".len(),
+        text.len(),
+    ]
+    .to_vec();
+    assert_eq!(ends, expected);
+}
+
+#[test]
+fn a_literal_takes_the_fast_path_only_before_a_non_operator() {
+    // `<1,0,0> <0,0,1>` are two vectors (area_light), not a comparison.
+    let nodes = parse("light_source { 0, 1 area_light <1,0,0> <0,0,1>, 2, 2 }").expect("parses");
+    let area = &nodes[0].children[0];
+    assert!(matches!(area.args[0].kind, ExprKind::PlainVector(_, 3)));
+    assert!(matches!(area.args[1].kind, ExprKind::PlainVector(_, 3)));
+    // Followed by an operator, a literal is the start of a larger expression.
+    for (text, op) in [
+        ("1 + 2", BinOp::Add),
+        ("<1,2> * 2", BinOp::Mul),
+        ("2 < 3", BinOp::Lt),
+    ] {
+        let nodes = parse(&format!("#declare X = {text};")).expect("parses");
+        assert!(
+            matches!(&nodes[0].args[0].kind, ExprKind::Binary(o, _, _) if *o == op),
+            "{text}: {:?}",
+            nodes[0].args[0].kind
+        );
+    }
+    // At the end of the text (a macro body used as a value) it stands alone.
+    let value = parse_fragment_expr("0.5", FileId(0), 0).expect("parses");
+    assert!(matches!(value.expr.kind, ExprKind::Number(v) if v == 0.5));
+}
+
+#[test]
+fn colour_types_are_the_eight_of_povray() {
+    for word in [
+        "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft",
+    ] {
+        let nodes = parse(&format!("background {{ {word} 1 }}")).expect(word);
+        let ExprKind::Colour(parts) = &nodes[0].args[0].kind else {
+            panic!("{word}: a colour expected")
+        };
+        assert_eq!(parts.len(), 1, "{word}");
+    }
+    // A longer word is an identifier, not a colour type followed by letters.
+    let nodes = parse("background { rgbx }").expect("parses");
+    assert!(matches!(nodes[0].args[0].kind, ExprKind::Ident(_)));
+}

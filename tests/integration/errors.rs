@@ -11,6 +11,7 @@ fn bad_scenes_give_located_messages() {
             width: 320,
             height: 240,
             include_paths: vec![std::path::PathBuf::from("tests/scenes/err")],
+            ..Default::default()
         };
         let message = match trace::load_str(&name, text, &options) {
             Ok(_) => panic!("{} should not load", path.display()),

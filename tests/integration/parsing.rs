@@ -1,4 +1,5 @@
-//! The mesh2 fast path (src/syntax/bulk.rs) gives exactly what the grammar gives.
+//! The mesh2 fast path (src/syntax/bulk.rs) gives exactly what the grammar gives, and a big
+//! file parsed by several threads gives the scene one thread gives.
 
 use crate::load_text;
 
@@ -60,4 +61,38 @@ fn fast_path_errors_point_at_the_entry() {
         .expect_err("count mismatch")
         .to_string();
     assert!(err.contains("announces 145 entries but lists 144"), "{err}");
+}
+
+fn load_with_threads(text: &str, threads: usize) -> String {
+    let options = trace::LoadOptions {
+        width: 64,
+        height: 48,
+        threads: Some(threads),
+        ..Default::default()
+    };
+    let loaded = trace::load_str(std::path::Path::new("big.rt"), text.to_string(), &options)
+        .unwrap_or_else(|e| panic!("{e}"));
+    format!("{:?}", loaded.scene)
+}
+
+#[test]
+fn a_big_file_read_by_several_threads_is_the_scene_one_thread_reads() {
+    // Over the size where helpers start, with statements a guessed start may fall inside.
+    let mut text = String::from("#declare N = 0;\n#macro Ball(P) sphere { P, 0.1 } #end\n");
+    let mut i = 0;
+    while text.len() < 400_000 {
+        let (x, y) = ((i % 97) as f64 * 0.1, (i / 97) as f64 * 0.1);
+        text.push_str(&match i % 5 {
+            0 => format!("sphere {{ <{x},{y},1>, 0.05 pigment {{ rgb <{x},0.5,{y}> }} }}\n"),
+            1 => format!("#if (mod(N, 2) = 0) box {{ <{x},{y},0>, <{x},{y},0> + 0.05 }} #end\n"),
+            2 => format!("#declare B = sphere {{ <{x},{y},2>, 0.05 }};\nobject {{ B }}\n"),
+            3 => format!("Ball(<{x},{y},3>)\n#declare N = N + 1;\n"),
+            _ => format!("/* {{ */ cylinder {{ <{x},{y},4>, <{x},{y},5>, 0.01 }} // }}\n"),
+        });
+        i += 1;
+    }
+    let one = load_with_threads(&text, 1);
+    assert!(one.len() > 100_000, "the scene has its objects");
+    assert_eq!(load_with_threads(&text, 2), one);
+    assert_eq!(load_with_threads(&text, 4), one);
 }
