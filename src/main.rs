@@ -189,7 +189,10 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
     };
     let rendered = trace::render_owned(loaded.scene, &options)?;
     let traced = Instant::now();
-    rendered.film.write(output).map_err(Error::from)?;
+    rendered
+        .film
+        .write_with_threads(output, options.threads)
+        .map_err(Error::from)?;
     let done = Instant::now();
     if args.stats {
         eprint!(

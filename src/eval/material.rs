@@ -11,7 +11,8 @@ use std::sync::Arc;
 
 /// Appends a transformation to a pigment's placement.
 pub(super) fn move_pigment(p: &mut Pigment, t: Transform) {
-    p.transform = Some(p.transform.unwrap_or(Transform::IDENTITY).then(t));
+    let before = p.transform.take().map_or(Transform::IDENTITY, |b| *b);
+    p.transform = Some(Box::new(before.then(t)));
 }
 
 impl Evaluator<'_> {

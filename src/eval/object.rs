@@ -397,7 +397,7 @@ impl Evaluator<'_> {
                 .unwrap_or_else(|| self.default_texture.clone());
             self.objects.push(ir::Object {
                 shape: part.shape,
-                transform: part.transform,
+                transform: part.transform.map(Box::new),
                 texture,
                 interior: part.interior.or(object.interior).unwrap_or_default(),
                 no_shadow: part.no_shadow,

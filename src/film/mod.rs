@@ -122,11 +122,21 @@ impl Film {
 
     /// Writes the film; the extension picks the format.
     pub fn write(&self, path: &Path) -> Result<(), ImageError> {
+        self.write_with_threads(path, None)
+    }
+
+    /// Writes the film, compressing on one thread if `threads` is `Some(1)` (EXR blocks are
+    /// otherwise compressed on all cores; the file is the same).
+    pub fn write_with_threads(
+        &self,
+        path: &Path,
+        threads: Option<usize>,
+    ) -> Result<(), ImageError> {
         let format =
             Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
         let tmp = temp_path(path);
         let result = match format {
-            Format::Exr => self.write_exr(&tmp),
+            Format::Exr => self.write_exr(&tmp, threads != Some(1)),
             Format::Png => self.write_png(&tmp),
         };
         if let Err(e) = result {
@@ -142,21 +152,25 @@ impl Film {
         })
     }
 
-    fn write_exr(&self, path: &Path) -> Result<(), ImageError> {
+    fn write_exr(&self, path: &Path, parallel: bool) -> Result<(), ImageError> {
         use exr::prelude::*;
         let w = self.width as usize;
         let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
             let p = self.pixels[y * w + x];
             (p[0], p[1], p[2])
         });
-        Image::from_encoded_channels(
+        let image = Image::from_encoded_channels(
             (w, self.height as usize),
             Encoding::SMALL_LOSSLESS,
             channels,
-        )
-        .write()
-        .to_file(path)
-        .map_err(|e| ImageError::Format {
+        );
+        let writer = image.write();
+        let writer = if parallel {
+            writer
+        } else {
+            writer.non_parallel()
+        };
+        writer.to_file(path).map_err(|e| ImageError::Format {
             path: path.to_path_buf(),
             message: e.to_string(),
         })

@@ -170,7 +170,7 @@ pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
     /// World from object; `None` is the identity.
-    pub transform: Option<Transform>,
+    pub transform: Option<Box<Transform>>,
     /// The resolved surface.
     pub texture: Texture,
     /// What is inside (index of refraction, fade).
@@ -332,7 +332,7 @@ pub struct Pigment {
     /// World from pattern space: the pigment's own transformations, then those of its texture
     /// and of its object made after it was attached (POV-Ray moves a texture with its object
     /// only if it was attached first). `None` is the identity.
-    pub transform: Option<Transform>,
+    pub transform: Option<Box<Transform>>,
 }
 
 impl Pigment {

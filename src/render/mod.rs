@@ -248,23 +248,31 @@ fn render_block(
     }
 
     let n = depth.clamp(1, 9);
-    let step = 1.0 / n as f64;
+    // Grid offsets −½ + (k + ½)/n, written so that the middle one of an odd grid is exactly 0.
+    let offset = |k: u32| f64::from(2 * k + 1) / f64::from(2 * n) - 0.5;
     let supersample =
         |tracer: &mut Tracer, value: &mut [Rgb], encoded: &mut [Rgb], x: u32, y: u32| {
             // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
-            let mut sum = value[index(x, y)];
+            let centre_value = value[index(x, y)];
+            let mut sum = centre_value;
+            let mut traced = 0;
             for b in 0..n {
                 for a in 0..n {
-                    let ox = -0.5 + step / 2.0 + a as f64 * step;
-                    let oy = -0.5 + step / 2.0 + b as f64 * step;
+                    let (ox, oy) = (offset(a), offset(b));
+                    if ox == 0.0 && oy == 0.0 {
+                        // The centre ray again (no jitter): its colour is known.
+                        sum += centre_value;
+                        continue;
+                    }
                     tracer.counts.camera += 1;
+                    traced += 1;
                     let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
                     sum += trace_primary(tracer, &camera_interiors, &ray);
                 }
             }
             value[index(x, y)] = sum / (n * n + 1) as f64;
             encoded[index(x, y)] = aa_encoded(value[index(x, y)], scene.gamma);
-            (n * n) as u64
+            traced
         };
 
     for y in y0..y1 {

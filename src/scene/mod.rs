@@ -418,7 +418,7 @@ impl Scene {
             .zip(ids)
             .map(|(o, material)| {
                 let (shape, transform) =
-                    build_shape(&o.shape, o.transform.map(|t| t.matrix), &meshes);
+                    build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
                 let bounds = shape
                     .bounds()
                     .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()));
@@ -806,7 +806,7 @@ mod tests {
             lights: vec![],
             objects: vec![ir::Object {
                 shape,
-                transform: Some(ir::Transform { matrix: transform }),
+                transform: Some(Box::new(ir::Transform { matrix: transform })),
                 texture: ir::Texture::default(),
                 interior: ir::Interior::default(),
                 no_shadow: false,

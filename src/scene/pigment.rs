@@ -13,7 +13,7 @@ pub struct Pigment {
     /// The colours.
     pub pattern: Pattern,
     /// Pattern space from world space; `None` is the identity.
-    pub pattern_from_world: Option<DMat4>,
+    pub pattern_from_world: Option<Box<DMat4>>,
 }
 
 impl Pigment {
@@ -21,7 +21,7 @@ impl Pigment {
     pub fn new(p: &crate::ir::Pigment) -> Pigment {
         Pigment {
             pattern: p.pattern.clone(),
-            pattern_from_world: p.transform.map(|t| t.matrix.inverse()),
+            pattern_from_world: p.transform.as_ref().map(|t| Box::new(t.matrix.inverse())),
         }
     }
 
@@ -49,7 +49,10 @@ impl Pigment {
         if let Pattern::Solid(c) = &self.pattern {
             return *c;
         }
-        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        let q = self
+            .pattern_from_world
+            .as_ref()
+            .map_or(p, |m| m.transform_point3(p));
         match &self.pattern {
             Pattern::Solid(c) => *c,
             Pattern::Checker(cs) => {

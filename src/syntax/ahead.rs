@@ -78,8 +78,10 @@ pub(super) fn start(
     if helpers == 0 || source.len() < MIN_BYTES {
         return VecDeque::new();
     }
-    // Parsing is about 4/5 of reading a statement (evaluation the rest), so the caller's share
-    // is a little below an even split.
+    // The caller also evaluates, but a helper reads a statement about 1.4× slower than the
+    // caller (it keeps what it read in fresh memory until the caller arrives), so the caller
+    // takes the larger share: 0.6 of the file with one helper, which on 100k spheres has the
+    // caller arrive within a millisecond of the helper's end.
     let parts = helpers + 1;
     let first = 1.2 / parts as f64;
     let mut starts: Vec<usize> = Vec::new();
