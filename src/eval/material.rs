@@ -27,7 +27,7 @@ impl Evaluator<'_> {
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
                 NodeKind::Finish => {
-                    texture.finish = ev.finish_block(item, texture.finish.clone())?
+                    texture.finish = Arc::new(ev.finish_block(item, (*texture.finish).clone())?)
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;

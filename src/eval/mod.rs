@@ -260,8 +260,9 @@ impl<'a> Evaluator<'a> {
                             ev.default_texture.pigment = ev.pigment(child, base)?;
                         }
                         NodeKind::Finish => {
-                            let base = ev.default_texture.finish.clone();
-                            ev.default_texture.finish = ev.finish_block(child, base)?;
+                            let base = (*ev.default_texture.finish).clone();
+                            ev.default_texture.finish =
+                                std::sync::Arc::new(ev.finish_block(child, base)?);
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),
                     }
@@ -340,7 +341,7 @@ impl<'a> Evaluator<'a> {
                 Value::Pigment(self.pigment(node, base)?)
             }
             NodeKind::Finish => {
-                let base = self.default_texture.finish.clone();
+                let base = (*self.default_texture.finish).clone();
                 Value::Finish(self.finish_block(node, base)?)
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),

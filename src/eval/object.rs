@@ -332,7 +332,7 @@ impl Evaluator<'_> {
                 if m.kind == NodeKind::Pigment {
                     texture.pigment = self.pigment(m, texture.pigment.clone())?;
                 } else {
-                    texture.finish = self.finish_block(m, texture.finish.clone())?;
+                    texture.finish = Arc::new(self.finish_block(m, (*texture.finish).clone())?);
                 }
                 object.texture = Some(texture);
             }

@@ -317,8 +317,8 @@ impl Transform {
 pub struct Texture {
     /// Colour at each point.
     pub pigment: Pigment,
-    /// How light interacts with the surface.
-    pub finish: Finish,
+    /// How light interacts with the surface (shared: most objects keep the default).
+    pub finish: Arc<Finish>,
 }
 
 /// A pigment: a pattern of colours placed in space.
@@ -539,7 +539,7 @@ impl Default for Texture {
     fn default() -> Texture {
         Texture {
             pigment: Pigment::solid(Colour::default()),
-            finish: Finish::default(),
+            finish: Arc::new(Finish::default()),
         }
     }
 }

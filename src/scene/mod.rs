@@ -400,7 +400,7 @@ impl Scene {
             .into_iter()
             .map(|t| Material {
                 pigment: Pigment::new(&t.pigment),
-                finish: t.finish.clone(),
+                finish: (*t.finish).clone(),
             })
             .collect();
         // Each distinct mesh is built once, for all its instances (keyed by address).
