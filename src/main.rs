@@ -45,7 +45,8 @@ struct RenderArgs {
     /// Anti-aliasing grid size per axis, 1..=9 (POV-Ray +R).
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=9))]
     aa_depth: u32,
-    /// Worker threads (default: one per core). The image is the same for any count.
+    /// Worker threads for parsing big files, building and rendering (default: one per core).
+    /// The image is the same for any count.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
     /// Print nothing but errors and warnings.
