@@ -66,8 +66,7 @@ impl Drop for Part {
 }
 
 /// Starts up to `helpers` threads on later parts of `source`, given where its top-level blocks
-/// end. The caller parses the first part itself: it also evaluates every statement, so its
-/// part is the smallest.
+/// end. The caller parses the first part itself.
 pub(super) fn start(
     source: &Arc<str>,
     file: FileId,
