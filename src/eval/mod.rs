@@ -120,6 +120,21 @@ pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) ->
     ev.finish()
 }
 
+/// Moves a light: its position, the point it aims at and its area-light axes.
+pub(crate) fn transform_light(light: &mut ir::Light, m: &glam::DMat4) {
+    light.position = m.transform_point3(light.position);
+    match &mut light.kind {
+        ir::LightKind::Point => {}
+        ir::LightKind::Spot { point_at, .. } | ir::LightKind::Parallel { point_at } => {
+            *point_at = m.transform_point3(*point_at);
+        }
+    }
+    if let Some(a) = &mut light.area {
+        a.axis1 = m.transform_vector3(a.axis1);
+        a.axis2 = m.transform_vector3(a.axis2);
+    }
+}
+
 /// The evaluation state: declarations, defaults and the scene gathered so far.
 pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
@@ -396,7 +411,7 @@ impl<'a> Evaluator<'a> {
     }
 
     fn light(&mut self, node: &Node) -> Result<ir::Light> {
-        let mut position = self.vec3(&node.args[0])?;
+        let position = self.vec3(&node.args[0])?;
         // A light without a colour is black (POV-Ray accepts it silently).
         let colour = match node.args.get(1) {
             Some(e) => self.rgb_arg(e)?,
@@ -509,14 +524,6 @@ impl<'a> Evaluator<'a> {
             }
             (None, None) => {}
         }
-        if let Some(t) = transform {
-            position = t.matrix.transform_point3(position);
-            point_at = t.matrix.transform_point3(point_at);
-            if let Some(a) = &mut area {
-                a.axis1 = t.matrix.transform_vector3(a.axis1);
-                a.axis2 = t.matrix.transform_vector3(a.axis2);
-            }
-        }
         let kind = if parallel {
             ir::LightKind::Parallel { point_at }
         } else if spot {
@@ -534,14 +541,18 @@ impl<'a> Evaluator<'a> {
             distance: fade_distance,
             power: fade_power,
         });
-        Ok(ir::Light {
+        let mut light = ir::Light {
             position,
             colour,
             kind,
             shadowless,
             fade,
             area,
-        })
+        };
+        if let Some(t) = transform {
+            transform_light(&mut light, &t.matrix);
+        }
+        Ok(light)
     }
 
     fn camera_items(&mut self, node: &Node, mut c: CameraItems) -> Result<CameraItems> {

@@ -33,6 +33,8 @@ pub struct ObjectValue {
     texture: Option<Texture>,
     /// The object's (or group's) interior, applied to parts without their own.
     interior: Option<Interior>,
+    /// Light sources inside a `union` (or an `object {}`): they move with it.
+    lights: Vec<ir::Light>,
 }
 
 /// Whether a node is a directive (run by `each_item` wherever it stands).
@@ -96,6 +98,7 @@ impl ObjectValue {
             }],
             texture: None,
             interior: None,
+            lights: Vec::new(),
         }
     }
 
@@ -104,6 +107,7 @@ impl ObjectValue {
             parts: Vec::new(),
             texture: None,
             interior: None,
+            lights: Vec::new(),
         }
     }
 
@@ -117,6 +121,9 @@ impl ObjectValue {
         }
         if let Some(tex) = &mut self.texture {
             move_pigment(&mut tex.pigment, t);
+        }
+        for light in &mut self.lights {
+            super::transform_light(light, &t.matrix);
         }
     }
 }
@@ -263,10 +270,15 @@ impl Evaluator<'_> {
                 modifiers = &[];
                 let mut group = ObjectValue::empty();
                 self.each_item(&node.children, &mut |ev, item| {
+                    if item.kind == NodeKind::LightSource {
+                        group.lights.push(ev.light(item)?);
+                        return Ok(());
+                    }
                     if !is_object(item.kind) {
                         return ev.object_modifier(&mut group, item, false);
                     }
                     let m = ev.object(item)?;
+                    group.lights.extend(m.lights);
                     for mut part in m.parts {
                         part.texture = part.texture.or_else(|| m.texture.clone());
                         part.interior = part.interior.or(m.interior);
@@ -281,6 +293,11 @@ impl Evaluator<'_> {
                 modifiers = rest;
                 match first.kind {
                     NodeKind::MacroCall => self.macro_object(first)?,
+                    NodeKind::LightSource => {
+                        let mut light = ObjectValue::empty();
+                        light.lights.push(self.light(first)?);
+                        light
+                    }
                     NodeKind::IdentRef => match self.lookup(first)? {
                         Value::Object(o) => *o,
                         other => return Err(type_error("an object", &other, first.span)),
@@ -388,8 +405,9 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// Adds the object's parts to the scene.
+    /// Adds the object's parts (and the lights it holds) to the scene.
     pub(super) fn place(&mut self, object: ObjectValue) {
+        self.lights.extend(object.lights);
         for part in object.parts {
             let texture = part
                 .texture

@@ -312,3 +312,45 @@ fn back_side_diffuse_lights_a_surface_from_behind() {
     );
     assert_close(centre_pixel(&scene), [0.3; 3], 1e-6);
 }
+
+#[test]
+fn lights_in_a_union_move_with_it() {
+    // A spotlight in a rotated, translated union, against the same light placed by hand.
+    let grouped = "union { light_source { <1, 2, 3> rgb 1 spotlight point_at <1, 0, 3> \
+                   area_light x, z, 2, 2 } sphere { 0, 1 } rotate 90*y translate <0, 5, 0> }";
+    let placed = "light_source { <3, 7, -1> rgb 1 spotlight point_at <3, 5, -1> \
+                  area_light -z, x, 2, 2 } sphere { 0, 1 translate <0, 5, 0> }";
+    let a = crate::load_text(grouped, 8, 8);
+    let b = crate::load_text(placed, 8, 8);
+    assert_eq!(a.lights.len(), 1);
+    let close = |u: glam::DVec3, v: glam::DVec3| (u - v).length() < 1e-12;
+    assert!(
+        close(a.lights[0].position, b.lights[0].position),
+        "{:?}",
+        a.lights[0]
+    );
+    let (
+        trace::ir::LightKind::Spot { point_at: pa, .. },
+        trace::ir::LightKind::Spot { point_at: pb, .. },
+    ) = (&a.lights[0].kind, &b.lights[0].kind)
+    else {
+        panic!("spotlights expected")
+    };
+    assert!(close(*pa, *pb));
+    let (aa, ab) = (
+        a.lights[0].area.as_ref().unwrap(),
+        b.lights[0].area.as_ref().unwrap(),
+    );
+    assert!(close(aa.axis1, ab.axis1) && close(aa.axis2, ab.axis2));
+    // The union's sphere is placed too; a light alone in `object {}` moves as well.
+    assert_eq!(a.objects.len(), 1);
+    let lone = crate::load_text(
+        "object { light_source { 0, rgb 1 } translate <1, 2, 3> }",
+        8,
+        8,
+    );
+    assert!(close(
+        lone.lights[0].position,
+        glam::DVec3::new(1.0, 2.0, 3.0)
+    ));
+}
