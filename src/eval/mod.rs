@@ -591,9 +591,24 @@ impl<'a> Evaluator<'a> {
                     let t = ev.transform(item)?;
                     c.transform = Some(c.transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
-                NodeKind::Unknown if item.word == "cylinder" => {
+                NodeKind::Unknown
+                    if matches!(
+                        item.word.as_str(),
+                        "cylinder"
+                            | "fisheye"
+                            | "ultra_wide_angle"
+                            | "omnimax"
+                            | "panoramic"
+                            | "spherical"
+                            | "mesh_camera"
+                            | "user_defined"
+                    ) =>
+                {
                     return Err(Diagnostic::error(
-                        "unsupported: the cylinder camera (this camera type is outside trace's subset)",
+                        format!(
+                            "unsupported: the {} camera (this camera type is outside trace's subset)",
+                            item.word
+                        ),
                         item.word_span,
                     ));
                 }
