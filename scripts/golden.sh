@@ -9,6 +9,7 @@
 # For each scene NAME it writes, at 320x240:
 #   golden/povray/NAME.exr     one centre ray per pixel (-A)
 #   golden/povray/NAME.aa.exr  deterministic supersampling (+A0.0 +R3 -J)
+#   golden/povray/NAME.am2.exr anti-aliasing method 2 (+AM2 +A0.1 +R3 -J)
 # and rewrites golden/povray/COMMANDS.md with the POV-Ray version and the exact
 # command lines. POV-Ray runs with the scene's folder as its working directory
 # (it resolves #include and image files against the cwd, not the scene's folder).
@@ -23,6 +24,7 @@ HEIGHT=240
 COMMON=(+FE "+W$WIDTH" "+H$HEIGHT" -D -GA)
 PLAIN=(-J -A)
 AA=(+A0.0 +R3 -J)
+AM2=(+AM2 +A0.1 +R3 -J)
 
 # Install POV-Ray if it is missing (Debian/Ubuntu).
 if ! command -v povray >/dev/null 2>&1; then
@@ -139,6 +141,7 @@ for scene in "${scenes[@]}"; do
     echo "rendering $name" >&2
     render "$scene" "$OUT_DIR/$name.exr" "${PLAIN[@]}"
     render "$scene" "$OUT_DIR/$name.aa.exr" "${AA[@]}"
+    render "$scene" "$OUT_DIR/$name.am2.exr" "${AM2[@]}"
 done
 
 # COMMANDS.md lists the commands for every reference in the folder, so a run on
@@ -157,6 +160,8 @@ done
     echo "- \`NAME.exr\`: one centre ray per pixel (\`${PLAIN[*]}\`)."
     echo "- \`NAME.aa.exr\`: anti-aliasing method 1, threshold 0, depth 3, no jitter"
     echo "  (\`${AA[*]}\`): every pixel is (centre + 3x3 grid) / 10."
+    echo "- \`NAME.am2.exr\`: anti-aliasing method 2, threshold 0.1, depth 3, no jitter"
+    echo "  (\`${AM2[*]}\`): corners shared between pixels, squares split where they differ."
     echo "- A scene using trace's \`mesh_file\` extension is given to POV-Ray rewritten: each"
     echo "  mesh file becomes a mesh2 include (\`trace convert FILE -o TraceMesh_STEM.inc"
     echo "  --name TraceMesh_STEM\`) and \`mesh_file { \"FILE\"\` becomes \`object { TraceMesh_STEM\`."
@@ -169,6 +174,7 @@ done
         file="$(basename "$exr")"
         case "$file" in
             *.aa.exr) name="${file%.aa.exr}"; switches=("${AA[@]}") ;;
+            *.am2.exr) name="${file%.am2.exr}"; switches=("${AM2[@]}") ;;
             *)        name="${file%.exr}";    switches=("${PLAIN[@]}") ;;
         esac
         scene="$ROOT/examples/$name.rt"

@@ -3,7 +3,7 @@
 
 For each chart scene (six examples and two scenes of the speed table), both renderers render a converged reference (anti-aliasing method 1,
 threshold 0, depth 8: 65 samples in every pixel, no jitter) and a sweep of quality settings
-(no anti-aliasing; thresholds 0.3, 0.1 and 0 at several depths; POV-Ray's method 2 too). Each
+(no anti-aliasing; thresholds 0.3, 0.1 and 0 at several depths; method 2 too, in both). Each
 image is compared with *its own renderer's* reference (mean FLIP and RMSE), so the curves show
 sampling error against time; the FLIP between the two references (the renderers' remaining
 difference) is recorded beside them. Times are end-to-end wall times in the same run.
@@ -25,7 +25,8 @@ WIDTH = int(os.environ.get("WIDTH", 320))
 HEIGHT = int(os.environ.get("HEIGHT", 240))
 SCENES = ["basic_spheres", "mirrors", "glass", "lights", "meshes", "transparent", "speed:spheres", "speed:terrain"]
 REFERENCE = ("0.0", "8")
-TRACE_SWEEP = [("off", None), ("0.3", "3"), ("0.1", "3"), ("0.0", "2"), ("0.0", "3"), ("0.0", "4"), ("0.0", "6")]
+TRACE_SWEEP = [("1", "off", None), ("1", "0.3", "3"), ("1", "0.1", "3"), ("1", "0.0", "2"), ("1", "0.0", "3"), ("1", "0.0", "4"),
+               ("1", "0.0", "6"), ("2", "0.3", "3"), ("2", "0.1", "3"), ("2", "0.0", "3")]
 POV_SWEEP = [("1", None, None), ("1", "0.3", "3"), ("1", "0.1", "3"), ("1", "0.0", "2"), ("1", "0.0", "3"),
              ("1", "0.0", "4"), ("1", "0.0", "6"), ("2", "0.3", "3"), ("2", "0.1", "3"), ("2", "0.0", "3")]
 
@@ -37,10 +38,12 @@ def timed(cmd, cwd):
     return float([l for l in p.stderr.splitlines() if l.startswith("TIME ")][-1].split()[1])
 
 
-def trace_render(scene, out, aa, depth):
+def trace_render(scene, out, aa, depth, method="1"):
     cmd = [TRACE, scene, "-o", out, "--width", str(WIDTH), "--height", str(HEIGHT), "--quiet", "--aa", aa]
     if depth:
         cmd += ["--aa-depth", depth]
+    if method != "1":
+        cmd += ["--aa-method", method]
     return timed(cmd, os.path.dirname(scene))
 
 
@@ -61,8 +64,8 @@ def chart(rows, path):
     pw, ph, gap_x, gap_y, left, top = 260, 200, 70, 70, 60, 40
     w = left + cols * (pw + gap_x)
     h = top + math.ceil(len(scenes) / cols) * (ph + gap_y) + 40
-    styles = {"trace, method 1": ("#d62728", ""), "POV-Ray, method 1": ("#1f77b4", "6,4"),
-              "POV-Ray, method 2": ("#2ca02c", "2,3")}
+    styles = {"trace, method 1": ("#d62728", ""), "trace, method 2": ("#ff7f0e", "9,3,2,3"),
+              "POV-Ray, method 1": ("#1f77b4", "6,4"), "POV-Ray, method 2": ("#2ca02c", "2,3")}
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">' % (w, h),
            '<rect width="100%" height="100%" fill="white"/>',
            '<text x="%d" y="20" text-anchor="middle" font-size="14">mean FLIP against each renderer\'s converged image, against end-to-end time (log-log), %d×%d</text>' % (w / 2, WIDTH, HEIGHT)]
@@ -134,11 +137,12 @@ def main():
             cross, _ = compare(p_ref, t_ref)
             refs.append((name, tt, pt, cross))
             print("%-14s references: trace %.2f s, POV-Ray %.2f s, FLIP between them %.4f" % (name, tt, pt, cross), flush=True)
-            for aa, depth in TRACE_SWEEP:
+            for method, aa, depth in TRACE_SWEEP:
                 out = os.path.join(tmp, "t.exr")
-                s = trace_render(scene, out, aa, depth)
+                s = trace_render(scene, out, aa, depth, method)
                 f, r = compare(t_ref, out)
-                rows.append({"scene": name, "curve": "trace, method 1", "setting": "--aa %s%s" % (aa, " --aa-depth " + depth if depth else ""),
+                setting = "--aa %s%s%s" % (aa, " --aa-depth " + depth if depth else "", " --aa-method 2" if method == "2" else "")
+                rows.append({"scene": name, "curve": "trace, method %s" % method, "setting": setting,
                              "seconds": "%.3f" % s, "flip": "%.6f" % f, "rmse": "%.6f" % r})
             for method, threshold, depth in POV_SWEEP:
                 out = os.path.join(tmp, "p.exr")

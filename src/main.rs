@@ -39,12 +39,17 @@ struct RenderArgs {
     #[arg(long, default_value_t = 600, value_parser = clap::value_parser!(u32).range(1..=65536))]
     height: u32,
     /// Anti-aliasing: `off` (one ray per pixel centre, POV-Ray -A) or a threshold (POV-Ray
-    /// +A<threshold> -J, method 1; 0 supersamples every pixel).
+    /// +A<threshold> -J; 0 supersamples every pixel).
     #[arg(long, default_value = "0.3", value_parser = parse_aa)]
     aa: AaSetting,
-    /// Anti-aliasing grid size per axis, 1..=9 (POV-Ray +R).
+    /// Anti-aliasing depth, 1..=9 (POV-Ray +R): the grid size per axis for method 1, the
+    /// number of levels for method 2.
     #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=9))]
     aa_depth: u32,
+    /// Anti-aliasing method (POV-Ray +AM): 1, a grid in pixels that differ from a neighbour;
+    /// 2, corners shared between pixels, squares split where their corners differ.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=2))]
+    aa_method: u32,
     /// Worker threads for parsing big files, building and rendering (default: one per core).
     /// The image is the same for any count.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
@@ -177,6 +182,10 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
     let parsed = Instant::now();
     let antialias = match args.aa {
         AaSetting::Off => Antialias::Off,
+        AaSetting::Threshold(threshold) if args.aa_method == 2 => Antialias::Recursive {
+            threshold,
+            depth: args.aa_depth,
+        },
         AaSetting::Threshold(threshold) => Antialias::Adaptive {
             threshold,
             depth: args.aa_depth,

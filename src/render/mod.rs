@@ -22,7 +22,7 @@ const BLOCK_SIZE: u32 = 32;
 /// POV-Ray's gamma for anti-aliasing colour comparisons (`+AG`).
 const AA_COMPARISON_GAMMA: f64 = 2.5;
 
-/// Anti-aliasing (POV-Ray method 1, without jitter).
+/// Anti-aliasing (POV-Ray's methods 1 and 2, without jitter).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Antialias {
     /// One ray through each pixel centre (POV-Ray `-A`).
@@ -34,6 +34,16 @@ pub enum Antialias {
         /// Colour-difference threshold (sum over channels, gamma-2.5 encoded).
         threshold: f64,
         /// Grid size per axis (1..=9).
+        depth: u32,
+    },
+    /// POV-Ray's method 2 (`+AM2 +A<threshold> +R<depth> -J`): the pixel corners are traced
+    /// (shared with the neighbours); a square whose corners differ by at least `threshold` is
+    /// split in four (edge mid-points and centre traced) down to `depth − 1` times, and the
+    /// pixel is the mean of its squares, each the mean of its corners.
+    Recursive {
+        /// Colour-difference threshold (as for [`Antialias::Adaptive`]).
+        threshold: f64,
+        /// Subdivision depth (1..=9): at most `depth − 1` splits.
         depth: u32,
     },
 }
@@ -117,6 +127,67 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
         tests,
         samples,
         build_time: std::time::Duration::ZERO,
+    }
+}
+
+/// Method 2's samples: points of a grid `steps` times finer than the pixels, traced once each
+/// (a block traces the corners on its border again: the same rays, so the same colours).
+struct Corners<'a> {
+    scene: &'a Scene,
+    options: &'a RenderOptions,
+    camera_interiors: &'a Option<Interiors>,
+    /// Grid points per pixel along each axis (2^(depth − 1)).
+    steps: i64,
+    threshold: f64,
+    /// Colour and encoded colour at each traced grid point.
+    points: std::collections::HashMap<(i64, i64), (Rgb, Rgb)>,
+    samples: u64,
+}
+
+impl Corners<'_> {
+    /// The colour at grid point (gx, gy): pixel coordinates gx/steps − ½, gy/steps − ½.
+    fn point(&mut self, tracer: &mut Tracer, gx: i64, gy: i64) -> (Rgb, Rgb) {
+        if let Some(&known) = self.points.get(&(gx, gy)) {
+            return known;
+        }
+        let s = self.steps as f64;
+        let (w, h) = (self.options.width, self.options.height);
+        let ray = camera_ray(self.scene, w, h, gx as f64 / s - 0.5, gy as f64 / s - 0.5);
+        tracer.counts.camera += 1;
+        self.samples += 1;
+        let value = trace_primary(tracer, self.camera_interiors, &ray);
+        let traced = (value, aa_encoded(value, self.scene.gamma));
+        self.points.insert((gx, gy), traced);
+        traced
+    }
+
+    /// The colour of the square with top-left grid point (gx, gy) and side `size`, split at
+    /// most `level` more times.
+    fn square(&mut self, tracer: &mut Tracer, gx: i64, gy: i64, size: i64, level: u32) -> Rgb {
+        let c = [
+            (gx, gy),
+            (gx + size, gy),
+            (gx, gy + size),
+            (gx + size, gy + size),
+        ]
+        .map(|(x, y)| self.point(tracer, x, y));
+        let differs =
+            level > 0 && (0..4).any(|i| (i + 1..4).any(|j| differ(c[i].1, c[j].1, self.threshold)));
+        if !differs {
+            return (c[0].0 + c[1].0 + c[2].0 + c[3].0) / 4.0;
+        }
+        let half = size / 2;
+        let quadrants = [
+            (gx, gy),
+            (gx + half, gy),
+            (gx, gy + half),
+            (gx + half, gy + half),
+        ];
+        quadrants
+            .iter()
+            .map(|&(x, y)| self.square(tracer, x, y, half, level - 1))
+            .fold(Rgb::ZERO, |sum, v| sum + v)
+            / 4.0
     }
 }
 
@@ -213,6 +284,39 @@ fn render_block(
     let mut done = vec![false; gw * gh];
     let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
 
+    if let Antialias::Recursive { threshold, depth } = options.antialias {
+        let mut corners = Corners {
+            scene,
+            options,
+            camera_interiors: &camera_interiors,
+            steps: 1 << (depth.clamp(1, 9) - 1),
+            threshold,
+            points: std::collections::HashMap::new(),
+            samples: 0,
+        };
+        let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+        for y in y0..y1 {
+            for x in x0..x1 {
+                let (s, level) = (corners.steps, depth.clamp(1, 9) - 1);
+                pixels.push(corners.square(
+                    &mut tracer,
+                    i64::from(x) * s,
+                    i64::from(y) * s,
+                    s,
+                    level,
+                ));
+            }
+        }
+        return BlockResult {
+            x0,
+            y0,
+            width: x1 - x0,
+            pixels,
+            counts: tracer.counts,
+            tests: counters::take(),
+            samples: corners.samples,
+        };
+    }
     let Antialias::Adaptive { threshold, depth } = options.antialias else {
         let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
         for y in y0..y1 {

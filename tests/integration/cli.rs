@@ -72,17 +72,51 @@ fn unknown_output_format_exits_2() {
 
 #[test]
 fn bad_arguments_exit_2() {
-    let output = trace()
+    for bad in [["--aa", "sometimes"], ["--aa-method", "3"]] {
+        let output = trace()
+            .args(["examples/basic_spheres.rt", "-o", "x.png"])
+            .args(bad)
+            .output()
+            .expect("runs");
+        assert_eq!(output.status.code(), Some(2), "{bad:?}");
+    }
+}
+
+#[test]
+fn aa_method_2_renders_as_the_library_does() {
+    let dir = temp_dir("method2");
+    let out = dir.join("m2.exr");
+    let status = trace()
+        .args(["examples/mirrors.rt", "-o"])
+        .arg(&out)
         .args([
-            "examples/basic_spheres.rt",
-            "-o",
-            "x.png",
+            "--width",
+            "48",
+            "--height",
+            "36",
             "--aa",
-            "sometimes",
+            "0.1",
+            "--aa-method",
+            "2",
+            "--quiet",
         ])
-        .output()
+        .current_dir(crate::root())
+        .status()
         .expect("runs");
-    assert_eq!(output.status.code(), Some(2));
+    assert!(status.success());
+    let text = std::fs::read_to_string(crate::root().join("examples/mirrors.rt")).unwrap();
+    let scene = crate::load_text(&text, 48, 36);
+    let options = trace::RenderOptions {
+        width: 48,
+        height: 36,
+        antialias: trace::Antialias::Recursive {
+            threshold: 0.1,
+            depth: 3,
+        },
+        threads: None,
+    };
+    let expected = trace::render(&scene, &options).expect("renders").film;
+    assert_eq!(trace::Film::read(&out).expect("readable"), expected);
 }
 
 #[test]
