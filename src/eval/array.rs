@@ -205,6 +205,17 @@ impl Evaluator<'_> {
         self.element(&node.word, node.word_span, &subs, node.span)
     }
 
+    /// `#ifdef (A[i])`: whether the element has been assigned (out of range is an error, as in
+    /// POV-Ray).
+    pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
+        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        let pos = self.element_position(&node.word, node.word_span, &subs)?;
+        let Some(Value::Array(array)) = self.env.get(&node.word) else {
+            unreachable!("element_position checked that the name is an array");
+        };
+        Ok(array.items[pos].is_some())
+    }
+
     /// `#declare A[i]… = value`.
     pub(super) fn assign_element(
         &mut self,

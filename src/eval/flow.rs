@@ -80,7 +80,12 @@ impl<'a> Evaluator<'a> {
                 }
             }
             NodeKind::IfDef => {
-                let defined = self.env.contains_key(&item.children[0].word);
+                let name = &item.children[0];
+                let defined = if name.children.is_empty() {
+                    self.env.contains_key(&name.word)
+                } else {
+                    self.element_assigned(name)?
+                };
                 let wanted = item.word == "ifdef";
                 if defined == wanted {
                     return self.each_item(&item.children[1].children, f);

@@ -33,6 +33,18 @@ impl Evaluator<'_> {
                     let t = ev.transform(item)?;
                     move_pigment(&mut texture.pigment, t);
                 }
+                NodeKind::Unknown
+                    if matches!(item.word.as_str(), "checker" | "gradient" | "image_map") =>
+                {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "unsupported: a `{}` pattern of textures (patterns of textures and \
+                             texture_map are outside trace's subset; a `{}` pigment is supported)",
+                            item.word, item.word
+                        ),
+                        item.word_span,
+                    ));
+                }
                 _ => return Err(ev.unknown_item(item, "texture")),
             }
             Ok(())

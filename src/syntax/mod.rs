@@ -762,7 +762,9 @@ impl Lower {
             Rule::deprecation => NodeKind::Deprecation,
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
-            Rule::unknown_item | Rule::leftover | Rule::cylinder_camera => NodeKind::Unknown,
+            Rule::unknown_item | Rule::leftover | Rule::cylinder_camera | Rule::texture_pattern => {
+                NodeKind::Unknown
+            }
             other => unreachable!("rule {other:?} is not a node"),
         };
         let mut node = Node {
