@@ -140,21 +140,29 @@ impl Evaluator<'_> {
         }
         let mut entries = Vec::new();
         for entry in &node.children {
-            let value = self.float(&entry.args[0])?;
-            let v = self.eval(&entry.args[1])?;
-            let colour = to_colour(
-                colour5(&v).ok_or_else(|| type_error("a colour", &v, entry.args[1].span))?,
-            );
-            if entries
-                .last()
-                .is_some_and(|(last, _): &(f64, Colour)| value < *last)
-            {
-                return Err(Diagnostic::error(
-                    "color_map values must not decrease",
-                    entry.args[0].span,
-                ));
+            // `[v C]`, or the old range form `[v1, v2 C1 C2]`, which is `[v1 C1] [v2 C2]`.
+            let points = match entry.args.as_slice() {
+                [v, c] => vec![(v, c)],
+                [v1, v2, c1, c2] => vec![(v1, c1), (v2, c2)],
+                _ => unreachable!("the grammar gives a map entry 2 or 4 expressions"),
+            };
+            for (value_expr, colour_expr) in points {
+                let value = self.float(value_expr)?;
+                let v = self.eval(colour_expr)?;
+                let colour = to_colour(
+                    colour5(&v).ok_or_else(|| type_error("a colour", &v, colour_expr.span))?,
+                );
+                if entries
+                    .last()
+                    .is_some_and(|(last, _): &(f64, Colour)| value < *last)
+                {
+                    return Err(Diagnostic::error(
+                        "color_map values must not decrease",
+                        value_expr.span,
+                    ));
+                }
+                entries.push((value, colour));
             }
-            entries.push((value, colour));
         }
         if entries.is_empty() {
             return Err(Diagnostic::error(

@@ -362,3 +362,13 @@ fn lights_in_a_union_move_with_it() {
         glam::DVec3::new(1.0, 2.0, 3.0)
     ));
 }
+
+#[test]
+fn old_colour_map_ranges_are_two_entries_each() {
+    let old = "plane { z, 0 pigment { gradient x color_map { [0.2, 0.6 color rgb x color rgb z] \
+               [0.6, 1 color rgb y color rgb 1] } } }";
+    let new = "plane { z, 0 pigment { gradient x color_map { [0.2 color rgb x] [0.6 color rgb z] \
+               [0.6 color rgb y] [1 color rgb 1] } } }";
+    let (a, b) = (crate::load_text(old, 8, 8), crate::load_text(new, 8, 8));
+    assert_eq!(a.objects[0].texture, b.objects[0].texture);
+}
