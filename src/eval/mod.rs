@@ -147,6 +147,7 @@ pub(crate) struct Evaluator<'a> {
     /// The scene file's folder: relative image files are read from here.
     base_dir: std::path::PathBuf,
     sky_sphere: Option<ir::Pigment>,
+    fogs: Vec<ir::Fog>,
     env: HashMap<String, Value>,
     version: Option<f64>,
     assumed_gamma: Option<f64>,
@@ -180,6 +181,7 @@ impl<'a> Evaluator<'a> {
             debug_output: String::new(),
             base_dir,
             sky_sphere: None,
+            fogs: Vec::new(),
             env: HashMap::new(),
             version: None,
             assumed_gamma: None,
@@ -292,6 +294,10 @@ impl<'a> Evaluator<'a> {
                 let light = self.light(node)?;
                 self.lights.push(light);
             }
+            NodeKind::Fog => {
+                let fog = self.fog(node)?;
+                self.fogs.push(fog);
+            }
             NodeKind::Background => {
                 let v = self.eval(&node.args[0])?;
                 let c = colour5(&v)
@@ -366,6 +372,7 @@ impl<'a> Evaluator<'a> {
                 Value::Material(texture, interior)
             }
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
+            NodeKind::Fog => Value::Fog(Box::new(self.fog(node)?)),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
@@ -408,6 +415,101 @@ impl<'a> Evaluator<'a> {
             Ok(())
         })?;
         Ok(())
+    }
+
+    /// `fog { [F] items }`, with POV-Ray's defaults (distance 0: no fog; black; constant).
+    fn fog(&mut self, node: &Node) -> Result<ir::Fog> {
+        let mut fog = ir::Fog {
+            distance: 0.0,
+            colour: ir::Colour::default(),
+            kind: ir::FogKind::Constant,
+        };
+        let (mut ground, mut offset, mut alt, mut up) = (false, 0.0, 0.0, DVec3::Y);
+        let mut alt_span = node.word_span;
+        self.each_item(&node.children, &mut |ev, item| {
+            let arg = |i: usize| &item.args[i];
+            match item.kind {
+                NodeKind::IdentRef => match ev.lookup(item)? {
+                    Value::Fog(declared) => {
+                        fog = *declared;
+                        if let ir::FogKind::Ground {
+                            offset: o,
+                            alt: a,
+                            up: u,
+                        } = fog.kind
+                        {
+                            (ground, offset, alt, up) = (true, o, a, u);
+                        }
+                    }
+                    other => return Err(expr::type_error("a fog", &other, item.span)),
+                },
+                NodeKind::FogDistance => fog.distance = ev.float(arg(0))?,
+                NodeKind::FogType => {
+                    let t = ev.float(arg(0))?.trunc();
+                    if t != 1.0 && t != 2.0 {
+                        ev.warn(Diagnostic::warning(
+                            "unknown fog_type: constant fog is used (as POV-Ray does)",
+                            arg(0).span,
+                        ));
+                    }
+                    ground = t == 2.0;
+                }
+                NodeKind::FogAlt => {
+                    alt = ev.float(arg(0))?;
+                    alt_span = arg(0).span;
+                }
+                NodeKind::FogOffset => offset = ev.float(arg(0))?,
+                // (Only matters with turbulence, which trace does not render.)
+                NodeKind::TurbDepth => {
+                    ev.float(arg(0))?;
+                }
+                NodeKind::Up => up = ev.vec3(arg(0))?,
+                NodeKind::Translate => ev.warn(Diagnostic::warning(
+                    "a fog's up vector can't be translated (ignored, as in POV-Ray)",
+                    item.word_span,
+                )),
+                _ if Self::is_transform(item) => {
+                    let t = ev.transform(item)?;
+                    up = t.matrix.transform_vector3(up);
+                }
+                NodeKind::FogColour => {
+                    let v = ev.eval(arg(0))?;
+                    if let Value::Float(d) = v {
+                        ev.warn(Diagnostic::warning(
+                            "should use the distance keyword (a bare number is the fog's distance)",
+                            arg(0).span,
+                        ));
+                        fog.distance = d;
+                    } else {
+                        let c = colour5(&v)
+                            .ok_or_else(|| expr::type_error("a colour", &v, arg(0).span))?;
+                        fog.colour = value::to_colour(c);
+                    }
+                }
+                _ => return Err(ev.unknown_item(item, "fog")),
+            }
+            Ok(())
+        })?;
+        if ground {
+            if alt == 0.0 {
+                return Err(Diagnostic::error(
+                    "ground fog (fog_type 2) needs a non-zero fog_alt (POV-Ray divides by it)",
+                    alt_span,
+                ));
+            }
+            if up.length() == 0.0 {
+                return Err(Diagnostic::error(
+                    "a fog's up vector must not be zero",
+                    node.word_span,
+                ));
+            }
+            fog.kind = ir::FogKind::Ground {
+                offset,
+                alt,
+                up: up.normalize(),
+            };
+        }
+        Ok(fog)
     }
 
     fn light(&mut self, node: &Node) -> Result<ir::Light> {
@@ -650,6 +752,7 @@ impl<'a> Evaluator<'a> {
                 objects: self.objects,
                 background: self.background,
                 sky_sphere: self.sky_sphere,
+                fogs: self.fogs,
                 settings: self.settings,
             },
             warnings: self.warnings,

@@ -23,6 +23,8 @@ struct Part {
     interior: Option<Interior>,
     inverse: bool,
     no_shadow: bool,
+    /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
+    hollow: Option<bool>,
 }
 
 /// An object while it is being built: one shape, or the flattened members of a union.
@@ -95,6 +97,7 @@ impl ObjectValue {
                 interior: None,
                 inverse: false,
                 no_shadow: false,
+                hollow: None,
             }],
             texture: None,
             interior: None,
@@ -357,7 +360,16 @@ impl Evaluator<'_> {
                 let base = object.interior.unwrap_or_default();
                 object.interior = Some(self.interior(m, base)?);
             }
-            // `hollow off`, `no_shadow false` …: the flag is not set.
+            NodeKind::Flag if m.word == "hollow" => {
+                let on = m
+                    .args
+                    .first()
+                    .is_none_or(|e| !matches!(e.kind, ExprKind::Number(v) if v == 0.0));
+                for part in &mut object.parts {
+                    part.hollow.get_or_insert(on);
+                }
+            }
+            // `no_shadow false` …: the flag is not set.
             NodeKind::Flag
                 if m.args
                     .first()
@@ -365,9 +377,9 @@ impl Evaluator<'_> {
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
                 "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),
-                // `hollow` only matters for media, which trace does not render; `sturm` picks
-                // POV-Ray's slower root solver, and trace's torus solver is always robust.
-                "hollow" | "sturm" => {}
+                // `sturm` picks POV-Ray's slower root solver; trace's torus solver is always
+                // robust.
+                "sturm" => {}
                 "open" if is_cone => {}
                 "open" => {
                     return Err(Diagnostic::error(
@@ -420,6 +432,7 @@ impl Evaluator<'_> {
                 interior: part.interior.or(object.interior).unwrap_or_default(),
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
+                hollow: part.hollow.unwrap_or(false),
             });
         }
     }

@@ -45,6 +45,7 @@ pub enum Value {
     Transform(ir::Transform),
     Camera(Box<super::CameraItems>),
     Interior(ir::Interior),
+    Fog(Box<ir::Fog>),
     /// `material {…}`: a texture and an interior, each only if given.
     Material(Option<ir::Texture>, Option<ir::Interior>),
     ColourMap(ir::ColourMap),
@@ -76,6 +77,7 @@ impl Value {
             Value::Transform(_) => "a transform",
             Value::Camera(_) => "a camera",
             Value::Interior(_) => "an interior",
+            Value::Fog(_) => "a fog",
             Value::Material(..) => "a material",
             Value::ColourMap(_) => "a color_map",
             Value::Str(_) => "a string",

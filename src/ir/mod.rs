@@ -38,8 +38,40 @@ pub struct Scene {
     pub background: Rgb,
     /// `sky_sphere { pigment }`: the colour of escaped rays by direction, over the background.
     pub sky_sphere: Option<Pigment>,
+    /// `fog { … }` statements (their order does not matter).
+    pub fogs: Vec<Fog>,
     /// Scene-wide settings.
     pub settings: Settings,
+}
+
+/// `fog { … }`: along a ray segment of length `w` in hollow space, the colour `c` becomes
+/// `(1 − a)·colour + A·c` summed over fogs, with `a = max(e^(−w·density/distance), transmit)`
+/// and `A = a·(1 − filter + filter·colour)` (POV-Ray's ComputeFog).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Fog {
+    /// `distance`: the length over which the fog thickens by a factor e.
+    pub distance: f64,
+    /// `color`, with filter and transmit.
+    pub colour: Colour,
+    /// Constant or ground fog.
+    pub kind: FogKind,
+}
+
+/// POV-Ray's fog types.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub enum FogKind {
+    /// `fog_type 1` (the default): the same density everywhere.
+    Constant,
+    /// `fog_type 2`: density 1 below `offset` along `up`, falling off as 1/(h² + 1) above it,
+    /// with h the height above `offset` in units of `alt`.
+    Ground {
+        /// `fog_offset`.
+        offset: f64,
+        /// `fog_alt`.
+        alt: f64,
+        /// `up`, unit length.
+        up: DVec3,
+    },
 }
 
 /// `global_settings` and version-dependent behaviour.
@@ -179,6 +211,8 @@ pub struct Object {
     pub no_shadow: bool,
     /// `inverse`: inside and outside swapped.
     pub inverse: bool,
+    /// `hollow`: fog reaches rays inside it (it does not inside solid objects, the default).
+    pub hollow: bool,
 }
 
 /// Analytic shapes, in object space.

@@ -93,6 +93,46 @@ impl Interiors {
     fn second_last(&self) -> Option<ObjectId> {
         (self.len > 1).then(|| ObjectId(self.ids[self.len - 2]))
     }
+
+    /// Whether a ray here travels through hollow space only (fog reaches it): inside no
+    /// object, or inside hollow ones only.
+    fn hollow(&self, scene: &Scene) -> bool {
+        self.ids[..self.len]
+            .iter()
+            .all(|&i| scene.objects[i as usize].hollow)
+    }
+}
+
+/// POV-Ray's `BOUND_HUGE`: the depth of a ray that hits nothing, as fog sees it.
+const MISS_DEPTH: f64 = 2.0e10;
+
+/// The fogs of `scene` over a ray segment from `origin` along the unit `direction`, `width`
+/// long, applied to the colour `c` seen at its end (POV-Ray's ComputeFog: attenuations
+/// multiply, fog colours add up, so the fogs' order does not matter).
+fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, width: f64, c: Rgb) -> Rgb {
+    let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
+    for fog in &scene.fogs {
+        let density = match fog.kind {
+            crate::ir::FogKind::Constant => 1.0,
+            crate::ir::FogKind::Ground { offset, alt, up } => {
+                // Mean over the segment of 1 below the offset and 1/(h² + 1) above it.
+                let s = (origin.dot(up) - offset) / alt;
+                let e = ((origin + direction * width).dot(up) - offset) / alt;
+                match (s <= 0.0, e <= 0.0) {
+                    (true, true) => 1.0,
+                    (true, false) => (e.atan() - s) / (e - s),
+                    (false, true) => (s.atan() - e) / (s - e),
+                    (false, false) if (s - e).abs() > 1e-10 => (s.atan() - e.atan()) / (s - e),
+                    (false, false) => 1.0 / (s * s + 1.0),
+                }
+            }
+        };
+        let c = &fog.colour;
+        let a = (-width * density / fog.distance).exp().max(c.transmit);
+        attenuation *= a * (Rgb::splat(1.0 - c.filter) + c.rgb * c.filter);
+        added += c.rgb * (1.0 - a);
+    }
+    added + attenuation * c
 }
 
 /// Traces rays through one scene; holds the per-thread ray tally and scratch space.
@@ -148,11 +188,18 @@ impl<'a> Tracer<'a> {
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let Some(hit) = self.scene.intersect(&ray) else {
-            return self.escaped(ray.direction);
+        let (colour, depth) = match self.scene.intersect(&ray) {
+            None => (self.escaped(ray.direction), MISS_DEPTH),
+            Some(hit) => {
+                let surface = self.scene.surface(&ray, &hit);
+                let colour = self.shade(&ray, hit.t, &surface, level, weight, interiors);
+                (colour, hit.t)
+            }
         };
-        let surface = self.scene.surface(&ray, &hit);
-        self.shade(&ray, hit.t, &surface, level, weight, interiors)
+        if self.scene.fogs.is_empty() || !interiors.hollow(self.scene) {
+            return colour;
+        }
+        fogged(self.scene, ray.origin, ray.direction, depth, colour)
     }
 
     /// The colour of a ray that hits nothing: the sky_sphere over the background.

@@ -43,6 +43,8 @@ pub struct Scene {
     pub background: Rgb,
     /// `sky_sphere`: the colour of escaped rays by direction.
     pub sky_sphere: Option<Pigment>,
+    /// Fogs with a positive distance (POV-Ray skips the others).
+    pub fogs: Vec<crate::ir::Fog>,
     /// Rays at a deeper level return black.
     pub max_trace_level: u32,
     /// Rays of lower weight return black.
@@ -285,6 +287,8 @@ pub struct Object {
     pub no_shadow: bool,
     /// Inside swapped with outside.
     pub inverse: bool,
+    /// Fog reaches rays inside it.
+    pub hollow: bool,
     /// Index of refraction and fade.
     pub interior: Interior,
 }
@@ -429,6 +433,7 @@ impl Scene {
                     material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
+                    hollow: o.hollow,
                     interior: o.interior,
                 }
             })
@@ -458,6 +463,12 @@ impl Scene {
             materials,
             background: ir.background,
             sky_sphere: ir.sky_sphere.as_ref().map(Pigment::new),
+            fogs: ir
+                .fogs
+                .iter()
+                .filter(|f| f.distance.abs() > 1e-10)
+                .cloned()
+                .collect(),
             max_trace_level: ir.settings.max_trace_level,
             adc_bailout: ir.settings.adc_bailout,
             ambient_light: ir.settings.ambient_light,
@@ -811,9 +822,11 @@ mod tests {
                 interior: ir::Interior::default(),
                 no_shadow: false,
                 inverse: false,
+                hollow: false,
             }],
             background: Rgb::ZERO,
             sky_sphere: None,
+            fogs: vec![],
             settings: ir::Settings::default(),
         };
         Scene::build(&ir)

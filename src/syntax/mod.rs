@@ -31,6 +31,13 @@ pub enum NodeKind {
     Camera,
     LightSource,
     Background,
+    Fog,
+    FogDistance,
+    FogType,
+    FogAlt,
+    FogOffset,
+    TurbDepth,
+    FogColour,
     GlobalSettings,
     AssumedGamma,
     MaxTraceLevel,
@@ -656,6 +663,13 @@ impl Lower {
             Rule::camera => NodeKind::Camera,
             Rule::light_source => NodeKind::LightSource,
             Rule::background => NodeKind::Background,
+            Rule::fog => NodeKind::Fog,
+            Rule::fog_distance => NodeKind::FogDistance,
+            Rule::fog_type => NodeKind::FogType,
+            Rule::fog_alt => NodeKind::FogAlt,
+            Rule::fog_offset => NodeKind::FogOffset,
+            Rule::turb_depth => NodeKind::TurbDepth,
+            Rule::fog_colour => NodeKind::FogColour,
             Rule::global_settings => NodeKind::GlobalSettings,
             Rule::assumed_gamma => NodeKind::AssumedGamma,
             Rule::max_trace_level => NodeKind::MaxTraceLevel,
@@ -762,9 +776,11 @@ impl Lower {
             Rule::deprecation => NodeKind::Deprecation,
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
-            Rule::unknown_item | Rule::leftover | Rule::cylinder_camera | Rule::texture_pattern => {
-                NodeKind::Unknown
-            }
+            Rule::unknown_item
+            | Rule::leftover
+            | Rule::cylinder_camera
+            | Rule::texture_pattern
+            | Rule::fog_turbulence => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
         let mut node = Node {
@@ -791,11 +807,11 @@ impl Lower {
             node.children = inner.map(|p| self.node(p)).collect();
             return node;
         }
-        if rule == Rule::leftover {
+        if matches!(rule, Rule::leftover | Rule::fog_turbulence) {
             // Named by its first token.
             let text = pair.as_str();
             let len = text
-                .find(|c: char| c.is_whitespace() || c == '{')
+                .find(|c: char| c.is_whitespace() || c == '{' || c == '<')
                 .unwrap_or(text.len())
                 .max(1);
             node.word = text[..len].to_string();
@@ -1072,6 +1088,12 @@ fn is_word(rule: Rule) -> bool {
     matches!(
         rule,
         word | kw_adc_bailout
+            | kw_fog
+            | kw_fog_type
+            | kw_fog_alt
+            | kw_fog_offset
+            | kw_distance
+            | kw_turb_depth
             | kw_array
             | kw_deprecated
             | kw_albedo

@@ -372,3 +372,25 @@ fn old_colour_map_ranges_are_two_entries_each() {
     let (a, b) = (crate::load_text(old, 8, 8), crate::load_text(new, 8, 8));
     assert_eq!(a.objects[0].texture, b.objects[0].texture);
 }
+
+#[test]
+fn fog_fills_hollow_space_only() {
+    // Centre ray: 4 units of fog to a clear sphere (transmit 1, ior 1), 2 inside it, 4 more to
+    // a black wall. White fog of distance 10 leaves 1 − e^(−L/10) of white over L units of fog.
+    let scene = |hollow: &str| {
+        format!(
+            "{HEADER} camera {{ location 0 look_at z }} fog {{ colour rgb 1 distance 10 }} \
+             sphere {{ 5*z, 1 pigment {{ rgbt 1 }} finish {{ ambient 0 diffuse 0 }} {hollow} }} \
+             plane {{ -z, -10 pigment {{ rgb 0 }} finish {{ ambient 0 diffuse 0 }} }}"
+        )
+    };
+    let solid = 1.0 - (-0.8f64).exp(); // the 2 units inside a solid object have no fog
+    assert_close(centre_pixel(&scene("")), [solid; 3], 1e-6);
+    let hollow = 1.0 - (-1.0f64).exp();
+    assert_close(centre_pixel(&scene("hollow")), [hollow; 3], 1e-6);
+    // A ray that hits nothing is entirely fog; fog's transmit lets the background through.
+    let sky = format!(
+        "{HEADER} background {{ rgb <0, 0, 1> }} fog {{ rgbt <1, 0, 0, 0.25> distance 1 }}"
+    );
+    assert_close(centre_pixel(&sky), [0.75, 0.0, 0.25], 1e-6);
+}
