@@ -420,7 +420,7 @@ impl Evaluator<'_> {
     /// Adds the object's parts (and the lights it holds) to the scene.
     pub(super) fn place(&mut self, object: ObjectValue) {
         self.lights.extend(object.lights);
-        for part in object.parts {
+        for (member, part) in object.parts.into_iter().enumerate() {
             let texture = part
                 .texture
                 .or_else(|| object.texture.clone())
@@ -433,6 +433,7 @@ impl Evaluator<'_> {
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
                 hollow: part.hollow.unwrap_or(false),
+                member: member as u32,
             });
         }
     }

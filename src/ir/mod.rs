@@ -213,6 +213,9 @@ pub struct Object {
     pub inverse: bool,
     /// `hollow`: fog reaches rays inside it (it does not inside solid objects, the default).
     pub hollow: bool,
+    /// Position among the members of its union (0 for the first, and for an object not in a
+    /// union): between two hits at the same distance, POV-Ray takes the later member.
+    pub member: u32,
 }
 
 /// Analytic shapes, in object space.

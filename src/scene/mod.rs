@@ -289,6 +289,9 @@ pub struct Object {
     pub inverse: bool,
     /// Fog reaches rays inside it.
     pub hollow: bool,
+    /// Place in POV-Ray's test order, which decides between two hits at the same distance
+    /// (see [`Scene::intersect`]; lower first).
+    pub rank: u64,
     /// Index of refraction and fade.
     pub interior: Interior,
 }
@@ -303,6 +306,10 @@ pub struct Hit {
     /// Which part of the shape (a cone's cap, a mesh's triangle).
     pub part: u32,
 }
+
+/// Relative difference below which two hit distances count as the same point (far above
+/// rounding, which is ~1e-15 relative; far below any feature trace supports).
+const TIE: f64 = 1e-10;
 
 /// Surface details at a hit, computed once for the winning hit.
 #[derive(Clone, Copy, Debug)]
@@ -434,6 +441,7 @@ impl Scene {
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     hollow: o.hollow,
+                    rank: u64::from(o.member),
                     interior: o.interior,
                 }
             })
@@ -477,6 +485,28 @@ impl Scene {
             index: None,
             any_transparent: false,
         };
+        // POV-Ray tests objects in scene order when there are fewer than three objects and
+        // lights, and otherwise (bounding on) the unbounded ones (planes) first; a union is one
+        // object to it, bounded if all its members are, and among the members the later one
+        // takes a tie (its intersections are taken from a stack).
+        let bounded_last = scene.objects.len() + scene.lights.len() >= 3;
+        let n = scene.objects.len() as u64;
+        let mut start = 0;
+        while start < scene.objects.len() {
+            let len = 1 + scene.objects[start + 1..]
+                .iter()
+                .zip(1u64..)
+                .take_while(|(o, k)| o.rank == *k)
+                .count();
+            let group = &mut scene.objects[start..start + len];
+            let later = bounded_last && group.iter().all(|o| o.bounds.is_some());
+            let base = start as u64 + if later { n } else { 0 };
+            for o in group {
+                // (`rank` held the member's position until here.)
+                o.rank = (base << 32) | u64::from(u32::MAX - o.rank as u32);
+            }
+            start += len;
+        }
         scene.any_transparent = scene.objects.iter().any(|o| {
             !o.no_shadow
                 && scene.materials[o.material.0 as usize]
@@ -508,15 +538,26 @@ impl Scene {
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
+        // Two hits within rounding of each other (a glass box standing on the floor plane: the
+        // ray leaves the glass where it meets the floor) are one point, and the object first in
+        // POV-Ray's test order is hit, as in POV-Ray, whose depths there are exactly equal;
+        // rounding would otherwise pick either at random from pixel to pixel. So each hit
+        // leaves room for a tie just beyond it.
         let mut test = |i: u32, ray: &Ray| -> Option<f64> {
             let object = &self.objects[i as usize];
             let (t, part) = Self::crossings(object, ray).first_part()?;
+            if let Some(b) = &best {
+                let tied = (t - b.t).abs() <= TIE * b.t.abs();
+                if tied && self.objects[b.object.0 as usize].rank < object.rank {
+                    return None;
+                }
+            }
             best = Some(Hit {
                 t,
                 object: ObjectId(i),
                 part,
             });
-            Some(t)
+            Some(t + TIE * t.abs())
         };
         match &self.index {
             Some(index) => {
@@ -823,6 +864,7 @@ mod tests {
                 no_shadow: false,
                 inverse: false,
                 hollow: false,
+                member: 0,
             }],
             background: Rgb::ZERO,
             sky_sphere: None,
