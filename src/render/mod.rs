@@ -268,11 +268,56 @@ fn render_block(
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
     counters::take(); // (this block's counts start from zero)
-    let mut samples = 0u64;
     let centre = |tracer: &mut Tracer, x: u32, y: u32| {
         tracer.counts.camera += 1;
         let ray = camera_ray(scene, w, h, x as f64, y as f64);
         trace_primary(tracer, &camera_interiors, &ray)
+    };
+
+    // The block's pixels in row order, each from `f(x, y)`.
+    let block_pixels = |f: &mut dyn FnMut(u32, u32) -> Rgb| -> Vec<Rgb> {
+        let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+        for y in y0..y1 {
+            for x in x0..x1 {
+                pixels.push(f(x, y));
+            }
+        }
+        pixels
+    };
+    let result = |pixels, tracer: Tracer, samples| BlockResult {
+        x0,
+        y0,
+        width: x1 - x0,
+        pixels,
+        counts: tracer.counts,
+        tests: counters::take(),
+        samples,
+    };
+
+    let (threshold, depth) = match options.antialias {
+        Antialias::Off => {
+            let pixels = block_pixels(&mut |x, y| centre(&mut tracer, x, y));
+            let samples = pixels.len() as u64;
+            return result(pixels, tracer, samples);
+        }
+        Antialias::Recursive { threshold, depth } => {
+            let level = depth.clamp(1, 9) - 1;
+            let mut corners = Corners {
+                scene,
+                options,
+                camera_interiors: &camera_interiors,
+                steps: 1 << level,
+                threshold,
+                points: std::collections::HashMap::new(),
+                samples: 0,
+            };
+            let s = corners.steps;
+            let pixels = block_pixels(&mut |x, y| {
+                corners.square(&mut tracer, i64::from(x) * s, i64::from(y) * s, s, level)
+            });
+            return result(pixels, tracer, corners.samples);
+        }
+        Antialias::Adaptive { threshold, depth } => (threshold, depth),
     };
 
     // Local grid with one extra row above and one extra column on the left.
@@ -283,58 +328,7 @@ fn render_block(
     let mut encoded = vec![Rgb::ZERO; gw * gh];
     let mut done = vec![false; gw * gh];
     let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
-
-    if let Antialias::Recursive { threshold, depth } = options.antialias {
-        let mut corners = Corners {
-            scene,
-            options,
-            camera_interiors: &camera_interiors,
-            steps: 1 << (depth.clamp(1, 9) - 1),
-            threshold,
-            points: std::collections::HashMap::new(),
-            samples: 0,
-        };
-        let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
-        for y in y0..y1 {
-            for x in x0..x1 {
-                let (s, level) = (corners.steps, depth.clamp(1, 9) - 1);
-                pixels.push(corners.square(
-                    &mut tracer,
-                    i64::from(x) * s,
-                    i64::from(y) * s,
-                    s,
-                    level,
-                ));
-            }
-        }
-        return BlockResult {
-            x0,
-            y0,
-            width: x1 - x0,
-            pixels,
-            counts: tracer.counts,
-            tests: counters::take(),
-            samples: corners.samples,
-        };
-    }
-    let Antialias::Adaptive { threshold, depth } = options.antialias else {
-        let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
-        for y in y0..y1 {
-            for x in x0..x1 {
-                pixels.push(centre(&mut tracer, x, y));
-                samples += 1;
-            }
-        }
-        return BlockResult {
-            x0,
-            y0,
-            width: x1 - x0,
-            pixels,
-            counts: tracer.counts,
-            tests: counters::take(),
-            samples,
-        };
-    };
+    let mut samples = 0u64;
 
     if y0 > 0 {
         for x in x0..x1 {
@@ -403,19 +397,6 @@ fn render_block(
         }
     }
 
-    let mut pixels = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
-    for y in y0..y1 {
-        for x in x0..x1 {
-            pixels.push(value[index(x, y)]);
-        }
-    }
-    BlockResult {
-        x0,
-        y0,
-        width: x1 - x0,
-        pixels,
-        counts: tracer.counts,
-        tests: counters::take(),
-        samples,
-    }
+    let pixels = block_pixels(&mut |x, y| value[index(x, y)]);
+    result(pixels, tracer, samples)
 }
