@@ -365,8 +365,14 @@ impl Evaluator<'_> {
                     .args
                     .first()
                     .is_none_or(|e| !matches!(e.kind, ExprKind::Number(v) if v == 0.0));
-                for part in &mut object.parts {
-                    part.hollow.get_or_insert(on);
+                // On one object the last `hollow` counts; a group's goes to the members that
+                // have none of their own.
+                if let [part] = object.parts.as_mut_slice() {
+                    part.hollow = Some(on);
+                } else {
+                    for part in &mut object.parts {
+                        part.hollow.get_or_insert(on);
+                    }
                 }
             }
             // `no_shadow false` …: the flag is not set.

@@ -426,3 +426,18 @@ fn a_glass_box_standing_on_the_floor_shows_the_floor_through_its_bottom() {
         }
     }
 }
+
+#[test]
+fn hollow_is_the_last_given_and_a_union_passes_it_to_members_without_their_own() {
+    let scene = crate::load_text(
+        "#declare S = sphere { 0, 1 hollow }
+         object { S hollow off }
+         sphere { 0, 1 hollow off hollow }
+         union { sphere { 0, 1 hollow off } sphere { x, 1 } hollow }
+         sphere { 0, 1 }",
+        8,
+        8,
+    );
+    let hollow: Vec<bool> = scene.objects.iter().map(|o| o.hollow).collect();
+    assert_eq!(hollow, [false, true, false, true, false]);
+}
