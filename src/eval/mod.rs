@@ -441,7 +441,14 @@ impl<'a> Evaluator<'a> {
                             (ground, offset, alt, up) = (true, o, a, u);
                         }
                     }
-                    other => return Err(expr::type_error("a fog", &other, item.span)),
+                    // A declared colour or float (POV-Ray copies only fogs this way).
+                    Value::Float(d) => fog.distance = d,
+                    other => {
+                        let c = colour5(&other).ok_or_else(|| {
+                            expr::type_error("a fog or a colour", &other, item.span)
+                        })?;
+                        fog.colour = value::to_colour(c);
+                    }
                 },
                 NodeKind::FogDistance => fog.distance = ev.float(arg(0))?,
                 NodeKind::FogType => {

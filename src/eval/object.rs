@@ -37,6 +37,8 @@ pub struct ObjectValue {
     interior: Option<Interior>,
     /// Light sources inside a `union` (or an `object {}`): they move with it.
     lights: Vec<ir::Light>,
+    /// A union (its `hollow` goes only to members without their own).
+    is_union: bool,
 }
 
 /// Whether a node is a directive (run by `each_item` wherever it stands).
@@ -102,6 +104,7 @@ impl ObjectValue {
             texture: None,
             interior: None,
             lights: Vec::new(),
+            is_union: false,
         }
     }
 
@@ -111,6 +114,7 @@ impl ObjectValue {
             texture: None,
             interior: None,
             lights: Vec::new(),
+            is_union: false,
         }
     }
 
@@ -272,6 +276,7 @@ impl Evaluator<'_> {
                 // Members and the group's modifiers, in order (POV-Ray puts the modifiers last).
                 modifiers = &[];
                 let mut group = ObjectValue::empty();
+                group.is_union = true;
                 self.each_item(&node.children, &mut |ev, item| {
                     if item.kind == NodeKind::LightSource {
                         group.lights.push(ev.light(item)?);
@@ -367,11 +372,11 @@ impl Evaluator<'_> {
                     .is_none_or(|e| !matches!(e.kind, ExprKind::Number(v) if v == 0.0));
                 // On one object the last `hollow` counts; a group's goes to the members that
                 // have none of their own.
-                if let [part] = object.parts.as_mut_slice() {
-                    part.hollow = Some(on);
-                } else {
-                    for part in &mut object.parts {
+                for part in &mut object.parts {
+                    if object.is_union {
                         part.hollow.get_or_insert(on);
+                    } else {
+                        part.hollow = Some(on);
                     }
                 }
             }

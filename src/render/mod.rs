@@ -139,15 +139,20 @@ struct Corners<'a> {
     /// Grid points per pixel along each axis (2^(depth − 1)).
     steps: i64,
     threshold: f64,
-    /// Colour and encoded colour at each traced grid point.
+    /// Colour and encoded colour at each traced grid point on a pixel's border (shared with
+    /// the neighbours) …
     points: std::collections::HashMap<(i64, i64), (Rgb, Rgb)>,
+    /// … and inside the current pixel (dropped after it: at depth 9 a pixel has 65k).
+    inner: std::collections::HashMap<(i64, i64), (Rgb, Rgb)>,
     samples: u64,
 }
 
 impl Corners<'_> {
     /// The colour at grid point (gx, gy): pixel coordinates gx/steps − ½, gy/steps − ½.
     fn point(&mut self, tracer: &mut Tracer, gx: i64, gy: i64) -> (Rgb, Rgb) {
-        if let Some(&known) = self.points.get(&(gx, gy)) {
+        let border = gx % self.steps == 0 || gy % self.steps == 0;
+        let known = if border { &self.points } else { &self.inner };
+        if let Some(&known) = known.get(&(gx, gy)) {
             return known;
         }
         let s = self.steps as f64;
@@ -157,7 +162,12 @@ impl Corners<'_> {
         self.samples += 1;
         let value = trace_primary(tracer, self.camera_interiors, &ray);
         let traced = (value, aa_encoded(value, self.scene.gamma));
-        self.points.insert((gx, gy), traced);
+        let known = if border {
+            &mut self.points
+        } else {
+            &mut self.inner
+        };
+        known.insert((gx, gy), traced);
         traced
     }
 
@@ -309,11 +319,15 @@ fn render_block(
                 steps: 1 << level,
                 threshold,
                 points: std::collections::HashMap::new(),
+                inner: std::collections::HashMap::new(),
                 samples: 0,
             };
             let s = corners.steps;
             let pixels = block_pixels(&mut |x, y| {
-                corners.square(&mut tracer, i64::from(x) * s, i64::from(y) * s, s, level)
+                let colour =
+                    corners.square(&mut tracer, i64::from(x) * s, i64::from(y) * s, s, level);
+                corners.inner.clear();
+                colour
             });
             return result(pixels, tracer, corners.samples);
         }

@@ -58,7 +58,7 @@ impl Interiors {
     /// bounding does, unbounded objects (planes) first.
     pub fn at(scene: &Scene, p: DVec3) -> Interiors {
         let mut list = Interiors::default();
-        let bounded_last = scene.objects.len() + scene.lights.len() >= 3;
+        let bounded_last = scene.bounded_last;
         for pass in [false, true] {
             for (i, object) in scene.objects.iter().enumerate() {
                 let second = bounded_last && object.bounds.is_some();

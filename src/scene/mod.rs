@@ -45,6 +45,9 @@ pub struct Scene {
     pub sky_sphere: Option<Pigment>,
     /// Fogs with a positive distance (POV-Ray skips the others).
     pub fogs: Vec<crate::ir::Fog>,
+    /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
+    /// unbounded objects first.
+    pub bounded_last: bool,
     /// Rays at a deeper level return black.
     pub max_trace_level: u32,
     /// Rays of lower weight return black.
@@ -484,12 +487,15 @@ impl Scene {
             gamma: ir.settings.gamma,
             index: None,
             any_transparent: false,
+            bounded_last: false,
         };
         // POV-Ray tests objects in scene order when there are fewer than three objects and
         // lights, and otherwise (bounding on) the unbounded ones (planes) first; a union is one
         // object to it, bounded if all its members are, and among the members the later one
         // takes a tie (its intersections are taken from a stack).
-        let bounded_last = scene.objects.len() + scene.lights.len() >= 3;
+        let top_level = scene.objects.iter().filter(|o| o.rank == 0).count();
+        scene.bounded_last = top_level + scene.lights.len() >= 3;
+        let bounded_last = scene.bounded_last;
         let n = scene.objects.len() as u64;
         let mut start = 0;
         while start < scene.objects.len() {

@@ -434,10 +434,11 @@ fn hollow_is_the_last_given_and_a_union_passes_it_to_members_without_their_own()
          object { S hollow off }
          sphere { 0, 1 hollow off hollow }
          union { sphere { 0, 1 hollow off } sphere { x, 1 } hollow }
-         sphere { 0, 1 }",
+         sphere { 0, 1 }
+         union { sphere { 0, 1 hollow off } hollow }",
         8,
         8,
     );
     let hollow: Vec<bool> = scene.objects.iter().map(|o| o.hollow).collect();
-    assert_eq!(hollow, [false, true, false, true, false]);
+    assert_eq!(hollow, [false, true, false, true, false, false]);
 }
