@@ -135,6 +135,19 @@ pub(crate) fn transform_light(light: &mut ir::Light, m: &glam::DMat4) {
     }
 }
 
+/// A fog's items as written (a declared fog keeps them all, fog_alt of a constant fog too,
+/// since a fog made from it may turn into ground fog).
+#[derive(Clone, Debug)]
+pub(crate) struct FogItems {
+    distance: f64,
+    colour: ir::Colour,
+    ground: bool,
+    offset: f64,
+    alt: f64,
+    alt_span: Span,
+    up: DVec3,
+}
+
 /// The evaluation state: declarations, defaults and the scene gathered so far.
 pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
@@ -372,7 +385,7 @@ impl<'a> Evaluator<'a> {
                 Value::Material(texture, interior)
             }
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
-            NodeKind::Fog => Value::Fog(Box::new(self.fog(node)?)),
+            NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
@@ -417,40 +430,33 @@ impl<'a> Evaluator<'a> {
         Ok(())
     }
 
-    /// `fog { [F] items }`, with POV-Ray's defaults (distance 0: no fog; black; constant).
-    fn fog(&mut self, node: &Node) -> Result<ir::Fog> {
-        let mut fog = ir::Fog {
+    /// `fog { [F] items }` as written, from POV-Ray's defaults (distance 0: no fog; black;
+    /// constant) or a declared fog's items.
+    fn fog_items(&mut self, node: &Node) -> Result<FogItems> {
+        let mut items = FogItems {
             distance: 0.0,
             colour: ir::Colour::default(),
-            kind: ir::FogKind::Constant,
+            ground: false,
+            offset: 0.0,
+            alt: 0.0,
+            alt_span: node.word_span,
+            up: DVec3::Y,
         };
-        let (mut ground, mut offset, mut alt, mut up) = (false, 0.0, 0.0, DVec3::Y);
-        let mut alt_span = node.word_span;
         self.each_item(&node.children, &mut |ev, item| {
             let arg = |i: usize| &item.args[i];
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Fog(declared) => {
-                        fog = *declared;
-                        if let ir::FogKind::Ground {
-                            offset: o,
-                            alt: a,
-                            up: u,
-                        } = fog.kind
-                        {
-                            (ground, offset, alt, up) = (true, o, a, u);
-                        }
-                    }
+                    Value::Fog(declared) => items = *declared,
                     // A declared colour or float (POV-Ray copies only fogs this way).
-                    Value::Float(d) => fog.distance = d,
+                    Value::Float(d) => items.distance = d,
                     other => {
                         let c = colour5(&other).ok_or_else(|| {
                             expr::type_error("a fog or a colour", &other, item.span)
                         })?;
-                        fog.colour = value::to_colour(c);
+                        items.colour = value::to_colour(c);
                     }
                 },
-                NodeKind::FogDistance => fog.distance = ev.float(arg(0))?,
+                NodeKind::FogDistance => items.distance = ev.float(arg(0))?,
                 NodeKind::FogType => {
                     let t = ev.float(arg(0))?.trunc();
                     if t != 1.0 && t != 2.0 {
@@ -459,25 +465,25 @@ impl<'a> Evaluator<'a> {
                             arg(0).span,
                         ));
                     }
-                    ground = t == 2.0;
+                    items.ground = t == 2.0;
                 }
                 NodeKind::FogAlt => {
-                    alt = ev.float(arg(0))?;
-                    alt_span = arg(0).span;
+                    items.alt = ev.float(arg(0))?;
+                    items.alt_span = arg(0).span;
                 }
-                NodeKind::FogOffset => offset = ev.float(arg(0))?,
+                NodeKind::FogOffset => items.offset = ev.float(arg(0))?,
                 // (Only matters with turbulence, which trace does not render.)
                 NodeKind::TurbDepth => {
                     ev.float(arg(0))?;
                 }
-                NodeKind::Up => up = ev.vec3(arg(0))?,
+                NodeKind::Up => items.up = ev.vec3(arg(0))?,
                 NodeKind::Translate => ev.warn(Diagnostic::warning(
                     "a fog's up vector can't be translated (ignored, as in POV-Ray)",
                     item.word_span,
                 )),
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
-                    up = t.matrix.transform_vector3(up);
+                    items.up = t.matrix.transform_vector3(items.up);
                 }
                 NodeKind::FogColour => {
                     let v = ev.eval(arg(0))?;
@@ -486,37 +492,50 @@ impl<'a> Evaluator<'a> {
                             "should use the distance keyword (a bare number is the fog's distance)",
                             arg(0).span,
                         ));
-                        fog.distance = d;
+                        items.distance = d;
                     } else {
                         let c = colour5(&v)
                             .ok_or_else(|| expr::type_error("a colour", &v, arg(0).span))?;
-                        fog.colour = value::to_colour(c);
+                        items.colour = value::to_colour(c);
                     }
                 }
                 _ => return Err(ev.unknown_item(item, "fog")),
             }
             Ok(())
         })?;
-        if ground {
-            if alt == 0.0 {
+        Ok(items)
+    }
+
+    /// A `fog` statement: its items resolved (the fog_alt check happens here, where the fog is
+    /// used, so a declared fog may leave fog_alt to its user).
+    fn fog(&mut self, node: &Node) -> Result<ir::Fog> {
+        let items = self.fog_items(node)?;
+        let kind = if items.ground {
+            if items.alt == 0.0 {
                 return Err(Diagnostic::error(
                     "ground fog (fog_type 2) needs a non-zero fog_alt (POV-Ray divides by it)",
-                    alt_span,
+                    items.alt_span,
                 ));
             }
-            if up.length() == 0.0 {
+            if items.up.length() == 0.0 {
                 return Err(Diagnostic::error(
                     "a fog's up vector must not be zero",
                     node.word_span,
                 ));
             }
-            fog.kind = ir::FogKind::Ground {
-                offset,
-                alt,
-                up: up.normalize(),
-            };
-        }
-        Ok(fog)
+            ir::FogKind::Ground {
+                offset: items.offset,
+                alt: items.alt,
+                up: items.up.normalize(),
+            }
+        } else {
+            ir::FogKind::Constant
+        };
+        Ok(ir::Fog {
+            distance: items.distance,
+            colour: items.colour,
+            kind,
+        })
     }
 
     fn light(&mut self, node: &Node) -> Result<ir::Light> {

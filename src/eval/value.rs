@@ -45,7 +45,7 @@ pub enum Value {
     Transform(ir::Transform),
     Camera(Box<super::CameraItems>),
     Interior(ir::Interior),
-    Fog(Box<ir::Fog>),
+    Fog(Box<super::FogItems>),
     /// `material {…}`: a texture and an interior, each only if given.
     Material(Option<ir::Texture>, Option<ir::Interior>),
     ColourMap(ir::ColourMap),
