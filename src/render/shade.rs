@@ -5,7 +5,7 @@
 use super::lights::LightSample;
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, Material, ObjectId, Rgb, Scene, SurfaceHit, filter_colour, interior_fade,
+    Colour, FogKind, Material, ObjectId, Rgb, Scene, SurfaceHit, filter_colour, interior_fade,
 };
 use glam::DVec3;
 
@@ -113,8 +113,8 @@ fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, width: f64, c: Rgb) ->
     let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
     for fog in &scene.fogs {
         let density = match fog.kind {
-            crate::ir::FogKind::Constant => 1.0,
-            crate::ir::FogKind::Ground { offset, alt, up } => {
+            FogKind::Constant => 1.0,
+            FogKind::Ground { offset, alt, up } => {
                 // Mean over the segment of 1 below the offset and 1/(h² + 1) above it.
                 let s = (origin.dot(up) - offset) / alt;
                 let e = ((origin + direction * width).dot(up) - offset) / alt;

@@ -16,7 +16,8 @@ mod accel;
 mod pigment;
 
 pub use crate::ir::{
-    AreaLight, Colour, Finish, Gamma, Interior, LightFade, LightKind, Projection, Reflection, Rgb,
+    AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
+    Reflection, Rgb,
 };
 pub use pigment::Pigment;
 
@@ -44,7 +45,7 @@ pub struct Scene {
     /// `sky_sphere`: the colour of escaped rays by direction.
     pub sky_sphere: Option<Pigment>,
     /// Fogs with a positive distance (POV-Ray skips the others).
-    pub fogs: Vec<crate::ir::Fog>,
+    pub fogs: Vec<Fog>,
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
     /// unbounded objects first.
     pub bounded_last: bool,
@@ -444,7 +445,7 @@ impl Scene {
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     hollow: o.hollow,
-                    rank: u64::from(o.member),
+                    rank: 0,
                     interior: o.interior,
                 }
             })
@@ -493,25 +494,18 @@ impl Scene {
         // lights, and otherwise (bounding on) the unbounded ones (planes) first; a union is one
         // object to it, bounded if all its members are, and among the members the later one
         // takes a tie (its intersections are taken from a stack).
-        let top_level = scene.objects.iter().filter(|o| o.rank == 0).count();
+        let top_level = ir.objects.iter().filter(|o| o.member == 0).count();
         scene.bounded_last = top_level + scene.lights.len() >= 3;
-        let bounded_last = scene.bounded_last;
         let n = scene.objects.len() as u64;
         let mut start = 0;
-        while start < scene.objects.len() {
-            let len = 1 + scene.objects[start + 1..]
-                .iter()
-                .zip(1u64..)
-                .take_while(|(o, k)| o.rank == *k)
-                .count();
-            let group = &mut scene.objects[start..start + len];
-            let later = bounded_last && group.iter().all(|o| o.bounds.is_some());
+        for group in ir.objects.chunk_by(|_, next| next.member != 0) {
+            let objects = &mut scene.objects[start..start + group.len()];
+            let later = scene.bounded_last && objects.iter().all(|o| o.bounds.is_some());
             let base = start as u64 + if later { n } else { 0 };
-            for o in group {
-                // (`rank` held the member's position until here.)
-                o.rank = (base << 32) | u64::from(u32::MAX - o.rank as u32);
+            for (o, member) in objects.iter_mut().zip(group) {
+                o.rank = (base << 32) | u64::from(u32::MAX - member.member);
             }
-            start += len;
+            start += group.len();
         }
         scene.any_transparent = scene.objects.iter().any(|o| {
             !o.no_shadow

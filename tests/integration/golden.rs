@@ -11,11 +11,7 @@ use trace::{Antialias, Film};
 
 const MAX_MEAN_FLIP: f32 = 0.01;
 
-fn check(stem: &str, antialias: Antialias, reference_name: &str) -> Result<f32, String> {
-    check_within(stem, antialias, reference_name, MAX_MEAN_FLIP)
-}
-
-fn check_within(
+fn check(
     stem: &str,
     antialias: Antialias,
     reference_name: &str,
@@ -78,13 +74,18 @@ fn examples() -> Vec<String> {
     stems
 }
 
-#[test]
-fn examples_match_povray_without_antialiasing() {
+/// Every example against its POV-Ray reference `NAME{suffix}`.
+fn examples_match(antialias: Antialias, suffix: &str, max_mean_flip: f32) {
     let failures: Vec<String> = examples()
         .iter()
-        .filter_map(|s| check(s, Antialias::Off, &format!("{s}.exr")).err())
+        .filter_map(|s| check(s, antialias, &format!("{s}{suffix}"), max_mean_flip).err())
         .collect();
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+#[test]
+fn examples_match_povray_without_antialiasing() {
+    examples_match(Antialias::Off, ".exr", MAX_MEAN_FLIP);
 }
 
 #[test]
@@ -93,11 +94,7 @@ fn examples_match_povray_with_antialiasing_threshold_0() {
         threshold: 0.0,
         depth: 3,
     };
-    let failures: Vec<String> = examples()
-        .iter()
-        .filter_map(|s| check(s, aa, &format!("{s}.aa.exr")).err())
-        .collect();
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    examples_match(aa, ".aa.exr", MAX_MEAN_FLIP);
 }
 
 #[test]
@@ -106,11 +103,7 @@ fn examples_match_povray_with_antialiasing_method_2() {
         threshold: 0.1,
         depth: 3,
     };
-    let failures: Vec<String> = examples()
-        .iter()
-        .filter_map(|s| check_within(s, aa, &format!("{s}.am2.exr"), 0.005).err())
-        .collect();
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    examples_match(aa, ".am2.exr", 0.005);
 }
 
 #[test]
