@@ -16,7 +16,9 @@ pub mod eval;
 pub mod film;
 pub mod geometry;
 pub mod ir;
+pub mod memory;
 pub mod meshfile;
+pub mod output;
 pub mod render;
 pub mod scene;
 pub mod stability;
@@ -81,7 +83,7 @@ pub enum Error {
 
 /// Reads and evaluates a scene file into the IR.
 pub fn load(path: &Path, options: &LoadOptions) -> Result<Loaded, Error> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+    let text = diag::read_source(path).map_err(|source| Error::Read {
         path: path.to_path_buf(),
         source,
     })?;

@@ -8,6 +8,10 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 use trace::{Antialias, Error, LoadOptions, RenderOptions};
 
+/// Counts memory against `--max-memory`, so running out ends with a message and exit 1.
+#[global_allocator]
+static ALLOCATOR: trace::memory::Limited = trace::memory::Limited;
+
 /// Render POV-Ray 3.7 scenes (a CSG-free subset) with a Whitted ray tracer.
 #[derive(Parser, Debug)]
 #[command(
@@ -64,6 +68,18 @@ struct RenderArgs {
     /// POV-Ray's standard includes: -L /usr/share/povray-3.7/include
     #[arg(short = 'L', long = "include-path", value_name = "DIR")]
     include_path: Vec<PathBuf>,
+    /// Most loop passes and macro calls the scene may make, all together (an endless loop
+    /// stops here with an error).
+    #[arg(long, default_value_t = trace::eval::DEFAULT_MAX_STEPS, value_name = "N")]
+    max_steps: u64,
+    /// Most memory trace may use, e.g. 512M or 8G (default: the memory available at start).
+    #[arg(long, value_name = "SIZE", value_parser = parse_memory)]
+    max_memory: Option<usize>,
+}
+
+fn parse_memory(s: &str) -> Result<usize, String> {
+    trace::memory::parse_size(s)
+        .ok_or_else(|| format!("expected a size such as 512M or 8G, found `{s}`"))
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -110,6 +126,12 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // An interrupted write leaves no temporary file behind.
+    let _ = ctrlc::set_handler(|| {
+        trace::output::remove_pending();
+        eprintln!("trace: interrupted");
+        std::process::exit(130);
+    });
     let result = match cli.command {
         Some(Command::Compare {
             reference,
@@ -165,12 +187,35 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
             output.display()
         )));
     }
+    trace::output::check_writable(output).map_err(|e| Failure {
+        message: format!("error: cannot write {}: {e}", output.display()),
+        code: 1,
+    })?;
+    let memory = args
+        .max_memory
+        .or_else(trace::memory::available)
+        .unwrap_or(usize::MAX);
+    trace::memory::set_limit(memory);
+    let film_bytes = trace::render::bytes_needed(args.width, args.height);
+    if film_bytes > memory {
+        return Err(Failure {
+            message: format!(
+                "error: a {}x{} image needs about {} of memory, more than the limit of {} (--max-memory)",
+                args.width,
+                args.height,
+                trace::memory::format_size(film_bytes),
+                trace::memory::format_size(memory)
+            ),
+            code: 1,
+        });
+    }
     let start = Instant::now();
     let load_options = LoadOptions {
         width: args.width,
         height: args.height,
         include_paths: args.include_path.clone(),
         threads: args.threads.map(|t| t as usize),
+        max_steps: args.max_steps,
     };
     let loaded = trace::load(scene_path, &load_options)?;
     if !args.quiet {

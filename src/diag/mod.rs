@@ -39,6 +39,38 @@ impl fmt::Debug for Span {
     }
 }
 
+/// Largest source file: spans hold byte offsets as `u32`.
+pub const MAX_SOURCE_BYTES: u64 = u32::MAX as u64;
+
+/// Reads a scene or include file as text. Bytes that are not UTF-8 are read as Latin-1 (as
+/// POV-Ray reads them: an `é` in a comment of an old scene is one byte), each becoming the
+/// character of that code; UTF-8 text is kept as it is.
+pub fn read_source(path: &Path) -> std::io::Result<String> {
+    let size = std::fs::metadata(path)?.len();
+    if size > MAX_SOURCE_BYTES {
+        return Err(std::io::Error::other(format!(
+            "the file has {size} bytes; trace reads at most {MAX_SOURCE_BYTES}"
+        )));
+    }
+    Ok(decode_source(std::fs::read(path)?))
+}
+
+/// Scene text from bytes: UTF-8 where valid, Latin-1 for any other byte.
+pub fn decode_source(bytes: Vec<u8>) -> String {
+    match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => {
+            let bytes = e.into_bytes();
+            let mut text = String::with_capacity(bytes.len() + bytes.len() / 8);
+            for chunk in bytes.utf8_chunks() {
+                text.push_str(chunk.valid());
+                text.extend(chunk.invalid().iter().map(|&b| char::from(b)));
+            }
+            text
+        }
+    }
+}
+
 /// One loaded source file.
 #[derive(Debug, Clone)]
 pub struct SourceFile {
@@ -191,5 +223,18 @@ impl Diagnostic {
             out += &format!("  = {note}\n");
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::decode_source;
+
+    #[test]
+    fn bytes_that_are_not_utf8_read_as_latin1() {
+        assert_eq!(decode_source(b"// caf\xe9\n".to_vec()), "// café\n");
+        // Valid UTF-8 around a stray byte is kept as UTF-8.
+        assert_eq!(decode_source(b"\xc3\xa9 \xff \xc3\xa9".to_vec()), "é ÿ é");
+        assert_eq!(decode_source(b"\"\xe9\" \xc3\xa9".to_vec()), "\"é\" é");
     }
 }

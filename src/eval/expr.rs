@@ -15,8 +15,22 @@ const EQUALITY_TOLERANCE: f64 = 1e-10;
 type Result<T> = std::result::Result<T, Diagnostic>;
 
 impl Evaluator<'_> {
-    /// Evaluates an expression to a value.
+    /// Evaluates an expression to a value; a number that is not finite (an overflow such as
+    /// `1e308*10`, `exp(1000)` or `1e400`, or a NaN such as `val("nan")`) is an error here,
+    /// at the innermost expression that made it.
     pub(super) fn eval(&mut self, expr: &Expr) -> Result<Value> {
+        let value = self.eval_unchecked(expr)?;
+        if value.is_finite() {
+            Ok(value)
+        } else {
+            Err(Diagnostic::error(
+                "this value is not a finite number (it overflows or is undefined)",
+                expr.span,
+            ))
+        }
+    }
+
+    fn eval_unchecked(&mut self, expr: &Expr) -> Result<Value> {
         match &expr.kind {
             ExprKind::Number(n) => Ok(Value::Float(*n)),
             ExprKind::Vector(items) => {
@@ -304,20 +318,7 @@ impl Evaluator<'_> {
         for a in args {
             values.push(self.eval(a)?);
         }
-        let arity = |n: usize| -> Result<()> {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(Diagnostic::error(
-                    format!(
-                        "`{name}` takes {n} argument{}, found {}",
-                        if n == 1 { "" } else { "s" },
-                        args.len()
-                    ),
-                    span,
-                ))
-            }
-        };
+        let arity = |n: usize| check_arity(name, n, args.len(), span);
         let f = |i: usize, me: &Self| -> Result<f64> { me.expect_float(&values[i], args[i].span) };
         let v3 = |i: usize| -> Result<glam::DVec3> {
             match &values[i] {
@@ -502,20 +503,23 @@ pub(super) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnosti
     )
 }
 
+/// The error for a call of `name` with `found` arguments where it takes `wanted`.
+pub(super) fn check_arity(name: &str, wanted: usize, found: usize, span: Span) -> Result<()> {
+    if found == wanted {
+        return Ok(());
+    }
+    let plural = if wanted == 1 { "" } else { "s" };
+    Err(Diagnostic::error(
+        format!("`{name}` takes {wanted} argument{plural}, found {found}"),
+        span,
+    ))
+}
+
 impl Evaluator<'_> {
     /// Functions that do not simply take numbers: `defined(Name)`, the string functions that
     /// give numbers, `file_exists`, and the bitwise ones.
     fn call_special(&mut self, name: &str, args: &[Expr], span: Span) -> Result<Option<Value>> {
-        let want = |n: usize| -> Result<()> {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(Diagnostic::error(
-                    format!("`{name}` takes {n} argument(s), found {}", args.len()),
-                    span,
-                ))
-            }
-        };
+        let want = |n: usize| check_arity(name, n, args.len(), span);
         let f = match name {
             "defined" => {
                 want(1)?;
@@ -560,10 +564,8 @@ impl Evaluator<'_> {
             "file_exists" => {
                 want(1)?;
                 let file = self.string(&args[0])?;
-                let found = std::iter::once(&self.base_dir)
-                    .chain(&self.options.include_paths)
-                    .any(|dir| dir.join(&file).is_file());
-                bool_value(found)
+                // A file outside the allowed folders does not exist for the scene.
+                bool_value(self.sandbox.find(&file).is_ok())
             }
             "dimensions" | "dimension_size" => self.array_dimensions(name, args, span)?,
             "seed" => {

@@ -5,13 +5,17 @@
 //! [`Evaluator::each_item`], which executes these directives in order and hands every other
 //! item to the block's own handler. Loops, macro recursion and include depth are bounded.
 
-use super::{Evaluator, Result, Value, expr::type_error};
+use super::{
+    Evaluator, Result, Value,
+    expr::{STRING_FUNCTIONS, check_arity, type_error},
+};
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{self, ExprKind, Node, NodeKind};
-use std::path::PathBuf;
 
-/// Most iterations of one `#while` or `#for` loop.
-pub const MAX_LOOP_ITERATIONS: u64 = 1_000_000;
+/// Longest string a string function may make (a string doubled in a loop stops here).
+pub const MAX_STRING_BYTES: usize = 1 << 20;
+/// Widest field and most decimals `str`/`vstr` write.
+const MAX_FORMAT_WIDTH: f64 = 1000.0;
 /// Deepest nesting of macro calls.
 pub const MAX_MACRO_DEPTH: usize = 200;
 /// Deepest nesting of include files.
@@ -95,17 +99,8 @@ impl<'a> Evaluator<'a> {
                 }
             }
             NodeKind::While => {
-                let mut n = 0u64;
                 while self.truth(&item.args[0])? {
-                    n += 1;
-                    if n > MAX_LOOP_ITERATIONS {
-                        return Err(Diagnostic::error(
-                            format!(
-                                "#while ran more than {MAX_LOOP_ITERATIONS} times; stopped (an endless loop?)"
-                            ),
-                            item.word_span,
-                        ));
-                    }
+                    self.step("#while", item.word_span)?;
                     self.each_item(&item.children[0].children, f)?;
                 }
             }
@@ -268,15 +263,8 @@ impl<'a> Evaluator<'a> {
         }
         let body = &item.children[1].children;
         let mut i = start;
-        let mut n = 0u64;
         while (step > 0.0 && i <= end + 1e-10) || (step < 0.0 && i >= end - 1e-10) {
-            n += 1;
-            if n > MAX_LOOP_ITERATIONS {
-                return Err(Diagnostic::error(
-                    format!("#for ran more than {MAX_LOOP_ITERATIONS} times; stopped"),
-                    item.word_span,
-                ));
-            }
+            self.step("#for", item.word_span)?;
             self.env.insert(name.clone(), Value::Float(i));
             self.each_item(body, f)?;
             // The body may change the counter, as in POV-Ray.
@@ -328,47 +316,73 @@ impl<'a> Evaluator<'a> {
                 .replace("\\n", "\n")
                 .replace("\\t", "\t")
                 .replace("\\\\", "\\")),
-            ExprKind::Call(name, _, args) if name == "concat" => {
-                let mut out = String::new();
-                for a in args {
-                    out += &self.string(a)?;
-                }
-                Ok(out)
-            }
-            ExprKind::Call(name, _, args) if name == "chr" && args.len() == 1 => {
-                let code = self.float(&args[0])? as u32;
-                Ok(char::from_u32(code).map(String::from).unwrap_or_default())
-            }
-            ExprKind::Call(name, _, args) if name == "substr" && args.len() == 3 => {
-                let text = self.string(&args[0])?;
-                let (start, len) = (
-                    self.float(&args[1])? as usize,
-                    self.float(&args[2])? as usize,
-                );
-                if start < 1 || start - 1 + len > text.chars().count() {
+            ExprKind::Call(name, _, args) if STRING_FUNCTIONS.contains(&name.as_str()) => {
+                let text = self.string_call(name, args, e.span)?;
+                if text.len() > MAX_STRING_BYTES {
                     return Err(Diagnostic::error(
-                        "substr: position and length outside the string",
+                        format!(
+                            "`{name}` makes a string of {} bytes; trace allows at most {MAX_STRING_BYTES}",
+                            text.len()
+                        ),
                         e.span,
                     ));
                 }
-                Ok(text.chars().skip(start - 1).take(len).collect())
+                Ok(text)
             }
-            ExprKind::Call(name, _, args)
-                if (name == "strupr" || name == "strlwr") && args.len() == 1 =>
-            {
+            _ => match self.eval(e)? {
+                Value::Str(s) => Ok(s),
+                other => Err(type_error("a string", &other, e.span)),
+            },
+        }
+    }
+
+    /// The string functions, by name (`name` is one of [`STRING_FUNCTIONS`]).
+    fn string_call(&mut self, name: &str, args: &[syntax::Expr], span: Span) -> Result<String> {
+        let arity = match name {
+            "concat" => args.len().max(1),
+            "chr" | "strupr" | "strlwr" => 1,
+            "str" | "substr" => 3,
+            _ => 5, // vstr
+        };
+        check_arity(name, arity, args.len(), span)?;
+        Ok(match name {
+            "concat" => {
+                let mut out = String::new();
+                for a in args {
+                    out += &self.string(a)?;
+                    if out.len() > MAX_STRING_BYTES {
+                        break; // reported by the caller
+                    }
+                }
+                out
+            }
+            "chr" => {
+                let code = self.float(&args[0])? as u32;
+                char::from_u32(code).map(String::from).unwrap_or_default()
+            }
+            "substr" => {
                 let text = self.string(&args[0])?;
-                Ok(if name == "strupr" {
-                    text.to_uppercase()
-                } else {
-                    text.to_lowercase()
-                })
+                let (start, len) = (self.float(&args[1])?, self.float(&args[2])?);
+                let count = text.chars().count() as f64;
+                if !(start >= 1.0 && len >= 0.0 && start - 1.0 + len <= count) {
+                    return Err(Diagnostic::error(
+                        "substr: position and length outside the string",
+                        span,
+                    ));
+                }
+                text.chars()
+                    .skip(start as usize - 1)
+                    .take(len as usize)
+                    .collect()
             }
-            ExprKind::Call(name, _, args) if name == "str" && args.len() == 3 => {
+            "strupr" => self.string(&args[0])?.to_uppercase(),
+            "strlwr" => self.string(&args[0])?.to_lowercase(),
+            "str" => {
                 let v = self.float(&args[0])?;
                 let (width, precision) = (self.float(&args[1])?, self.float(&args[2])?);
-                Ok(format_float(v, width, precision))
+                format_float(v, width, precision, span)?
             }
-            ExprKind::Call(name, _, args) if name == "vstr" && args.len() == 5 => {
+            _ => {
                 let n = self.float(&args[0])?.clamp(1.0, 5.0) as usize;
                 let v = self.eval(&args[1])?;
                 let Some((components, _)) = v.components() else {
@@ -376,17 +390,14 @@ impl<'a> Evaluator<'a> {
                 };
                 let separator = self.string(&args[2])?;
                 let (width, precision) = (self.float(&args[3])?, self.float(&args[4])?);
-                let parts: Vec<String> = (0..n)
-                    // Missing components (and all but the first of a float) are zeros.
-                    .map(|i| format_float(components[i], width, precision))
-                    .collect();
-                Ok(parts.join(&separator))
+                let mut parts = Vec::with_capacity(n);
+                // Missing components (and all but the first of a float) are zeros.
+                for c in &components[..n] {
+                    parts.push(format_float(*c, width, precision, span)?);
+                }
+                parts.join(&separator)
             }
-            _ => match self.eval(e)? {
-                Value::Str(s) => Ok(s),
-                other => Err(type_error("a string", &other, e.span)),
-            },
-        }
+        })
     }
 
     /// The single object a macro call expands to (`object { Macro(…) modifiers }`).
@@ -452,6 +463,24 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Binds a macro's parameters in a new frame and returns its body text.
+    /// Counts one loop pass or macro call against the scene's evaluation budget
+    /// ([`LoadOptions::max_steps`](super::LoadOptions)), shared by all loops and macros, so
+    /// that nested loops cannot run for hours.
+    fn step(&mut self, what: &str, span: Span) -> Result<()> {
+        self.steps += 1;
+        if self.steps <= self.options.max_steps {
+            return Ok(());
+        }
+        Err(Diagnostic::error(
+            format!(
+                "evaluation stopped at this {what}: the scene has made {} loop passes and macro calls (an endless loop?)",
+                self.options.max_steps
+            ),
+            span,
+        )
+        .with_note("raise the limit with --max-steps N"))
+    }
+
     fn begin_macro(
         &mut self,
         name: &str,
@@ -475,6 +504,7 @@ impl<'a> Evaluator<'a> {
                 self.location(m.name_span)
             )));
         }
+        self.step("macro call", span)?;
         if self.frames.len() >= MAX_MACRO_DEPTH {
             return Err(Diagnostic::error(
                 format!("macros nested more than {MAX_MACRO_DEPTH} deep (endless recursion?)"),
@@ -551,27 +581,8 @@ impl<'a> Evaluator<'a> {
                 item.args[0].span,
             ));
         }
-        let mut searched: Vec<PathBuf> = vec![self.base_dir.clone()];
-        searched.extend(self.options.include_paths.iter().cloned());
-        let Some(path) = searched
-            .iter()
-            .map(|dir| dir.join(&name))
-            .find(|p| p.is_file())
-        else {
-            let folders: Vec<String> = searched
-                .iter()
-                .map(|p| format!("`{}`", p.display()))
-                .collect();
-            return Err(Diagnostic::error(
-                format!("cannot find include file \"{name}\""),
-                item.args[0].span,
-            )
-            .with_note(format!("searched {}", folders.join(", ")))
-            .with_note(
-                "add folders with -L DIR (e.g. -L /usr/share/povray-3.7/include for POV-Ray's own)",
-            ));
-        };
-        let text = std::fs::read_to_string(&path).map_err(|e| {
+        let path = self.find_file(&name, "include file", item.args[0].span)?;
+        let text = crate::diag::read_source(&path).map_err(|e| {
             Diagnostic::error(
                 format!("cannot read {}: {e}", path.display()),
                 item.args[0].span,
@@ -608,17 +619,24 @@ fn unsupported_later(d: Diagnostic) -> Result<Value> {
 }
 
 /// A number as `str(V, L, P)` writes it: at least `width` characters (padded with zeros when
-/// `width` is negative), `precision` decimals (6 when negative).
-fn format_float(v: f64, width: f64, precision: f64) -> String {
+/// `width` is negative), `precision` decimals (6 when negative). Widths and precisions are
+/// bounded by [`MAX_FORMAT_WIDTH`].
+fn format_float(v: f64, width: f64, precision: f64, span: Span) -> Result<String> {
+    if width.abs() > MAX_FORMAT_WIDTH || precision > MAX_FORMAT_WIDTH || width.is_nan() {
+        return Err(Diagnostic::error(
+            format!("`str`: width and precision are at most {MAX_FORMAT_WIDTH}"),
+            span,
+        ));
+    }
     let precision = if precision < 0.0 {
         6
     } else {
         precision as usize
     };
     let w = width.abs() as usize;
-    if width < 0.0 {
+    Ok(if width < 0.0 {
         format!("{v:0w$.precision$}")
     } else {
         format!("{v:w$.precision$}")
-    }
+    })
 }

@@ -219,7 +219,7 @@ impl Evaluator<'_> {
                 file_expr.span,
             ));
         }
-        let path = self.find_file(file);
+        let path = self.find_file(file, "image", file_expr.span)?;
         let img = image::ImageReader::open(&path)
             .map_err(|e| {
                 Diagnostic::error(

@@ -9,6 +9,7 @@ mod expr;
 mod flow;
 mod material;
 mod object;
+mod sandbox;
 mod transform;
 mod unsupported;
 mod value;
@@ -34,7 +35,12 @@ pub struct LoadOptions {
     pub include_paths: Vec<std::path::PathBuf>,
     /// Threads for reading big files (`None`: one per core). The scene is the same for any count.
     pub threads: Option<usize>,
+    /// Most loop passes and macro calls a scene may make, all loops and macros together.
+    pub max_steps: u64,
 }
+
+/// The default of [`LoadOptions::max_steps`]: about a minute of evaluation.
+pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
 
 impl LoadOptions {
     /// Threads that may parse ahead of evaluation.
@@ -53,6 +59,7 @@ impl Default for LoadOptions {
             height: 600,
             include_paths: Vec::new(),
             threads: None,
+            max_steps: DEFAULT_MAX_STEPS,
         }
     }
 }
@@ -109,13 +116,14 @@ pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) ->
         file,
         options.parse_helpers(),
     )?;
-    let base_dir = sources
+    let scene_dir = sources
         .file(file)
         .path
         .parent()
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
-    let mut ev = Evaluator::new(options, base_dir, sources);
+    let sandbox = sandbox::Sandbox::new(&scene_dir, &options.include_paths);
+    let mut ev = Evaluator::new(options, sandbox, sources);
     ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
@@ -155,10 +163,12 @@ pub(crate) struct Evaluator<'a> {
     macros: HashMap<String, flow::Macro>,
     frames: Vec<flow::Frame>,
     include_depth: usize,
+    /// Loop passes and macro calls so far (see [`LoadOptions::max_steps`]).
+    steps: u64,
     /// What `#debug` printed.
     debug_output: String,
-    /// The scene file's folder: relative image files are read from here.
-    base_dir: std::path::PathBuf,
+    /// The folders the scene may read files from.
+    sandbox: sandbox::Sandbox,
     sky_sphere: Option<ir::Pigment>,
     fogs: Vec<ir::Fog>,
     env: HashMap<String, Value>,
@@ -182,7 +192,7 @@ pub(crate) struct Evaluator<'a> {
 impl<'a> Evaluator<'a> {
     fn new(
         options: &'a LoadOptions,
-        base_dir: std::path::PathBuf,
+        sandbox: sandbox::Sandbox,
         sources: &'a mut SourceMap,
     ) -> Evaluator<'a> {
         Evaluator {
@@ -191,8 +201,9 @@ impl<'a> Evaluator<'a> {
             macros: HashMap::new(),
             frames: Vec::new(),
             include_depth: 0,
+            steps: 0,
             debug_output: String::new(),
-            base_dir,
+            sandbox,
             sky_sphere: None,
             fogs: Vec::new(),
             env: HashMap::new(),
@@ -211,14 +222,10 @@ impl<'a> Evaluator<'a> {
         }
     }
 
-    /// A data file named in the scene (image, mesh): like POV-Ray, the scene's folder, then the
-    /// include paths; the scene's folder when none has it (the read then reports the error).
-    fn find_file(&self, file: &str) -> std::path::PathBuf {
-        std::iter::once(&self.base_dir)
-            .chain(&self.options.include_paths)
-            .map(|dir| dir.join(file))
-            .find(|p| p.is_file())
-            .unwrap_or_else(|| self.base_dir.join(file))
+    /// A file named in the scene (`what`: "include file", "image", …): like POV-Ray, the
+    /// scene's folder, then the include paths; never outside them (see [`sandbox`]).
+    fn find_file(&self, file: &str, what: &str, span: Span) -> Result<std::path::PathBuf> {
+        self.sandbox.locate(file, what, span)
     }
 
     fn warn(&mut self, d: Diagnostic) {
@@ -347,7 +354,7 @@ impl<'a> Evaluator<'a> {
             }
             _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
-                self.place(object);
+                self.place(object, node.word_span)?;
             }
             NodeKind::Unknown => {
                 return Err(match unsupported::reason(&node.word) {

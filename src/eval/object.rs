@@ -428,8 +428,21 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// Adds the object's parts (and the lights it holds) to the scene.
-    pub(super) fn place(&mut self, object: ObjectValue) {
+    /// Adds the object's parts (and the lights it holds) to the scene. Transformations that
+    /// overflowed together (`scale 1e200 scale 1e200`) are an error at `span`.
+    pub(super) fn place(&mut self, object: ObjectValue, span: Span) -> Result<()> {
+        let usable = |t: &ir::Transform| t.matrix.is_finite() && t.inverse().matrix.is_finite();
+        if !object
+            .parts
+            .iter()
+            .filter_map(|p| p.transform.as_ref())
+            .all(usable)
+        {
+            return Err(Diagnostic::error(
+                "this object's transformations overflow (scaled or moved beyond what a number can hold) or flatten it",
+                span,
+            ));
+        }
         self.lights.extend(object.lights);
         for (member, part) in object.parts.into_iter().enumerate() {
             let texture = part
@@ -447,6 +460,7 @@ impl Evaluator<'_> {
                 member: member as u32,
             });
         }
+        Ok(())
     }
 
     /// Appends a `triangle` or `smooth_triangle` node to a mesh (a degenerate one is dropped
@@ -587,21 +601,16 @@ impl Evaluator<'_> {
     /// `mesh_file { "name.obj" }`: the file's mesh, read once however often it is used.
     fn mesh_file(&mut self, file_expr: &Expr) -> Result<Arc<Mesh>> {
         let file = self.string(file_expr)?;
-        let path = self.find_file(&file);
+        let path = self.find_file(&file, "mesh file", file_expr.span)?;
         if let Some(mesh) = self.mesh_files.get(&path) {
             return Ok(Arc::clone(mesh));
         }
         let data = crate::meshfile::read(&path).map_err(|e| {
             let line = e.location.map(|l| format!(":{l}")).unwrap_or_default();
-            let d = Diagnostic::error(
+            Diagnostic::error(
                 format!("cannot read mesh file {file}{line}: {}", e.message),
                 file_expr.span,
-            );
-            if path.is_file() {
-                d
-            } else {
-                d.with_note("looked in the scene's folder and the include paths (-L)")
-            }
+            )
         })?;
         let (mesh, degenerate, dropped_smooth) = assemble_mesh(
             &data.vertices,

@@ -64,6 +64,16 @@ pub struct Array {
 }
 
 impl Value {
+    /// False for a number, vector or colour with an infinite or NaN component.
+    pub fn is_finite(&self) -> bool {
+        match self {
+            Value::Float(f) => f.is_finite(),
+            Value::Vector(v) => v.c.iter().all(|c| c.is_finite()),
+            Value::Colour(c) => c.iter().all(|c| c.is_finite()),
+            _ => true,
+        }
+    }
+
     /// The phrase used in "expected …, found …" messages.
     pub fn kind_name(&self) -> &'static str {
         match self {

@@ -44,6 +44,23 @@ pub enum ImageError {
     SizeMismatch(u32, u32, u32, u32),
 }
 
+impl ImageError {
+    /// The same error about `path` (a failure writing a temporary file names the target).
+    fn naming(self, path: &Path) -> ImageError {
+        match self {
+            ImageError::Io { source, .. } => ImageError::Io {
+                path: path.to_path_buf(),
+                source,
+            },
+            ImageError::Format { message, .. } => ImageError::Format {
+                path: path.to_path_buf(),
+                message,
+            },
+            other => other,
+        }
+    }
+}
+
 /// Image file formats.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
@@ -88,18 +105,18 @@ impl Film {
         Film {
             width,
             height,
-            pixels: vec![[0.0; 3]; (width * height) as usize],
+            pixels: vec![[0.0; 3]; width as usize * height as usize],
         }
     }
 
     /// Sets pixel (x, y).
     pub fn set(&mut self, x: u32, y: u32, v: [f32; 3]) {
-        self.pixels[(y * self.width + x) as usize] = v;
+        self.pixels[y as usize * self.width as usize + x as usize] = v;
     }
 
     /// Pixel (x, y).
     pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
-        self.pixels[(y * self.width + x) as usize]
+        self.pixels[y as usize * self.width as usize + x as usize]
     }
 
     /// 8-bit sRGB bytes (clamped), as POV-Ray writes PNGs: `floor(255·srgb(v) + 0.5)`.
@@ -134,21 +151,15 @@ impl Film {
     ) -> Result<(), ImageError> {
         let format =
             Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
-        let tmp = temp_path(path);
-        let result = match format {
-            Format::Exr => self.write_exr(&tmp, threads != Some(1)),
-            Format::Png => self.write_png(&tmp),
-        };
-        if let Err(e) = result {
-            let _ = std::fs::remove_file(&tmp);
-            return Err(e);
+        let tmp = crate::output::TempFile::new(path);
+        match format {
+            Format::Exr => self.write_exr(tmp.path(), threads != Some(1)),
+            Format::Png => self.write_png(tmp.path()),
         }
-        std::fs::rename(&tmp, path).map_err(|source| {
-            let _ = std::fs::remove_file(&tmp);
-            ImageError::Io {
-                path: path.to_path_buf(),
-                source,
-            }
+        .map_err(|e| e.naming(path))?;
+        tmp.persist().map_err(|source| ImageError::Io {
+            path: path.to_path_buf(),
+            source,
         })
     }
 
@@ -240,14 +251,6 @@ impl Film {
     }
 }
 
-fn temp_path(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
-}
-
 /// How different two images are.
 #[derive(Clone, Debug)]
 pub struct Comparison {
@@ -283,7 +286,12 @@ pub fn compare(reference: &Film, test: &Film) -> Result<Comparison, ImageError> 
         for c in 0..3 {
             let d = (p[c] - q[c]) as f64;
             sum += d * d;
-            max_abs = max_abs.max(d.abs());
+            // NaN wins (f64::max would drop it): a NaN pixel must not look like a match.
+            max_abs = if d.is_nan() || max_abs.is_nan() {
+                f64::NAN
+            } else {
+                max_abs.max(d.abs())
+            };
         }
     }
     let rmse = (sum / (reference.pixels.len() * 3).max(1) as f64).sqrt();
@@ -302,16 +310,16 @@ pub fn write_rgb8_png(
     height: u32,
     bytes: Vec<u8>,
 ) -> Result<(), ImageError> {
-    let tmp = temp_path(path);
+    let tmp = crate::output::TempFile::new(path);
     let buffer: image::RgbImage = image::ImageBuffer::from_raw(width, height, bytes)
         .expect("buffer size matches width × height");
     buffer
-        .save_with_format(&tmp, image::ImageFormat::Png)
+        .save_with_format(tmp.path(), image::ImageFormat::Png)
         .map_err(|e| ImageError::Format {
             path: path.to_path_buf(),
             message: e.to_string(),
         })?;
-    std::fs::rename(&tmp, path).map_err(|source| ImageError::Io {
+    tmp.persist().map_err(|source| ImageError::Io {
         path: path.to_path_buf(),
         source,
     })
@@ -338,5 +346,15 @@ mod tests {
             pixels: vec![[0.5, 0.2, 0.8]],
         };
         assert_eq!(f.to_srgb8(), vec![188, 124, 231]);
+    }
+
+    #[test]
+    fn a_nan_pixel_is_a_difference() {
+        let a = Film::new(2, 1);
+        let mut b = Film::new(2, 1);
+        b.set(1, 0, [f32::NAN, 0.0, 0.0]);
+        let c = compare(&a, &b).unwrap();
+        assert!(c.max_abs.is_nan() && c.rmse.is_nan());
+        assert_eq!(b.non_finite_pixels(), 1);
     }
 }

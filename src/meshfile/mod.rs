@@ -142,21 +142,13 @@ pub fn write_mesh2<W: std::io::Write>(
 /// Writes the `mesh2` include to `path` through a temporary file in the same folder, so an
 /// existing file is never left half-written.
 pub fn write_mesh2_file(mesh: &MeshData, name: &str, path: &Path) -> std::io::Result<()> {
-    let mut tmp_name = path.file_name().unwrap_or_default().to_os_string();
-    tmp_name.push(".partial");
-    let tmp = path.with_file_name(tmp_name);
-    let result = std::fs::File::create(&tmp).and_then(|f| {
-        let mut w = std::io::BufWriter::new(f);
-        write_mesh2(mesh, name, &mut w)?;
-        std::io::Write::flush(&mut w)
-    });
-    match result.and_then(|()| std::fs::rename(&tmp, path)) {
-        Ok(()) => Ok(()),
-        Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
-            Err(e)
-        }
-    }
+    let tmp = crate::output::TempFile::new(path);
+    let f = std::fs::File::create(tmp.path())?;
+    let mut w = std::io::BufWriter::new(f);
+    write_mesh2(mesh, name, &mut w)?;
+    std::io::Write::flush(&mut w)?;
+    drop(w);
+    tmp.persist()
 }
 
 /// A POV-Ray identifier made from a file name: `bunny-1.obj` → `Bunny_1`.

@@ -105,15 +105,21 @@ fn corner(
     let v = parts.next().unwrap_or("");
     let _texture = parts.next();
     let n = parts.next().filter(|s| !s.is_empty());
-    let vertex = index(v, mesh.vertices.len(), "vertex", line)?;
+    let vertex = index(v, mesh.vertices.len(), ("vertex", "vertices"), line)?;
     let normal = n
-        .map(|n| index(n, mesh.normals.len(), "normal", line))
+        .map(|n| index(n, mesh.normals.len(), ("normal", "normals"), line))
         .transpose()?;
     Ok((vertex, normal))
 }
 
 /// An OBJ index (1-based, or negative from the end of the list so far) as a 0-based index.
-fn index(token: &str, len: usize, what: &str, line: Option<usize>) -> Result<u32, ParseError> {
+/// `what` names the list, in the singular and the plural.
+fn index(
+    token: &str,
+    len: usize,
+    (what, plural): (&str, &str),
+    line: Option<usize>,
+) -> Result<u32, ParseError> {
     let i: i64 = token
         .parse()
         .map_err(|_| (line, format!("`{token}` is not a {what} index")))?;
@@ -121,7 +127,7 @@ fn index(token: &str, len: usize, what: &str, line: Option<usize>) -> Result<u32
     if i == 0 || resolved < 0 || resolved >= len as i64 {
         return Err((
             line,
-            format!("{what} index {i} is out of range (the file has {len} {what}s so far)"),
+            format!("{what} index {i} is out of range (the file has {len} {plural} so far)"),
         ));
     }
     Ok(resolved as u32)

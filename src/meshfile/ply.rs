@@ -146,23 +146,21 @@ pub(super) fn parse(bytes: &[u8]) -> Result<MeshData, ParseError> {
                 }
             }
             if !xyz.is_empty() {
-                mesh.vertices
-                    .push(DVec3::new(values[xyz[0]], values[xyz[1]], values[xyz[2]]));
-                if let Some(n) = &normal {
-                    mesh.normals
-                        .push(DVec3::new(values[n[0]], values[n[1]], values[n[2]]));
+                let v = DVec3::new(values[xyz[0]], values[xyz[1]], values[xyz[2]]);
+                let n = normal
+                    .as_ref()
+                    .map(|n| DVec3::new(values[n[0]], values[n[1]], values[n[2]]));
+                if !v.is_finite() || n.is_some_and(|n| !n.is_finite()) {
+                    return Err(at(
+                        reader.line(),
+                        "a coordinate or normal is not a finite number".into(),
+                    ));
                 }
+                mesh.vertices.push(v);
+                mesh.normals.extend(n);
             }
             reader.end_item().map_err(|e| at(reader.line(), e))?;
         }
-    }
-    if mesh
-        .vertices
-        .iter()
-        .chain(&mesh.normals)
-        .any(|v| !v.is_finite())
-    {
-        return Err((None, "a vertex or normal is not a finite number".into()));
     }
     if !mesh.normals.is_empty() {
         // Per-vertex normals: the normal indices are the vertex indices.

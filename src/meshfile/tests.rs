@@ -37,7 +37,7 @@ fn obj_errors_name_the_line() {
         (
             "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n",
             5,
-            "vertex index 4 is out of range",
+            "vertex index 4 is out of range (the file has 3 vertices so far)",
         ),
         (
             "v 0 0 0\nv 1 0 0\nf 1 2\n",
@@ -151,12 +151,26 @@ fn ply_errors_name_the_line_or_element() {
             "vertex 0: the file ends early",
         ),
         ("plyx\n".to_string(), Some(1), "not a PLY file"),
+        (
+            ply_header("ascii", 1) + "0 0 0\n1 nan 0\n",
+            Some(12),
+            "vertex 1: a coordinate or normal is not a finite number",
+        ),
     ];
     for (text, line, message) in cases {
         let (at, m) = ply::parse(text.as_bytes()).unwrap_err();
         assert!(m.contains(message), "{text:?}: {m}");
         assert_eq!(at, line, "{text:?}: {m}");
     }
+    let mut nan = ply_header("binary_little_endian", 1).into_bytes();
+    for c in [f32::NAN, 0.0, 0.0] {
+        nan.extend(c.to_le_bytes());
+    }
+    let (_, m) = ply::parse(&nan).unwrap_err();
+    assert!(
+        m.contains("vertex 0: a coordinate or normal is not a finite number"),
+        "{m}"
+    );
 }
 
 #[test]

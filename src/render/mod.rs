@@ -84,6 +84,13 @@ pub fn thread_pool(
         .build()
 }
 
+/// The memory a render of `width` × `height` pixels holds at its peak, whatever the scene:
+/// the finished blocks and the film they are copied into.
+pub fn bytes_needed(width: u32, height: u32) -> usize {
+    let pixels = width as usize * height as usize;
+    pixels.saturating_mul(std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>())
+}
+
 /// Renders `scene` into a film of linear values, on the threads of `pool`.
 pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) -> Rendered {
     let (w, h) = (options.width, options.height);

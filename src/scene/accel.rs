@@ -35,19 +35,25 @@ impl std::fmt::Debug for ObjectIndex {
 impl ObjectIndex {
     /// Builds the index if the scene is big enough to gain from one.
     pub fn build(bounds: &[Option<(glam::DVec3, glam::DVec3)>]) -> Option<ObjectIndex> {
+        // A box too big for f32 (or not finite) goes to the unbounded list: the builder
+        // cannot place it.
+        let boxes: Vec<Option<Aabb>> = bounds
+            .iter()
+            .map(|b| {
+                b.map(|(lo, hi)| outward_aabb(lo, hi))
+                    .filter(|a| a.min.is_finite() && a.max.is_finite())
+            })
+            .collect();
         let ids: Vec<u32> = (0..bounds.len() as u32)
-            .filter(|&i| bounds[i as usize].is_some())
+            .filter(|&i| boxes[i as usize].is_some())
             .collect();
         if ids.len() < MIN_OBJECTS_FOR_BVH {
             return None;
         }
-        let boxes: Vec<Aabb> = ids
-            .iter()
-            .map(|&i| {
-                let (lo, hi) = bounds[i as usize].expect("filtered above");
-                outward_aabb(lo, hi)
-            })
+        let unbounded = (0..bounds.len() as u32)
+            .filter(|&i| boxes[i as usize].is_none())
             .collect();
+        let boxes: Vec<Aabb> = boxes.into_iter().flatten().collect();
         // Object tests cost more than box tests (transforms, several shape kinds): small leaves.
         let params = BvhBuildParams {
             max_prims_per_leaf: 1,
@@ -58,9 +64,6 @@ impl ObjectIndex {
             .primitive_indices
             .iter()
             .map(|&k| ids[k as usize])
-            .collect();
-        let unbounded = (0..bounds.len() as u32)
-            .filter(|&i| bounds[i as usize].is_none())
             .collect();
         Some(ObjectIndex {
             bvh,

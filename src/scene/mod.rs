@@ -434,9 +434,12 @@ impl Scene {
             .map(|(o, material)| {
                 let (shape, transform) =
                     build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
+                // Bounds that overflowed (a huge scale) make the object unbounded, tested
+                // for every ray, rather than a box no structure can hold.
                 let bounds = shape
                     .bounds()
-                    .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()));
+                    .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()))
+                    .filter(|(lo, hi)| lo.is_finite() && hi.is_finite());
                 Object {
                     shape,
                     bounds,

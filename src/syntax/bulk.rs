@@ -194,7 +194,9 @@ fn number(bytes: &[u8], mut i: usize) -> Option<(f64, usize)> {
         return None;
     }
     let text = std::str::from_utf8(&bytes[start..i]).ok()?;
-    Some((text.parse().ok()?, i))
+    // An overflowing literal (1e400) is left to the grammar, whose evaluation reports it.
+    let value: f64 = text.parse().ok()?;
+    value.is_finite().then_some((value, i))
 }
 
 /// `count, <a, b, c>, … }` starting at `i`: the list and the offset of the closing `}`, or
@@ -204,11 +206,14 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
     let (count, end) = number(bytes, i)?;
     let count_range = ((offset + i) as u32, (offset + end) as u32);
     i = skip_ws(bytes, end);
+    // Room for the announced entries, but no more than the rest of the file can hold (an
+    // entry takes at least 8 bytes: `,<0,0,0>`), whatever the count says.
+    let room = count.clamp(0.0, ((bytes.len() - i) / 8) as f64) as usize;
     let mut list = BulkList {
         count,
         count_range,
-        values: Vec::with_capacity(count.clamp(0.0, 1e8) as usize),
-        offsets: Vec::with_capacity(count.clamp(0.0, 1e8) as usize + 1),
+        values: Vec::with_capacity(room),
+        offsets: Vec::with_capacity(room + 1),
     };
     loop {
         match bytes.get(i)? {

@@ -176,14 +176,16 @@ fn convert_writes_a_mesh2_include_that_evaluates_to_the_same_mesh() {
             String::from_utf8_lossy(&output.stderr)
         );
         // The same object through the extension and through the include.
-        let direct = format!(
-            "mesh_file {{ \"{}/examples/meshes/{file}\" }}",
-            crate::root().display()
-        );
+        // (The mesh folder is given with -L: a scene reads only its own and those folders.)
+        let direct = format!("mesh_file {{ \"{file}\" }}");
         let included = format!("#include \"{}\"\nobject {{ Converted }}", inc.display());
+        let options = trace::LoadOptions {
+            include_paths: vec![crate::root().join("examples/meshes")],
+            ..Default::default()
+        };
         let load = |text: String| {
             let path = dir.join("scene.rt");
-            trace::load_str(&path, text, &trace::LoadOptions::default())
+            trace::load_str(&path, text, &options)
                 .unwrap_or_else(|e| panic!("{e}"))
                 .scene
         };

@@ -11,6 +11,8 @@ fn bad_scenes_give_located_messages() {
             width: 320,
             height: 240,
             include_paths: vec![std::path::PathBuf::from("tests/scenes/err")],
+            // (A small evaluation budget keeps the endless-loop scenes quick.)
+            max_steps: 100_000,
             ..Default::default()
         };
         let message = match trace::load_str(&name, text, &options) {

@@ -4,6 +4,7 @@ mod analytic;
 mod cli;
 mod errors;
 mod golden;
+mod hostile;
 mod ir_snapshots;
 mod parsing;
 mod stability;

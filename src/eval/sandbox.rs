@@ -1,0 +1,149 @@
+//! Which files a scene may read.
+//!
+//! Every file a scene names (`#include`, `image_map`, `mesh_file`, `file_exists`) is looked
+//! up in the scene's folder, then in the `-L` folders, in that order. The file found is
+//! resolved to its canonical path (`..` and symbolic links followed) and must lie inside one
+//! of those folders, so a scene cannot read `/etc/passwd`, `../secret` or a symbolic link
+//! pointing out of its folder, and an error never shows a line of such a file. This is the
+//! policy of POV-Ray's `povray.conf` with reading restricted to the scene and library paths;
+//! users widen it by giving more folders with `-L DIR`.
+
+use crate::diag::{Diagnostic, Span};
+use std::path::{Path, PathBuf};
+
+/// The folders a scene may read, in search order, with their canonical forms.
+#[derive(Debug)]
+pub(crate) struct Sandbox {
+    /// The folders as given (the scene's folder first), for messages and searching.
+    search: Vec<PathBuf>,
+    /// Canonical forms of the folders that exist: a file must lie under one of these.
+    roots: Vec<PathBuf>,
+}
+
+/// Why a name gave no readable file.
+#[derive(Debug, PartialEq)]
+pub(crate) enum Refusal {
+    /// No folder holds a file of that name.
+    NotFound,
+    /// The file found lies outside every allowed folder (after following links).
+    Outside,
+}
+
+impl Sandbox {
+    /// The scene's folder (`""` for the current one) and the `-L` folders.
+    pub(crate) fn new(scene_dir: &Path, include_paths: &[PathBuf]) -> Sandbox {
+        let scene_dir = if scene_dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            scene_dir
+        };
+        let search: Vec<PathBuf> = std::iter::once(scene_dir.to_path_buf())
+            .chain(include_paths.iter().cloned())
+            .collect();
+        let roots = search
+            .iter()
+            .filter_map(|dir| dir.canonicalize().ok())
+            .collect();
+        Sandbox { search, roots }
+    }
+
+    /// The canonical path of the file `name` names: the first folder that has it decides.
+    pub(crate) fn find(&self, name: &str) -> Result<PathBuf, Refusal> {
+        let found = self
+            .search
+            .iter()
+            .map(|dir| dir.join(name))
+            .find(|p| p.is_file())
+            .ok_or(Refusal::NotFound)?;
+        let canonical = found.canonicalize().map_err(|_| Refusal::NotFound)?;
+        if self.roots.iter().any(|root| canonical.starts_with(root)) {
+            Ok(canonical)
+        } else {
+            Err(Refusal::Outside)
+        }
+    }
+
+    /// Like [`Sandbox::find`], with the refusal as a located error naming the file as the
+    /// scene wrote it (`what` says what kind of file: "include file", "image", …).
+    pub(crate) fn locate(&self, name: &str, what: &str, span: Span) -> Result<PathBuf, Diagnostic> {
+        let folders = self
+            .search
+            .iter()
+            .map(|p| format!("`{}`", p.display()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        match self.find(name) {
+            Ok(path) => Ok(path),
+            Err(Refusal::NotFound) => Err(Diagnostic::error(
+                format!("cannot find {what} \"{name}\""),
+                span,
+            )
+            .with_note(format!("searched {folders}"))
+            .with_note(
+                "add folders with -L DIR (e.g. -L /usr/share/povray-3.7/include for POV-Ray's own)",
+            )),
+            Err(Refusal::Outside) => Err(Diagnostic::error(
+                format!("{what} \"{name}\" lies outside the folders this scene may read"),
+                span,
+            )
+            .with_note(format!(
+                "a scene reads files only from {folders} (links followed)"
+            ))
+            .with_note("to allow another folder, add it with -L DIR")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scratch folder holding `scene/inc.inc`, `scene/sub/x.inc`, `outside/secret.inc`,
+    /// and (on Unix) `scene/link.inc` pointing at the secret.
+    fn layout(tag: &str) -> PathBuf {
+        let root = std::env::temp_dir().join(format!("trace-sandbox-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&root);
+        std::fs::create_dir_all(root.join("scene/sub")).unwrap();
+        std::fs::create_dir_all(root.join("outside")).unwrap();
+        std::fs::write(root.join("scene/inc.inc"), "").unwrap();
+        std::fs::write(root.join("scene/sub/x.inc"), "").unwrap();
+        std::fs::write(root.join("outside/secret.inc"), "").unwrap();
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(root.join("outside/secret.inc"), root.join("scene/link.inc"))
+            .unwrap();
+        root
+    }
+
+    #[test]
+    fn files_inside_the_scene_folder_are_found() {
+        let root = layout("inside");
+        let sandbox = Sandbox::new(&root.join("scene"), &[]);
+        assert!(sandbox.find("inc.inc").is_ok());
+        assert!(sandbox.find("sub/x.inc").is_ok());
+        assert!(sandbox.find("sub/../inc.inc").is_ok());
+        assert_eq!(sandbox.find("missing.inc"), Err(Refusal::NotFound));
+        let _ = std::fs::remove_dir_all(root);
+    }
+
+    #[test]
+    fn files_outside_are_refused_however_named() {
+        let root = layout("outside");
+        let sandbox = Sandbox::new(&root.join("scene"), &[]);
+        assert_eq!(sandbox.find("../outside/secret.inc"), Err(Refusal::Outside));
+        let absolute = root.join("outside/secret.inc");
+        assert_eq!(
+            sandbox.find(absolute.to_str().unwrap()),
+            Err(Refusal::Outside)
+        );
+        #[cfg(unix)]
+        assert_eq!(sandbox.find("link.inc"), Err(Refusal::Outside));
+        assert_eq!(sandbox.find("/etc/passwd"), Err(Refusal::Outside));
+        // Allowing the folder with -L lets all of them through.
+        let widened = Sandbox::new(&root.join("scene"), &[root.join("outside")]);
+        assert!(widened.find("../outside/secret.inc").is_ok());
+        assert!(widened.find("secret.inc").is_ok());
+        #[cfg(unix)]
+        assert!(widened.find("link.inc").is_ok());
+        let _ = std::fs::remove_dir_all(root);
+    }
+}

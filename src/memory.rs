@@ -1,0 +1,176 @@
+//! A memory budget for the whole process.
+//!
+//! [`Limited`] wraps the system allocator, counts the bytes held, and refuses to go past a
+//! limit set at start-up ([`set_limit`]). Past the limit, or when the system itself has no
+//! memory left, it does what Rust's default would not: it prints a message naming the limit,
+//! removes any output file being written ([`crate::output::remove_pending`]) and ends the
+//! process with exit code 1, instead of aborting (exit 134) or being killed by the kernel.
+//! The `trace` binary installs it as the global allocator; the library works without it.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+/// The system allocator with a byte budget.
+pub struct Limited;
+
+static IN_USE: AtomicUsize = AtomicUsize::new(0);
+static LIMIT: AtomicUsize = AtomicUsize::new(usize::MAX);
+static FAILING: AtomicBool = AtomicBool::new(false);
+
+/// Sets the budget in bytes (the default is no budget).
+pub fn set_limit(bytes: usize) {
+    LIMIT.store(bytes, Ordering::Relaxed);
+}
+
+/// The budget in bytes.
+pub fn limit() -> usize {
+    LIMIT.load(Ordering::Relaxed)
+}
+
+/// Bytes allocated now (through [`Limited`]).
+pub fn in_use() -> usize {
+    IN_USE.load(Ordering::Relaxed)
+}
+
+/// The memory this machine can give a process now: `MemAvailable` from `/proc/meminfo`
+/// (physical memory not in use, counting caches that can be dropped), if known.
+pub fn available() -> Option<usize> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: usize = line.split_whitespace().nth(1)?.parse().ok()?;
+    kib.checked_mul(1024)
+}
+
+/// Parses a size such as `512M`, `8G`, `1.5G` or a plain number of bytes.
+pub fn parse_size(text: &str) -> Option<usize> {
+    let text = text.trim();
+    let (number, unit) = match text.char_indices().find(|(_, c)| c.is_ascii_alphabetic()) {
+        Some((i, _)) => (&text[..i], text[i..].to_ascii_uppercase()),
+        None => (text, String::new()),
+    };
+    let scale = match unit.trim_end_matches("IB").trim_end_matches('B') {
+        "" => 1.0,
+        "K" => 1024.0,
+        "M" => 1024.0 * 1024.0,
+        "G" => 1024.0 * 1024.0 * 1024.0,
+        "T" => 1024.0 * 1024.0 * 1024.0 * 1024.0,
+        _ => return None,
+    };
+    let bytes = number.trim().parse::<f64>().ok()? * scale;
+    (bytes.is_finite() && bytes >= 1.0 && bytes < usize::MAX as f64).then_some(bytes as usize)
+}
+
+/// A size for people: `1.5 GiB`, `300 MiB`.
+pub fn format_size(bytes: usize) -> String {
+    let b = bytes as f64;
+    if b >= 1024.0 * 1024.0 * 1024.0 {
+        format!("{:.1} GiB", b / (1024.0 * 1024.0 * 1024.0))
+    } else {
+        format!("{:.0} MiB", (b / (1024.0 * 1024.0)).ceil())
+    }
+}
+
+impl Limited {
+    /// Reserves `size` bytes of the budget; false (and nothing reserved) if over it.
+    fn reserve(size: usize) -> bool {
+        let before = IN_USE.fetch_add(size, Ordering::Relaxed);
+        if before.saturating_add(size) <= LIMIT.load(Ordering::Relaxed) {
+            return true;
+        }
+        IN_USE.fetch_sub(size, Ordering::Relaxed);
+        false
+    }
+
+    /// Ends the process: a message, no half-written output, exit code 1.
+    #[cold]
+    fn out_of_memory(size: usize) -> ! {
+        // Allocations from here on (the message, removing files) pass the budget.
+        FAILING.store(true, Ordering::Relaxed);
+        let limit = LIMIT.load(Ordering::Relaxed);
+        let message = if limit == usize::MAX {
+            format!(
+                "error: out of memory (the system refused {} more)\n",
+                format_size(size)
+            )
+        } else {
+            format!(
+                "error: out of memory: the scene needs more than trace's limit of {} (raise it with --max-memory SIZE)\n",
+                format_size(limit)
+            )
+        };
+        let _ = std::io::Write::write_all(&mut std::io::stderr(), message.as_bytes());
+        crate::output::remove_pending();
+        // Not `exit`: other threads may hold locks that its clean-up would wait for.
+        unsafe { libc_exit(1) }
+    }
+}
+
+unsafe extern "C" {
+    /// POSIX `_exit`: ends the process at once, without running clean-up handlers.
+    #[link_name = "_exit"]
+    fn libc_exit(status: i32) -> !;
+}
+
+// SAFETY: every method forwards to `System` with the same layout, and only counts the bytes;
+// memory is never handed out twice or freed with another layout.
+unsafe impl GlobalAlloc for Limited {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        if !Limited::reserve(layout.size()) && !FAILING.load(Ordering::Relaxed) {
+            Limited::out_of_memory(layout.size());
+        }
+        let p = unsafe { System.alloc(layout) };
+        if p.is_null() {
+            Limited::out_of_memory(layout.size());
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        if !Limited::reserve(layout.size()) && !FAILING.load(Ordering::Relaxed) {
+            Limited::out_of_memory(layout.size());
+        }
+        let p = unsafe { System.alloc_zeroed(layout) };
+        if p.is_null() {
+            Limited::out_of_memory(layout.size());
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) };
+        IN_USE.fetch_sub(layout.size(), Ordering::Relaxed);
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let old = layout.size();
+        if new_size > old && !Limited::reserve(new_size - old) && !FAILING.load(Ordering::Relaxed) {
+            Limited::out_of_memory(new_size);
+        }
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if p.is_null() {
+            Limited::out_of_memory(new_size);
+        }
+        if new_size < old {
+            IN_USE.fetch_sub(old - new_size, Ordering::Relaxed);
+        }
+        p
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_with_binary_units() {
+        assert_eq!(parse_size("512M"), Some(512 << 20));
+        assert_eq!(parse_size("8G"), Some(8 << 30));
+        assert_eq!(parse_size("8gib"), Some(8 << 30));
+        assert_eq!(parse_size("1.5G"), Some(3 << 29));
+        assert_eq!(parse_size("4096"), Some(4096));
+        assert_eq!(parse_size("lots"), None);
+        assert_eq!(parse_size("-1G"), None);
+        assert_eq!(format_size(3 << 29), "1.5 GiB");
+        assert_eq!(format_size(300 << 20), "300 MiB");
+    }
+}

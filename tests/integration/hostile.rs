@@ -1,0 +1,349 @@
+//! Hostile input (issue 13): the sandbox, no panic or abort on any input, bounded work and
+//! memory, non-finite values, bytes that are not UTF-8, interrupted writes.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn trace() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_trace"))
+}
+
+/// A fresh scratch folder.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("trace-hostile-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    dir
+}
+
+const CAMERA: &str =
+    "camera { location <0, 0, -5> look_at 0 }\nlight_source { <5, 5, -5> rgb 1 }\n";
+
+/// Renders scene text (written to `dir/scene.rt`) at 16×12; returns the output.
+fn run_in(dir: &Path, text: &str, extra: &[&str]) -> Output {
+    let scene = dir.join("scene.rt");
+    std::fs::write(&scene, text).expect("write scene");
+    trace()
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.join("out.exr"))
+        .args(["--width", "16", "--height", "12", "--quiet"])
+        .args(extra)
+        .output()
+        .expect("runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Loads scene text through the library; the error message, or `None` if it loads.
+fn load_error(text: &str) -> Option<String> {
+    trace::load_str(
+        Path::new("hostile.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .err()
+    .map(|e| e.to_string())
+}
+
+/// A secret outside the scene's folder, a scene folder with a link to it, and files the
+/// scene may not read, each holding a marker that must never be printed.
+fn sandbox_layout(name: &str) -> (PathBuf, PathBuf) {
+    let root = scratch(name);
+    let (scene_dir, outside) = (root.join("scene"), root.join("outside"));
+    std::fs::create_dir_all(&scene_dir).unwrap();
+    std::fs::create_dir_all(&outside).unwrap();
+    let secret = "SECRET_MARKER line of a private file\n";
+    for file in ["x.inc", "x.png", "x.obj"] {
+        std::fs::write(outside.join(file), secret).unwrap();
+    }
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(outside.join("x.inc"), scene_dir.join("link.inc")).unwrap();
+    (scene_dir, outside)
+}
+
+#[test]
+fn a_scene_reads_no_file_outside_its_folder_and_the_include_paths() {
+    let (scene_dir, outside) = sandbox_layout("sandbox");
+    let absolute = outside.join("x.inc");
+    let mut cases = vec![
+        "#include \"/etc/passwd\"".to_string(),
+        "#include \"/proc/self/environ\"".to_string(),
+        "#include \"../outside/x.inc\"".to_string(),
+        format!("#include \"{}\"", absolute.display()),
+        format!("{CAMERA}sphere {{ 0, 1 pigment {{ image_map {{ png \"../outside/x.png\" }} }} }}"),
+        format!("{CAMERA}mesh_file {{ \"../outside/x.obj\" }}"),
+    ];
+    if cfg!(unix) {
+        cases.push("#include \"link.inc\"".to_string());
+    }
+    for text in &cases {
+        let out = run_in(&scene_dir, text, &[]);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{text}: {err}");
+        assert!(
+            err.contains("lies outside the folders this scene may read"),
+            "{text}: {err}"
+        );
+        assert!(err.contains("scene.rt:"), "located: {err}");
+        assert!(
+            !err.contains("SECRET_MARKER") && !err.contains("root:"),
+            "{text}: {err}"
+        );
+    }
+    // `file_exists` sees no file outside either.
+    let probe = format!("#if (file_exists(\"../outside/x.inc\")) #error \"seen\" #end\n{CAMERA}");
+    let out = run_in(&scene_dir, &probe, &[]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    // A folder given with -L is allowed: the include is read (and, not being a scene, fails
+    // to parse, which is the scene author's own doing).
+    let out = run_in(&scene_dir, &cases[2], &["-L", outside.to_str().unwrap()]);
+    assert!(stderr(&out).contains("x.inc:1:1"), "{}", stderr(&out));
+}
+
+#[test]
+fn wrong_argument_counts_and_huge_widths_are_errors_not_crashes() {
+    let cases = [
+        ("#declare S = str(1);", "`str` takes 3 arguments, found 1"),
+        ("#declare S = chr();", "`chr` takes 1 argument, found 0"),
+        (
+            "#declare S = substr(\"abc\", 1);",
+            "`substr` takes 3 arguments, found 2",
+        ),
+        (
+            "#declare S = strupr();",
+            "`strupr` takes 1 argument, found 0",
+        ),
+        (
+            "#declare S = strlwr(\"a\", \"b\");",
+            "`strlwr` takes 1 argument, found 2",
+        ),
+        (
+            "#declare S = vstr(3, x);",
+            "`vstr` takes 5 arguments, found 2",
+        ),
+        (
+            "#declare S = str(1, 65536, 0);",
+            "width and precision are at most",
+        ),
+        (
+            "#declare S = str(1, -1e6, 0);",
+            "width and precision are at most",
+        ),
+        (
+            "#declare S = str(1, 0, 1e9);",
+            "width and precision are at most",
+        ),
+        (
+            "#declare S = substr(\"abc\", 2, 1e30);",
+            "outside the string",
+        ),
+    ];
+    for (text, message) in cases {
+        let err = load_error(text).unwrap_or_else(|| panic!("{text} should not load"));
+        assert!(err.contains(message), "{text}: {err}");
+        assert!(err.contains("hostile.rt:1:"), "{text}: {err}");
+    }
+}
+
+#[test]
+fn values_that_are_not_finite_are_located_errors() {
+    for (text, culprit) in [
+        ("sphere { 0, exp(1000) }", "exp(1000)"),
+        ("sphere { 0, 1e400 }", "1e400"),
+        ("sphere { 0, 1e308*10 - 1e308*10 }", "1e308*10"),
+        ("#declare A = val(\"nan\");", "val(\"nan\")"),
+        ("sphere { <1, 0, 1e308*10>, 1 }", "1e308*10"),
+        (
+            "mesh2 { vertex_vectors { 3, <0,0,0>, <1e400,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }",
+            "<1e400",
+        ),
+    ] {
+        let err = load_error(text).unwrap_or_else(|| panic!("{text} should not load"));
+        assert!(err.contains("not a finite number"), "{text}: {err}");
+        let column = text.find(culprit).unwrap() + 1;
+        assert!(
+            err.contains(&format!("hostile.rt:1:{column}")),
+            "{text}: {err}"
+        );
+    }
+    let err = load_error("sphere { 0, 1 scale 1e200 scale 1e200 }").expect("overflow");
+    assert!(err.contains("transformations overflow"), "{err}");
+}
+
+#[test]
+fn an_object_with_unbounded_extent_among_many_renders() {
+    // Bounds past f32 (a huge but finite sphere) among enough objects for a BVH: it is
+    // tested for every ray instead.
+    let mut text = String::from(CAMERA);
+    for i in 0..12 {
+        text += &format!("sphere {{ <{i}, 0, 0>, 0.5 pigment {{ rgb 1 }} }}\n");
+    }
+    text += "sphere { 0, 1e39 pigment { rgb 1 } hollow }\n";
+    let dir = scratch("unbounded");
+    let out = run_in(&dir, &text, &[]);
+    assert!(out.status.success(), "{}", stderr(&out));
+}
+
+#[test]
+fn work_and_memory_are_bounded() {
+    let dir = scratch("bounds");
+    // Nested loops share one budget.
+    let loops =
+        "#declare N = 0;\n#for (i, 0, 999999) #for (j, 0, 999999) #declare N = N + 1; #end #end\n";
+    let out = run_in(&dir, loops, &["--max-steps", "5000"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("--max-steps"), "{}", stderr(&out));
+    // Endless macro recursion that fans out is cut by the same budget.
+    let fan = "#macro F(n) #if (n < 40) F(n+1) F(n+1) #end #end\nF(0)\n";
+    let out = run_in(&dir, fan, &["--max-steps", "5000"]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("--max-steps"), "{}", stderr(&out));
+    // A string doubled in a loop stops at the string limit.
+    let doubling = "#declare S = \"ab\";\n#for (i, 0, 40) #declare S = concat(S, S); #end\n";
+    let err = load_error(doubling).expect("too long");
+    assert!(err.contains("trace allows at most"), "{err}");
+    // A count announces more than the list holds: no allocation of the announced size.
+    let announced = "mesh2 { vertex_vectors { 100000000, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }";
+    let err = load_error(announced).expect("wrong count");
+    assert!(
+        err.contains("announces 100000000 entries but lists 3"),
+        "{err}"
+    );
+    // An image bigger than memory is refused before any work.
+    std::fs::write(dir.join("small.rt"), CAMERA).unwrap();
+    let out = trace()
+        .arg(dir.join("small.rt"))
+        .arg("-o")
+        .arg(dir.join("huge.exr"))
+        .args(["--width", "65536", "--height", "65536"])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr(&out).contains("more than the limit"),
+        "{}",
+        stderr(&out)
+    );
+    // Running out of memory mid-scene ends with exit 1 and a message, not an abort.
+    let mut big = String::from(CAMERA);
+    big += "#declare A = array[1000000];\n#for (i, 0, 999999) #declare A[i] = <i, i, i>; #end\n";
+    let out = run_in(&dir, &big, &["--max-memory", "20M"]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("out of memory"), "{}", stderr(&out));
+    assert!(!dir.join("out.exr").exists());
+}
+
+#[test]
+fn latin1_bytes_read_as_in_povray() {
+    let dir = scratch("latin1");
+    let mut text = b"// caf\xe9 cr\xe8me\n#debug \"na\xefve\\n\"\n".to_vec();
+    text.extend(CAMERA.bytes());
+    text.extend(b"sphere { 0, 1 pigment { rgb 1 } }\n");
+    let scene = dir.join("scene.rt");
+    std::fs::write(&scene, text).unwrap();
+    let out = trace()
+        .arg(&scene)
+        .args([
+            "-o",
+            dir.join("out.png").to_str().unwrap(),
+            "--width",
+            "8",
+            "--height",
+            "6",
+        ])
+        .output()
+        .expect("runs");
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(stderr(&out).contains("naïve"), "{}", stderr(&out));
+}
+
+#[test]
+fn output_problems_are_found_before_rendering_and_name_the_output() {
+    let dir = scratch("output");
+    let out = trace()
+        .arg(crate::root().join("examples/basic_spheres.rt"))
+        .arg("-o")
+        .arg(dir.join("missing/out.png"))
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(1));
+    let err = stderr(&out);
+    assert!(
+        err.contains("missing/out.png") && !err.contains(".tmp"),
+        "{err}"
+    );
+    // Before parsing: a broken scene still reports the output first.
+    std::fs::write(dir.join("broken.rt"), "sphere {").unwrap();
+    let out = trace()
+        .arg(dir.join("broken.rt"))
+        .arg("-o")
+        .arg(dir.join("missing/x.exr"))
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+}
+
+#[test]
+fn compare_reports_a_nan_image_as_different() {
+    let dir = scratch("nan");
+    let mut film = trace::Film::new(4, 4);
+    let clean = dir.join("clean.exr");
+    film.write(&clean).unwrap();
+    film.set(1, 1, [f32::NAN, 0.0, 0.0]);
+    let nan = dir.join("nan.exr");
+    film.write(&nan).unwrap();
+    let out = trace()
+        .arg("compare")
+        .arg(&clean)
+        .arg(&nan)
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("max |diff| NaN"), "{stdout}");
+    assert!(stdout.contains("NaN/inf    0 / 1"), "{stdout}");
+}
+
+/// An interrupt while the output is being written removes the temporary file. The write is
+/// held open by a FIFO placed where the temporary file will be, so the signal lands in it.
+#[cfg(unix)]
+#[test]
+fn an_interrupted_write_leaves_no_temporary_file() {
+    let dir = scratch("interrupt");
+    let out = dir.join("img.png");
+    std::fs::write(&out, b"previous").unwrap();
+    for signal in ["INT", "TERM"] {
+        let mut child = trace()
+            .arg(crate::root().join("examples/basic_spheres.rt"))
+            .arg("-o")
+            .arg(&out)
+            .args(["--width", "320", "--height", "240", "--aa", "0", "--quiet"])
+            .spawn()
+            .expect("runs");
+        let tmp = dir.join(format!(".img.png.{}.tmp", child.id()));
+        let made = Command::new("mkfifo").arg(&tmp).status().expect("mkfifo");
+        assert!(made.success());
+        // The writer blocks opening the FIFO; wait until the render is done and it does.
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        let mut waited = 0;
+        while child.try_wait().unwrap().is_none() && waited < 600 {
+            if std::fs::read_to_string(format!("/proc/{}/wchan", child.id()))
+                .is_ok_and(|w| w.contains("wait_for_partner"))
+            {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(100));
+            waited += 1;
+        }
+        Command::new("kill")
+            .args([format!("-{signal}"), child.id().to_string()])
+            .status()
+            .expect("kill");
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(130), "SIG{signal}");
+        assert!(!tmp.exists(), "SIG{signal} left {}", tmp.display());
+        assert_eq!(std::fs::read(&out).unwrap(), b"previous");
+    }
+}
