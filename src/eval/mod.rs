@@ -153,6 +153,8 @@ pub(crate) struct FogItems {
     offset: f64,
     alt: f64,
     alt_span: Span,
+    /// Where the distance was given (for the check of its sign).
+    distance_span: Span,
     up: DVec3,
 }
 
@@ -447,6 +449,7 @@ impl<'a> Evaluator<'a> {
             offset: 0.0,
             alt: 0.0,
             alt_span: node.word_span,
+            distance_span: node.word_span,
             up: DVec3::Y,
         };
         self.each_item(&node.children, &mut |ev, item| {
@@ -455,7 +458,10 @@ impl<'a> Evaluator<'a> {
                 NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Fog(declared) => items = *declared,
                     // A declared colour or float (POV-Ray copies only fogs this way).
-                    Value::Float(d) => items.distance = d,
+                    Value::Float(d) => {
+                        items.distance = d;
+                        items.distance_span = item.span;
+                    }
                     other => {
                         let c = colour5(&other).ok_or_else(|| {
                             expr::type_error("a fog or a colour", &other, item.span)
@@ -463,7 +469,10 @@ impl<'a> Evaluator<'a> {
                         items.colour = value::to_colour(c);
                     }
                 },
-                NodeKind::FogDistance => items.distance = ev.float(arg(0))?,
+                NodeKind::FogDistance => {
+                    items.distance = ev.float(arg(0))?;
+                    items.distance_span = arg(0).span;
+                }
                 NodeKind::FogType => {
                     let t = ev.float(arg(0))?.trunc();
                     if t != 1.0 && t != 2.0 {
@@ -517,6 +526,12 @@ impl<'a> Evaluator<'a> {
     /// used, so a declared fog may leave fog_alt to its user).
     fn fog(&mut self, node: &Node) -> Result<ir::Fog> {
         let items = self.fog_items(node)?;
+        if items.distance < 0.0 {
+            return Err(Diagnostic::error(
+                "a fog's distance must not be negative (POV-Ray renders NaN pixels with one)",
+                items.distance_span,
+            ));
+        }
         let kind = if items.ground {
             if items.alt == 0.0 {
                 return Err(Diagnostic::error(

@@ -217,7 +217,10 @@ fn output_value(c: Rgb, gamma: Gamma) -> [f32; 3] {
             Gamma::Off => crate::film::srgb_to_linear(v),
         }
     };
-    [decode(c.x) as f32, decode(c.y) as f32, decode(c.z) as f32]
+    // A value past the f32 range (a colour of 1e39) is written as the largest float, not as
+    // infinity.
+    let out = |v: f64| decode(v).clamp(-f64::from(f32::MAX), f64::from(f32::MAX)) as f32;
+    [out(c.x), out(c.y), out(c.z)]
 }
 
 /// One rendered block.

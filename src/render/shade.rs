@@ -463,17 +463,30 @@ impl Crossing {
 }
 
 /// `cos^brilliance`; brilliance 1 (the default) skips the `pow`, which gives the same value.
+/// A light grazing the surface (`cos` 0) gives nothing, whatever the exponent: a negative
+/// brilliance would make it infinite.
 fn brilliance(cos: f64, exponent: f64) -> f64 {
     if exponent == 1.0 {
         cos
-    } else {
+    } else if cos > 0.0 {
         cos.powf(exponent)
+    } else {
+        0.0
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_grazing_light_gives_nothing_at_any_brilliance() {
+        for exponent in [-3.0, -1.0, 0.0, 0.5, 1.0, 10.0] {
+            assert_eq!(brilliance(0.0, exponent), 0.0, "{exponent}");
+            assert!(brilliance(0.5, exponent).is_finite());
+        }
+        assert_eq!(brilliance(0.5, -1.0), 2.0);
+    }
 
     #[test]
     fn metallic_fresnel_matches_povray_table() {

@@ -171,6 +171,33 @@ fn values_that_are_not_finite_are_located_errors() {
     }
     let err = load_error("sphere { 0, 1 scale 1e200 scale 1e200 }").expect("overflow");
     assert!(err.contains("transformations overflow"), "{err}");
+    // A negative fog distance makes POV-Ray's pixels NaN: refused, at the distance.
+    let err = load_error("fog { distance -1 rgb 1 }").expect("negative distance");
+    assert!(
+        err.contains("must not be negative") && err.contains("hostile.rt:1:16"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_negative_brilliance_renders_without_nan() {
+    // Lit so that some shading points see the light exactly at grazing incidence.
+    let text = format!(
+        "{CAMERA}plane {{ y, 0 pigment {{ rgb 1 }} finish {{ brilliance -1 }} }}\n\
+         light_source {{ <0, 0, 10> rgb 1 }}\n\
+         sphere {{ <0, 0, 0>, 1 pigment {{ rgb 1 }} finish {{ brilliance -2 }} }}"
+    );
+    let scene = trace::load_str(Path::new("b.rt"), text, &trace::LoadOptions::default())
+        .expect("loads")
+        .scene;
+    let options = trace::RenderOptions {
+        width: 32,
+        height: 24,
+        antialias: trace::Antialias::Off,
+        threads: None,
+    };
+    let film = trace::render(&scene, &options).expect("renders").film;
+    assert_eq!(film.non_finite_pixels(), 0);
 }
 
 #[test]
