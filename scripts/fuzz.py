@@ -7,7 +7,8 @@ tokens inserted from a dictionary of hostile values (1e400, huge counts, wrong a
 counts, includes of files outside the scene's folder, bytes that are not UTF-8, ...). Each is
 rendered by the release binary at 24x18, as a user would run it, and judged:
 
-  exit 0        fine if the image has no NaN or infinite pixel;
+  exit 0        fine if the image has no NaN or infinite pixel (pixels that overflowed on
+                extreme inputs are written black with a warning: counted apart, as "warned");
   exit 1 or 2   fine if stderr starts with an error message and holds no panic;
   anything else (a panic's 101, an abort's 134, a signal, a timeout) is a finding;
   and any run whose output shows the marker of the file outside the sandbox is a finding.
@@ -164,6 +165,8 @@ def judge(scene_dir, index, data):
     elif code == 0:
         if os.path.exists(image) and non_finite_pixels(image) != 0:
             verdict = "non-finite pixels"
+        elif b"overflowed to NaN" in err:
+            code = "0 (warned)"
     elif code in (1, 2):
         if b"panicked" in err or not err.startswith(b"error"):
             verdict = "bad message"

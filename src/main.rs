@@ -243,6 +243,12 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         threads: args.threads.map(|t| t as usize),
     };
     let rendered = trace::render_owned(loaded.scene, &options)?;
+    if rendered.non_finite > 0 {
+        eprintln!(
+            "warning: {} pixels overflowed to NaN or infinity (extreme values in the scene, such as a colour component of 1e300) and are written black",
+            rendered.non_finite
+        );
+    }
     let traced = Instant::now();
     rendered
         .film

@@ -612,6 +612,83 @@ pub fn grazing(width: u32, height: u32) -> [Count; 3] {
     [nan, background, differ].map(|failures| Count { failures, rays: n })
 }
 
+/// The S5 mesh probe: a flat 10×10 grid of unit cells in the plane z = 0, centred on
+/// `(offset, offset)`, seen straight on by an orthographic camera whose 17×17 pixel centres
+/// fall on the grid's vertices and edges (rays with two zero direction components, running
+/// along the faces of the BVH's boxes). As one `mesh2` (`as_mesh`: the mesh BVH) or as 200
+/// separate triangles (the top-level BVH). The background is red and must not be seen.
+pub fn grid_probe(offset: f64, as_mesh: bool) -> String {
+    let (n, half) = (10i32, 5i32);
+    let vertex = |i: i32, j: i32| (f64::from(i - half) + offset, f64::from(j - half) + offset);
+    let mut faces = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            faces.push([(i, j), (i + 1, j), (i + 1, j + 1)]);
+            faces.push([(i, j), (i + 1, j + 1), (i, j + 1)]);
+        }
+    }
+    let point = |(i, j): (i32, i32)| {
+        let (x, y) = vertex(i, j);
+        format!("<{x}, {y}, 0>")
+    };
+    let geometry = if as_mesh {
+        let index = |(i, j): (i32, i32)| j * (n + 1) + i;
+        let vertices: Vec<String> = (0..=n)
+            .flat_map(|j| (0..=n).map(move |i| (i, j)))
+            .map(point)
+            .collect();
+        let indices: Vec<String> = faces
+            .iter()
+            .map(|f| format!("<{}, {}, {}>", index(f[0]), index(f[1]), index(f[2])))
+            .collect();
+        format!(
+            "mesh2 {{ vertex_vectors {{ {}, {} }} face_indices {{ {}, {} }} pigment {{ rgb 1 }} }}\n",
+            vertices.len(),
+            vertices.join(", "),
+            indices.len(),
+            indices.join(", ")
+        )
+    } else {
+        faces
+            .iter()
+            .map(|f| {
+                format!(
+                    "triangle {{ {}, {}, {} pigment {{ rgb 1 }} }}\n",
+                    point(f[0]),
+                    point(f[1]),
+                    point(f[2])
+                )
+            })
+            .collect()
+    };
+    format!(
+        "background {{ rgb <1, 0, 0> }}\n\
+         camera {{ orthographic location <{offset}, {offset}, -10> look_at <{offset}, {offset}, 0> \
+         right x*8.5 up y*8.5 }}\n\
+         light_source {{ <{offset}, {offset}, -100> rgb 1 }}\n{geometry}"
+    )
+}
+
+/// S5 mesh probe counts: background pixels of [`grid_probe`] at 17×17 (289 rays).
+pub fn grid_leaks(offset: f64, as_mesh: bool) -> Count {
+    let ir = load_scene(grid_probe(offset, as_mesh), 17, 17);
+    let scene = crate::scene::Scene::build(&ir);
+    assert!(
+        as_mesh || scene.index.is_some(),
+        "200 triangles make a top-level BVH"
+    );
+    let film = render_built(&scene, 17, 17, None);
+    let failures = film
+        .pixels
+        .iter()
+        .filter(|p| p[0] > 0.99 && p[1] < 0.01 && p[2] < 0.01)
+        .count() as u64;
+    Count {
+        failures,
+        rays: film.pixels.len() as u64,
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // S8: normals under non-uniform scale.
 

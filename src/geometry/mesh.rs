@@ -51,22 +51,19 @@ pub fn outward_aabb(min: DVec3, max: DVec3) -> Aabb {
     }
 }
 
-/// An obvhs ray for `ray` (f32), with a reciprocal direction that stays finite and correct for
-/// short directions (obvhs's own clamps components below an absolute 1.2e-7).
+/// An obvhs ray for `ray` (f32), with the exact reciprocal direction: a zero component gives
+/// an infinite one, so a ray parallel to a slab stays in it for every t when its origin lies
+/// inside (and never enters it otherwise), as the slab test assumes. (Replacing a zero by a
+/// tiny component, as obvhs's own constructor does, makes the ray drift out of a box padded
+/// by 1e-7 of its size: a grid seen straight on leaked along its lines.) An origin exactly on
+/// a padded box face makes a NaN there, whichever way it resolves: the padding keeps all
+/// geometry strictly inside, so a ray along the face meets none of it.
 pub fn bvh_ray(ray: &Ray, tmax: f64) -> BvhRay {
     let d = ray.direction.as_vec3a();
-    let m = d.abs().max_element() * f32::EPSILON;
-    let inv = |x: f32| {
-        if x.abs() <= m {
-            x.signum() / m
-        } else {
-            1.0 / x
-        }
-    };
     BvhRay {
         origin: ray.origin.as_vec3a(),
         direction: d,
-        inv_direction: Vec3A::new(inv(d.x), inv(d.y), inv(d.z)),
+        inv_direction: d.recip(),
         tmin: 0.0,
         tmax: if tmax.is_finite() {
             ((tmax * (1.0 + 1e-6)) as f32).next_up()

@@ -73,6 +73,9 @@ pub struct Rendered {
     pub tests: counters::Tests,
     /// Time spent building the render-ready scene (acceleration structures included).
     pub build_time: std::time::Duration,
+    /// Pixels whose value overflowed to NaN or infinity (only from extreme inputs, such as a
+    /// filter of 1e300, where POV-Ray's pixels are NaN too): written black, and reported.
+    pub non_finite: u64,
 }
 
 /// The worker threads `options` ask for.
@@ -119,10 +122,16 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
     let mut counts = RayCounts::default();
     let mut tests = counters::Tests::default();
     let mut samples = 0;
+    let mut non_finite = 0;
     for b in &blocks {
         for (k, value) in b.pixels.iter().enumerate() {
             let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
-            film.set(x, y, output_value(*value, scene.gamma));
+            let mut v = output_value(*value, scene.gamma);
+            if v.iter().any(|c| !c.is_finite()) {
+                non_finite += 1;
+                v = [0.0; 3];
+            }
+            film.set(x, y, v);
         }
         counts.add(&b.counts);
         tests.add(&b.tests);
@@ -134,6 +143,7 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
         tests,
         samples,
         build_time: std::time::Duration::ZERO,
+        non_finite,
     }
 }
 

@@ -374,3 +374,22 @@ fn an_interrupted_write_leaves_no_temporary_file() {
         assert_eq!(std::fs::read(&out).unwrap(), b"previous");
     }
 }
+
+#[test]
+fn pixels_that_overflow_are_written_black_with_a_warning() {
+    // POV-Ray's own pixels are NaN or infinite here; trace writes no such pixel.
+    let dir = scratch("overflow");
+    let text = format!(
+        "{CAMERA}sphere {{ 0, 1 pigment {{ rgbf <0.9, 1, 0.9, 1e300> }} interior {{ ior 1.5 }} }}\n\
+         plane {{ y, -1 pigment {{ checker rgb 1 rgb 0 }} }}\n"
+    );
+    let out = run_in(&dir, &text, &[]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("overflowed to NaN or infinity"),
+        "{}",
+        stderr(&out)
+    );
+    let film = trace::Film::read(&dir.join("out.exr")).unwrap();
+    assert_eq!(film.non_finite_pixels(), 0);
+}

@@ -4,8 +4,8 @@
 
 use trace::stability::{
     OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals, far_sphere,
-    far_torus, glass_sphere_nan, grazing, mesh_leaks, pane_stack, scale_invariance, sphere_acne,
-    thin_wall, thread_determinism,
+    far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks, pane_stack, scale_invariance,
+    sphere_acne, thin_wall, thread_determinism,
 };
 
 #[test]
@@ -85,6 +85,19 @@ fn grazing_rays_normals_and_threads_give_no_failures() {
     );
     assert_eq!(ellipsoid_normals(2000).failures, 0);
     assert_eq!(thread_determinism(64, 48).failures, 0);
+}
+
+#[test]
+fn rays_along_bvh_box_faces_do_not_leak_through_a_grid() {
+    // Pixel centres on the grid's vertices and edges: rays with zero direction components
+    // run along the faces of the BVH's boxes (issue 13: 64 of 289 leaked at the origin).
+    for offset in [0.0, 1e3, 1e5] {
+        for as_mesh in [true, false] {
+            let c = grid_leaks(offset, as_mesh);
+            assert_eq!(c.rays, 289);
+            assert_eq!(c.failures, 0, "offset {offset}, mesh {as_mesh}: {c:?}");
+        }
+    }
 }
 
 #[test]
