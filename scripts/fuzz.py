@@ -16,7 +16,7 @@ rendered by the release binary at 24x18, as a user would run it, and judged:
 Findings are saved in tests/fuzz/crashers/ (replayed by `cargo test`, tests/integration/
 fuzz_replay.rs); a summary is printed at the end.
 
-    python3 scripts/fuzz.py --minutes 60 [--seed 1] [--jobs 2]
+    python3 scripts/fuzz.py --minutes 60 [--seed 1] [--jobs 2] [--binary PATH]
 """
 
 import argparse
@@ -179,11 +179,14 @@ def judge(scene_dir, index, data):
 
 
 def main():
+    global BINARY
     ap = argparse.ArgumentParser()
     ap.add_argument("--minutes", type=float, default=5)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--jobs", type=int, default=1)
+    ap.add_argument("--binary", default=BINARY, help="the trace binary (default: the release build)")
     args = ap.parse_args()
+    BINARY = os.path.abspath(args.binary)
     if not os.path.exists(BINARY):
         subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True)
     seeds = seed_files()

@@ -8,8 +8,8 @@ use std::fmt::Write as _;
 use std::time::Instant;
 use trace::stability::{
     Count, OffsetMethod, SphereMethod, TriangleMethod, black_pixels, contact_shadow,
-    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, mesh_leaks, pane_scene,
-    pane_stack, scale_invariance, sphere_acne, thin_wall, thread_determinism,
+    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks,
+    pane_scene, pane_stack, scale_invariance, sphere_acne, thin_wall, thread_determinism,
 };
 
 const RADII: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -197,6 +197,23 @@ fn main() {
             count,
             ns_per_ray: ns,
         });
+    }
+    for offset in [0.0, 1e3, 1e5] {
+        for (as_mesh, structure) in [(true, "mesh BVH"), (false, "top-level BVH")] {
+            let (count, ns) = timed(|| grid_leaks(offset, as_mesh));
+            rows.push(Row {
+                experiment: "S5",
+                counter: Box::leak(
+                    format!("grid background pixels, {structure}, offset {offset:e}")
+                        .into_boxed_str(),
+                ),
+                method: "trace",
+                a: offset,
+                b: 17.0,
+                count,
+                ns_per_ray: ns,
+            });
+        }
     }
     let (count, ns) = timed(|| ellipsoid_normals(rays));
     rows.push(Row {
@@ -488,7 +505,10 @@ fn report(rows: &[Row], rays: u64) -> String {
         "\n## S5, S8, S10: grazing rays, non-uniform scale, threads\n\n\
          S5: a closed room of boxes with faces on integer planes, seen by an orthographic\n\
          camera whose pixel centres lie on quarter units (rays run exactly along faces, with\n\
-         zero direction components), 256×192. S8: random hits on a sphere scaled (4, 1, 1);\n\
+         zero direction components), 256×192; and a flat 10×10 grid of unit cells seen straight\n\
+         on at 17×17, pixel centres on its vertices and edges, as one mesh2 and as 200\n\
+         triangles, at offsets 0, 1e3 and 1e5 from the origin. S8: random hits on a sphere\n\
+         scaled (4, 1, 1);\n\
          the shading normal against the ellipsoid's exact normal. S10: the S7 scene rendered\n\
          with 1, 2 and 3 threads, compared bit for bit.\n\n\
          | scene | counter | failures | of |\n|---|---|---:|---:|"
