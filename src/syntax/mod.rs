@@ -810,10 +810,13 @@ impl Lower {
         if matches!(rule, Rule::leftover | Rule::fog_turbulence) {
             // Named by its first token.
             let text = pair.as_str();
+            // At least the first character (which may be a blank such as U+00A0, or any
+            // character of several bytes).
+            let first = text.chars().next().map_or(0, char::len_utf8);
             let len = text
                 .find(|c: char| c.is_whitespace() || c == '{' || c == '<')
                 .unwrap_or(text.len())
-                .max(1);
+                .max(first);
             node.word = text[..len].to_string();
             node.word_span = Span {
                 end: span.start + len as u32,

@@ -285,6 +285,15 @@ fn latin1_bytes_read_as_in_povray() {
         .expect("runs");
     assert!(out.status.success(), "{}", stderr(&out));
     assert!(stderr(&out).contains("naïve"), "{}", stderr(&out));
+    // A word that starts with a blank of two bytes (U+00A0, Latin-1 0xA0) is named, not a
+    // panic (found by the fuzzer).
+    for text in [
+        "sphere { 0, 1 pigment { r\u{a0}b 1 } }",
+        "\u{a0}sphere { 0, 1 }",
+    ] {
+        let err = load_error(text).expect("an error");
+        assert!(err.contains("hostile.rt:1:"), "{err}");
+    }
 }
 
 #[test]
