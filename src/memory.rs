@@ -81,6 +81,19 @@ impl Limited {
         false
     }
 
+    /// Reserves `size` bytes, then allocates them with `allocate`; ends the process if either
+    /// fails.
+    fn within_budget(size: usize, allocate: impl FnOnce() -> *mut u8) -> *mut u8 {
+        if !Limited::reserve(size) && !FAILING.load(Ordering::Relaxed) {
+            Limited::out_of_memory(size);
+        }
+        let p = allocate();
+        if p.is_null() {
+            Limited::out_of_memory(size);
+        }
+        p
+    }
+
     /// Ends the process: a message, no half-written output, exit code 1.
     #[cold]
     fn out_of_memory(size: usize) -> ! {
@@ -115,25 +128,11 @@ unsafe extern "C" {
 // memory is never handed out twice or freed with another layout.
 unsafe impl GlobalAlloc for Limited {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        if !Limited::reserve(layout.size()) && !FAILING.load(Ordering::Relaxed) {
-            Limited::out_of_memory(layout.size());
-        }
-        let p = unsafe { System.alloc(layout) };
-        if p.is_null() {
-            Limited::out_of_memory(layout.size());
-        }
-        p
+        Limited::within_budget(layout.size(), || unsafe { System.alloc(layout) })
     }
 
     unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        if !Limited::reserve(layout.size()) && !FAILING.load(Ordering::Relaxed) {
-            Limited::out_of_memory(layout.size());
-        }
-        let p = unsafe { System.alloc_zeroed(layout) };
-        if p.is_null() {
-            Limited::out_of_memory(layout.size());
-        }
-        p
+        Limited::within_budget(layout.size(), || unsafe { System.alloc_zeroed(layout) })
     }
 
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
