@@ -68,8 +68,8 @@ struct RenderArgs {
     /// POV-Ray's standard includes: -L /usr/share/povray-3.7/include
     #[arg(short = 'L', long = "include-path", value_name = "DIR")]
     include_path: Vec<PathBuf>,
-    /// Most loop passes and macro calls the scene may make, all together (an endless loop
-    /// stops here with an error).
+    /// Most evaluation steps the scene may take (statements, loop passes, macro calls), all
+    /// together: an endless loop stops here with an error.
     #[arg(long, default_value_t = trace::eval::DEFAULT_MAX_STEPS, value_name = "N")]
     max_steps: u64,
     /// Most memory trace may use, e.g. 512M or 8G (default: the memory available at start).

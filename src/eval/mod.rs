@@ -35,12 +35,15 @@ pub struct LoadOptions {
     pub include_paths: Vec<std::path::PathBuf>,
     /// Threads for reading big files (`None`: one per core). The scene is the same for any count.
     pub threads: Option<usize>,
-    /// Most loop passes and macro calls a scene may make, all loops and macros together.
+    /// Most evaluation steps a scene may take, all together: statements and block items run,
+    /// loop passes, and macro calls (one step per 16 bytes of the macro's body).
     pub max_steps: u64,
 }
 
-/// The default of [`LoadOptions::max_steps`]: about a minute of evaluation.
-pub const DEFAULT_MAX_STEPS: u64 = 100_000_000;
+/// The default of [`LoadOptions::max_steps`]: under a minute of evaluation on every loop
+/// measured (0.3 to 1 µs a step: a `#declare` loop, objects made in a loop, macros called in
+/// a loop; README, "Limits on work and memory").
+pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 
 impl LoadOptions {
     /// Threads that may parse ahead of evaluation.
@@ -165,7 +168,7 @@ pub(crate) struct Evaluator<'a> {
     macros: HashMap<String, flow::Macro>,
     frames: Vec<flow::Frame>,
     include_depth: usize,
-    /// Loop passes and macro calls so far (see [`LoadOptions::max_steps`]).
+    /// Evaluation steps so far (see [`LoadOptions::max_steps`]).
     steps: u64,
     /// What `#debug` printed.
     debug_output: String,

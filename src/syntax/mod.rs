@@ -655,6 +655,17 @@ impl Lower {
     fn node(&self, pair: Pair<'_, Rule>) -> Node {
         let span = self.span(&pair);
         let rule = pair.as_rule();
+        if rule == Rule::layered_texture {
+            // One texture is a plain texture (the grammar reads both with one rule, so that a
+            // texture that fails to parse is not tried twice).
+            let mut textures = pair
+                .clone()
+                .into_inner()
+                .filter(|p| p.as_rule() == Rule::texture);
+            if let (Some(only), None) = (textures.next(), textures.next()) {
+                return self.node(only);
+            }
+        }
         let kind = match rule {
             Rule::version => NodeKind::Version,
             Rule::declare => NodeKind::Declare,

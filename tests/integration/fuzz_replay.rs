@@ -1,5 +1,6 @@
 //! Replays every input the fuzzer (scripts/fuzz.py) saved in tests/fuzz/crashers, in the
-//! same surroundings and with the same options, and holds each to the fuzzer's rules: exit
+//! same surroundings and with the same options (but a tenth of the evaluation budget: the
+//! tests run a debug build), and holds each to the fuzzer's rules: exit
 //! 0, 1 or 2, never a panic, a message on failure, no NaN or infinite pixel in an image, and
 //! never a line of the file outside the scene's folder.
 
@@ -17,7 +18,7 @@ const OPTIONS: [&str; 9] = [
     "--max-memory",
     "2G",
     "--max-steps",
-    "2000000",
+    "200000",
 ];
 
 /// The fuzzer's workspace: a scene folder with the examples' data files and a link out, and

@@ -402,3 +402,19 @@ fn pixels_that_overflow_are_written_black_with_a_warning() {
     let film = trace::Film::read(&dir.join("out.exr")).unwrap();
     assert_eq!(film.non_finite_pixels(), 0);
 }
+
+#[test]
+fn broken_nesting_parses_in_linear_time() {
+    // Each of these once made the parser retry a failed rule at every level: time doubled
+    // with each level (found by the fuzzer). 40 levels would take days; now milliseconds.
+    let cases = [
+        "#declare T = texture { pigment { rgb 1 }\n".repeat(40),
+        format!("#macro M()\n{}", "#if (1) #while (0)\n".repeat(40)),
+        "#declare P = pigment { #declare T = texture { finish { phong 1 }\n".repeat(40),
+    ];
+    for text in cases {
+        let start = std::time::Instant::now();
+        assert!(load_error(&text).is_some());
+        assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+    }
+}
