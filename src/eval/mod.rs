@@ -67,6 +67,15 @@ impl Default for LoadOptions {
     }
 }
 
+/// A light's type as POV-Ray's parser keeps it: the last type keyword wins.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum LightType {
+    Point,
+    Spot,
+    /// `shadowless`: POV-Ray's fill light.
+    Fill,
+}
+
 /// The camera items as written; resolved in POV-Ray's fixed order by [`resolve_camera`].
 #[derive(Clone, Debug)]
 pub struct CameraItems {
@@ -570,7 +579,11 @@ impl<'a> Evaluator<'a> {
             Some(e) => self.rgb_arg(e)?,
             None => Rgb::ZERO,
         };
-        let (mut spot, mut parallel, mut shadowless) = (false, false, false);
+        // POV-Ray keeps one light type, set by the last of `spotlight` and `shadowless` (a
+        // fill light); `parallel` is a separate flag. `spotlight` resets the cone to its
+        // defaults, and the cone's items need a spotlight before them.
+        let mut light_type = LightType::Point;
+        let mut parallel = false;
         let mut point_at = DVec3::Z;
         let (mut radius, mut falloff, mut tightness) = (None, None, None);
         let (mut fade_distance, mut fade_power) = (0.0, 0.0);
@@ -585,9 +598,12 @@ impl<'a> Evaluator<'a> {
             let arg = |i: usize| &item.args[i];
             match item.kind {
                 NodeKind::LightFlag => match item.word.as_str() {
-                    "spotlight" => spot = true,
+                    "spotlight" => {
+                        light_type = LightType::Spot;
+                        (radius, falloff, tightness) = (None, None, None);
+                    }
                     "parallel" => parallel = true,
-                    "shadowless" => shadowless = true,
+                    "shadowless" => light_type = LightType::Fill,
                     flag => {
                         area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
                         match flag {
@@ -597,6 +613,23 @@ impl<'a> Evaluator<'a> {
                         }
                     }
                 },
+                NodeKind::PointAt | NodeKind::Radius | NodeKind::Falloff | NodeKind::Tightness
+                    if light_type != LightType::Spot
+                        && !(parallel && item.kind == NodeKind::PointAt) =>
+                {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "`{}` needs `spotlight` before it (POV-Ray refuses it on a {} light)",
+                            item.word,
+                            if light_type == LightType::Fill {
+                                "shadowless"
+                            } else {
+                                "point"
+                            }
+                        ),
+                        item.word_span,
+                    ));
+                }
                 NodeKind::PointAt => point_at = ev.vec3(arg(0))?,
                 NodeKind::Radius => radius = Some(ev.float(arg(0))?),
                 NodeKind::Falloff => falloff = Some(ev.float(arg(0))?),
@@ -679,7 +712,7 @@ impl<'a> Evaluator<'a> {
         }
         let kind = if parallel {
             ir::LightKind::Parallel { point_at }
-        } else if spot {
+        } else if light_type == LightType::Spot {
             ir::LightKind::Spot {
                 point_at,
                 radius_deg: radius.unwrap_or(30.0),
@@ -698,7 +731,7 @@ impl<'a> Evaluator<'a> {
             position,
             colour,
             kind,
-            shadowless,
+            shadowless: light_type == LightType::Fill,
             fade,
             area,
         };
