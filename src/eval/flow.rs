@@ -445,18 +445,39 @@ impl<'a> Evaluator<'a> {
         call_span: Span,
     ) -> Result<Value> {
         let (text, file, offset) = self.begin_macro(name, name_span, args)?;
-        let result = syntax::parse_fragment_expr(&text, file, offset).and_then(|fragment| {
-            let mut only_directives = |_: &mut Evaluator<'a>, n: &Node| {
-                Err(Diagnostic::error(
-                    "a macro used as a value may hold only directives besides its value",
-                    n.word_span,
-                ))
-            };
-            self.each_item(&fragment.before, &mut only_directives)?;
-            let value = self.eval(&fragment.expr)?;
-            self.each_item(&fragment.after, &mut only_directives)?;
-            Ok(value)
-        });
+        let only_directives = |n: &Node| {
+            Diagnostic::error(
+                "a macro used as a value may hold only directives besides its value",
+                n.word_span,
+            )
+        };
+        let result = match syntax::parse_fragment_expr(&text, file, offset) {
+            Ok(fragment) => {
+                let mut directives = |_: &mut Evaluator<'a>, n: &Node| Err(only_directives(n));
+                self.each_item(&fragment.before, &mut directives)
+                    .and_then(|()| {
+                        let value = self.eval(&fragment.expr)?;
+                        self.each_item(&fragment.after, &mut directives)?;
+                        Ok(value)
+                    })
+            }
+            // The value may stand inside the directives: `#if (A) rgb 1 #else rgb 0 #end`
+            // (a colour there, as POV-Ray reads the tokens the directives leave).
+            Err(not_an_expression) => match syntax::parse_fragment_items(&text, file, offset) {
+                Ok(items) => {
+                    let mut value = None;
+                    self.each_item(&items, &mut |ev, n| {
+                        if n.kind != NodeKind::ColourItem || value.is_some() {
+                            return Err(only_directives(n));
+                        }
+                        value = Some(ev.eval(&n.args[0])?);
+                        Ok(())
+                    })
+                    .and_then(|()| value.ok_or(not_an_expression))
+                }
+                Err(_) => Err(not_an_expression),
+            },
+        };
         let result = result.map_err(|d| {
             d.with_note(format!(
                 "in macro {name}, called at {}",

@@ -55,23 +55,15 @@ impl Evaluator<'_> {
     /// `pigment { [colour | Name | checker … | gradient … | image_map {…}] [color_map] transforms }`.
     pub(super) fn pigment(&mut self, node: &Node, mut pigment: Pigment) -> Result<Pigment> {
         if let Some(e) = node.args.first() {
-            let v = self.eval(e)?;
-            pigment = match v {
-                Value::Pigment(p) => p,
-                other => match colour5(&other) {
-                    // A new colour or pattern keeps the placement of the pigment it replaces, as
-                    // in POV-Ray (a pigment block modifies the current pigment).
-                    Some(c) => Pigment {
-                        pattern: Pattern::Solid(to_colour(c)),
-                        transform: pigment.transform,
-                    },
-                    None => return Err(type_error("a colour or pigment", &other, e.span)),
-                },
-            };
+            pigment = self.pigment_value(e, pigment)?;
         }
         let mut map: Option<(ColourMap, crate::diag::Span)> = None;
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
+                // A colour left by a directive or a macro call in the pigment's body.
+                NodeKind::ColourItem => {
+                    pigment = ev.pigment_value(&item.args[0], pigment.clone())?
+                }
                 NodeKind::Checker => {
                     let blue = Colour {
                         rgb: Rgb::new(0.0, 0.0, 1.0),
@@ -128,6 +120,22 @@ impl Evaluator<'_> {
             }
         }
         Ok(pigment)
+    }
+
+    /// The pigment a colour or pigment value `e` makes of `pigment`: a new colour keeps the
+    /// placement of the pigment it replaces, as in POV-Ray (a pigment block modifies the
+    /// current pigment).
+    fn pigment_value(&mut self, e: &crate::syntax::Expr, pigment: Pigment) -> Result<Pigment> {
+        Ok(match self.eval(e)? {
+            Value::Pigment(p) => p,
+            other => match colour5(&other) {
+                Some(c) => Pigment {
+                    pattern: Pattern::Solid(to_colour(c)),
+                    transform: pigment.transform,
+                },
+                None => return Err(type_error("a colour or pigment", &other, e.span)),
+            },
+        })
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.

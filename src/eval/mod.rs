@@ -256,6 +256,12 @@ impl<'a> Evaluator<'a> {
 
     /// The error for an unknown item inside a block.
     fn unknown_item(&self, node: &Node, context: &str) -> Diagnostic {
+        if node.kind == NodeKind::ColourItem {
+            return Diagnostic::error(
+                format!("a colour cannot stand here in {context} (only in a pigment)"),
+                node.span,
+            );
+        }
         match unsupported::reason(&node.word) {
             Some(_) => self.unknown_word(&node.word, node.word_span),
             None if self.env.contains_key(&node.word) => Diagnostic::error(

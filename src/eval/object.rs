@@ -404,6 +404,15 @@ impl Evaluator<'_> {
                 let t = self.transform(m)?;
                 object.transform(t);
             }
+            NodeKind::ColourItem => {
+                // POV-Ray's quick colour: used only by its low-quality previews (+Q5 and
+                // below), ignored at the quality trace renders (checked against POV-Ray).
+                self.eval(&m.args[0])?;
+                self.warn(Diagnostic::warning(
+                    "a colour among an object's items is POV-Ray's quick colour (for low-quality previews only): ignored; use pigment { … } to colour the object",
+                    m.span,
+                ));
+            }
             _ => return Err(self.unknown_item(m, "an object")),
         }
         Ok(())

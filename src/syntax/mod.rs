@@ -164,6 +164,8 @@ pub enum NodeKind {
     ArrayElem,
     /// A word the grammar does not know at this place (see `name`).
     Unknown,
+    /// A colour standing alone among items (from a directive's or a macro's body).
+    ColourItem,
 }
 
 /// A construct: keyword, expressions, children.
@@ -780,6 +782,7 @@ impl Lower {
             Rule::macro_body => NodeKind::MacroBody,
             Rule::macro_call => NodeKind::MacroCall,
             Rule::layered_texture => NodeKind::LayeredTexture,
+            Rule::colour_item => NodeKind::ColourItem,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
             Rule::ident | Rule::name_ref | Rule::item_ref => NodeKind::IdentRef,

@@ -96,3 +96,28 @@ fn a_big_file_read_by_several_threads_is_the_scene_one_thread_reads() {
     assert_eq!(load_with_threads(&text, 2), one);
     assert_eq!(load_with_threads(&text, 4), one);
 }
+
+#[test]
+fn a_colour_among_object_items_is_povrays_quick_colour_and_ignored() {
+    // POV-Ray uses it only for previews below +Q6: the sphere renders with the default
+    // (black) pigment, as here (checked against POV-Ray's render: mean FLIP 0).
+    let text = "sphere { 0, 1 rgb <1, 0, 0> }\nsphere { 0, 1 #if (1) rgb <0, 1, 0> #end }";
+    let loaded = trace::load_str(
+        std::path::Path::new("quick.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(loaded.warnings.len(), 2, "{:?}", loaded.warnings);
+    assert!(loaded.warnings[0].contains("quick colour"));
+    let plain = trace::load_str(
+        std::path::Path::new("plain.rt"),
+        "sphere { 0, 1 }".to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        format!("{:?}", loaded.scene.objects[0].texture),
+        format!("{:?}", plain.scene.objects[0].texture)
+    );
+}
