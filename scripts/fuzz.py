@@ -10,7 +10,9 @@ rendered by the release binary at 24x18, as a user would run it, and judged:
   exit 0        fine if the image has no NaN or infinite pixel (pixels that overflowed on
                 extreme inputs are written black with a warning: counted apart, as "warned");
   exit 1 or 2   fine if stderr starts with an error message and holds no panic;
-  anything else (a panic's 101, an abort's 134, a signal, a timeout) is a finding;
+  anything else (a panic's 101, an abort's 134, a signal, a timeout) is a finding, except a
+                timeout of a scene that renders at one pixel in time: a huge render (such as
+                area_light 1000, 1000), counted apart as "slow render";
   and any run whose output shows the marker of the file outside the sandbox is a finding.
 
 Findings are saved in tests/fuzz/crashers/ (replayed by `cargo test`, tests/integration/
@@ -159,6 +161,16 @@ def judge(scene_dir, index, data):
         code, err = run.returncode, run.stderr
     except subprocess.TimeoutExpired as e:
         code, err = "timeout", e.stderr or b""
+        # A scene may ask for a huge render (area_light 1000, 1000: a million shadow rays per
+        # point), which is work, not a hang. If it loads and renders at one pixel in time, the
+        # time goes to the render and is counted apart; if not, loading hangs: a finding.
+        try:
+            small = [a if a not in ("24", "18") else "1" for a in OPTIONS]
+            subprocess.run([BINARY, scene, "-o", image] + small + ["--aa", "off"],
+                           capture_output=True, timeout=TIMEOUT_S, cwd=scene_dir)
+            code = "slow render"
+        except subprocess.TimeoutExpired:
+            pass
     verdict = None
     if MARKER in err:
         verdict = "leak"

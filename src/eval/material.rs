@@ -64,6 +64,11 @@ impl Evaluator<'_> {
                 NodeKind::ColourItem => {
                     pigment = ev.pigment_value(&item.args[0], pigment.clone())?
                 }
+                // A declared colour or pigment left alone by a directive (`#else Gray50 #end`).
+                NodeKind::IdentRef | NodeKind::Unknown if ev.names_colour_alone(item) => {
+                    let v = ev.lookup(item)?;
+                    pigment = pigment_from(v, item.word_span, pigment.clone())?;
+                }
                 NodeKind::Checker => {
                     let blue = Colour {
                         rgb: Rgb::new(0.0, 0.0, 1.0),
@@ -122,20 +127,25 @@ impl Evaluator<'_> {
         Ok(pigment)
     }
 
+    /// Whether `item` is just the name of a declared colour or pigment (nothing after it).
+    fn names_colour_alone(&self, item: &Node) -> bool {
+        let text = &self.sources.file(item.span.file).text;
+        let rest = text
+            .get(item.word_span.end as usize..item.span.end as usize)
+            .unwrap_or("x");
+        rest.trim().is_empty()
+            && matches!(
+                self.env.get(&item.word),
+                Some(Value::Pigment(_) | Value::Colour(_) | Value::Vector(_) | Value::Float(_))
+            )
+    }
+
     /// The pigment a colour or pigment value `e` makes of `pigment`: a new colour keeps the
     /// placement of the pigment it replaces, as in POV-Ray (a pigment block modifies the
     /// current pigment).
     fn pigment_value(&mut self, e: &crate::syntax::Expr, pigment: Pigment) -> Result<Pigment> {
-        Ok(match self.eval(e)? {
-            Value::Pigment(p) => p,
-            other => match colour5(&other) {
-                Some(c) => Pigment {
-                    pattern: Pattern::Solid(to_colour(c)),
-                    transform: pigment.transform,
-                },
-                None => return Err(type_error("a colour or pigment", &other, e.span)),
-            },
-        })
+        let v = self.eval(e)?;
+        pigment_from(v, e.span, pigment)
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.
@@ -407,4 +417,18 @@ impl Evaluator<'_> {
         })?;
         Ok((texture, interior))
     }
+}
+
+/// The pigment a colour or pigment value makes of `pigment` (see `Evaluator::pigment_value`).
+fn pigment_from(v: Value, span: crate::diag::Span, pigment: Pigment) -> Result<Pigment> {
+    Ok(match v {
+        Value::Pigment(p) => p,
+        other => match colour5(&other) {
+            Some(c) => Pigment {
+                pattern: Pattern::Solid(to_colour(c)),
+                transform: pigment.transform,
+            },
+            None => return Err(type_error("a colour or pigment", &other, span)),
+        },
+    })
 }

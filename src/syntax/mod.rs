@@ -439,7 +439,7 @@ pub fn parse_fragment_expr(
     };
     let (mut before, mut after, mut expr) = (Vec::new(), Vec::new(), None);
     for p in top.into_inner().filter(|p| p.as_rule() != Rule::EOI) {
-        if p.as_rule() == Rule::expr {
+        if matches!(p.as_rule(), Rule::expr | Rule::full_expr) {
             expr = Some(lower.expr(p));
         } else if expr.is_none() {
             before.push(lower.node(p));
@@ -879,7 +879,7 @@ impl Lower {
     fn expr(&self, pair: Pair<'_, Rule>) -> Expr {
         let span = self.span(&pair);
         match pair.as_rule() {
-            Rule::expr => {
+            Rule::expr | Rule::full_expr => {
                 let mut inner = pair.into_inner();
                 let cond = self.expr(inner.next().expect("expr has a first operand"));
                 match (inner.next(), inner.next()) {
@@ -989,7 +989,7 @@ impl Lower {
             }
             Rule::macro_arg => {
                 let inner = pair.into_inner().next().expect("macro_arg has a value");
-                if inner.as_rule() == Rule::expr {
+                if matches!(inner.as_rule(), Rule::expr | Rule::full_expr) {
                     self.expr(inner)
                 } else {
                     Expr {
@@ -1091,6 +1091,7 @@ fn is_expr(rule: Rule) -> bool {
     matches!(
         rule,
         Rule::expr
+            | Rule::full_expr
             | Rule::sum
             | Rule::plain_vector
             | Rule::plain_float

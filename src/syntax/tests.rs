@@ -51,7 +51,7 @@ fn vector_commas_are_optional_as_in_povray() {
 
 #[test]
 fn and_or_share_one_level_left_to_right() {
-    let nodes = parse("#declare A = 1 | 0 & 0;").expect("parses");
+    let nodes = parse("#declare A = (1 | 0 & 0);").expect("parses");
     // (1 | 0) & 0: the root is `&`.
     let ExprKind::Binary(op, ..) = &nodes[0].args[0].kind else {
         panic!("binary expected")
@@ -192,7 +192,7 @@ fn a_literal_takes_the_fast_path_only_before_a_non_operator() {
     for (text, op) in [
         ("1 + 2", BinOp::Add),
         ("<1,2> * 2", BinOp::Mul),
-        ("2 < 3", BinOp::Lt),
+        ("(2 < 3)", BinOp::Lt),
     ] {
         let nodes = parse(&format!("#declare X = {text};")).expect("parses");
         assert!(
@@ -201,6 +201,8 @@ fn a_literal_takes_the_fast_path_only_before_a_non_operator() {
             nodes[0].args[0].kind
         );
     }
+    // Outside parentheses a comparison is refused, as POV-Ray refuses it.
+    assert!(parse("#declare X = 2 < 3;").is_err());
     // At the end of the text (a macro body used as a value) it stands alone.
     let value = parse_fragment_expr("0.5", FileId(0), 0).expect("parses");
     assert!(matches!(value.expr.kind, ExprKind::Number(v) if v == 0.5));

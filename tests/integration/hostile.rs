@@ -355,7 +355,7 @@ fn an_interrupted_write_leaves_no_temporary_file() {
             .arg(crate::root().join("examples/basic_spheres.rt"))
             .arg("-o")
             .arg(&out)
-            .args(["--width", "320", "--height", "240", "--aa", "0", "--quiet"])
+            .args(["--width", "160", "--height", "120", "--aa", "0", "--quiet"])
             .spawn()
             .expect("runs");
         let tmp = dir.join(format!(".img.png.{}.tmp", child.id()));
@@ -364,7 +364,7 @@ fn an_interrupted_write_leaves_no_temporary_file() {
         // The writer blocks opening the FIFO; wait until the render is done and it does.
         std::thread::sleep(std::time::Duration::from_millis(300));
         let mut waited = 0;
-        while child.try_wait().unwrap().is_none() && waited < 600 {
+        while child.try_wait().unwrap().is_none() && waited < 1200 {
             if std::fs::read_to_string(format!("/proc/{}/wchan", child.id()))
                 .is_ok_and(|w| w.contains("wait_for_partner"))
             {
@@ -411,6 +411,7 @@ fn broken_nesting_parses_in_linear_time() {
         "#declare T = texture { pigment { rgb 1 }\n".repeat(40),
         format!("#macro M()\n{}", "#if (1) #while (0)\n".repeat(40)),
         "#declare P = pigment { #declare T = texture { finish { phong 1 }\n".repeat(40),
+        "#declare Ball = sphere { 0, 1 texture { pig\n".repeat(40),
     ];
     for text in cases {
         let start = std::time::Instant::now();

@@ -121,3 +121,35 @@ fn a_colour_among_object_items_is_povrays_quick_colour_and_ignored() {
         format!("{:?}", plain.scene.objects[0].texture)
     );
 }
+
+#[test]
+fn a_vector_after_a_vector_is_the_next_argument_not_a_comparison() {
+    // POV-Ray reads `<` as less-than only inside parentheses (it refuses
+    // `#declare X = 1 < 2;`), so `<0,0,0> <A,1,0>` are two vertices (checked against POV-Ray's
+    // render of this triangle: mean FLIP 0.0001).
+    let text = "#declare A = 0.5;\ntriangle { <0,0,0> <A,1,0> <1,0,0> }\n\
+                #declare B = (1 < 2) + (2 > 1 ? 3 : 4);\n#if (B = 4 & 1) sphere { 0, 1 } #end";
+    let loaded = trace::load_str(
+        std::path::Path::new("tri.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(loaded.scene.objects.len(), 2);
+    let with_commas = trace::load_str(
+        std::path::Path::new("tri.rt"),
+        "#declare A = 0.5;\ntriangle { <0,0,0>, <A,1,0>, <1,0,0> }".to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        format!("{:?}", loaded.scene.objects[0]),
+        format!("{:?}", with_commas.scene.objects[0])
+    );
+    let refused = trace::load_str(
+        std::path::Path::new("rel.rt"),
+        "#declare X = 1 < 2;".to_string(),
+        &trace::LoadOptions::default(),
+    );
+    assert!(refused.is_err());
+}
