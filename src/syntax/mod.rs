@@ -304,6 +304,18 @@ pub struct Statements {
     ready: std::vec::IntoIter<Result<Node, Diagnostic>>,
 }
 
+/// Most rule calls pest may make for one statement (or fragment): a backstop against inputs
+/// that make the grammar backtrack exponentially (the fuzzer found several, each fixed in the
+/// grammar), ending with a located syntax error in seconds instead of running for hours. A
+/// plain statement takes a few hundred calls; a 100k-entry list of expressions about 10⁷.
+const MAX_PARSER_CALLS: usize = 200_000_000;
+
+/// Installs [`MAX_PARSER_CALLS`] (pest's limit is process-wide).
+fn limit_parser_work() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| pest::set_call_limit(std::num::NonZeroUsize::new(MAX_PARSER_CALLS)));
+}
+
 /// Starts reading the statements of `file`, whose text is `text`, with up to `helpers` threads
 /// parsing ahead.
 pub fn statements(
@@ -311,6 +323,7 @@ pub fn statements(
     file: FileId,
     helpers: usize,
 ) -> Result<Statements, Diagnostic> {
+    limit_parser_work();
     let block_ends = check_nesting(&text, file, 0)?;
     let prescanned = bulk::prescan(&text, 0);
     let source: std::sync::Arc<str> = match prescanned.text {
@@ -598,6 +611,9 @@ fn syntax_error(e: pest::error::Error<Rule>, file: FileId) -> Diagnostic {
                     format!("syntax error: expected {} or {}", names.join(", "), last)
                 }
             }
+        }
+        ErrorVariant::CustomError { message } if message == "call limit reached" => {
+            "syntax error: the parser gave up here (the text nests in a way that would take it too long; look for a missing `}` or `#end`)".to_string()
         }
         ErrorVariant::CustomError { message } => format!("syntax error: {message}"),
     };
