@@ -97,25 +97,25 @@ fn a_big_file_read_by_several_threads_is_the_scene_one_thread_reads() {
     assert_eq!(load_with_threads(&text, 4), one);
 }
 
+/// Loads scene text with the default options, panicking with the message on error.
+fn load(text: &str) -> trace::Loaded {
+    trace::load_str(
+        std::path::Path::new("test.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+}
+
 #[test]
 fn a_colour_among_object_items_is_povrays_quick_colour_and_ignored() {
     // POV-Ray uses it only for previews below +Q6: the sphere renders with the default
     // (black) pigment, as here (checked against POV-Ray's render: mean FLIP 0).
     let text = "sphere { 0, 1 rgb <1, 0, 0> }\nsphere { 0, 1 #if (1) rgb <0, 1, 0> #end }";
-    let loaded = trace::load_str(
-        std::path::Path::new("quick.rt"),
-        text.to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    let loaded = load(text);
     assert_eq!(loaded.warnings.len(), 2, "{:?}", loaded.warnings);
     assert!(loaded.warnings[0].contains("quick colour"));
-    let plain = trace::load_str(
-        std::path::Path::new("plain.rt"),
-        "sphere { 0, 1 }".to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    let plain = load("sphere { 0, 1 }");
     assert_eq!(
         format!("{:?}", loaded.scene.objects[0].texture),
         format!("{:?}", plain.scene.objects[0].texture)
@@ -129,19 +129,9 @@ fn a_vector_after_a_vector_is_the_next_argument_not_a_comparison() {
     // render of this triangle: mean FLIP 0.0001).
     let text = "#declare A = 0.5;\ntriangle { <0,0,0> <A,1,0> <1,0,0> }\n\
                 #declare B = (1 < 2) + (2 > 1 ? 3 : 4);\n#if (B = 4 & 1) sphere { 0, 1 } #end";
-    let loaded = trace::load_str(
-        std::path::Path::new("tri.rt"),
-        text.to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    let loaded = load(text);
     assert_eq!(loaded.scene.objects.len(), 2);
-    let with_commas = trace::load_str(
-        std::path::Path::new("tri.rt"),
-        "#declare A = 0.5;\ntriangle { <0,0,0>, <A,1,0>, <1,0,0> }".to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    let with_commas = load("#declare A = 0.5;\ntriangle { <0,0,0>, <A,1,0>, <1,0,0> }");
     assert_eq!(
         format!("{:?}", loaded.scene.objects[0]),
         format!("{:?}", with_commas.scene.objects[0])
