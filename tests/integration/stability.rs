@@ -5,7 +5,7 @@
 use trace::stability::{
     OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals, far_sphere,
     far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks, pane_stack, scale_invariance,
-    sphere_acne, thin_wall, thread_determinism,
+    sphere_acne, thread_determinism,
 };
 
 #[test]
