@@ -16,8 +16,9 @@ impl Cuboid {
     /// Crossings of `ray` with the box surface, nearest first.
     ///
     /// Slab test. A zero direction component gives ±∞ slab distances, or NaN when the origin
-    /// lies exactly on that slab's plane; `f64::max`/`min` drop NaN operands, so such a slab
-    /// simply does not constrain the interval (the ray runs inside the face plane).
+    /// lies exactly on that slab's plane: then the closed slab holds the ray for every t, so
+    /// that axis does not constrain the interval (as in POV-Ray, which counts a parallel ray
+    /// on a face as inside).
     pub fn intersect(&self, ray: &Ray) -> Crossings {
         let inv = ray.direction.recip();
         let t0 = (self.min - ray.origin) * inv;
@@ -26,7 +27,13 @@ impl Cuboid {
         let mut far = f64::INFINITY;
         for i in 0..3 {
             let (a, b) = (t0[i], t1[i]);
-            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            let (lo, hi) = if a <= b {
+                (a, b)
+            } else if b < a {
+                (b, a)
+            } else {
+                continue; // NaN: the origin is on this slab's plane
+            };
             near = near.max(lo);
             far = far.min(hi);
         }
@@ -73,6 +80,16 @@ mod tests {
         let r = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
         assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0]);
         assert_eq!(unit().normal(r.at(4.0)), -DVec3::Z);
+    }
+
+    #[test]
+    fn a_ray_along_a_face_hits_as_in_povray() {
+        // Origin on the min and on the max x face, direction with a zero x component: the
+        // closed slab holds the ray (it missed before: the NaN slab swapped its ends).
+        for x in [-1.0, 1.0] {
+            let r = Ray::new(DVec3::new(x, 0.0, -5.0), DVec3::Z);
+            assert_eq!(unit().intersect(&r).as_slice(), &[4.0, 6.0], "x = {x}");
+        }
     }
 
     #[test]
