@@ -689,6 +689,47 @@ pub fn grid_leaks(offset: f64, as_mesh: bool) -> Count {
     }
 }
 
+/// The S5 box probe: [`grid_probe`]'s view of a 10×10 grid of unit boxes (depth 1) instead of
+/// triangles: pixel centres fall on the boxes' shared faces and edges, so the rays run along
+/// faces of the boxes themselves (origin on a slab plane, zero direction components) as well
+/// as along the top-level BVH's boxes. The light sits at the camera: every face seen is lit.
+pub fn box_grid_probe(offset: f64) -> String {
+    let mut boxes = String::new();
+    for j in -5..5 {
+        for i in -5..5 {
+            let (x, y) = (f64::from(i) + offset, f64::from(j) + offset);
+            boxes += &format!(
+                "box {{ <{x}, {y}, 0>, <{}, {}, 1> pigment {{ rgb 1 }} }}\n",
+                x + 1.0,
+                y + 1.0
+            );
+        }
+    }
+    format!(
+        "background {{ rgb <1, 0, 0> }}\n\
+         camera {{ orthographic location <{offset}, {offset}, -10> look_at <{offset}, {offset}, 0> \
+         right x*8.5 up y*8.5 }}\n\
+         light_source {{ <{offset}, {offset}, -100> rgb 1 }}\n{boxes}"
+    )
+}
+
+/// S5 box probe counts over [`box_grid_probe`] at 17×17 (289 rays): background pixels (the
+/// ray slipped between boxes) and dark pixels (the hit took the normal of a face the ray runs
+/// along instead of the face it enters, so the light grazes it).
+pub fn box_grid_failures(offset: f64) -> [Count; 2] {
+    let ir = load_scene(box_grid_probe(offset), 17, 17);
+    let scene = crate::scene::Scene::build(&ir);
+    let film = render_built(&scene, 17, 17, None);
+    let rays = film.pixels.len() as u64;
+    let background = film
+        .pixels
+        .iter()
+        .filter(|p| p[0] > 0.99 && p[1] < 0.01 && p[2] < 0.01)
+        .count() as u64;
+    let dark = film.pixels.iter().filter(|p| p[1] < 0.3).count() as u64 - background;
+    [background, dark].map(|failures| Count { failures, rays })
+}
+
 // ---------------------------------------------------------------------------------------------
 // S8: normals under non-uniform scale.
 

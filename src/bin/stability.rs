@@ -7,9 +7,10 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 use trace::stability::{
-    Count, OffsetMethod, SphereMethod, TriangleMethod, black_pixels, contact_shadow,
-    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks,
-    pane_scene, pane_stack, scale_invariance, sphere_acne, thin_wall, thread_determinism,
+    Count, OffsetMethod, SphereMethod, TriangleMethod, black_pixels, box_grid_failures,
+    contact_shadow, ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing,
+    grid_leaks, mesh_leaks, pane_scene, pane_stack, scale_invariance, sphere_acne, thin_wall,
+    thread_determinism,
 };
 
 const RADII: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -206,6 +207,22 @@ fn main() {
                 counter: Box::leak(
                     format!("grid background pixels, {structure}, offset {offset:e}")
                         .into_boxed_str(),
+                ),
+                method: "trace",
+                a: offset,
+                b: 17.0,
+                count,
+                ns_per_ray: ns,
+            });
+        }
+        let start = Instant::now();
+        let counts = box_grid_failures(offset);
+        let ns = start.elapsed().as_nanos() as f64 / counts[0].rays as f64;
+        for (what, count) in ["background", "dark"].into_iter().zip(counts) {
+            rows.push(Row {
+                experiment: "S5",
+                counter: Box::leak(
+                    format!("box grid {what} pixels, offset {offset:e}").into_boxed_str(),
                 ),
                 method: "trace",
                 a: offset,

@@ -133,6 +133,11 @@ impl Crossings {
         &self.ts[..self.len]
     }
 
+    /// The part tags, in the order of [`Crossings::as_slice`].
+    pub fn parts(&self) -> &[u32] {
+        &self.parts[..self.len]
+    }
+
     /// The nearest crossing.
     pub fn first(&self) -> Option<f64> {
         self.as_slice().first().copied()

@@ -225,7 +225,7 @@ impl Shape {
         let n = match self {
             Shape::Sphere(s) => s.normal(p),
             Shape::Plane(pl) => pl.normal(),
-            Shape::Box(b) => b.normal(p),
+            Shape::Box(b) => b.normal(p, part),
             Shape::Cone(c) => c.normal(p, part),
             Shape::Disc(d) => d.normal(),
             Shape::Torus(t) => t.normal(p),

@@ -3,9 +3,9 @@
 //! alternative fails where the literature says it does (so the counters can see failures).
 
 use trace::stability::{
-    OffsetMethod, SphereMethod, TriangleMethod, contact_shadow, ellipsoid_normals, far_sphere,
-    far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks, pane_stack, scale_invariance,
-    sphere_acne, thread_determinism,
+    OffsetMethod, SphereMethod, TriangleMethod, box_grid_failures, contact_shadow,
+    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks,
+    pane_stack, scale_invariance, sphere_acne, thread_determinism,
 };
 
 #[test]
@@ -97,6 +97,15 @@ fn rays_along_bvh_box_faces_do_not_leak_through_a_grid() {
             assert_eq!(c.rays, 289);
             assert_eq!(c.failures, 0, "offset {offset}, mesh {as_mesh}: {c:?}");
         }
+        // Boxes sharing faces: no ray slips between them, and none takes the normal of the
+        // face it runs along (120 background pixels, then 120 dark ones, before the fixes).
+        let [background, dark] = box_grid_failures(offset);
+        assert_eq!(background.rays, 289);
+        assert_eq!(
+            (background.failures, dark.failures),
+            (0, 0),
+            "boxes at offset {offset}"
+        );
     }
 }
 
