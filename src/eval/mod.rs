@@ -192,6 +192,8 @@ pub(crate) struct Evaluator<'a> {
     camera: Option<CameraItems>,
     lights: Vec<ir::Light>,
     objects: Vec<ir::Object>,
+    /// The next unused [`ir::Object::medium`].
+    next_medium: u32,
     background: Rgb,
     default_texture: Texture,
     warnings: Vec<Diagnostic>,
@@ -227,6 +229,7 @@ impl<'a> Evaluator<'a> {
             camera: None,
             lights: Vec::new(),
             objects: Vec::new(),
+            next_medium: 0,
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             warnings: Vec::new(),

@@ -21,6 +21,9 @@ struct Part {
     texture: Option<Texture>,
     /// The member's own interior, if any.
     interior: Option<Interior>,
+    /// With `interior`: which of the object's own interiors it is (members of a nested union
+    /// share theirs), numbered from 0 within the object; see [`ObjectValue::own_interiors`].
+    interior_group: u32,
     inverse: bool,
     no_shadow: bool,
     /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
@@ -35,6 +38,9 @@ pub struct ObjectValue {
     texture: Option<Texture>,
     /// The object's (or group's) interior, applied to parts without their own.
     interior: Option<Interior>,
+    /// How many distinct interiors the parts have of their own (`interior_group` counts
+    /// below it); the object's interior comes after them.
+    own_interiors: u32,
     /// Light sources inside a `union` (or an `object {}`): they move with it.
     lights: Vec<ir::Light>,
     /// A union (its `hollow` goes only to members without their own).
@@ -97,12 +103,14 @@ impl ObjectValue {
                 transform: None,
                 texture: None,
                 interior: None,
+                interior_group: 0,
                 inverse: false,
                 no_shadow: false,
                 hollow: None,
             }],
             texture: None,
             interior: None,
+            own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
         }
@@ -113,6 +121,7 @@ impl ObjectValue {
             parts: Vec::new(),
             texture: None,
             interior: None,
+            own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
         }
@@ -287,11 +296,21 @@ impl Evaluator<'_> {
                     }
                     let m = ev.object(item)?;
                     group.lights.extend(m.lights);
+                    // The member's interiors stay distinct from the other members'; its parts
+                    // without one of their own share the member's (POV-Ray shares one
+                    // interior by reference among a union's members that have none).
+                    let base = group.own_interiors;
                     for mut part in m.parts {
                         part.texture = part.texture.or_else(|| m.texture.clone());
-                        part.interior = part.interior.or(m.interior);
+                        if part.interior.is_some() {
+                            part.interior_group += base;
+                        } else if m.interior.is_some() {
+                            part.interior = m.interior;
+                            part.interior_group = base + m.own_interiors;
+                        }
                         group.parts.push(part);
                     }
+                    group.own_interiors = base + m.own_interiors + 1;
                     Ok(())
                 })?;
                 group
@@ -453,7 +472,15 @@ impl Evaluator<'_> {
             ));
         }
         self.lights.extend(object.lights);
+        // Fresh media for this instance (two `object { U }` of one declared union do not
+        // share interiors: POV-Ray copies them with the object).
+        let base = self.next_medium;
+        self.next_medium = base.saturating_add(object.own_interiors).saturating_add(1);
         for (member, part) in object.parts.into_iter().enumerate() {
+            let medium = match part.interior {
+                Some(_) => base + part.interior_group,
+                None => base + object.own_interiors,
+            };
             let texture = part
                 .texture
                 .or_else(|| object.texture.clone())
@@ -467,6 +494,7 @@ impl Evaluator<'_> {
                 inverse: part.inverse,
                 hollow: part.hollow.unwrap_or(false),
                 member: member as u32,
+                medium,
             });
         }
         Ok(())

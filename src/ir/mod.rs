@@ -216,6 +216,10 @@ pub struct Object {
     /// Position among the members of its union (0 for the first, and for an object not in a
     /// union): between two hits at the same distance, POV-Ray takes the later member.
     pub member: u32,
+    /// Objects with the same medium share one interior (POV-Ray's members of a union that
+    /// have no interior of their own): a ray inside one that meets another's surface leaves
+    /// the medium. Distinct for every other object.
+    pub medium: u32,
 }
 
 /// Analytic shapes, in object space.

@@ -45,17 +45,21 @@ impl RayCounts {
     }
 }
 
-/// The objects a ray is inside, in the order it entered them (POV-Ray's interior list).
+/// The interiors a ray is inside, in the order it entered them (POV-Ray's interior list).
+/// Each entry is an object standing for its medium: objects that share a medium (members of a
+/// union) share one entry, so a ray inside one member that meets another's surface leaves.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Interiors {
     ids: [u32; MAX_NESTING],
+    media: [u32; MAX_NESTING],
     len: usize,
 }
 
 impl Interiors {
     /// The objects of `scene` whose inside contains `p` (a camera ray's list). The order is
     /// POV-Ray's: scene order for fewer than three objects and lights; otherwise, as its
-    /// bounding does, unbounded objects (planes) first.
+    /// bounding does, unbounded objects (planes) first. Like POV-Ray, which splits unions
+    /// into their members, a medium is listed once per member that contains `p`.
     pub fn at(scene: &Scene, p: DVec3) -> Interiors {
         let mut list = Interiors::default();
         let bounded_last = scene.bounded_last;
@@ -63,35 +67,35 @@ impl Interiors {
             for (i, object) in scene.objects.iter().enumerate() {
                 let second = bounded_last && object.bounds.is_some();
                 if second == pass && scene.contains(object, p) {
-                    list.push(ObjectId(i as u32));
+                    list.push(scene, ObjectId(i as u32));
                 }
             }
         }
         list
     }
 
-    fn push(&mut self, id: ObjectId) {
+    fn push(&mut self, scene: &Scene, id: ObjectId) {
         if self.len < MAX_NESTING {
             self.ids[self.len] = id.0;
+            self.media[self.len] = scene.objects[id.0 as usize].medium;
             self.len += 1;
         }
     }
 
-    fn position(&self, id: ObjectId) -> Option<usize> {
-        self.ids[..self.len].iter().position(|&i| i == id.0)
+    /// Where the medium of object `id` is in the list.
+    fn position(&self, scene: &Scene, id: ObjectId) -> Option<usize> {
+        let medium = scene.objects[id.0 as usize].medium;
+        self.media[..self.len].iter().position(|&m| m == medium)
     }
 
     fn remove(&mut self, index: usize) {
         self.ids.copy_within(index + 1..self.len, index);
+        self.media.copy_within(index + 1..self.len, index);
         self.len -= 1;
     }
 
     fn last(&self) -> Option<ObjectId> {
         (self.len > 0).then(|| ObjectId(self.ids[self.len - 1]))
-    }
-
-    fn second_last(&self) -> Option<ObjectId> {
-        (self.len > 1).then(|| ObjectId(self.ids[self.len - 2]))
     }
 
     /// Whether a ray here travels through hollow space only (fog reaches it): inside no
@@ -424,22 +428,25 @@ impl Crossing {
         let ior = |id: ObjectId| scene.objects[id.0 as usize].interior.ior;
         let n_o = ior(o);
         let mut after = *list;
-        let position = list.position(o);
+        let position = list.position(scene, o);
+        // The medium entered last is `o`'s (POV-Ray compares interiors, not objects).
+        let innermost =
+            list.len > 0 && list.media[list.len - 1] == scene.objects[o.0 as usize].medium;
         let refraction_eta = match (position, list.last()) {
             // Entering from air.
             (None, None) => {
-                after.push(o);
+                after.push(scene, o);
                 1.0 / n_o
             }
             // Entering while inside others.
             (None, Some(last)) => {
-                after.push(o);
+                after.push(scene, o);
                 ior(last) / n_o
             }
-            // Leaving the innermost object.
-            (Some(i), Some(last)) if last == o => {
+            // Leaving the innermost medium.
+            (Some(i), Some(_)) if innermost => {
                 after.remove(i);
-                n_o / list.second_last().map_or(1.0, ior)
+                n_o / after.last().map_or(1.0, ior)
             }
             // Leaving an object that is not the innermost: no bending.
             (Some(i), _) => {

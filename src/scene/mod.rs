@@ -9,6 +9,7 @@ use crate::geometry::{
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
 use rayon::prelude::*;
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -64,6 +65,9 @@ pub struct Scene {
     /// Whether any object may let light through to a shadow ray (else shadow rays stop at
     /// the any-hit test for opaque blockers).
     pub any_transparent: bool,
+    /// Whether any object that may let light through to a shadow ray has an interior that
+    /// fades: shadow rays then walk their crossings in order (see [`Scene::transmittance`]).
+    pub shadow_fades: bool,
 }
 
 /// The camera's four vectors.
@@ -110,6 +114,12 @@ pub struct Material {
 /// `rgb·filter + transmit`: what a surface of colour `c` lets through, per channel.
 pub fn filter_colour(c: &Colour) -> Rgb {
     c.rgb * c.filter + Rgb::splat(c.transmit)
+}
+
+/// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
+/// `fade_distance` that is not zero).
+fn fades(interior: &Interior) -> bool {
+    interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10
 }
 
 /// POV-Ray's interior fade over a distance `d` inside (§9.2).
@@ -298,6 +308,8 @@ pub struct Object {
     pub rank: u64,
     /// Index of refraction and fade.
     pub interior: Interior,
+    /// Objects with equal media share one interior (see [`ir::Object::medium`]).
+    pub medium: u32,
 }
 
 /// The nearest hit of a ray: cheap, no surface details yet.
@@ -450,6 +462,7 @@ impl Scene {
                     hollow: o.hollow,
                     rank: 0,
                     interior: o.interior,
+                    medium: o.medium,
                 }
             })
             .collect();
@@ -491,6 +504,7 @@ impl Scene {
             gamma: ir.settings.gamma,
             index: None,
             any_transparent: false,
+            shadow_fades: false,
             bounded_last: false,
         };
         // POV-Ray tests objects in scene order when there are fewer than three objects and
@@ -512,6 +526,13 @@ impl Scene {
         }
         scene.any_transparent = scene.objects.iter().any(|o| {
             !o.no_shadow
+                && scene.materials[o.material.0 as usize]
+                    .pigment
+                    .may_be_transparent()
+        });
+        scene.shadow_fades = scene.objects.iter().any(|o| {
+            !o.no_shadow
+                && fades(&o.interior)
                 && scene.materials[o.material.0 as usize]
                     .pigment
                     .may_be_transparent()
@@ -613,9 +634,10 @@ impl Scene {
 
     /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
     /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
-    /// objects (POV-Ray filters at each surface crossing), times the interior fade of each
-    /// segment run inside an object whose fade_power is positive. Objects with `no_shadow`
-    /// are skipped; refraction is ignored, as in POV-Ray.
+    /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
+    /// segments run inside objects whose fade_power is positive (see
+    /// [`Scene::faded_crossings`]). Objects with `no_shadow` are skipped; refraction is
+    /// ignored, as in POV-Ray.
     pub fn transmittance(&self, ray: &Ray) -> Rgb {
         let opaque_blocks = |i: u32| {
             let object = &self.objects[i as usize];
@@ -635,6 +657,12 @@ impl Scene {
                 if !self.any_transparent {
                     return through;
                 }
+                if self.shadow_fades {
+                    return self.faded_crossings(ray, |f| {
+                        index.unbounded.iter().for_each(|&i| f(i));
+                        index.each(ray, f);
+                    });
+                }
                 for &i in &index.unbounded {
                     self.filter_through(i, ray, &mut through);
                 }
@@ -642,14 +670,21 @@ impl Scene {
             }
             None => {
                 let inv = ray.direction.recip();
-                for (i, object) in self.objects.iter().enumerate() {
-                    if !may_hit(object.bounds, ray, inv) {
-                        continue;
-                    }
-                    if opaque_blocks(i as u32) {
-                        return Rgb::ZERO;
-                    }
-                    self.filter_through(i as u32, ray, &mut through);
+                let candidates = || {
+                    self.objects
+                        .iter()
+                        .enumerate()
+                        .filter(move |(_, o)| may_hit(o.bounds, ray, inv))
+                        .map(|(i, _)| i as u32)
+                };
+                if candidates().any(opaque_blocks) {
+                    return Rgb::ZERO;
+                }
+                if self.shadow_fades {
+                    return self.faded_crossings(ray, |f| candidates().for_each(f));
+                }
+                for i in candidates() {
+                    self.filter_through(i, ray, &mut through);
                 }
             }
         }
@@ -663,32 +698,79 @@ impl Scene {
         }
     }
 
-    /// Multiplies `through` by what a transparent object lets through along a shadow ray: the
-    /// filter colour at each crossing and the fade of each inside segment.
-    fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
+    /// Whether object `i` can let light through to a shadow ray.
+    fn filters_shadows(&self, i: u32) -> bool {
         let object = &self.objects[i as usize];
-        let material = self.material(object.material);
-        if object.no_shadow || !material.pigment.may_be_transparent() {
+        !object.no_shadow && self.material(object.material).pigment.may_be_transparent()
+    }
+
+    /// Multiplies `through` by the filter colour at each crossing of a transparent object
+    /// with a shadow ray (the order of crossings does not matter when no interior fades).
+    fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
+        if !self.filters_shadows(i) {
             return;
         }
-        let interior = &object.interior;
-        let fades = interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10;
-        let mut inside = fades && self.contains(object, ray.origin);
-        let mut last_t = 0.0;
-        let length = ray.direction.length();
+        let object = &self.objects[i as usize];
+        let material = self.material(object.material);
         object
             .shape
             .for_each_crossing(&Self::local_ray(object, ray), |t| {
-                let c = material.pigment.colour_at(ray.at(t));
-                *through *= filter_colour(&c);
-                if fades {
-                    if inside {
-                        *through *= interior_fade(interior, (t - last_t) * length);
-                    }
-                    inside = !inside;
-                    last_t = t;
+                *through *= filter_colour(&material.pigment.colour_at(ray.at(t)));
+            });
+    }
+
+    /// What a shadow ray lets through when interiors fade: POV-Ray's walk from the surface to
+    /// the light, one crossing after the other, with a list of the media the ray is in. At a
+    /// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
+    /// applies over the distance from the previous crossing of any object (so a medium
+    /// shared by overlapping union members fades only between their surfaces, and an object
+    /// around another fades only from the inner one's exit); otherwise it enters. The list
+    /// starts with the media of the crossed objects that contain the ray's origin.
+    /// `candidates` calls its argument with every object the ray may cross.
+    fn faded_crossings(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
+        thread_local! {
+            /// Per thread: the crossings (distance, object) and the list of media.
+            static SCRATCH: RefCell<(Vec<(f64, u32)>, Vec<u32>)> = const { RefCell::new((Vec::new(), Vec::new())) };
+        }
+        SCRATCH.with_borrow_mut(|(crossings, media)| {
+            crossings.clear();
+            media.clear();
+            candidates(&mut |i| {
+                if self.filters_shadows(i) {
+                    let object = &self.objects[i as usize];
+                    object
+                        .shape
+                        .for_each_crossing(&Self::local_ray(object, ray), |t| {
+                            crossings.push((t, i))
+                        });
                 }
             });
+            crossings.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            for &(_, i) in crossings.iter() {
+                let object = &self.objects[i as usize];
+                if !media.contains(&object.medium) && self.contains(object, ray.origin) {
+                    media.push(object.medium);
+                }
+            }
+            let length = ray.direction.length();
+            let (mut through, mut last_t) = (Rgb::ONE, 0.0);
+            for &(t, i) in crossings.iter() {
+                let object = &self.objects[i as usize];
+                let colour = self.material(object.material).pigment.colour_at(ray.at(t));
+                through *= filter_colour(&colour);
+                match media.iter().position(|&m| m == object.medium) {
+                    Some(k) => {
+                        if fades(&object.interior) {
+                            through *= interior_fade(&object.interior, (t - last_t) * length);
+                        }
+                        media.remove(k);
+                    }
+                    None => media.push(object.medium),
+                }
+                last_t = t;
+            }
+            through
+        })
     }
 
     /// Whether world point `p` is inside `object` (POV-Ray's inside test; thin shapes have no
@@ -868,6 +950,7 @@ mod tests {
                 inverse: false,
                 hollow: false,
                 member: 0,
+                medium: 0,
             }],
             background: Rgb::ZERO,
             sky_sphere: None,
