@@ -9,7 +9,7 @@ use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
 use crate::syntax::{Expr, ExprKind, Node, NodeKind};
-use glam::DVec3;
+use glam::{DMat3, DVec3};
 use std::sync::Arc;
 
 /// One shape of an object under construction.
@@ -24,6 +24,10 @@ struct Part {
     /// With `interior`: which of the object's own interiors it is (members of a nested union
     /// share theirs), numbered from 0 within the object; see [`ObjectValue::own_interiors`].
     interior_group: u32,
+    /// For a stand-alone `smooth_triangle`: its vertex normals in the current frame. POV-Ray
+    /// moves them with the triangle itself, normalising them again after every `scale` (not
+    /// after `matrix` or `transform`), and interpolates those; see [`ObjectValue::transform`].
+    vertex_normals: Option<[DVec3; 3]>,
     inverse: bool,
     no_shadow: bool,
     /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
@@ -104,6 +108,7 @@ impl ObjectValue {
                 texture: None,
                 interior: None,
                 interior_group: 0,
+                vertex_normals: None,
                 inverse: false,
                 no_shadow: false,
                 hollow: None,
@@ -128,9 +133,20 @@ impl ObjectValue {
     }
 
     /// Applies a transformation to the geometry and to every texture already attached.
-    fn transform(&mut self, t: Transform) {
+    /// Applies a transformation; `scale` tells that it is a `scale` modifier (which makes
+    /// POV-Ray normalise a smooth triangle's vertex normals).
+    fn transform(&mut self, t: Transform, scale: bool) {
+        let normal_matrix = DMat3::from_mat4(t.matrix).inverse().transpose();
         for part in &mut self.parts {
             part.transform = compose(part.transform, t);
+            if let Some(normals) = &mut part.vertex_normals {
+                for n in normals {
+                    *n = normal_matrix * *n;
+                    if scale {
+                        *n = n.normalize_or_zero();
+                    }
+                }
+            }
             if let Some(tex) = &mut part.texture {
                 move_pigment(&mut tex.pigment, t);
             }
@@ -238,7 +254,11 @@ impl Evaluator<'_> {
                 if mesh.triangles.is_empty() {
                     ObjectValue::empty()
                 } else {
-                    ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+                    let normals = (mesh.normals.len() == 3)
+                        .then(|| [0, 1, 2].map(|i| mesh.normals[i].as_dvec3()));
+                    let mut object = ObjectValue::single(Shape::Mesh(Arc::new(mesh)));
+                    object.parts[0].vertex_normals = normals;
+                    object
                 }
             }
             NodeKind::Mesh => {
@@ -421,7 +441,7 @@ impl Evaluator<'_> {
             },
             _ if Self::is_transform(m) => {
                 let t = self.transform(m)?;
-                object.transform(t);
+                object.transform(t, m.kind == NodeKind::Scale);
             }
             NodeKind::ColourItem => {
                 // POV-Ray's quick colour: used only by its low-quality previews (+Q5 and
@@ -476,7 +496,16 @@ impl Evaluator<'_> {
         // share interiors: POV-Ray copies them with the object).
         let base = self.next_medium;
         self.next_medium = base.saturating_add(object.own_interiors).saturating_add(1);
-        for (member, part) in object.parts.into_iter().enumerate() {
+        for (member, mut part) in object.parts.into_iter().enumerate() {
+            if let (Some(world), Some(t), Shape::Mesh(mesh)) =
+                (part.vertex_normals, &part.transform, &mut part.shape)
+            {
+                // Object-space normals that the transform takes to the tracked ones: the
+                // linear interpolation then runs over those, as in POV-Ray.
+                let linear_t = DMat3::from_mat4(t.matrix).transpose();
+                Arc::make_mut(mesh).normals =
+                    world.iter().map(|n| (linear_t * *n).as_vec3()).collect();
+            }
             let medium = match part.interior {
                 Some(_) => base + part.interior_group,
                 None => base + object.own_interiors,

@@ -289,7 +289,8 @@ pub enum Shape {
 pub struct Mesh {
     /// Vertex positions.
     pub vertices: Vec<Vec3>,
-    /// Vertex normals (unit length); empty for a flat mesh.
+    /// Vertex normals (unit length, except for a transformed stand-alone `smooth_triangle`,
+    /// whose lengths carry POV-Ray's renormalisation); empty for a flat mesh.
     pub normals: Vec<Vec3>,
     /// Triangles as indices into `vertices`.
     pub triangles: Vec<[u32; 3]>,
