@@ -174,8 +174,10 @@ impl Evaluator<'_> {
                     .last()
                     .is_some_and(|(last, _): &(f64, Colour)| value < *last)
                 {
-                    return Err(Diagnostic::error(
-                        "color_map values must not decrease",
+                    // POV-Ray renders such a map without a word; its lookup (which trace
+                    // follows) makes the result easy to misread, so say how it is read.
+                    self.warn(Diagnostic::warning(
+                        "color_map value smaller than the one before: as in POV-Ray, a value at or above the last entry takes the last colour, and any other blends the first key not below it, scanning from the start, with the entry before",
                         value_expr.span,
                     ));
                 }

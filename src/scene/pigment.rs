@@ -84,15 +84,24 @@ impl Pigment {
 /// last, otherwise linear interpolation of all five channels toward the first entry whose
 /// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).
 pub fn lookup(map: &ColourMap, v: f64) -> Colour {
+    // POV-Ray's Search_Blend_Map, which also defines maps whose keys decrease: at or above
+    // the last key, the last colour; otherwise scan from the first entry to the first key
+    // not below `v` and blend with the entry scanned before it.
     let entries = &map.entries;
-    let Some(i) = entries.iter().position(|(value, _)| *value >= v) else {
-        return entries[entries.len() - 1].1;
-    };
-    if i == 0 {
-        return entries[0].1;
+    let last = entries.len() - 1;
+    if v >= entries[last].0 {
+        return entries[last].1;
     }
-    let ((v0, c0), (v1, c1)) = (entries[i - 1], entries[i]);
-    let t = if v1 > v0 { (v - v0) / (v1 - v0) } else { 1.0 };
+    let (mut prev, mut cur) = (0, 0);
+    while v > entries[cur].0 {
+        prev = cur;
+        cur += 1;
+    }
+    if prev == cur || v == entries[cur].0 {
+        return entries[cur].1;
+    }
+    let ((v0, c0), (v1, c1)) = (entries[prev], entries[cur]);
+    let t = (v - v0) / (v1 - v0);
     Colour {
         rgb: c0.rgb + (c1.rgb - c0.rgb) * t,
         filter: c0.filter + (c1.filter - c0.filter) * t,
@@ -194,6 +203,25 @@ mod tests {
         };
         assert_eq!(lookup(&map, 0.5), c(0.2));
         assert!(lookup(&map, 0.5000001).rgb.x > 0.79);
+    }
+
+    #[test]
+    fn colour_map_with_decreasing_keys_reads_as_povray() {
+        // [0 c0] [0.6 c0.6] [0.3 c0.3] [1 c1]: POV-Ray blends 0 → 0.6 below 0.6, then 0.3 → 1
+        // (measured: at 0.61 it shows 44% of the way from the 0.3 colour to the 1 colour).
+        let map = ColourMap {
+            entries: vec![(0.0, c(0.0)), (0.6, c(0.6)), (0.3, c(0.3)), (1.0, c(1.0))],
+        };
+        assert!((lookup(&map, 0.3).rgb.x - 0.3).abs() < 1e-12);
+        assert!((lookup(&map, 0.59).rgb.x - 0.59).abs() < 1e-12);
+        let at = lookup(&map, 0.61).rgb.x;
+        assert!((at - (0.3 + 0.7 * (0.31 / 0.7))).abs() < 1e-12, "{at}");
+        // Keys 0.8 then 0.2: below 0.2 the first colour, from 0.2 on the last.
+        let map = ColourMap {
+            entries: vec![(0.8, c(0.0)), (0.2, c(1.0))],
+        };
+        assert_eq!(lookup(&map, 0.1), c(0.0));
+        assert_eq!(lookup(&map, 0.5), c(1.0));
     }
 
     #[test]
