@@ -67,6 +67,7 @@ impl Evaluator<'_> {
                 // A declared colour or pigment left alone by a directive (`#else Gray50 #end`).
                 NodeKind::IdentRef | NodeKind::Unknown if ev.names_colour_alone(item) => {
                     let v = ev.lookup(item)?;
+                    ev.warn_bare_colour(&v, item.word_span, "in a pigment");
                     pigment = pigment_from(v, item.word_span, pigment.clone())?;
                 }
                 NodeKind::Checker => {
@@ -145,7 +146,25 @@ impl Evaluator<'_> {
     /// current pigment).
     fn pigment_value(&mut self, e: &crate::syntax::Expr, pigment: Pigment) -> Result<Pigment> {
         let v = self.eval(e)?;
+        self.warn_bare_colour(&v, e.span, "in a pigment");
         pigment_from(v, e.span, pigment)
+    }
+
+    /// POV-Ray wants a colour in a pigment or a `color_map` entry to start with a colour
+    /// keyword (`rgb`, `color`, …) or a colour's name; a number or a vector there is a parse
+    /// error in POV-Ray 3.7, which trace reads as a grey or an rgb colour with a warning.
+    fn warn_bare_colour(&mut self, v: &Value, span: crate::diag::Span, place: &str) {
+        let what = match v {
+            Value::Float(_) => "a number",
+            Value::Vector(_) => "a vector",
+            _ => return,
+        };
+        self.warn(Diagnostic::warning(
+            format!(
+                "POV-Ray 3.7 refuses {what} as a colour {place} (write `rgb` before it): trace reads it as a colour, but this scene does not render in POV-Ray"
+            ),
+            span,
+        ));
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.
@@ -167,6 +186,7 @@ impl Evaluator<'_> {
             for (value_expr, colour_expr) in points {
                 let value = self.float(value_expr)?;
                 let v = self.eval(colour_expr)?;
+                self.warn_bare_colour(&v, colour_expr.span, "in a color_map entry");
                 let colour = to_colour(
                     colour5(&v).ok_or_else(|| type_error("a colour", &v, colour_expr.span))?,
                 );

@@ -752,7 +752,17 @@ impl<'a> Evaluator<'a> {
 
     fn camera_items(&mut self, node: &Node, mut c: CameraItems) -> Result<CameraItems> {
         c.span = node.word_span;
+        let mut declared = false;
         self.each_item(&node.children, &mut |ev, item| {
+            if declared && !Self::is_transform(item) {
+                ev.warn(Diagnostic::warning(
+                    format!(
+                        "POV-Ray 3.7 refuses `{}` after a declared camera (only transformations may follow its name): trace applies it, but this scene does not render in POV-Ray",
+                        item.word
+                    ),
+                    item.word_span,
+                ));
+            }
             match item.kind {
                 NodeKind::Perspective => c.projection = ir::Projection::Perspective,
                 NodeKind::Orthographic => c.projection = ir::Projection::Orthographic,
@@ -779,7 +789,10 @@ impl<'a> Evaluator<'a> {
                     c.angle = Some((a, item.span));
                 }
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Camera(declared) => c = *declared,
+                    Value::Camera(camera) => {
+                        c = *camera;
+                        declared = true;
+                    }
                     other => return Err(expr::type_error("a camera", &other, item.span)),
                 },
                 _ if Self::is_transform(item) => {

@@ -143,3 +143,56 @@ fn a_vector_after_a_vector_is_the_next_argument_not_a_comparison() {
     );
     assert!(refused.is_err());
 }
+
+#[test]
+fn forms_povray_refuses_are_read_with_a_warning_that_says_so() {
+    // Each of these is a parse error in POV-Ray 3.7 (checked with povray); trace reads them
+    // but warns, so a scene written against trace still learns it will not render there.
+    let warns = |text: &str, needle: &str| {
+        let loaded = load(text);
+        assert!(
+            loaded
+                .warnings
+                .iter()
+                .any(|w| w.contains("POV-Ray 3.7 refuses") && w.contains(needle)),
+            "{text}: {:?}",
+            loaded.warnings
+        );
+    };
+    warns(
+        "#declare C = camera { location -3*z } camera { C location -4*z }",
+        "`location` after a declared camera",
+    );
+    warns(
+        "#declare C = camera { location -3*z } camera { C angle 40 }",
+        "`angle` after a declared camera",
+    );
+    warns(
+        "sphere { 0, 1 pigment { 0.5 } }",
+        "a number as a colour in a pigment",
+    );
+    warns(
+        "sphere { 0, 1 pigment { <1, 0, 0> } }",
+        "a vector as a colour in a pigment",
+    );
+    warns(
+        "#declare F = 0.5;\nsphere { 0, 1 pigment { F } }",
+        "a number as a colour in a pigment",
+    );
+    warns(
+        "sphere { 0, 1 pigment { gradient x color_map { [0 0.2] [1 rgb 1] } } }",
+        "a number as a colour in a color_map entry",
+    );
+    // What POV-Ray accepts stays quiet: transformations after a declared camera, colour
+    // keywords and colour names, numbers as checker colours.
+    for text in [
+        "#declare C = camera { location -3*z } camera { C rotate y*10 translate x }",
+        "#declare C = rgb <1, 0, 0>;\nsphere { 0, 1 pigment { C * 0.5 } }",
+        "sphere { 0, 1 pigment { red 1 } }",
+        "sphere { 0, 1 pigment { checker 0.5, rgb 1 } }",
+        "#declare C = rgb 1;\nsphere { 0, 1 pigment { gradient x color_map { [0 C] [1 rgb 0] } } }",
+    ] {
+        let loaded = load(text);
+        assert!(loaded.warnings.is_empty(), "{text}: {:?}", loaded.warnings);
+    }
+}
