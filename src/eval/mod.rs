@@ -601,7 +601,8 @@ impl<'a> Evaluator<'a> {
         // for the error if there is no area_light at all.
         let (mut jitter, mut circular, mut orient, mut illumination) = (false, false, false, false);
         let mut adaptive = 100;
-        let mut area_modifier: Option<(String, Span)> = None;
+        // Every area-light modifier given, in order (POV-Ray accepts them before `area_light`).
+        let mut area_modifiers: Vec<(String, Span)> = Vec::new();
         let mut transform: Option<Transform> = None;
         self.each_item(&node.children, &mut |ev, item| {
             let arg = |i: usize| &item.args[i];
@@ -614,7 +615,7 @@ impl<'a> Evaluator<'a> {
                     "parallel" => parallel = true,
                     "shadowless" => light_type = LightType::Fill,
                     flag => {
-                        area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
+                        area_modifiers.push((item.word.clone(), item.word_span));
                         match flag {
                             "jitter" => jitter = true,
                             "circular" => circular = true,
@@ -672,11 +673,11 @@ impl<'a> Evaluator<'a> {
                     });
                 }
                 NodeKind::Adaptive => {
-                    area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
+                    area_modifiers.push((item.word.clone(), item.word_span));
                     adaptive = ev.float(arg(0))?.max(0.0) as u32;
                 }
                 NodeKind::AreaIllumination => {
-                    area_modifier.get_or_insert_with(|| (item.word.clone(), item.word_span));
+                    area_modifiers.push((item.word.clone(), item.word_span));
                     illumination = ev.optional_float(item, 1.0)? != 0.0;
                 }
                 _ if Self::is_transform(item) => {
@@ -687,8 +688,9 @@ impl<'a> Evaluator<'a> {
             }
             Ok(())
         })?;
-        match (&mut area, area_modifier.clone()) {
-            (Some(a), _) => {
+        let modifier = |word: &str| area_modifiers.iter().find(|(w, _)| w == word).map(|m| m.1);
+        match &mut area {
+            Some(a) => {
                 (
                     a.jitter,
                     a.circular,
@@ -697,27 +699,38 @@ impl<'a> Evaluator<'a> {
                     a.area_illumination,
                 ) = (jitter, circular || orient, orient, adaptive, illumination);
                 if a.circular && (a.size1 < 2 || a.size2 < 2) {
-                    let m = area_modifier.clone().expect("circular was given");
+                    let span = modifier("circular")
+                        .or(modifier("orient"))
+                        .unwrap_or(node.word_span);
                     return Err(Diagnostic::error(
                         "a circular area_light must have more than 1 point per axis",
-                        m.1,
+                        span,
                     ));
                 }
                 if illumination {
-                    let m = area_modifier.clone().expect("area_illumination was given");
                     return Err(Diagnostic::error(
                         "unsupported: `area_illumination` (not supported by trace yet)",
-                        m.1,
+                        modifier("area_illumination").unwrap_or(node.word_span),
                     ));
                 }
             }
-            (None, Some((word, span))) => {
-                return Err(Diagnostic::error(
-                    format!("`{word}` needs an area_light"),
-                    span,
-                ));
+            // Without an area_light POV-Ray refuses `circular` (a one-point light cannot be
+            // circular) and ignores the others, warning about `orient` and
+            // `area_illumination` only.
+            None => {
+                if let Some(span) = modifier("circular") {
+                    return Err(Diagnostic::error(
+                        "`circular` needs an area_light with more than 1 point per axis (POV-Ray refuses it here)",
+                        span,
+                    ));
+                }
+                for (word, span) in &area_modifiers {
+                    self.warn(Diagnostic::warning(
+                        format!("`{word}` only affects an area_light: ignored, as in POV-Ray"),
+                        *span,
+                    ));
+                }
             }
-            (None, None) => {}
         }
         let kind = if parallel {
             ir::LightKind::Parallel { point_at }

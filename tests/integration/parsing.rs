@@ -196,3 +196,18 @@ fn forms_povray_refuses_are_read_with_a_warning_that_says_so() {
         assert!(loaded.warnings.is_empty(), "{text}: {:?}", loaded.warnings);
     }
 }
+
+#[test]
+fn area_light_modifiers_without_an_area_light_are_ignored_with_a_warning_as_in_povray() {
+    // POV-Ray renders these (jitter and adaptive silently, orient and area_illumination with
+    // a warning); trace warns for each.
+    for word in ["jitter", "orient", "adaptive 1", "area_illumination"] {
+        let loaded = load(&format!("light_source {{ <0, 10, 0>, rgb 1 {word} }}"));
+        assert_eq!(loaded.scene.lights.len(), 1);
+        assert!(
+            loaded.warnings.len() == 1 && loaded.warnings[0].contains("only affects an area_light"),
+            "{word}: {:?}",
+            loaded.warnings
+        );
+    }
+}
