@@ -1,7 +1,7 @@
 //! Expression evaluation: POV-Ray's operators, promotion rules, constants and functions.
 
 use super::value::{Value, Vector, srgb_decode};
-use super::{Evaluator, unsupported};
+use super::{Evaluator, keywords};
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
@@ -462,7 +462,7 @@ impl Evaluator<'_> {
                 let m = super::transform::rotation(v3(1)?);
                 return Ok(Value::Vector(Vector::from_vec3(m.transform_point3(v3(0)?))));
             }
-            _ if unsupported::reason(name).is_some() => {
+            _ if keywords::is_unsupported_function(name) => {
                 return Err(self.unknown_word(name, name_span));
             }
             _ => {

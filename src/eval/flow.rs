@@ -148,7 +148,7 @@ impl<'a> Evaluator<'a> {
                     start: item.span.start,
                     ..item.word_span
                 };
-                return Err(match super::unsupported::reason(&item.word) {
+                return Err(match super::keywords::reason(&item.word) {
                     Some(reason) => {
                         Diagnostic::error(format!("unsupported: `#{}` ({reason})", item.word), span)
                     }
@@ -223,7 +223,7 @@ impl<'a> Evaluator<'a> {
             end: item.span.start + word.len().max(1) as u32,
             ..item.span
         };
-        if let Some(reason) = super::unsupported::reason(&word) {
+        if let Some(reason) = super::keywords::reason(&word) {
             return Diagnostic::error(format!("unsupported: `{word}` ({reason})"), word_span);
         }
         let text = &self.sources.file(item.span.file).text;

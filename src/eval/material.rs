@@ -39,7 +39,7 @@ impl Evaluator<'_> {
                     return Err(Diagnostic::error(
                         format!(
                             "unsupported: a `{}` pattern of textures (patterns of textures and \
-                             texture_map are outside trace's subset; a `{}` pigment is supported)",
+                             texture_map are not supported by trace yet; a `{}` pigment is supported)",
                             item.word, item.word
                         ),
                         item.word_span,
@@ -248,6 +248,15 @@ impl Evaluator<'_> {
                             ));
                         }
                     };
+                }
+                _ if matches!(item.word.as_str(), "filter" | "transmit") => {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "unsupported: `{}` in an image_map (see-through palette entries or a whole image made see-through are not supported by trace yet)",
+                            item.word
+                        ),
+                        item.word_span,
+                    ));
                 }
                 _ => return Err(ev.unknown_item(item, "image_map")),
             }

@@ -7,11 +7,11 @@
 mod array;
 mod expr;
 mod flow;
+pub mod keywords;
 mod material;
 mod object;
 mod sandbox;
 mod transform;
-mod unsupported;
 mod value;
 
 use crate::diag::{Diagnostic, FileId, SourceMap, Span};
@@ -251,7 +251,7 @@ impl<'a> Evaluator<'a> {
 
     /// The error for a word that is not valid where it stands.
     fn unknown_word(&self, word: &str, span: Span) -> Diagnostic {
-        match unsupported::reason(word) {
+        match keywords::reason(word) {
             Some(reason) => Diagnostic::error(format!("unsupported: `{word}` ({reason})"), span),
             None => Diagnostic::error(format!("unknown identifier `{word}`"), span),
         }
@@ -265,8 +265,39 @@ impl<'a> Evaluator<'a> {
                 node.span,
             );
         }
-        match unsupported::reason(&node.word) {
-            Some(_) => self.unknown_word(&node.word, node.word_span),
+        if context == "pigment"
+            && matches!(
+                node.word.as_str(),
+                "rgb"
+                    | "rgbf"
+                    | "rgbt"
+                    | "rgbft"
+                    | "srgb"
+                    | "srgbf"
+                    | "srgbt"
+                    | "srgbft"
+                    | "color"
+                    | "colour"
+            )
+        {
+            return Diagnostic::error(
+                "a second colour cannot stand here: a pigment takes one colour, as its first item (POV-Ray refuses this too)",
+                node.word_span,
+            );
+        }
+        if node.word == "pigment" && context == "pigment" {
+            return Diagnostic::error(
+                "unsupported: a pigment inside a pigment (a checker, map or pattern of pigments is not supported by trace yet)",
+                node.word_span,
+            );
+        }
+        match keywords::status(&node.word) {
+            Some(keywords::Status::Unsupported(_)) => self.unknown_word(&node.word, node.word_span),
+            // A keyword trace reads elsewhere: say that it is misplaced, not unknown.
+            Some(keywords::Status::Supported) => Diagnostic::error(
+                format!("`{}` cannot stand here in {context}", node.word),
+                node.word_span,
+            ),
             None if self.env.contains_key(&node.word) => Diagnostic::error(
                 format!(
                     "`{}` cannot stand here in {context} (wrap it, e.g. `texture {{ {} }}`)",
@@ -380,7 +411,7 @@ impl<'a> Evaluator<'a> {
                 self.place(object, node.word_span)?;
             }
             NodeKind::Unknown => {
-                return Err(match unsupported::reason(&node.word) {
+                return Err(match keywords::reason(&node.word) {
                     Some(_) => self.unknown_word(&node.word, node.word_span),
                     None => Diagnostic::error(
                         format!(
@@ -827,7 +858,7 @@ impl<'a> Evaluator<'a> {
                 {
                     return Err(Diagnostic::error(
                         format!(
-                            "unsupported: the {} camera (this camera type is outside trace's subset)",
+                            "unsupported: the {} camera (this camera type is not supported by trace yet)",
                             item.word
                         ),
                         item.word_span,

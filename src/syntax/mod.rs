@@ -644,7 +644,9 @@ fn describe(rule: Rule) -> Option<&'static str> {
         background => "`background`",
         global_settings => "`global_settings`",
         version | declare | default_block | unknown_directive => "a directive",
-        unknown_item | unknown_tail | balanced | leftover | any_item | body => "a statement",
+        unknown_item | misplaced_item | unknown_tail | balanced | leftover | any_item | body => {
+            "a statement"
+        }
         macro_call => "a macro call",
         semicolon => "`;`",
         flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => {
@@ -807,6 +809,7 @@ impl Lower {
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
             Rule::unknown_item
+            | Rule::misplaced_item
             | Rule::leftover
             | Rule::cylinder_camera
             | Rule::texture_pattern
@@ -1121,7 +1124,8 @@ fn is_word(rule: Rule) -> bool {
     use Rule::*;
     matches!(
         rule,
-        word | kw_adc_bailout
+        word | keyword
+            | kw_adc_bailout
             | kw_fog
             | kw_fog_type
             | kw_fog_alt

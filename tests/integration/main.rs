@@ -7,6 +7,7 @@ mod fuzz_replay;
 mod golden;
 mod hostile;
 mod ir_snapshots;
+mod keywords;
 mod parsing;
 mod stability;
 
