@@ -115,7 +115,7 @@ def mutate(rng, data, seeds):
             end = min(len(data), pos + rng.randint(1, 200))
             data[pos:pos] = data[pos:end] * rng.randint(1, 20)
         else:
-            other = open(rng.choice(seeds), "rb").read().splitlines(keepends=True)
+            other = rng.choice(seeds).splitlines(keepends=True)
             if other:
                 k = rng.randrange(len(other))
                 data[pos:pos] = b"".join(other[k:k + rng.randint(1, 10)])
@@ -201,7 +201,8 @@ def main():
     BINARY = os.path.abspath(args.binary)
     if not os.path.exists(BINARY):
         subprocess.run(["cargo", "build", "--release"], cwd=ROOT, check=True)
-    seeds = seed_files()
+    # The seeds' contents, read once: a run does not depend on the tree changing under it.
+    seeds = [open(path, "rb").read() for path in seed_files()]
     rng = random.Random(args.seed)
     top, scene_dir = workspace()
     os.makedirs(CRASHERS, exist_ok=True)
@@ -214,7 +215,7 @@ def main():
         while time.time() < deadline:
             batch = []
             for _ in range(args.jobs * 4):
-                data = mutate(rng, open(rng.choice(seeds), "rb").read(), seeds)
+                data = mutate(rng, rng.choice(seeds), seeds)
                 batch.append((count, data))
                 count += 1
             results = pool.map(lambda item: (item,) + judge(scene_dir, *item), batch)
