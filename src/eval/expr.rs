@@ -165,11 +165,7 @@ impl Evaluator<'_> {
                 let (cb, lb) = vb
                     .components()
                     .ok_or_else(|| type_error("a number", &vb, b.span))?;
-                if op == BinOp::Div
-                    && vb
-                        .components()
-                        .is_some_and(|(c, n)| c[..n].iter().any(|&x| x == 0.0))
-                {
+                if op == BinOp::Div && vb.components().is_some_and(|(c, n)| c[..n].contains(&0.0)) {
                     return Err(Diagnostic::error("division by zero", b.span));
                 }
                 let is_colour = matches!(va, Value::Colour(_)) || matches!(vb, Value::Colour(_));
@@ -272,7 +268,7 @@ impl Evaluator<'_> {
                     };
                     for (i, ci) in c.iter_mut().enumerate().take(3) {
                         *ci = if srgb {
-                            self.from_srgb(comps[i])
+                            self.srgb_to_linear(comps[i])
                         } else {
                             comps[i]
                         };
@@ -302,7 +298,7 @@ impl Evaluator<'_> {
     }
 
     /// An sRGB-encoded channel converted into working gamma.
-    fn from_srgb(&self, v: f64) -> f64 {
+    fn srgb_to_linear(&self, v: f64) -> f64 {
         let linear = srgb_decode(v);
         match self.assumed_gamma {
             Some(g) if g != 1.0 => linear.max(0.0).powf(1.0 / g),

@@ -44,7 +44,8 @@ impl Cuboid {
                 (far, far_axis) = (hi, i as u32);
             }
         }
-        if !(near <= far) || far == f64::INFINITY {
+        // NaN bounds (no finite slab) miss as well as an empty interval.
+        if near.partial_cmp(&far).is_none_or(std::cmp::Ordering::is_gt) || far == f64::INFINITY {
             return Crossings::NONE;
         }
         let mut c = Crossings::NONE;

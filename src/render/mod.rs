@@ -222,7 +222,7 @@ impl Corners<'_> {
 fn output_value(c: Rgb, gamma: Gamma) -> [f32; 3] {
     let decode = |v: f64| -> f64 {
         match gamma {
-            Gamma::Working(g) if g == 1.0 => v,
+            Gamma::Working(1.0) => v,
             Gamma::Working(g) => v.signum() * v.abs().powf(g),
             Gamma::Off => crate::film::srgb_to_linear(v),
         }

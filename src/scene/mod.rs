@@ -116,6 +116,10 @@ pub fn filter_colour(c: &Colour) -> Rgb {
     c.rgb * c.filter + Rgb::splat(c.transmit)
 }
 
+/// Per thread, for a shadow ray through fading interiors: its crossings (distance, object)
+/// and the list of media it is in.
+type ShadowScratch = (Vec<(f64, u32)>, Vec<u32>);
+
 /// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
 /// `fade_distance` that is not zero).
 fn fades(interior: &Interior) -> bool {
@@ -730,7 +734,7 @@ impl Scene {
     fn faded_crossings(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
         thread_local! {
             /// Per thread: the crossings (distance, object) and the list of media.
-            static SCRATCH: RefCell<(Vec<(f64, u32)>, Vec<u32>)> = const { RefCell::new((Vec::new(), Vec::new())) };
+            static SCRATCH: RefCell<ShadowScratch> = const { RefCell::new((Vec::new(), Vec::new())) };
         }
         SCRATCH.with_borrow_mut(|(crossings, media)| {
             crossings.clear();
@@ -813,7 +817,7 @@ fn may_hit(bounds: Option<(DVec3, DVec3)>, ray: &Ray, inv: DVec3) -> bool {
     let near = t0.min(t1).max_element().max(ray.tmin);
     let far = t0.max(t1).min_element().min(ray.tmax);
     // NaN (origin on a slab plane with a zero direction component) must not reject.
-    !(near > far)
+    near.partial_cmp(&far) != Some(std::cmp::Ordering::Greater)
 }
 
 /// The world box around an object-space box (its eight corners transformed), padded a little.
