@@ -101,6 +101,7 @@ fn parse_aa(s: &str) -> Result<AaSetting, String> {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Compare a test image against a reference (EXR or PNG): prints mean FLIP and RMSE.
+    #[cfg(feature = "flip")]
     Compare {
         /// Reference image.
         reference: PathBuf,
@@ -133,6 +134,7 @@ fn main() -> ExitCode {
         std::process::exit(130);
     });
     let result = match cli.command {
+        #[cfg(feature = "flip")]
         Some(Command::Compare {
             reference,
             test,
@@ -363,6 +365,7 @@ fn stats_block(args: &RenderArgs, r: &trace::Rendered, phases: [Duration; 4]) ->
     out
 }
 
+#[cfg(feature = "flip")]
 fn compare(
     reference: &std::path::Path,
     test: &std::path::Path,

@@ -2,7 +2,7 @@
 //! (tables), docs/stability.csv (every count) and docs/stability.svg (failures against
 //! distance per method).
 //!
-//! Run: `cargo run --release --bin stability [-- --rays N] [--out DIR]`.
+//! Run: `cargo run --release --features stability-suite --bin stability [-- --rays N] [--out DIR]`.
 
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -40,17 +40,27 @@ fn timed(f: impl FnOnce() -> Count) -> (Count, f64) {
     (c, start.elapsed().as_nanos() as f64 / c.rays.max(1) as f64)
 }
 
+/// Runs the stability suite (docs/stability.md) and writes its report.
+#[derive(clap::Parser, Debug)]
+#[command(
+    version,
+    about = "Runs trace's numerical stability suite and writes docs/stability.md"
+)]
+struct Args {
+    /// Rays per cell (S4 uses a quarter).
+    #[arg(long, default_value_t = 20_000)]
+    rays: u64,
+    /// Folder to write stability.md into (default: the repository's docs/).
+    #[arg(long)]
+    out: Option<String>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let value = |flag: &str| {
-        args.iter()
-            .position(|a| a == flag)
-            .and_then(|i| args.get(i + 1).cloned())
-    };
-    let rays: u64 = value("--rays")
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(20_000);
-    let out_dir = value("--out").unwrap_or_else(|| "docs".into());
+    let args = <Args as clap::Parser>::parse();
+    let rays = args.rays.max(1);
+    let out_dir = args
+        .out
+        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/docs").to_string());
     let mut rows = Vec::new();
 
     for m in OffsetMethod::ALL {
@@ -426,7 +436,7 @@ fn report(rows: &[Row], rays: u64) -> String {
     let _ = writeln!(
         s,
         "# Numerical stability: where methods fail\n\n\
-         Made by `cargo run --release --bin stability` ({rays} rays per cell; S4 uses a quarter).\n\
+         Made by `cargo run --release --features stability-suite --bin stability` ({rays} rays per cell; S4 uses a quarter).\n\
          Each experiment builds its geometry in code and knows every ray's right answer\n\
          (`src/stability.rs`); a cell is the share of wrong answers, **bold** where not zero.\n\
          trace's own method is the first row of each table; the others are the textbook methods\n\

@@ -3,16 +3,15 @@
 //! Every error that input can cause, from the grammar or from evaluation, becomes a
 //! [`Diagnostic`] anchored to a [`Span`]. This module depends on nothing else in the crate.
 
-use serde::Serialize;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 /// Index of a file in a [`SourceMap`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct FileId(pub u32);
 
 /// A byte range in one source file.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Serialize, Default)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Span {
     /// The file the range lies in.
     pub file: FileId,

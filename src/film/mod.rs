@@ -252,6 +252,7 @@ impl Film {
 }
 
 /// How different two images are.
+#[cfg(feature = "flip")]
 #[derive(Clone, Debug)]
 pub struct Comparison {
     /// Mean FLIP (LDR, on the sRGB-encoded images, 67 pixels per degree): 0 identical, 1 worst.
@@ -265,6 +266,7 @@ pub struct Comparison {
 }
 
 /// Compares a test image against a reference.
+#[cfg(feature = "flip")]
 pub fn compare(reference: &Film, test: &Film) -> Result<Comparison, ImageError> {
     if (reference.width, reference.height) != (test.width, test.height) {
         return Err(ImageError::SizeMismatch(

@@ -5,7 +5,6 @@
 //! of pest or of rendering state. Its `Debug` output is what the parse snapshots record.
 
 use glam::{DMat4, DVec3, Vec3};
-use serde::Serialize;
 use std::sync::Arc;
 
 /// An RGB colour (linear working space, unclamped).
@@ -14,7 +13,7 @@ pub type Rgb = DVec3;
 /// A POV-Ray colour with its five channels: red, green, blue, filter, transmit.
 ///
 /// `.rt`: `color rgbft <r, g, b, f, t>`, `rgb <r, g, b>`, `rgbf`, `rgbt`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Colour {
     /// Red, green, blue.
     pub rgb: Rgb,
@@ -25,7 +24,7 @@ pub struct Colour {
 }
 
 /// The whole scene.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Scene {
     /// The camera (POV-Ray's default camera when the scene has none).
     pub camera: Camera,
@@ -47,7 +46,7 @@ pub struct Scene {
 /// `fog { … }`: along a ray segment of length `w` in hollow space, the colour `c` becomes
 /// `(1 − a)·colour + A·c` summed over fogs, with `a = max(e^(−w·density/distance), transmit)`
 /// and `A = a·(1 − filter + filter·colour)` (POV-Ray's ComputeFog).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Fog {
     /// `distance`: the length over which the fog thickens by a factor e.
     pub distance: f64,
@@ -58,7 +57,7 @@ pub struct Fog {
 }
 
 /// POV-Ray's fog types.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum FogKind {
     /// `fog_type 1` (the default): the same density everywhere.
     Constant,
@@ -75,7 +74,7 @@ pub enum FogKind {
 }
 
 /// `global_settings` and version-dependent behaviour.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Settings {
     /// How working values become linear output values.
     pub gamma: Gamma,
@@ -91,7 +90,7 @@ pub struct Settings {
 }
 
 /// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Gamma {
     /// Values are in working gamma `g`: the linear output is `value^g`.
     Working(f64),
@@ -101,7 +100,7 @@ pub enum Gamma {
 }
 
 /// A perspective or orthographic camera, resolved to its four vectors (POV-Ray §4.2 applied).
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Camera {
     /// Projection.
     pub projection: Projection,
@@ -116,7 +115,7 @@ pub struct Camera {
 }
 
 /// Camera projection.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Projection {
     /// `perspective` (default).
     Perspective,
@@ -125,7 +124,7 @@ pub enum Projection {
 }
 
 /// A point light. `.rt`: `light_source { <x, y, z>, color rgb <r, g, b> }`.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Light {
     /// World position (after the light's transformations).
     pub position: DVec3,
@@ -142,7 +141,7 @@ pub struct Light {
 }
 
 /// How a light emits.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum LightKind {
     /// Equally in every direction.
     Point,
@@ -165,7 +164,7 @@ pub enum LightKind {
 }
 
 /// Light attenuation `2 / (1 + (d / distance)^power)`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightFade {
     /// `fade_distance`.
     pub distance: f64,
@@ -174,7 +173,7 @@ pub struct LightFade {
 }
 
 /// `area_light <axis1>, <axis2>, size1, size2 [adaptive a] [jitter] [circular] [orient]`.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct AreaLight {
     /// First grid axis (full length).
     pub axis1: DVec3,
@@ -197,7 +196,7 @@ pub struct AreaLight {
 }
 
 /// A renderable object: a shape, where it is, and what it is made of.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
@@ -223,7 +222,7 @@ pub struct Object {
 }
 
 /// Analytic shapes, in object space.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub enum Shape {
     /// `sphere { centre, radius }`.
     Sphere {
@@ -285,7 +284,7 @@ pub enum Shape {
 
 /// A triangle mesh (`mesh`, `mesh2`, or a single `triangle`/`smooth_triangle`). Vertices and
 /// normals are stored as 32-bit floats, as in POV-Ray.
-#[derive(Clone, PartialEq, Serialize, Default)]
+#[derive(Clone, PartialEq, Default)]
 pub struct Mesh {
     /// Vertex positions.
     pub vertices: Vec<Vec3>,
@@ -325,7 +324,7 @@ impl std::fmt::Debug for Mesh {
 }
 
 /// An affine transformation, composed from a list of `translate`/`rotate`/`scale`/`matrix`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Transform {
     /// Column-vector matrix (glam convention) taking object space to world space.
     pub matrix: DMat4,
@@ -355,7 +354,7 @@ impl Transform {
 /// A resolved texture: pigment and finish, with the pattern-space transform.
 ///
 /// `.rt`: `texture { pigment { ... } finish { ... } }`, or `pigment`/`finish` on an object.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Texture {
     /// Colour at each point.
     pub pigment: Pigment,
@@ -367,7 +366,7 @@ pub struct Texture {
 ///
 /// `.rt`: `pigment { color rgb <..> }`, `pigment { checker C0, C1 scale 2 }`,
 /// `pigment { gradient y color_map { [0 C0] [1 C1] } }`, `pigment { image_map { png "f.png" } }`.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Pigment {
     /// The colours.
     pub pattern: Pattern,
@@ -399,7 +398,7 @@ impl Pigment {
 }
 
 /// Colour patterns.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Pattern {
     /// One colour everywhere.
     Solid(Colour),
@@ -417,7 +416,7 @@ pub enum Pattern {
 }
 
 /// `color_map { [v C] … }`: colours at increasing values, interpolated between.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ColourMap {
     /// (value, colour), by increasing value.
     pub entries: Vec<(f64, Colour)>,
@@ -438,7 +437,7 @@ impl Default for ColourMap {
 }
 
 /// A decoded image for `image_map`.
-#[derive(Clone, PartialEq, Serialize)]
+#[derive(Clone, PartialEq)]
 pub struct ImageMap {
     /// The file as named in the scene.
     pub file: String,
@@ -466,7 +465,7 @@ impl std::fmt::Debug for ImageMap {
 }
 
 /// `interior { ior fade_distance fade_power fade_color }`.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interior {
     /// Index of refraction (default 1).
     pub ior: f64,
@@ -492,7 +491,7 @@ impl Default for Interior {
 /// POV-Ray's finish, every default filled in (`Create_Finish`).
 ///
 /// `.rt`: `finish { ambient 0.1 diffuse 0.6 phong 1 ... }`.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Finish {
     /// Ambient colour (default 0.1).
     pub ambient: Rgb,
@@ -540,7 +539,7 @@ impl Default for Finish {
 }
 
 /// `reflection C` or `reflection { min, max falloff F exponent E fresnel metallic M }`.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Reflection {
     /// Reflectivity at normal incidence (or the Fresnel minimum).
     pub min: Rgb,
