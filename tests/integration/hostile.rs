@@ -350,9 +350,19 @@ fn an_interrupted_write_leaves_no_temporary_file() {
     let dir = scratch("interrupt");
     let out = dir.join("img.png");
     std::fs::write(&out, b"previous").unwrap();
+    // A scene that spends about half a second evaluating before it renders, so the FIFO is
+    // surely in place before the write (with a fast scene, a loaded machine could let the
+    // render finish before mkfifo ran: the run then succeeded and the test failed).
+    let scene = dir.join("slow.rt");
+    std::fs::write(
+        &scene,
+        "#declare I = 0;\n#while (I < 1000000) #declare I = I + 1; #end\n\
+         camera { location -3*z look_at 0 }\nsphere { 0, 1 pigment { rgb 1 } }\n",
+    )
+    .unwrap();
     for signal in ["INT", "TERM"] {
         let mut child = trace()
-            .arg(crate::root().join("examples/basic_spheres.rt"))
+            .arg(&scene)
             .arg("-o")
             .arg(&out)
             .args(["--width", "160", "--height", "120", "--aa", "0", "--quiet"])
