@@ -21,7 +21,6 @@ pub mod meshfile;
 pub mod output;
 pub mod render;
 pub mod scene;
-pub mod stability;
 pub mod syntax;
 
 use diag::{Diagnostic, SourceMap};

@@ -9,7 +9,6 @@ mod hostile;
 mod ir_snapshots;
 mod keywords;
 mod parsing;
-mod stability;
 
 use std::path::{Path, PathBuf};
 

@@ -2,7 +2,7 @@
 //! stability`): trace's methods fail nowhere in the supported range, and each textbook
 //! alternative fails where the literature says it does (so the counters can see failures).
 
-use trace::stability::{
+use trace_stability::{
     OffsetMethod, SphereMethod, TriangleMethod, box_grid_failures, contact_shadow,
     ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks,
     pane_stack, scale_invariance, sphere_acne, thread_determinism,

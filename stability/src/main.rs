@@ -2,11 +2,11 @@
 //! (tables), docs/stability.csv (every count) and docs/stability.svg (failures against
 //! distance per method).
 //!
-//! Run: `cargo run --release --features stability-suite --bin stability [-- --rays N] [--out DIR]`.
+//! Run: `cargo run --release -p trace-stability [-- --rays N] [--out DIR]`.
 
 use std::fmt::Write as _;
 use std::time::Instant;
-use trace::stability::{
+use trace_stability::{
     Count, OffsetMethod, SphereMethod, TriangleMethod, black_pixels, box_grid_failures,
     contact_shadow, ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing,
     grid_leaks, mesh_leaks, pane_scene, pane_stack, scale_invariance, sphere_acne, thin_wall,
@@ -60,7 +60,7 @@ fn main() {
     let rays = args.rays.max(1);
     let out_dir = args
         .out
-        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/docs").to_string());
+        .unwrap_or_else(|| concat!(env!("CARGO_MANIFEST_DIR"), "/../docs").to_string());
     let mut rows = Vec::new();
 
     for m in OffsetMethod::ALL {
@@ -169,11 +169,11 @@ fn main() {
         }
     }
     if let Some(dir) = povray_dir() {
-        let reference = povray_render(&dir, &trace::stability::scale_scene(1.0, 0.0), 160, 120);
+        let reference = povray_render(&dir, &trace_stability::scale_scene(1.0, 0.0), 160, 120);
         for k in SCENE_SCALES {
             for t in SCENE_SHIFTS {
                 let start = Instant::now();
-                let test = povray_render(&dir, &trace::stability::scale_scene(k, t), 160, 120);
+                let test = povray_render(&dir, &trace_stability::scale_scene(k, t), 160, 120);
                 let mut count = Count::default();
                 for (a, b) in reference.chunks(3).zip(test.chunks(3)) {
                     count.rays += 1;
@@ -436,12 +436,12 @@ fn report(rows: &[Row], rays: u64) -> String {
     let _ = writeln!(
         s,
         "# Numerical stability: where methods fail\n\n\
-         Made by `cargo run --release --features stability-suite --bin stability` ({rays} rays per cell; S4 uses a quarter).\n\
+         Made by `cargo run --release -p trace-stability` ({rays} rays per cell; S4 uses a quarter).\n\
          Each experiment builds its geometry in code and knows every ray's right answer\n\
-         (`src/stability.rs`); a cell is the share of wrong answers, **bold** where not zero.\n\
+         (`stability/src/lib.rs`); a cell is the share of wrong answers, **bold** where not zero.\n\
          trace's own method is the first row of each table; the others are the textbook methods\n\
          it replaced, kept in the suite to show that the counters find failures where the\n\
-         literature says they happen (../shared/stability.md). `ns/ray` is the cost of the\n\
+         literature says they happen (acne, leaks, cracks, far from the origin, grazing rays). `ns/ray` is the cost of the\n\
          whole experiment per ray, on one thread: compare methods within a table.\n\n\
          Covered so far: S1 (acne and leaks of shadow rays), S2 (contact shadows), S3 (far\n\
          small spheres), S4 (leaks through mesh seams), S5 (axis-aligned grazing rays), S6 (the\n\
