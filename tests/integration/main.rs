@@ -8,6 +8,7 @@ mod golden;
 mod hostile;
 mod ir_snapshots;
 mod keywords;
+mod layers;
 mod parsing;
 
 use std::path::{Path, PathBuf};
