@@ -15,7 +15,7 @@ rendered by the release binary at 24x18, as a user would run it, and judged:
                 area_light 1000, 1000), counted apart as "slow render";
   and any run whose output shows the marker of the file outside the sandbox is a finding.
 
-Findings are saved in tests/fuzz/crashers/ (replayed by `cargo test`, tests/integration/
+Findings are saved in tests/fuzz/crashers/ (replayed by `cargo test`, cli/tests/integration/
 fuzz_replay.rs); a summary is printed at the end.
 
     python3 scripts/fuzz.py --minutes 60 [--seed 1] [--jobs 2] [--binary PATH]

@@ -2,15 +2,15 @@
 
 #[test]
 fn bad_scenes_give_located_messages() {
-    insta::glob!("../scenes/err", "*.rt", |path| {
+    insta::glob!("../../../tests/scenes/err", "*.rt", |path| {
         let text = std::fs::read_to_string(path).expect("readable");
         let name = std::path::Path::new("scenes").join(path.file_name().expect("file name"));
         // (Data files such as meshes are found through the include path, given relative to
-        // the package root, where cargo runs tests, so that messages do not depend on it.)
+        // the package root (cli/), where cargo runs tests, so that messages do not depend on it.)
         let options = trace::LoadOptions {
             width: 320,
             height: 240,
-            include_paths: vec![std::path::PathBuf::from("tests/scenes/err")],
+            include_paths: vec![std::path::PathBuf::from("../tests/scenes/err")],
             // (A small evaluation budget keeps the endless-loop scenes quick.)
             max_steps: 100_000,
             ..Default::default()

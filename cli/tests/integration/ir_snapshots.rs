@@ -18,10 +18,10 @@ fn snapshot_ir(path: &Path) {
 
 #[test]
 fn examples_evaluate_to_stable_ir() {
-    insta::glob!("../../examples", "*.rt", snapshot_ir);
+    insta::glob!("../../../examples", "*.rt", snapshot_ir);
 }
 
 #[test]
 fn accepted_scenes_evaluate_to_stable_ir() {
-    insta::glob!("../scenes/ok", "*.rt", snapshot_ir);
+    insta::glob!("../../../tests/scenes/ok", "*.rt", snapshot_ir);
 }

@@ -13,9 +13,9 @@ mod parsing;
 
 use std::path::{Path, PathBuf};
 
-/// The repository root.
+/// The repository root (the workspace; this crate is cli/).
 pub fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
 }
 
 /// Loads scene text at a given image size, panicking with the rendered diagnostic on error.
