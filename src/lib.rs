@@ -6,8 +6,13 @@
 //! ```
 //!
 //! Each stage takes the previous stage's output and nothing else: `ir` knows nothing of pest,
-//! `render` nothing of syntax or IR. The public API is [`load`], [`render`] and the film's
-//! writers; the CLI, tests and benchmarks use only these.
+//! `render` nothing of syntax or IR (a test, `layers.rs`, checks the direction).
+//!
+//! The interface for applications is [`load`] (or [`load_str`]), [`render`] and [`Film`]'s
+//! readers and writers. The modules are public too, for the three users in this repository,
+//! and are not a stable interface: the command line (`cli/`: the memory budget, output files,
+//! mesh conversion, image comparison), the stability suite (`stability/`: geometry and scene
+//! internals, which it measures) and the tests.
 
 #![warn(missing_docs)]
 
