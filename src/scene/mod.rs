@@ -640,7 +640,7 @@ impl Scene {
     /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
     /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
     /// segments run inside objects whose fade_power is positive (see
-    /// [`Scene::faded_crossings`]). Objects with `no_shadow` are skipped; refraction is
+    /// `faded_crossings`). Objects with `no_shadow` are skipped; refraction is
     /// ignored, as in POV-Ray.
     pub fn transmittance(&self, ray: &Ray) -> Rgb {
         let opaque_blocks = |i: u32| {
