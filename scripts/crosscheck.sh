@@ -17,7 +17,12 @@ TRACE="$ROOT/target/release/trace"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 
-if [ "$#" -eq 0 ]; then set -- "$ROOT"/examples/*.rt; fi
+# Every example POV-Ray can read (mesh_file is trace's own extension).
+if [ "$#" -eq 0 ]; then
+    for f in "$ROOT"/examples/*.rt; do
+        grep -q 'mesh_file' "$f" || set -- "$@" "$f"
+    done
+fi
 
 # best_time CMD...: runs the command RUNS times, prints the fastest wall time in seconds.
 best_time() {
