@@ -51,7 +51,6 @@ impl RayCounts {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Interiors {
     ids: [u32; MAX_NESTING],
-    media: [u32; MAX_NESTING],
     len: usize,
 }
 
@@ -67,30 +66,30 @@ impl Interiors {
             for (i, object) in scene.objects.iter().enumerate() {
                 let second = bounded_last && object.bounds.is_some();
                 if second == pass && scene.contains(object, p) {
-                    list.push(scene, ObjectId(i as u32));
+                    list.push(ObjectId(i as u32));
                 }
             }
         }
         list
     }
 
-    fn push(&mut self, scene: &Scene, id: ObjectId) {
+    fn push(&mut self, id: ObjectId) {
         if self.len < MAX_NESTING {
             self.ids[self.len] = id.0;
-            self.media[self.len] = scene.objects[id.0 as usize].medium;
             self.len += 1;
         }
     }
 
     /// Where the medium of object `id` is in the list.
     fn position(&self, scene: &Scene, id: ObjectId) -> Option<usize> {
-        let medium = scene.objects[id.0 as usize].medium;
-        self.media[..self.len].iter().position(|&m| m == medium)
+        let medium = |i: u32| scene.objects[i as usize].medium;
+        self.ids[..self.len]
+            .iter()
+            .position(|&i| medium(i) == medium(id.0))
     }
 
     fn remove(&mut self, index: usize) {
         self.ids.copy_within(index + 1..self.len, index);
-        self.media.copy_within(index + 1..self.len, index);
         self.len -= 1;
     }
 
@@ -430,17 +429,18 @@ impl Crossing {
         let mut after = *list;
         let position = list.position(scene, o);
         // The medium entered last is `o`'s (POV-Ray compares interiors, not objects).
-        let innermost =
-            list.len > 0 && list.media[list.len - 1] == scene.objects[o.0 as usize].medium;
+        let innermost = list.last().is_some_and(|l| {
+            scene.objects[l.0 as usize].medium == scene.objects[o.0 as usize].medium
+        });
         let refraction_eta = match (position, list.last()) {
             // Entering from air.
             (None, None) => {
-                after.push(scene, o);
+                after.push(o);
                 1.0 / n_o
             }
             // Entering while inside others.
             (None, Some(last)) => {
-                after.push(scene, o);
+                after.push(o);
                 ior(last) / n_o
             }
             // Leaving the innermost medium.
