@@ -8,32 +8,72 @@
 //! Each stage takes the previous stage's output and nothing else: `ir` knows nothing of pest,
 //! `render` nothing of syntax or IR (a test, `layers.rs`, checks the direction).
 //!
-//! The interface for applications is [`load`] (or [`load_str`]), [`render`] and [`Film`]'s
-//! readers and writers. The modules are public too, for the three users in this repository,
-//! and are not a stable interface: the command line (`cli/`: the memory budget, output files,
-//! mesh conversion, image comparison), the stability suite (`stability/`: geometry and scene
-//! internals, which it measures) and the tests.
+//! The interface is small:
+//! - the pipeline: [`load`] (or [`load_str`]) a scene into the [`ir`], then [`render`] it to
+//!   a [`Film`];
+//! - [`ir`], the evaluated scene as plain data (a test may build one by hand and render it);
+//! - [`film`], images: reading, writing, comparing (FLIP with the default feature `flip`);
+//! - what the command line needs besides: [`memory`] (the allocator that enforces
+//!   `--max-memory`), [`output`] (temporary output files removed on failure or interrupt),
+//!   [`meshfile`] (OBJ/PLY reading and `trace convert`), [`diag`] (located diagnostics), and a
+//!   few constants and statistics names re-exported here.
+//!
+//! The pipeline's inner stages (`syntax`, `eval`, `scene`, `geometry`, `render`) are private.
+//! The feature `internals` makes them public for the stability suite (`stability/`) and the
+//! BVH benchmarks, which measure shapes and acceleration structures directly; they are not a
+//! stable interface and nothing installed by `cargo install` turns that feature on.
 
 #![warn(missing_docs)]
+// Items only the stability suite and benchmarks reach are dead without `internals`.
+#![cfg_attr(not(feature = "internals"), allow(dead_code))]
 
 pub mod diag;
-pub mod eval;
 pub mod film;
-pub mod geometry;
 pub mod ir;
 pub mod memory;
 pub mod meshfile;
 pub mod output;
-pub mod render;
-pub mod scene;
-pub mod syntax;
+
+/// Declares the pipeline's inner stages: public with the feature `internals`, private
+/// without.
+macro_rules! stages {
+    ($($(#[$doc:meta])* $name:ident;)*) => {$(
+        $(#[$doc])*
+        #[cfg(feature = "internals")]
+        pub mod $name;
+        $(#[$doc])*
+        #[cfg(not(feature = "internals"))]
+        mod $name;
+    )*};
+}
+
+stages! {
+    /// Directives, declarations, expressions and includes: syntax → IR.
+    eval;
+    /// Rays, shapes, intersections, bounds.
+    geometry;
+    /// The tracer: camera rays, shading, anti-aliasing, in parallel.
+    render;
+    /// IR → the render-ready scene (transforms, materials, acceleration structures).
+    scene;
+    /// pest's parse of scene text into syntax trees.
+    syntax;
+}
 
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;
 
-pub use eval::LoadOptions;
+pub use eval::{DEFAULT_MAX_STEPS, LoadOptions};
 pub use film::Film;
-pub use render::{Antialias, RenderOptions, Rendered};
+pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
+pub use render::{Antialias, RayCounts, RenderOptions, Rendered, bytes_needed};
+pub use syntax::{MAX_NESTING, is_identifier};
+
+/// POV-Ray 3.7's reserved words, each with what trace does with it, as the Markdown table of
+/// `docs/keywords.md`.
+pub fn keyword_table() -> String {
+    eval::keywords::markdown()
+}
 
 /// A scene that failed to load: the diagnostic and the sources it points into.
 #[derive(Debug)]

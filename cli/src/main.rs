@@ -70,7 +70,7 @@ struct RenderArgs {
     include_path: Vec<PathBuf>,
     /// Most evaluation steps the scene may take (statements, loop passes, macro calls), all
     /// together: an endless loop stops here with an error.
-    #[arg(long, default_value_t = trace::eval::DEFAULT_MAX_STEPS, value_name = "N")]
+    #[arg(long, default_value_t = trace::DEFAULT_MAX_STEPS, value_name = "N")]
     max_steps: u64,
     /// Most memory trace may use, e.g. 512M or 8G (default: the memory available at start).
     #[arg(long, value_name = "SIZE", value_parser = parse_memory)]
@@ -198,7 +198,7 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         .or_else(trace::memory::available)
         .unwrap_or(usize::MAX);
     trace::memory::set_limit(memory);
-    let film_bytes = trace::render::bytes_needed(args.width, args.height);
+    let film_bytes = trace::bytes_needed(args.width, args.height);
     if film_bytes > memory {
         return Err(Failure {
             message: format!(
@@ -290,7 +290,7 @@ fn convert(
     name: Option<String>,
 ) -> Result<(), Failure> {
     let name = name.unwrap_or_else(|| trace::meshfile::identifier_for(mesh));
-    if !trace::syntax::is_identifier(&name) {
+    if !trace::is_identifier(&name) {
         return Err(usage(format!("`{name}` is not a valid identifier")));
     }
     let data = trace::meshfile::read(mesh).map_err(|e| Failure {
@@ -345,7 +345,7 @@ fn stats_block(args: &RenderArgs, r: &trace::Rendered, phases: [Duration; 4]) ->
         "Ray->Shape Intersection", "Tests", "Succeeded", "Percentage"
     );
     let _ = writeln!(out, "{line}");
-    for (k, name) in trace::geometry::counters::KINDS.iter().enumerate() {
+    for (k, name) in trace::SHAPE_KINDS.iter().enumerate() {
         let (tried, hit) = (r.tests.tried[k], r.tests.hit[k]);
         if tried > 0 {
             let pct = 100.0 * hit as f64 / tried as f64;

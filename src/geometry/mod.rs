@@ -12,7 +12,7 @@ mod cuboid;
 mod disc;
 pub mod mesh;
 mod plane;
-mod poly;
+pub mod poly;
 mod sphere;
 mod torus;
 pub mod triangle;

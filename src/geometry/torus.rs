@@ -20,13 +20,6 @@ impl Torus {
     /// enters the bounding sphere, so the coefficients stay of the torus's own size however far
     /// away the ray starts; roots are isolated between critical points (no closed form).
     pub fn intersect(&self, ray: &Ray) -> Crossings {
-        self.crossings(ray, true)
-    }
-
-    /// [`Torus::intersect`], with the origin shift optional: `move_origin = false` forms the
-    /// quartic at the ray's own origin, the textbook way (kept for the stability suite, which
-    /// shows it failing far from the torus).
-    pub fn crossings(&self, ray: &Ray, move_origin: bool) -> Crossings {
         let (big, small) = (self.major, self.minor);
         let length = ray.direction.length();
         let d = ray.direction / length;
@@ -43,7 +36,7 @@ impl Torus {
         if exit < 0.0 {
             return Crossings::NONE;
         }
-        let shift = if move_origin { enter.max(0.0) } else { 0.0 };
+        let shift = enter.max(0.0);
         let o = ray.origin + shift * d;
         // Quartic in s for p = o + s·d (|d| = 1), with G = |p|² − R² − r²:
         // G² + 4R²(y² − r²) = 0.

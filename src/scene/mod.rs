@@ -18,7 +18,7 @@ mod pigment;
 
 pub use crate::ir::{
     AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
-    Reflection, Rgb,
+    Rgb,
 };
 pub use pigment::Pigment;
 
@@ -61,7 +61,7 @@ pub struct Scene {
     /// Working gamma (applied when the film is written).
     pub gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
-    pub index: Option<accel::ObjectIndex>,
+    index: Option<accel::ObjectIndex>,
     /// Whether any object may let light through to a shadow ray (else shadow rays stop at
     /// the any-hit test for opaque blockers).
     pub any_transparent: bool,
@@ -544,6 +544,20 @@ impl Scene {
         let bounds: Vec<_> = scene.objects.iter().map(|o| o.bounds).collect();
         scene.index = accel::ObjectIndex::build(&bounds);
         scene
+    }
+
+    /// Whether a top-level BVH serves the ray queries (scenes of few objects test every
+    /// object for every ray instead).
+    pub fn has_index(&self) -> bool {
+        self.index.is_some()
+    }
+
+    /// The same scene without its top-level BVH, testing every object for every ray: the
+    /// stability suite compares its pictures with the BVH's.
+    #[cfg(feature = "internals")]
+    pub fn without_index(mut self) -> Scene {
+        self.index = None;
+        self
     }
 
     /// The material with id `id`.

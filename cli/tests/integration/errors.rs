@@ -36,7 +36,7 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
             &trace::LoadOptions::default(),
         )
     };
-    let n = trace::syntax::MAX_NESTING - 10;
+    let n = trace::MAX_NESTING - 10;
     let parens = format!("sphere {{ 0, {}1{} }}", "(".repeat(n), ")".repeat(n));
     let vectors = format!("#declare V = {}1{};", "<".repeat(n), ">".repeat(n));
     assert!(load(parens).is_ok(), "{n} nested parentheses load");

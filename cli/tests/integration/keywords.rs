@@ -5,7 +5,7 @@ use crate::root;
 #[test]
 fn keywords_doc_matches_the_table() {
     let path = root().join("docs/keywords.md");
-    let expected = trace::eval::keywords::markdown();
+    let expected = trace::keyword_table();
     if std::env::var_os("TRACE_UPDATE_DOCS").is_some() {
         std::fs::write(&path, &expected).expect("write docs/keywords.md");
     }
