@@ -66,7 +66,7 @@ use std::path::Path;
 pub use eval::{DEFAULT_MAX_STEPS, LoadOptions};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
-pub use render::{Antialias, RayCounts, RenderOptions, Rendered, bytes_needed};
+pub use render::{Antialias, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed};
 pub use syntax::{MAX_NESTING, is_identifier};
 
 /// POV-Ray 3.7's reserved words, each with what trace does with it, as the Markdown table of
@@ -177,12 +177,15 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
     }
 }
 
-/// Renders a scene (building the render-ready scene inside).
+/// Renders a scene (building the render-ready scene inside) into a film held in memory.
 pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
     let pool = render::thread_pool(options)?;
     let start = std::time::Instant::now();
     let built = pool.install(|| scene::Scene::build(scene));
-    Ok(render_built(&built, start.elapsed(), options, &pool))
+    let build_time = start.elapsed();
+    let mut rendered = render::render(&built, options, &pool);
+    rendered.stats.build_time = build_time;
+    Ok(rendered)
 }
 
 /// Like [`render`], but frees the IR once the render-ready scene is built (less peak memory
@@ -190,19 +193,31 @@ pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Er
 pub fn render_owned(scene: ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
     let pool = render::thread_pool(options)?;
     let start = std::time::Instant::now();
-    let built = pool.install(|| scene::Scene::build(&scene));
-    drop(scene);
-    Ok(render_built(&built, start.elapsed(), options, &pool))
+    let built = pool.install(|| scene::Scene::build_owned(scene));
+    let build_time = start.elapsed();
+    let mut rendered = render::render(&built, options, &pool);
+    rendered.stats.build_time = build_time;
+    Ok(rendered)
 }
 
-/// The build runs on the render's threads too, so `threads` bounds both.
-fn render_built(
-    built: &scene::Scene,
-    build_time: std::time::Duration,
+/// Renders a scene straight into the image file `path` (the extension picks EXR or PNG),
+/// band by band: only one band of rows is in memory at a time, whatever the image size, and
+/// the IR is freed once the render-ready scene is built. The pixels are those of [`render`];
+/// the file appears at `path` only when complete.
+pub fn render_to_file(
+    scene: ir::Scene,
     options: &RenderOptions,
-    pool: &rayon::ThreadPool,
-) -> Rendered {
-    let mut rendered = render::render(built, options, pool);
-    rendered.build_time = build_time;
-    rendered
+    path: &Path,
+) -> Result<RenderStats, Error> {
+    let pool = render::thread_pool(options)?;
+    let start = std::time::Instant::now();
+    let built = pool.install(|| scene::Scene::build_owned(scene));
+    let build_time = start.elapsed();
+    let mut bands = render::Bands::new(&built, options, &pool);
+    film::write_streamed(path, options.width, options.height, options.threads, || {
+        bands.next_band()
+    })?;
+    let mut stats = bands.stats;
+    stats.build_time = build_time;
+    Ok(stats)
 }

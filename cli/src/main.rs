@@ -244,31 +244,24 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         antialias,
         threads: args.threads.map(|t| t as usize),
     };
-    let rendered = trace::render_owned(loaded.scene, &options)?;
-    if rendered.non_finite > 0 {
+    let stats = trace::render_to_file(loaded.scene, &options, output)?;
+    if stats.non_finite > 0 {
         eprintln!(
             "warning: {} pixels overflowed to NaN or infinity (extreme values in the scene, such as a colour component of 1e300) and are written black",
-            rendered.non_finite
+            stats.non_finite
         );
     }
-    let traced = Instant::now();
-    rendered
-        .film
-        .write_with_threads(output, options.threads)
-        .map_err(Error::from)?;
     let done = Instant::now();
     if args.stats {
+        // Tracing and writing interleave (each band is written as it is finished): the
+        // write time is what the render took beyond building and tracing.
+        let write = (done - parsed).saturating_sub(stats.build_time + stats.trace_time);
         eprint!(
             "{}",
             stats_block(
                 args,
-                &rendered,
-                [
-                    parsed - start,
-                    rendered.build_time,
-                    (traced - parsed).saturating_sub(rendered.build_time),
-                    done - traced,
-                ]
+                &stats,
+                [parsed - start, stats.build_time, stats.trace_time, write]
             )
         );
     }
@@ -312,7 +305,7 @@ fn convert(
 
 /// POV-Ray-style statistics: resolution, rays by kind, intersection tests by shape, and the
 /// time of each phase (parse, build, trace, write).
-fn stats_block(args: &RenderArgs, r: &trace::Rendered, phases: [Duration; 4]) -> String {
+fn stats_block(args: &RenderArgs, r: &trace::RenderStats, phases: [Duration; 4]) -> String {
     use std::fmt::Write;
     let line = "-".repeat(76);
     let c = &r.counts;

@@ -59,8 +59,13 @@ impl<'a> Evaluator<'a> {
         statements: syntax::Statements,
         f: &mut Handler<'_, 'a>,
     ) -> Result<()> {
-        for statement in statements {
-            self.one_item(&statement?, f)?;
+        let mut statements = statements;
+        while let Some(statement) = statements.next() {
+            let statement = statement?;
+            let done = self.one_item(&statement, f);
+            // (A statement parsed ahead is freed by the thread that parsed it.)
+            statements.spent(statement);
+            done?;
         }
         Ok(())
     }

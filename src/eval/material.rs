@@ -86,7 +86,7 @@ impl Evaluator<'_> {
                             colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?,
                         );
                     }
-                    pigment.pattern = Pattern::Checker(colours);
+                    pigment.pattern = Pattern::Checker(Box::new(colours));
                 }
                 NodeKind::Gradient => {
                     let axis = ev.vec3(&item.args[0])?;

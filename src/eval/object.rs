@@ -518,7 +518,11 @@ impl Evaluator<'_> {
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
                 texture,
-                interior: part.interior.or(object.interior).unwrap_or_default(),
+                // (Objects without an interior share one default interior.)
+                interior: match part.interior.or(object.interior) {
+                    Some(interior) => std::sync::Arc::new(interior),
+                    None => std::sync::Arc::clone(&self.default_interior),
+                },
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
                 hollow: part.hollow.unwrap_or(false),

@@ -205,7 +205,7 @@ pub struct Object {
     /// The resolved surface.
     pub texture: Texture,
     /// What is inside (index of refraction, fade).
-    pub interior: Interior,
+    pub interior: Arc<Interior>,
     /// `no_shadow`: the object casts no shadow.
     pub no_shadow: bool,
     /// `inverse`: inside and outside swapped.
@@ -403,7 +403,7 @@ pub enum Pattern {
     /// One colour everywhere.
     Solid(Colour),
     /// `checker C0, C1`: unit cubes, `C0` where ⌊x⌋ + ⌊y⌋ + ⌊z⌋ is even.
-    Checker([Colour; 2]),
+    Checker(Box<[Colour; 2]>),
     /// `gradient V`: the colour map at the fraction of `p·V̂`.
     Gradient {
         /// Unit direction.

@@ -10,7 +10,7 @@ mod shade;
 
 pub use shade::RayCounts;
 
-use crate::film::Film;
+use crate::film::{Film, Rows};
 use crate::geometry::{Ray, counters};
 use crate::scene::{Gamma, Projection, Rgb, Scene};
 use rayon::prelude::*;
@@ -62,9 +62,17 @@ pub struct RenderOptions {
 }
 
 /// A rendered image with its statistics.
+#[derive(Debug)]
 pub struct Rendered {
     /// Linear output values.
     pub film: Film,
+    /// What it took.
+    pub stats: RenderStats,
+}
+
+/// What a render took: rays, samples, intersection tests, time.
+#[derive(Debug, Default)]
+pub struct RenderStats {
     /// Rays traced, by kind.
     pub counts: RayCounts,
     /// Camera samples taken (centre samples plus supersamples).
@@ -73,6 +81,8 @@ pub struct Rendered {
     pub tests: counters::Tests,
     /// Time spent building the render-ready scene (acceleration structures included).
     pub build_time: std::time::Duration,
+    /// Time spent tracing (the bands' rendering, without the writing between them).
+    pub trace_time: std::time::Duration,
     /// Pixels whose value overflowed to NaN or infinity (only from extreme inputs, such as a
     /// filter of 1e300, where POV-Ray's pixels are NaN too): written black, and reported.
     pub non_finite: u64,
@@ -87,63 +97,135 @@ pub fn thread_pool(
         .build()
 }
 
+/// Pixels rendered at a time at most, unless one row of blocks holds more: with the
+/// writer's buffers, the memory a render holds whatever the image size (about 36 bytes a
+/// pixel: 24 while traced, 12 as output values).
+const BAND_PIXELS: usize = 1 << 21;
+
+/// Rows of blocks rendered together: as many as fit in `band_pixels`, at least one.
+fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
+    let row_pixels = width as usize * BLOCK_SIZE as usize;
+    (band_pixels / row_pixels.max(1)).clamp(1, u32::MAX as usize) as u32
+}
+
 /// The memory a render of `width` × `height` pixels holds at its peak, whatever the scene:
-/// the finished blocks and the film they are copied into.
+/// one band of rows being traced and converted, and the writer's buffers (up to 64 rows of
+/// output values: EXR's blocks of 16 scanlines queued for compression).
 pub fn bytes_needed(width: u32, height: u32) -> usize {
-    let pixels = width as usize * height as usize;
-    pixels.saturating_mul(std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>())
+    let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
+    let per_pixel = std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>();
+    let band = (width as usize * band_rows).saturating_mul(per_pixel);
+    let writer = (width as usize * 64.min(height as usize)).saturating_mul(12);
+    band.saturating_add(writer)
+}
+
+/// The image in bands of whole rows of blocks, top first, each rendered in parallel when it
+/// is asked for: a writer that takes the bands as they come holds one band, not the image.
+/// The pixels do not depend on the band size (each block depends only on itself).
+pub struct Bands<'a> {
+    scene: &'a Scene,
+    options: &'a RenderOptions,
+    pool: &'a rayon::ThreadPool,
+    camera_interiors: Option<Interiors>,
+    /// The next row of blocks to render.
+    next_block_row: u32,
+    block_rows: u32,
+    blocks_x: u32,
+    /// Rows of blocks a band holds.
+    band_block_rows: u32,
+    /// Statistics of the bands rendered so far.
+    pub stats: RenderStats,
+}
+
+impl<'a> Bands<'a> {
+    /// The bands of `scene` rendered with `options`, on the threads of `pool`.
+    pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
+        // A perspective camera's rays all start inside the same objects: found once.
+        let camera_interiors = match scene.camera.projection {
+            Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
+            Projection::Orthographic => None,
+        };
+        Bands {
+            scene,
+            options,
+            pool,
+            camera_interiors,
+            next_block_row: 0,
+            block_rows: options.height.div_ceil(BLOCK_SIZE),
+            blocks_x: options.width.div_ceil(BLOCK_SIZE),
+            band_block_rows: band_block_rows(options.width, BAND_PIXELS),
+            stats: RenderStats::default(),
+        }
+    }
+
+    /// The same bands, each at most `rows` rows of blocks high (tests split small images).
+    #[cfg(test)]
+    fn with_band_block_rows(mut self, rows: u32) -> Self {
+        self.band_block_rows = rows.max(1);
+        self
+    }
+
+    /// Renders the next band: its rows' output values, or `None` after the last row.
+    pub fn next_band(&mut self) -> Option<Rows<'static>> {
+        if self.next_block_row >= self.block_rows {
+            return None;
+        }
+        let start = std::time::Instant::now();
+        let (w, h) = (self.options.width, self.options.height);
+        let first = self.next_block_row;
+        let last = (first + self.band_block_rows).min(self.block_rows);
+        self.next_block_row = last;
+        let (scene, options, interiors, blocks_x) = (
+            self.scene,
+            self.options,
+            self.camera_interiors,
+            self.blocks_x,
+        );
+        let blocks: Vec<BlockResult> = self.pool.install(|| {
+            (first * blocks_x..last * blocks_x)
+                .into_par_iter()
+                .map(|i| {
+                    let (bx, by) = (i % blocks_x, i / blocks_x);
+                    render_block(scene, options, interiors, bx * BLOCK_SIZE, by * BLOCK_SIZE)
+                })
+                .collect()
+        });
+        let y0 = first * BLOCK_SIZE;
+        let rows = ((last * BLOCK_SIZE).min(h) - y0) as usize;
+        let mut pixels = vec![[0.0_f32; 3]; w as usize * rows];
+        for b in &blocks {
+            for (k, value) in b.pixels.iter().enumerate() {
+                let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
+                let mut v = output_value(*value, scene.gamma);
+                if v.iter().any(|c| !c.is_finite()) {
+                    self.stats.non_finite += 1;
+                    v = [0.0; 3];
+                }
+                pixels[(y - y0) as usize * w as usize + x as usize] = v;
+            }
+            self.stats.counts.add(&b.counts);
+            self.stats.tests.add(&b.tests);
+            self.stats.samples += b.samples;
+        }
+        self.stats.trace_time += start.elapsed();
+        Some(Rows {
+            y0,
+            pixels: pixels.into(),
+        })
+    }
 }
 
 /// Renders `scene` into a film of linear values, on the threads of `pool`.
 pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) -> Rendered {
-    let (w, h) = (options.width, options.height);
-    let blocks_x = w.div_ceil(BLOCK_SIZE);
-    let blocks_y = h.div_ceil(BLOCK_SIZE);
-    // A perspective camera's rays all start inside the same objects: found once.
-    let camera_interiors = match scene.camera.projection {
-        Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
-        Projection::Orthographic => None,
-    };
-    let blocks: Vec<BlockResult> = pool.install(|| {
-        (0..blocks_x * blocks_y)
-            .into_par_iter()
-            .map(|i| {
-                render_block(
-                    scene,
-                    options,
-                    camera_interiors,
-                    (i % blocks_x) * BLOCK_SIZE,
-                    (i / blocks_x) * BLOCK_SIZE,
-                )
-            })
-            .collect()
-    });
-    let mut film = Film::new(w, h);
-    let mut counts = RayCounts::default();
-    let mut tests = counters::Tests::default();
-    let mut samples = 0;
-    let mut non_finite = 0;
-    for b in &blocks {
-        for (k, value) in b.pixels.iter().enumerate() {
-            let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
-            let mut v = output_value(*value, scene.gamma);
-            if v.iter().any(|c| !c.is_finite()) {
-                non_finite += 1;
-                v = [0.0; 3];
-            }
-            film.set(x, y, v);
-        }
-        counts.add(&b.counts);
-        tests.add(&b.tests);
-        samples += b.samples;
+    let mut film = Film::new(options.width, options.height);
+    let mut bands = Bands::new(scene, options, pool);
+    while let Some(band) = bands.next_band() {
+        let start = band.y0 as usize * options.width as usize;
+        film.pixels[start..start + band.pixels.len()].copy_from_slice(&band.pixels);
     }
     Rendered {
         film,
-        counts,
-        tests,
-        samples,
-        build_time: std::time::Duration::ZERO,
-        non_finite,
+        stats: bands.stats,
     }
 }
 
@@ -433,4 +515,78 @@ fn render_block(
 
     let pixels = block_pixels(&mut |x, y| value[index(x, y)]);
     result(pixels, tracer, samples)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scene with reflections, refraction and shadows, so that blocks differ in work.
+    const SCENE: &str = "camera { location <0, 2, -6> look_at <0, 0.5, 0> }\n\
+        light_source { <4, 8, -5>, rgb 1 }\n\
+        plane { y, 0 pigment { checker rgb 1, rgb 0.2 } finish { reflection 0.3 } }\n\
+        sphere { <-1, 1, 0>, 1 pigment { rgbf <0.9, 0.9, 1, 0.8> } interior { ior 1.5 } }\n\
+        sphere { <1.2, 0.7, 1>, 0.7 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.8 } }\n";
+
+    fn built(width: u32, height: u32) -> Scene {
+        let options = crate::LoadOptions {
+            width,
+            height,
+            ..crate::LoadOptions::default()
+        };
+        let loaded = crate::load_str(std::path::Path::new("bands.rt"), SCENE.into(), &options)
+            .expect("the scene loads");
+        Scene::build(&loaded.scene)
+    }
+
+    #[test]
+    fn bands_of_any_height_give_the_same_pixels_and_counts() {
+        let (w, h) = (70, 100);
+        let scene = built(w, h);
+        for antialias in [
+            Antialias::Off,
+            Antialias::Adaptive {
+                threshold: 0.1,
+                depth: 3,
+            },
+            Antialias::Recursive {
+                threshold: 0.1,
+                depth: 3,
+            },
+        ] {
+            let options = RenderOptions {
+                width: w,
+                height: h,
+                antialias,
+                threads: Some(2),
+            };
+            let pool = thread_pool(&options).expect("a pool");
+            let whole = render(&scene, &options, &pool);
+            for rows in [1, 2, 3] {
+                let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
+                let mut pixels = Vec::new();
+                let mut count = 0;
+                while let Some(band) = bands.next_band() {
+                    assert_eq!(band.y0 as usize, pixels.len() / w as usize, "bands in order");
+                    pixels.extend_from_slice(&band.pixels);
+                    count += 1;
+                }
+                assert_eq!(count, h.div_ceil(BLOCK_SIZE * rows), "{rows} rows of blocks a band");
+                assert!(pixels == whole.film.pixels, "{antialias:?}, {rows} rows of blocks");
+                assert_eq!(bands.stats.samples, whole.stats.samples);
+                assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+            }
+        }
+    }
+
+    #[test]
+    fn a_band_holds_whole_rows_of_blocks_within_the_pixel_budget() {
+        assert_eq!(band_block_rows(640, BAND_PIXELS), 102);
+        assert_eq!(band_block_rows(32768, BAND_PIXELS), 2);
+        assert_eq!(band_block_rows(1 << 20, BAND_PIXELS), 1);
+        // The memory asked for is the band's and the writer's, not the image's: an 8K image
+        // needs about 77 MB, a 32k × 32k one about 101 MB (it would hold 12 GB as a film).
+        assert!(bytes_needed(7680, 4320) < 80 << 20);
+        assert!(bytes_needed(32768, 32768) < 105 << 20);
+    }
 }

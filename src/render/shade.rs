@@ -64,7 +64,7 @@ impl Interiors {
         let bounded_last = scene.bounded_last;
         for pass in [false, true] {
             for (i, object) in scene.objects.iter().enumerate() {
-                let second = bounded_last && object.bounds.is_some();
+                let second = bounded_last && object.bounded;
                 if second == pass && scene.contains(object, p) {
                     list.push(ObjectId(i as u32));
                 }
@@ -265,8 +265,9 @@ impl<'a> Tracer<'a> {
         let crossing = Crossing::new(scene, interiors, hit.object);
         let cos_i = -d.dot(n);
         let reflectivity = reflectivity(material, &colour, cos_i, crossing.fresnel_eta);
-        let fade = if crossing.inside && object.interior.fade_distance.abs() > 1e-10 {
-            interior_fade(&object.interior, t * d.length())
+        let interior = scene.interior(object);
+        let fade = if crossing.inside && interior.fade_distance.abs() > 1e-10 {
+            interior_fade(interior, t * d.length())
         } else {
             Rgb::ONE
         };
@@ -424,7 +425,7 @@ struct Crossing {
 
 impl Crossing {
     fn new(scene: &Scene, list: &Interiors, o: ObjectId) -> Crossing {
-        let ior = |id: ObjectId| scene.objects[id.0 as usize].interior.ior;
+        let ior = |id: ObjectId| scene.interior(&scene.objects[id.0 as usize]).ior;
         let n_o = ior(o);
         let mut after = *list;
         let position = list.position(scene, o);

@@ -32,61 +32,81 @@ impl std::fmt::Debug for ObjectIndex {
     }
 }
 
+/// The boxes an index will be built over (see [`ObjectIndex::prepare`]).
+pub struct Prepared {
+    /// The boxes of the bounded objects, slightly grown.
+    boxes: Vec<Aabb>,
+    /// The object of each box.
+    ids: Vec<u32>,
+    unbounded: Vec<u32>,
+}
+
 impl ObjectIndex {
-    /// Builds the index if the scene is big enough to gain from one.
-    pub fn build(bounds: &[Option<(glam::DVec3, glam::DVec3)>]) -> Option<ObjectIndex> {
+    /// The boxes for an index over objects of the given world bounds, if the scene is big
+    /// enough to gain from one (the bounds may be freed before [`Prepared::build`]).
+    pub fn prepare(bounds: &[Option<(glam::DVec3, glam::DVec3)>]) -> Option<Prepared> {
         // A box too big for f32 (or not finite) goes to the unbounded list: the builder
         // cannot place it.
-        let boxes: Vec<Option<Aabb>> = bounds
-            .iter()
-            .map(|b| {
-                b.map(|(lo, hi)| outward_aabb(lo, hi))
-                    .filter(|a| a.min.is_finite() && a.max.is_finite())
-            })
-            .collect();
-        let ids: Vec<u32> = (0..bounds.len() as u32)
-            .filter(|&i| boxes[i as usize].is_some())
-            .collect();
-        if ids.len() < MIN_OBJECTS_FOR_BVH {
+        let as_box = |b: &Option<(glam::DVec3, glam::DVec3)>| {
+            b.map(|(lo, hi)| outward_aabb(lo, hi))
+                .filter(|a| a.min.is_finite() && a.max.is_finite())
+        };
+        let bounded = bounds.iter().filter(|b| as_box(b).is_some()).count();
+        if bounded < MIN_OBJECTS_FOR_BVH {
             return None;
         }
-        let unbounded = (0..bounds.len() as u32)
-            .filter(|&i| boxes[i as usize].is_none())
-            .collect();
-        // Each box grows by its own tiny fraction (below 1e-4 of its size; growing is always
-        // safe): equal boxes at equal spacing (spheres made in a loop along a line) tie in
-        // PLOC's nearest-neighbour search, so that only one pair merged per pass and the build
-        // took quadratic time (100k spheres in a row: over 100 s; found by the fuzzer).
-        let boxes: Vec<Aabb> = boxes
-            .into_iter()
-            .flatten()
-            .enumerate()
-            .map(|(k, b)| {
-                let grow = (b.max - b.min) * (1e-4 * tie_breaker(k as u32));
-                Aabb {
-                    min: b.min - grow,
-                    max: b.max + grow,
+        let mut prepared = Prepared {
+            boxes: Vec::with_capacity(bounded),
+            ids: Vec::with_capacity(bounded),
+            unbounded: Vec::new(),
+        };
+        for (i, b) in bounds.iter().enumerate() {
+            match as_box(b) {
+                // Each box grows by its own tiny fraction (below 1e-4 of its size; growing is
+                // always safe): equal boxes at equal spacing (spheres made in a loop along a
+                // line) tie in PLOC's nearest-neighbour search, so that only one pair merged
+                // per pass and the build took quadratic time (100k spheres in a row: over
+                // 100 s; found by the fuzzer).
+                Some(b) => {
+                    let k = prepared.boxes.len() as u32;
+                    let grow = (b.max - b.min) * (1e-4 * tie_breaker(k));
+                    prepared.boxes.push(Aabb {
+                        min: b.min - grow,
+                        max: b.max + grow,
+                    });
+                    prepared.ids.push(i as u32);
                 }
-            })
-            .collect();
+                None => prepared.unbounded.push(i as u32),
+            }
+        }
+        Some(prepared)
+    }
+}
+
+impl Prepared {
+    /// Builds the index.
+    pub fn build(self) -> ObjectIndex {
         // Object tests cost more than box tests (transforms, several shape kinds): small leaves.
         let params = BvhBuildParams {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::fast_build()
         };
-        let bvh = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
+        let bvh = obvhs::bvh2::builder::build_bvh2(&self.boxes, params, &mut Duration::default());
+        drop(self.boxes);
         let bounded = bvh
             .primitive_indices
             .iter()
-            .map(|&k| ids[k as usize])
+            .map(|&k| self.ids[k as usize])
             .collect();
-        Some(ObjectIndex {
+        ObjectIndex {
             bvh,
             bounded,
-            unbounded,
-        })
+            unbounded: self.unbounded,
+        }
     }
+}
 
+impl ObjectIndex {
     /// Closest-hit traversal: `f(object, tmax)` returns the object's nearest distance below
     /// `tmax`, if any; the best is kept and prunes the rest.
     pub fn closest(&self, ray: &Ray, mut f: impl FnMut(u32, f64) -> Option<f64>) {

@@ -41,6 +41,8 @@ pub struct Scene {
     pub objects: Vec<Object>,
     /// Distinct materials.
     pub materials: Vec<Material>,
+    /// Distinct interiors.
+    pub interiors: Vec<Interior>,
     /// Colour of escaped rays.
     pub background: Rgb,
     /// `sky_sphere`: the colour of escaped rays by direction.
@@ -62,6 +64,9 @@ pub struct Scene {
     pub gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
     index: Option<accel::ObjectIndex>,
+    /// Without an index, the world bounds of each object (`None` for unbounded ones), tested
+    /// before the object; empty with an index, which holds them.
+    scan_bounds: Vec<Option<(DVec3, DVec3)>>,
     /// Whether any object may let light through to a shadow ray (else shadow rays stop at
     /// the any-hit test for opaque blockers).
     pub any_transparent: bool,
@@ -108,7 +113,7 @@ pub struct Material {
     /// Pigment.
     pub pigment: Pigment,
     /// Finish.
-    pub finish: Finish,
+    pub finish: Arc<Finish>,
 }
 
 /// `rgb·filter + transmit`: what a surface of colour `c` lets through, per channel.
@@ -152,8 +157,8 @@ pub enum Shape {
     Box(Cuboid),
     /// Cylinder or cone, in its canonical frame (the object transform includes the frame).
     Cone(Cone),
-    /// Disc.
-    Disc(Disc),
+    /// Disc (boxed: the largest shape, and a rare one, would make every object bigger).
+    Disc(Box<Disc>),
     /// Torus.
     Torus(Torus),
     /// Triangle mesh, shared between instances.
@@ -295,8 +300,8 @@ impl ObjectTransform {
 pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
-    /// World-space bounding box (`None` for unbounded shapes).
-    pub bounds: Option<(DVec3, DVec3)>,
+    /// Whether it has a world-space bounding box (planes do not).
+    pub bounded: bool,
     /// `None` is the identity (the shape is in world space).
     pub transform: Option<Box<ObjectTransform>>,
     /// Its material.
@@ -310,10 +315,24 @@ pub struct Object {
     /// Place in POV-Ray's test order, which decides between two hits at the same distance
     /// (see [`Scene::intersect`]; lower first).
     pub rank: u64,
-    /// Index of refraction and fade.
-    pub interior: Interior,
+    /// Index of refraction and fade: an index into [`Scene::interiors`] (equal interiors are
+    /// stored once).
+    pub interior: u32,
     /// Objects with equal media share one interior (see [`ir::Object::medium`]).
     pub medium: u32,
+}
+
+impl Object {
+    /// The world-space bounding box, `None` for unbounded shapes. Bounds that overflowed (a
+    /// huge scale) make the object unbounded, tested for every ray, rather than a box no
+    /// structure can hold.
+    fn world_bounds(&self) -> Option<(DVec3, DVec3)> {
+        let m = self.transform.as_ref().map(|t| &t.world_from_object);
+        self.shape
+            .bounds()
+            .map(|(lo, hi)| world_bounds(lo, hi, m))
+            .filter(|(lo, hi)| lo.is_finite() && hi.is_finite())
+    }
 }
 
 /// The nearest hit of a ray: cheap, no surface details yet.
@@ -396,42 +415,79 @@ impl std::hash::Hasher for PassThrough {
     }
 }
 
+/// Ids for `values`, equal values sharing one (hash-consing), and the value of each id.
+/// `fingerprint` must give equal values equal keys; values with equal keys are compared in
+/// full.
+fn shared_ids<'a, T: PartialEq>(
+    values: impl ExactSizeIterator<Item = &'a T>,
+    fingerprint: impl Fn(&T) -> u64,
+) -> (Vec<u32>, Vec<&'a T>) {
+    const END: u32 = u32::MAX;
+    let mut distinct: Vec<&T> = Vec::new();
+    // The first id of each key, and for each id the next one with the same key.
+    let mut first: HashMap<u64, u32, std::hash::BuildHasherDefault<PassThrough>> =
+        HashMap::default();
+    let mut next_same_key: Vec<u32> = Vec::new();
+    let mut ids = Vec::with_capacity(values.len());
+    for value in values {
+        let key = fingerprint(value);
+        let head = *first.entry(key).or_insert(END);
+        let mut candidate = head;
+        while candidate != END && *distinct[candidate as usize] != *value {
+            candidate = next_same_key[candidate as usize];
+        }
+        if candidate == END {
+            candidate = distinct.len() as u32;
+            distinct.push(value);
+            next_same_key.push(head);
+            first.insert(key, candidate);
+        }
+        ids.push(candidate);
+    }
+    (ids, distinct)
+}
+
 /// Material ids for the objects of `ir`, equal textures sharing one, and the texture of each id.
 fn material_ids(ir: &ir::Scene) -> (Vec<MaterialId>, Vec<&ir::Texture>) {
-    let mut textures: Vec<&ir::Texture> = Vec::new();
-    let mut by_fingerprint: HashMap<u64, Vec<u32>, std::hash::BuildHasherDefault<PassThrough>> =
-        HashMap::default();
-    let ids = ir
-        .objects
+    let (ids, textures) = shared_ids(ir.objects.iter().map(|o| &o.texture), fingerprint);
+    (ids.into_iter().map(MaterialId).collect(), textures)
+}
+
+/// The bits of an interior, as a key for sharing equal ones.
+fn interior_key(i: &Interior) -> u64 {
+    [i.ior, i.fade_distance, i.fade_power, i.fade_colour.x, i.fade_colour.y, i.fade_colour.z]
         .iter()
-        .map(|o| {
-            let candidates = by_fingerprint.entry(fingerprint(&o.texture)).or_default();
-            let id = match candidates
-                .iter()
-                .find(|&&i| *textures[i as usize] == o.texture)
-            {
-                Some(&i) => i,
-                None => {
-                    textures.push(&o.texture);
-                    candidates.push(textures.len() as u32 - 1);
-                    textures.len() as u32 - 1
-                }
-            };
-            MaterialId(id)
+        .fold(0u64, |h, v| {
+            (h ^ v.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
         })
-        .collect();
-    (ids, textures)
 }
 
 impl Scene {
     /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
+        let (scene, bounds) = Scene::build_objects(ir);
+        scene.with_index(bounds)
+    }
+
+    /// Like [`Scene::build`], but frees the IR's objects before building the acceleration
+    /// structure, which needs the most memory.
+    pub fn build_owned(ir: ir::Scene) -> Scene {
+        let (scene, bounds) = Scene::build_objects(&ir);
+        drop(ir);
+        scene.with_index(bounds)
+    }
+
+    /// Everything but the acceleration structure, and the world bounds of each object.
+    fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
         let (ids, textures) = material_ids(ir);
+        let (interior_ids, interiors) =
+            shared_ids(ir.objects.iter().map(|o| &*o.interior), interior_key);
+        let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
         let materials = textures
             .into_iter()
             .map(|t| Material {
                 pigment: Pigment::new(&t.pigment),
-                finish: (*t.finish).clone(),
+                finish: Arc::clone(&t.finish),
             })
             .collect();
         // Each distinct mesh is built once, for all its instances (keyed by address).
@@ -443,33 +499,31 @@ impl Scene {
                     .or_insert_with(|| Arc::new(build_mesh(mesh)));
             }
         }
-        let objects = ir
+        let (objects, bounds): (Vec<Object>, Vec<_>) = ir
             .objects
             .par_iter()
             .zip(ids)
-            .map(|(o, material)| {
+            .zip(interior_ids)
+            .map(|((o, material), interior)| {
                 let (shape, transform) =
                     build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
-                // Bounds that overflowed (a huge scale) make the object unbounded, tested
-                // for every ray, rather than a box no structure can hold.
-                let bounds = shape
-                    .bounds()
-                    .map(|(lo, hi)| world_bounds(lo, hi, transform.as_ref()))
-                    .filter(|(lo, hi)| lo.is_finite() && hi.is_finite());
-                Object {
+                let mut object = Object {
                     shape,
-                    bounds,
+                    bounded: false,
                     transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
                     material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     hollow: o.hollow,
                     rank: 0,
-                    interior: o.interior,
+                    interior,
                     medium: o.medium,
-                }
+                };
+                let bounds = object.world_bounds();
+                object.bounded = bounds.is_some();
+                (object, bounds)
             })
-            .collect();
+            .unzip();
         let c = &ir.camera;
         let mut scene = Scene {
             camera: Camera {
@@ -493,6 +547,7 @@ impl Scene {
                 .collect(),
             objects,
             materials,
+            interiors,
             background: ir.background,
             sky_sphere: ir.sky_sphere.as_ref().map(Pigment::new),
             fogs: ir
@@ -507,6 +562,7 @@ impl Scene {
             legacy_transparency: ir.settings.legacy_transparency,
             gamma: ir.settings.gamma,
             index: None,
+            scan_bounds: Vec::new(),
             any_transparent: false,
             shadow_fades: false,
             bounded_last: false,
@@ -521,7 +577,7 @@ impl Scene {
         let mut start = 0;
         for group in ir.objects.chunk_by(|_, next| next.member != 0) {
             let objects = &mut scene.objects[start..start + group.len()];
-            let later = scene.bounded_last && objects.iter().all(|o| o.bounds.is_some());
+            let later = scene.bounded_last && objects.iter().all(|o| o.bounded);
             let base = start as u64 + if later { n } else { 0 };
             for (o, member) in objects.iter_mut().zip(group) {
                 o.rank = (base << 32) | u64::from(u32::MAX - member.member);
@@ -536,14 +592,25 @@ impl Scene {
         });
         scene.shadow_fades = scene.objects.iter().any(|o| {
             !o.no_shadow
-                && fades(&o.interior)
+                && fades(&scene.interiors[o.interior as usize])
                 && scene.materials[o.material.0 as usize]
                     .pigment
                     .may_be_transparent()
         });
-        let bounds: Vec<_> = scene.objects.iter().map(|o| o.bounds).collect();
-        scene.index = accel::ObjectIndex::build(&bounds);
-        scene
+        (scene, bounds)
+    }
+
+    /// The scene with its top-level index over objects of the given world bounds (or, for
+    /// few objects, the bounds to test each object against).
+    fn with_index(mut self, bounds: Vec<Option<(DVec3, DVec3)>>) -> Scene {
+        match accel::ObjectIndex::prepare(&bounds) {
+            Some(prepared) => {
+                drop(bounds);
+                self.index = Some(prepared.build());
+            }
+            None => self.scan_bounds = bounds,
+        }
+        self
     }
 
     /// Whether a top-level BVH serves the ray queries (scenes of few objects test every
@@ -557,7 +624,13 @@ impl Scene {
     #[cfg(feature = "internals")]
     pub fn without_index(mut self) -> Scene {
         self.index = None;
+        self.scan_bounds = self.objects.iter().map(Object::world_bounds).collect();
         self
+    }
+
+    /// The interior of `object`.
+    pub fn interior(&self, object: &Object) -> &Interior {
+        &self.interiors[object.interior as usize]
     }
 
     /// The material with id `id`.
@@ -612,8 +685,8 @@ impl Scene {
             }
             None => {
                 let inv = ray.direction.recip();
-                for (i, object) in self.objects.iter().enumerate() {
-                    if may_hit(object.bounds, &ray, inv) {
+                for (i, &bounds) in self.scan_bounds.iter().enumerate() {
+                    if may_hit(bounds, &ray, inv) {
                         if let Some(t) = test(i as u32, &ray) {
                             ray.tmax = t;
                         }
@@ -689,10 +762,10 @@ impl Scene {
             None => {
                 let inv = ray.direction.recip();
                 let candidates = || {
-                    self.objects
+                    self.scan_bounds
                         .iter()
                         .enumerate()
-                        .filter(move |(_, o)| may_hit(o.bounds, ray, inv))
+                        .filter(move |(_, b)| may_hit(**b, ray, inv))
                         .map(|(i, _)| i as u32)
                 };
                 if candidates().any(opaque_blocks) {
@@ -778,8 +851,9 @@ impl Scene {
                 through *= filter_colour(&colour);
                 match media.iter().position(|&m| m == object.medium) {
                     Some(k) => {
-                        if fades(&object.interior) {
-                            through *= interior_fade(&object.interior, (t - last_t) * length);
+                        let interior = self.interior(object);
+                        if fades(interior) {
+                            through *= interior_fade(interior, (t - last_t) * length);
                         }
                         media.remove(k);
                     }
@@ -918,12 +992,12 @@ fn build_shape(
             radius,
             hole_radius,
         } => (
-            Shape::Disc(Disc {
+            Shape::Disc(Box::new(Disc {
                 centre: *centre,
                 normal: *normal,
                 radius: *radius,
                 hole_radius: *hole_radius,
-            }),
+            })),
             transform,
         ),
         ir::Shape::Torus { major, minor } => (
@@ -963,7 +1037,7 @@ mod tests {
                 shape,
                 transform: Some(Box::new(ir::Transform { matrix: transform })),
                 texture: ir::Texture::default(),
-                interior: ir::Interior::default(),
+                interior: Default::default(),
                 no_shadow: false,
                 inverse: false,
                 hollow: false,

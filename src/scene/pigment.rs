@@ -180,7 +180,7 @@ mod tests {
     #[test]
     fn checker_alternates_by_unit_cube() {
         let p = Pigment {
-            pattern: Pattern::Checker([c(0.0), c(1.0)]),
+            pattern: Pattern::Checker(Box::new([c(0.0), c(1.0)])),
             pattern_from_world: None,
         };
         assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.0));

@@ -1,40 +1,41 @@
-//! Parsing ahead: helper threads parse the later parts of a big file while the caller
-//! evaluates the earlier ones.
+//! Parsing ahead: helper threads parse a big file in chunks while the caller evaluates the
+//! statements already parsed.
 //!
 //! Which statements a file holds does not depend on evaluation (declarations, macros and
 //! includes are resolved later), so the statements after any statement end can be parsed on
-//! their own. A part starts at a guessed statement end, the end of a top-level `{ … }` block
-//! that [`check_nesting`](super::check_nesting) found; [`Statements`](super::Statements) uses
-//! the part only if the statement before it ends exactly there, which makes the result the
-//! same as one thread's whatever the guesses.
+//! their own. The file is cut into chunks at guessed statement ends, the ends of top-level
+//! `{ … }` blocks that [`check_nesting`](super::check_nesting) found; helpers parse the chunks
+//! in file order (helper `h` of `H` takes chunks `h`, `h + H`, …) and hand each over through
+//! a channel that holds one finished chunk, so at most two chunks a helper wait in memory
+//! whatever the file's size. [`Statements`](super::Statements) uses a chunk only if the
+//! statement before it ends exactly at its start, which makes the result the same as one
+//! thread's whatever the guesses.
 
-use super::{Diagnostic, Lower, Node, next_statement};
+use super::{Diagnostic, Lower, Node, next_statement, statement_batch};
 use crate::diag::FileId;
-use std::collections::VecDeque;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{Receiver, Sender, SyncSender, channel, sync_channel};
 use std::thread::JoinHandle;
 
 /// Files smaller than this are parsed by one thread (a helper would not pay for itself).
 const MIN_BYTES: usize = 1 << 18;
 
-/// Helpers at most: the caller evaluates every statement, so beyond a few parts its own
-/// evaluation is the limit.
+/// Chunk size: big enough that handing a chunk over costs nothing next to parsing it, small
+/// enough that the chunks waiting in memory stay small (about 3,000 plain statements).
+const CHUNK_BYTES: usize = 1 << 18;
+
+/// Helpers at most.
 const MAX_HELPERS: usize = 3;
+
+/// Evaluated statements handed back to their helper at a time.
+const GIVE_BACK_BATCH: usize = 256;
 
 /// Stack for a helper: parsing recurses a few frames per nesting level, and nesting is bounded
 /// by [`MAX_NESTING`](super::MAX_NESTING). Only the pages used are committed.
 const STACK_BYTES: usize = 256 << 20;
 
-/// One part of the file being parsed by a helper thread.
-pub(super) struct Part {
-    /// Byte offset where the part starts (a guessed statement end).
-    pub start: usize,
-    cancel: Arc<AtomicBool>,
-    handle: Option<JoinHandle<Parsed>>,
-}
-
-/// What a helper read.
+/// What a helper read of one chunk.
 pub(super) struct Parsed {
     /// The statements, in order; an error, if any, is the last.
     pub statements: Vec<Result<Node, Diagnostic>>,
@@ -44,80 +45,144 @@ pub(super) struct Parsed {
     pub last: bool,
 }
 
-impl Part {
-    /// Waits for the helper and takes its statements.
-    pub fn finish(mut self) -> Parsed {
-        let handle = self.handle.take().expect("a part is finished once");
-        handle
-            .join()
-            .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+/// The chunks being parsed by helper threads, handed over in file order.
+#[derive(Default)]
+pub(super) struct Ahead {
+    /// Where each chunk starts (increasing byte offsets).
+    starts: Vec<usize>,
+    /// The next chunk to hand over.
+    next: usize,
+    /// Helper `h` sends chunks `h`, `h + H`, … in order.
+    from_helpers: Vec<Receiver<Parsed>>,
+    /// Evaluated statements going back to the helper that parsed them, to be freed there,
+    /// in batches.
+    to_helpers: Vec<Sender<Vec<Node>>>,
+    spent: Vec<Node>,
+    spent_from: usize,
+    cancel: Arc<AtomicBool>,
+    helpers: Vec<JoinHandle<()>>,
+}
+
+impl Ahead {
+    /// Where the next chunk starts, if there is one.
+    pub fn next_start(&self) -> Option<usize> {
+        self.starts.get(self.next).copied()
+    }
+
+    /// Waits for the next chunk and takes it, with the helper that parsed it (`None` if that
+    /// helper could not parse it, which leaves that part to the caller).
+    pub fn take(&mut self) -> (usize, Option<Parsed>) {
+        let k = self.next;
+        self.next += 1;
+        let helper = k % self.from_helpers.len().max(1);
+        let parsed = self.from_helpers.get(helper).and_then(|r| r.recv().ok());
+        (helper, parsed)
+    }
+
+    /// Hands a statement that `helper` parsed back to it, to be freed on its thread.
+    pub fn give_back(&mut self, helper: usize, statement: Node) {
+        if helper != self.spent_from || self.spent.len() >= GIVE_BACK_BATCH {
+            self.flush_spent();
+            self.spent_from = helper;
+        }
+        self.spent.push(statement);
+    }
+
+    fn flush_spent(&mut self) {
+        if self.spent.is_empty() {
+            return;
+        }
+        let batch = std::mem::take(&mut self.spent);
+        if let Some(to_helper) = self.to_helpers.get(self.spent_from) {
+            // (A helper that has finished frees nothing more: the batch is freed here.)
+            let _ = to_helper.send(batch);
+        }
     }
 }
 
-impl Drop for Part {
-    /// An unused part (a wrong guess, or evaluation stopped early): the helper stops after
-    /// its current statement.
+impl Drop for Ahead {
+    /// Evaluation stopped early (an error, or the caller is done): the helpers stop after
+    /// their current statement.
     fn drop(&mut self) {
-        if let Some(handle) = self.handle.take() {
-            self.cancel.store(true, Ordering::Relaxed);
+        self.flush_spent();
+        self.cancel.store(true, Ordering::Relaxed);
+        // (Dropping the receivers unblocks a helper waiting to hand a chunk over.)
+        self.from_helpers.clear();
+        self.to_helpers.clear();
+        for handle in self.helpers.drain(..) {
             let _ = handle.join();
         }
     }
 }
 
-/// Starts up to `helpers` threads on later parts of `source`, given where its top-level blocks
-/// end. The caller parses the first part itself.
+/// Starts up to `helpers` threads parsing `source` in chunks, given where its top-level
+/// blocks end. With helpers, the first chunk starts at the beginning of the file: the caller
+/// only evaluates.
 pub(super) fn start(
     source: &Arc<str>,
     file: FileId,
     block_ends: &[usize],
     helpers: usize,
-) -> VecDeque<Part> {
+) -> Ahead {
     let helpers = helpers.min(MAX_HELPERS);
     if helpers == 0 || source.len() < MIN_BYTES {
-        return VecDeque::new();
+        return Ahead::default();
     }
-    // The caller also evaluates, but a helper reads a statement about 1.4× slower than the
-    // caller (it keeps what it read in fresh memory until the caller arrives), so the caller
-    // takes the larger share: 0.6 of the file with one helper, which on 100k spheres has the
-    // caller arrive within a millisecond of the helper's end.
-    let parts = helpers + 1;
-    let first = 1.2 / parts as f64;
-    let mut starts: Vec<usize> = Vec::new();
-    for i in 0..helpers {
-        let fraction = first + (1.0 - first) * i as f64 / helpers as f64;
-        let target = (fraction * source.len() as f64) as usize;
-        let at = block_ends.partition_point(|&end| end < target);
-        let start = block_ends[at..]
-            .iter()
-            .copied()
-            .find(|&end| !followed_by_semicolon(source.as_bytes(), end));
-        match start {
-            Some(start) if starts.last().is_none_or(|&last| start > last) => starts.push(start),
-            _ => {}
+    let mut starts = vec![0];
+    let mut target = CHUNK_BYTES;
+    let bytes = source.as_bytes();
+    for &end in block_ends {
+        if end >= target && !followed_by_semicolon(bytes, end) {
+            starts.push(end);
+            target = end + CHUNK_BYTES;
         }
     }
-    spawn(source, file, &starts)
+    spawn_helpers(source, file, &starts, helpers)
 }
 
-/// Starts a helper at each of `starts` (increasing byte offsets), each reading up to the next.
-pub(super) fn spawn(source: &Arc<str>, file: FileId, starts: &[usize]) -> VecDeque<Part> {
-    let mut ahead = VecDeque::new();
-    for (i, &start) in starts.iter().enumerate() {
-        let stop = starts.get(i + 1).copied().unwrap_or(usize::MAX);
-        let cancel = Arc::new(AtomicBool::new(false));
-        let (source, flag) = (Arc::clone(source), Arc::clone(&cancel));
+/// Helpers parsing the chunks that start at each of `starts` (increasing byte offsets), one
+/// helper a chunk up to three (tests choose the starts).
+#[cfg(test)]
+pub(super) fn spawn(source: &Arc<str>, file: FileId, starts: &[usize]) -> Ahead {
+    spawn_helpers(source, file, starts, starts.len().min(MAX_HELPERS))
+}
+
+fn spawn_helpers(source: &Arc<str>, file: FileId, starts: &[usize], helpers: usize) -> Ahead {
+    let cancel = Arc::new(AtomicBool::new(false));
+    let mut ahead = Ahead {
+        starts: starts.to_vec(),
+        next: 0,
+        from_helpers: Vec::new(),
+        to_helpers: Vec::new(),
+        spent: Vec::new(),
+        spent_from: 0,
+        cancel: Arc::clone(&cancel),
+        helpers: Vec::new(),
+    };
+    let starts: Arc<[usize]> = starts.into();
+    for h in 0..helpers {
+        let (to_caller, from_helper) = sync_channel(1);
+        let (to_helper, from_caller) = channel::<Vec<Node>>();
+        let (source, starts, cancel) = (Arc::clone(source), Arc::clone(&starts), Arc::clone(&cancel));
         let spawned = std::thread::Builder::new()
             .name("trace-parse".into())
             .stack_size(STACK_BYTES)
-            .spawn(move || parse_part(&source, file, start, stop, &flag));
-        // (Without a helper, the caller reads that part itself.)
-        if let Ok(handle) = spawned {
-            ahead.push_back(Part {
-                start,
-                cancel,
-                handle: Some(handle),
+            .spawn(move || {
+                let channels = (to_caller, from_caller);
+                parse_chunks(&source, file, &starts, (h, helpers), &cancel, &channels)
             });
+        match spawned {
+            Ok(handle) => {
+                ahead.from_helpers.push(from_helper);
+                ahead.to_helpers.push(to_helper);
+                ahead.helpers.push(handle);
+            }
+            // Without that helper its chunks are left to the caller; the others' chunks
+            // still come in order, so no helper at all then.
+            Err(_) => {
+                drop(ahead);
+                return Ahead::default();
+            }
         }
     }
     ahead
@@ -131,8 +196,34 @@ fn followed_by_semicolon(bytes: &[u8], at: usize) -> bool {
         .is_some_and(|&b| b == b';')
 }
 
+/// Helper `h` of `helpers`: parses chunks `h`, `h + helpers`, … and sends each in turn,
+/// freeing the statements the caller hands back meanwhile.
+fn parse_chunks(
+    source: &str,
+    file: FileId,
+    starts: &[usize],
+    (h, helpers): (usize, usize),
+    cancel: &AtomicBool,
+    (to_caller, from_caller): &(SyncSender<Parsed>, Receiver<Vec<Node>>),
+) {
+    for k in (h..starts.len()).step_by(helpers) {
+        let stop = starts.get(k + 1).copied().unwrap_or(usize::MAX);
+        let parsed = parse_chunk(source, file, starts[k], stop, cancel);
+        while let Ok(spent) = from_caller.try_recv() {
+            drop(spent);
+        }
+        if cancel.load(Ordering::Relaxed) || to_caller.send(parsed).is_err() {
+            return;
+        }
+    }
+    // The last chunks' statements, once evaluated (until the caller is done).
+    while let Ok(spent) = from_caller.recv() {
+        drop(spent);
+    }
+}
+
 /// Parses the statements from `start` until one ends at or after `stop`, or the file ends.
-fn parse_part(
+fn parse_chunk(
     source: &str,
     file: FileId,
     start: usize,
@@ -146,7 +237,33 @@ fn parse_part(
     };
     let mut statements = Vec::new();
     let mut pos = start;
+    // Statements are parsed in batches (one parse each), 8 at first and near the chunk's end
+    // (statements parsed past it are dropped), else 64; after a batch that fails, one at a
+    // time (a statement that makes the parser backtrack long is not parsed again and again).
+    let mut batched = true;
     while pos < stop && !cancel.load(Ordering::Relaxed) {
+        if batched {
+            let read = (pos - start).max(1);
+            let mean = read / statements.len().max(1);
+            let batch = if statements.len() >= 8 && stop - pos > 64 * mean {
+                64
+            } else {
+                8
+            };
+            match statement_batch(source, pos, batch, &mut lower) {
+                Some(batch) => {
+                    for (node, end) in batch {
+                        if pos >= stop {
+                            break;
+                        }
+                        statements.push(Ok(node));
+                        pos = end;
+                    }
+                    continue;
+                }
+                None => batched = false,
+            }
+        }
         match next_statement(source, pos, &mut lower) {
             None => {
                 return Parsed {

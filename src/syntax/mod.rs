@@ -287,10 +287,10 @@ pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
 /// tree of a statement is gone once it has been evaluated, which keeps memory flat on scenes
 /// of many statements.
 ///
-/// On a big file, helper threads parse later parts of it meanwhile ([`ahead`]): each starts
+/// On a big file, helper threads parse it in chunks meanwhile ([`ahead`]): each chunk starts
 /// where a statement probably ends; the statements it read are used if that guess proves
 /// right (the statement before ends exactly there) and dropped otherwise, so the statements
-/// are the same as one thread would read.
+/// are the same as one thread would read. Only a few chunks wait in memory at a time.
 pub struct Statements {
     /// The text pest parses (the file's, or a copy with big lists blanked by [`bulk`]).
     source: std::sync::Arc<str>,
@@ -298,10 +298,24 @@ pub struct Statements {
     pos: usize,
     lower: Lower,
     done: bool,
-    /// Parts being parsed ahead, in file order.
-    ahead: std::collections::VecDeque<ahead::Part>,
-    /// Statements a part parsed ahead, handed over once `pos` reached its start.
+    /// Chunks being parsed ahead, in file order.
+    ahead: ahead::Ahead,
+    /// Statements a chunk parsed ahead, handed over once `pos` reached its start.
     ready: std::vec::IntoIter<Result<Node, Diagnostic>>,
+    /// Which helper parsed the statements in `ready`, if any.
+    ready_from: Option<usize>,
+}
+
+impl Statements {
+    /// Takes back a statement once evaluated: one a helper parsed goes back to that helper
+    /// to be freed (freeing memory another thread allocated makes the two threads contend
+    /// for the allocator's lock, which took more time than parsing on one thread).
+    pub fn spent(&mut self, statement: Node) {
+        match self.ready_from {
+            Some(helper) => self.ahead.give_back(helper, statement),
+            None => drop(statement),
+        }
+    }
 }
 
 /// Most rule calls pest may make for one statement (or fragment): a backstop against inputs
@@ -348,6 +362,7 @@ pub fn statements(
         done: false,
         ahead,
         ready: Vec::new().into_iter(),
+        ready_from: None,
     })
 }
 
@@ -359,22 +374,19 @@ impl Iterator for Statements {
             if let Some(statement) = self.ready.next() {
                 return Some(statement);
             }
+            self.ready_from = None;
             if self.done {
                 return None;
             }
-            // A part that starts here holds the next statements; one that starts behind began
+            // A chunk that starts here holds the next statements; one that starts behind began
             // inside a statement (a wrong guess) and is dropped.
-            while self
-                .ahead
-                .front()
-                .is_some_and(|part| part.start <= self.pos)
-            {
-                let part = self.ahead.pop_front().expect("there is a front part");
-                if part.start == self.pos {
-                    let parsed = part.finish();
+            while let Some(start) = self.ahead.next_start().filter(|&s| s <= self.pos) {
+                let (helper, parsed) = self.ahead.take();
+                if let Some(parsed) = parsed.filter(|_| start == self.pos) {
                     self.pos = parsed.end;
                     self.done = parsed.last;
                     self.ready = parsed.statements.into_iter();
+                    self.ready_from = Some(helper);
                     continue 'next;
                 }
             }
@@ -412,6 +424,33 @@ fn next_statement(
     lower.offset = pos;
     let end = pos + statement.as_span().end();
     Some(Ok((lower.node(statement), end)))
+}
+
+/// Parses up to `batch` statements (8 or 64) after byte `pos` of `source`, each with where it
+/// ends. `None` if not even one parses (the end of the file, or an error, which a parse of
+/// one statement then reports as a single thread would); a syntax error in a later
+/// statement of the batch ends the batch before it.
+fn statement_batch(
+    source: &str,
+    pos: usize,
+    batch: usize,
+    lower: &mut Lower,
+) -> Option<Vec<(Node, usize)>> {
+    let rule = if batch >= 64 {
+        Rule::statements_64
+    } else {
+        Rule::statements_8
+    };
+    let top = SceneParser::parse(rule, &source[pos..]).ok()?.next()?;
+    lower.offset = pos;
+    Some(
+        top.into_inner()
+            .map(|statement| {
+                let end = pos + statement.as_span().end();
+                (lower.node(statement), end)
+            })
+            .collect(),
+    )
 }
 
 /// Parses the part `text` of a file, which starts at byte `offset`, as a sequence of items

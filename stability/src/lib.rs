@@ -922,7 +922,7 @@ pub fn pane_stack(n: u32, max_trace_level: Option<u32>, width: u32, height: u32)
     let rendered = trace::render::render(&scene, &options, &pool);
     (
         black_pixels(&rendered.film.to_srgb8()),
-        rendered.counts.depth_limited,
+        rendered.stats.counts.depth_limited,
     )
 }
 

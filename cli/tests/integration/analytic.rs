@@ -180,7 +180,7 @@ fn adaptive_antialiasing_supersamples_only_where_colours_differ() {
         threads: Some(1),
     };
     let rendered = trace::render(&scene, &options).expect("renders");
-    assert_eq!(rendered.samples, 40 * 40);
+    assert_eq!(rendered.stats.samples, 40 * 40);
     // Threshold 0 supersamples every pixel: the centre, then the 3×3 grid, whose middle ray is
     // the centre ray again (its colour is reused, not traced): 1 + 8 rays each.
     let aa = Antialias::Adaptive {
@@ -192,7 +192,10 @@ fn adaptive_antialiasing_supersamples_only_where_colours_differ() {
         ..options
     };
     assert_eq!(
-        trace::render(&scene, &options).expect("renders").samples,
+        trace::render(&scene, &options)
+            .expect("renders")
+            .stats
+            .samples,
         40 * 40 * 9
     );
 }

@@ -239,13 +239,22 @@ fn work_and_memory_are_bounded() {
         err.contains("announces 100000000 entries but lists 3"),
         "{err}"
     );
-    // An image bigger than memory is refused before any work.
+    // An image whose band of rows does not fit the memory limit is refused before any
+    // work (the image itself is written band by band: 65536 pixels a row need 32 rows of
+    // about 36 bytes a pixel, 75 MB).
     std::fs::write(dir.join("small.rt"), CAMERA).unwrap();
     let out = trace()
         .arg(dir.join("small.rt"))
         .arg("-o")
         .arg(dir.join("huge.exr"))
-        .args(["--width", "65536", "--height", "65536"])
+        .args([
+            "--width",
+            "65536",
+            "--height",
+            "65536",
+            "--max-memory",
+            "50M",
+        ])
         .output()
         .expect("runs");
     assert_eq!(out.status.code(), Some(1));
