@@ -27,7 +27,8 @@ impl Evaluator<'_> {
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
                 NodeKind::Finish => {
-                    texture.finish = Arc::new(ev.finish_block(item, (*texture.finish).clone())?)
+                    let finish = ev.finish_block(item, (*texture.finish).clone())?;
+                    texture.finish = ev.shared_finish(finish);
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;

@@ -143,6 +143,83 @@ pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) ->
     ev.finish()
 }
 
+/// A key of the bits of `values` (equal values, equal keys).
+fn bits_key(values: impl IntoIterator<Item = f64>) -> u64 {
+    values.into_iter().fold(0u64, |h, v| {
+        (h ^ v.to_bits())
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .rotate_left(29)
+    })
+}
+
+impl Evaluator<'_> {
+    /// `finish`, shared with an equal finish made before if there is one.
+    pub(crate) fn shared_finish(&mut self, finish: ir::Finish) -> std::sync::Arc<ir::Finish> {
+        let r = &finish.reflection;
+        let key = bits_key([
+            finish.ambient.x,
+            finish.ambient.y,
+            finish.ambient.z,
+            finish.emission.x,
+            finish.emission.y,
+            finish.emission.z,
+            finish.diffuse,
+            finish.diffuse_back,
+            finish.brilliance,
+            finish.phong,
+            finish.phong_size,
+            finish.specular,
+            finish.roughness,
+            finish.metallic,
+            r.min.x,
+            r.min.y,
+            r.min.z,
+            r.max.x,
+            r.max.y,
+            r.max.z,
+            r.falloff,
+            r.exponent,
+            r.metallic,
+            f64::from(u8::from(r.fresnel) + 2 * u8::from(finish.conserve_energy)),
+        ]);
+        share(&mut self.finishes, key, finish)
+    }
+
+    /// `interior`, shared with an equal interior made before if there is one.
+    pub(crate) fn shared_interior(
+        &mut self,
+        interior: ir::Interior,
+    ) -> std::sync::Arc<ir::Interior> {
+        let i = &interior;
+        let key = bits_key([
+            i.ior,
+            i.fade_distance,
+            i.fade_power,
+            i.fade_colour.x,
+            i.fade_colour.y,
+            i.fade_colour.z,
+        ]);
+        share(&mut self.interiors, key, interior)
+    }
+}
+
+/// The value kept under `key` if it equals `value`, else `value` (kept if the key is free).
+fn share<T: PartialEq>(
+    kept: &mut HashMap<u64, std::sync::Arc<T>>,
+    key: u64,
+    value: T,
+) -> std::sync::Arc<T> {
+    match kept.get(&key) {
+        Some(same) if **same == value => std::sync::Arc::clone(same),
+        Some(_) => std::sync::Arc::new(value),
+        None => {
+            let value = std::sync::Arc::new(value);
+            kept.insert(key, std::sync::Arc::clone(&value));
+            value
+        }
+    }
+}
+
 /// Moves a light: its position, the point it aims at and its area-light axes.
 pub(crate) fn transform_light(light: &mut ir::Light, m: &glam::DMat4) {
     light.position = m.transform_point3(light.position);
@@ -201,6 +278,10 @@ pub(crate) struct Evaluator<'a> {
     default_texture: Texture,
     /// The interior of objects without one, shared by all of them.
     default_interior: std::sync::Arc<ir::Interior>,
+    /// Finishes and interiors made so far, by the bits of their values: an equal one made
+    /// again is shared (a million spheres each with `finish { phong 0.5 }` hold one finish).
+    finishes: HashMap<u64, std::sync::Arc<ir::Finish>>,
+    interiors: HashMap<u64, std::sync::Arc<ir::Interior>>,
     warnings: Vec<Diagnostic>,
     /// The state of each `seed()` stream, read and advanced by `rand()`.
     rand_streams: Vec<u32>,
@@ -238,6 +319,8 @@ impl<'a> Evaluator<'a> {
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             default_interior: Default::default(),
+            finishes: HashMap::new(),
+            interiors: HashMap::new(),
             warnings: Vec::new(),
             rand_streams: Vec::new(),
             deprecated: HashMap::new(),
@@ -366,8 +449,8 @@ impl<'a> Evaluator<'a> {
                         }
                         NodeKind::Finish => {
                             let base = (*ev.default_texture.finish).clone();
-                            ev.default_texture.finish =
-                                std::sync::Arc::new(ev.finish_block(child, base)?);
+                            let finish = ev.finish_block(child, base)?;
+                            ev.default_texture.finish = ev.shared_finish(finish);
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),
                     }

@@ -396,7 +396,8 @@ impl Evaluator<'_> {
                 if m.kind == NodeKind::Pigment {
                     texture.pigment = self.pigment(m, texture.pigment.clone())?;
                 } else {
-                    texture.finish = Arc::new(self.finish_block(m, (*texture.finish).clone())?);
+                    let finish = self.finish_block(m, (*texture.finish).clone())?;
+                    texture.finish = self.shared_finish(finish);
                 }
                 object.texture = Some(texture);
             }
@@ -514,15 +515,16 @@ impl Evaluator<'_> {
                 .texture
                 .or_else(|| object.texture.clone())
                 .unwrap_or_else(|| self.default_texture.clone());
+            // (Objects without an interior share one default interior.)
+            let interior = match part.interior.or(object.interior) {
+                Some(interior) => self.shared_interior(interior),
+                None => std::sync::Arc::clone(&self.default_interior),
+            };
             self.objects.push(ir::Object {
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
                 texture,
-                // (Objects without an interior share one default interior.)
-                interior: match part.interior.or(object.interior) {
-                    Some(interior) => std::sync::Arc::new(interior),
-                    None => std::sync::Arc::clone(&self.default_interior),
-                },
+                interior,
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
                 hollow: part.hollow.unwrap_or(false),

@@ -100,7 +100,7 @@ pub fn thread_pool(
 /// Pixels rendered at a time at most, unless one row of blocks holds more: with the
 /// writer's buffers, the memory a render holds whatever the image size (about 36 bytes a
 /// pixel: 24 while traced, 12 as output values).
-const BAND_PIXELS: usize = 1 << 21;
+const BAND_PIXELS: usize = 1 << 19;
 
 /// Rows of blocks rendered together: as many as fit in `band_pixels`, at least one.
 fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
@@ -581,12 +581,12 @@ mod tests {
 
     #[test]
     fn a_band_holds_whole_rows_of_blocks_within_the_pixel_budget() {
-        assert_eq!(band_block_rows(640, BAND_PIXELS), 102);
-        assert_eq!(band_block_rows(32768, BAND_PIXELS), 2);
-        assert_eq!(band_block_rows(1 << 20, BAND_PIXELS), 1);
+        assert_eq!(band_block_rows(640, BAND_PIXELS), 25);
+        assert_eq!(band_block_rows(7680, BAND_PIXELS), 2);
+        assert_eq!(band_block_rows(32768, BAND_PIXELS), 1);
         // The memory asked for is the band's and the writer's, not the image's: an 8K image
-        // needs about 77 MB, a 32k × 32k one about 101 MB (it would hold 12 GB as a film).
-        assert!(bytes_needed(7680, 4320) < 80 << 20);
-        assert!(bytes_needed(32768, 32768) < 105 << 20);
+        // needs about 24 MB, a 32k × 32k one about 63 MB (it would hold 12 GB as a film).
+        assert!(bytes_needed(7680, 4320) < 25 << 20);
+        assert!(bytes_needed(32768, 32768) < 64 << 20);
     }
 }

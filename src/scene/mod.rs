@@ -397,59 +397,56 @@ fn fingerprint(t: &ir::Texture) -> u64 {
     })
 }
 
-/// A hasher for keys that are already hashes.
-#[derive(Default)]
-struct PassThrough(u64);
-
-impl std::hash::Hasher for PassThrough {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = (self.0 << 8) | u64::from(b);
-        }
-    }
-    fn write_u64(&mut self, n: u64) {
-        self.0 = n;
-    }
-}
-
-/// Ids for `values`, equal values sharing one (hash-consing), and the value of each id.
-/// `fingerprint` must give equal values equal keys; values with equal keys are compared in
-/// full.
-fn shared_ids<'a, T: PartialEq>(
-    values: impl ExactSizeIterator<Item = &'a T>,
-    fingerprint: impl Fn(&T) -> u64,
+/// Ids for `values`, equal values sharing one (hash-consing), numbered in order of first
+/// appearance, and the value of each id. `fingerprint` must give equal values equal keys;
+/// values with equal keys are compared in full. (Sorting by key on all cores, rather than a
+/// hash table filled in order: with a million distinct values most lookups missed the cache.)
+fn shared_ids<'a, T: PartialEq + Sync>(
+    values: &[&'a T],
+    fingerprint: impl Fn(&T) -> u64 + Sync,
 ) -> (Vec<u32>, Vec<&'a T>) {
-    const END: u32 = u32::MAX;
-    let mut distinct: Vec<&T> = Vec::new();
-    // The first id of each key, and for each id the next one with the same key.
-    let mut first: HashMap<u64, u32, std::hash::BuildHasherDefault<PassThrough>> =
-        HashMap::default();
-    let mut next_same_key: Vec<u32> = Vec::new();
-    let mut ids = Vec::with_capacity(values.len());
-    for value in values {
-        let key = fingerprint(value);
-        let head = *first.entry(key).or_insert(END);
-        let mut candidate = head;
-        while candidate != END && *distinct[candidate as usize] != *value {
-            candidate = next_same_key[candidate as usize];
+    // Positions sorted by key, then position: equal values lie together, the first one first.
+    let mut order: Vec<(u64, u32)> = values
+        .par_iter()
+        .enumerate()
+        .map(|(i, v)| (fingerprint(v), i as u32))
+        .collect();
+    order.par_sort_unstable();
+    // For each position, the first position holding an equal value.
+    let mut first = vec![0u32; values.len()];
+    let mut distinct_in_group: Vec<u32> = Vec::new();
+    for group in order.chunk_by(|a, b| a.0 == b.0) {
+        distinct_in_group.clear();
+        for &(_, i) in group {
+            let same = distinct_in_group
+                .iter()
+                .copied()
+                .find(|&d| values[d as usize] == values[i as usize]);
+            first[i as usize] = same.unwrap_or_else(|| {
+                distinct_in_group.push(i);
+                i
+            });
         }
-        if candidate == END {
-            candidate = distinct.len() as u32;
-            distinct.push(value);
-            next_same_key.push(head);
-            first.insert(key, candidate);
-        }
-        ids.push(candidate);
+    }
+    // Ids in order of first appearance.
+    let mut ids: Vec<u32> = Vec::with_capacity(values.len());
+    let mut distinct = Vec::new();
+    for (i, &f) in first.iter().enumerate() {
+        let id = if f as usize == i {
+            distinct.push(values[i]);
+            distinct.len() as u32 - 1
+        } else {
+            ids[f as usize]
+        };
+        ids.push(id);
     }
     (ids, distinct)
 }
 
 /// Material ids for the objects of `ir`, equal textures sharing one, and the texture of each id.
 fn material_ids(ir: &ir::Scene) -> (Vec<MaterialId>, Vec<&ir::Texture>) {
-    let (ids, textures) = shared_ids(ir.objects.iter().map(|o| &o.texture), fingerprint);
+    let textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
+    let (ids, textures) = shared_ids(&textures, fingerprint);
     (ids.into_iter().map(MaterialId).collect(), textures)
 }
 
@@ -481,7 +478,7 @@ impl Scene {
     fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
         let (ids, textures) = material_ids(ir);
         let (interior_ids, interiors) =
-            shared_ids(ir.objects.iter().map(|o| &*o.interior), interior_key);
+            shared_ids(&ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(), interior_key);
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
         let materials = textures
             .into_iter()
@@ -1028,6 +1025,19 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn shared_ids_number_equal_values_once_in_order_of_first_appearance() {
+        let v = [5.0, 7.0, 5.0, 9.0, 7.0, 1.0];
+        let refs: Vec<&f64> = v.iter().collect();
+        // A fingerprint that gives every value the same key: all compared in full.
+        let (ids, distinct) = shared_ids(&refs, |_| 42);
+        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
+        assert_eq!(distinct, [&5.0, &7.0, &9.0, &1.0]);
+        // And one that tells them apart.
+        let (ids, _) = shared_ids(&refs, |x| x.to_bits());
+        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
+    }
 
     fn scene_with(shape: ir::Shape, transform: DMat4) -> Scene {
         let ir = ir::Scene {

@@ -211,3 +211,27 @@ fn area_light_modifiers_without_an_area_light_are_ignored_with_a_warning_as_in_p
         );
     }
 }
+
+#[test]
+fn equal_finishes_and_interiors_are_stored_once() {
+    let scene = load_text(
+        "sphere { 0, 1 finish { phong 0.5 } interior { ior 1.5 } }\n\
+         sphere { 1, 1 pigment { rgb 1 } finish { phong 0.5 } interior { ior 1.5 } }\n\
+         sphere { 2, 1 finish { phong 0.6 } interior { ior 1.33 } }\n\
+         sphere { 3, 1 }\nsphere { 4, 1 }\n",
+        8,
+        6,
+    );
+    let o = &scene.objects;
+    let same = |a: usize, b: usize| {
+        (
+            std::sync::Arc::ptr_eq(&o[a].texture.finish, &o[b].texture.finish),
+            std::sync::Arc::ptr_eq(&o[a].interior, &o[b].interior),
+        )
+    };
+    assert_eq!(same(0, 1), (true, true), "written twice, stored once");
+    assert_eq!(same(0, 2), (false, false), "different values stay apart");
+    assert_eq!(same(3, 4), (true, true), "the defaults are shared");
+    assert_eq!(o[2].texture.finish.phong, 0.6);
+    assert_eq!(o[2].interior.ior, 1.33);
+}
