@@ -10,7 +10,8 @@ For each curve it fits the slope of log(time) and log(memory) against log(size) 
 sizes where the renderer's start-up no longer dominates (the upper half of each range).
 
 Writes docs/scale.csv, docs/scale.md (table and slopes) and docs/scale.svg (log-log time and
-memory). Usage: scripts/scale.py [--quick]   (--quick: small sizes only, written to target/)
+memory). Usage: scripts/scale.py [--quick | --from-csv]   (--quick: small sizes only, written
+to target/; --from-csv: the table and chart again from docs/scale.csv, without rendering)
 """
 import csv
 import math
@@ -123,6 +124,12 @@ def svg_chart(rows, path):
 
 
 def main():
+    if "--from-csv" in sys.argv:
+        docs = os.path.join(ROOT, "docs")
+        with open(os.path.join(docs, "scale.csv"), newline="") as fh:
+            rows = [dict(r, size=int(r["size"])) for r in csv.DictReader(fh)]
+        write_docs(rows, docs, "")
+        return
     quick = "--quick" in sys.argv
     subprocess.run(["cargo", "build", "--release", "--quiet", "--manifest-path", os.path.join(ROOT, "Cargo.toml")], check=True)
     statements = (1000, 10000) if quick else (1000, 10000, 100000, 1000000)
@@ -168,12 +175,17 @@ def main():
         wr = csv.DictWriter(fh, fieldnames=list(rows[0]))
         wr.writeheader()
         wr.writerows(rows)
+    write_docs(rows, docs, suffix)
+
+
+def write_docs(rows, docs, suffix):
+    """docs/scale.md (the table and the slopes) and docs/scale.svg from the rows."""
     labels = dict(FAMILIES)
     lines = ["| family | size | file (MiB) | trace (s) | POV-Ray (s) | trace / POV-Ray time | trace peak (MiB) | POV-Ray peak (MiB) | trace / POV-Ray memory |",
              "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            r["family"], "{:,}".format(r["size"]), r["file_mib"], r["trace_s"], r["povray_s"], r["time_ratio"],
+            r["family"], "{:,}".format(r["size"]), r["file_mib"] if float(r["file_mib"]) > 0 else "—", r["trace_s"], r["povray_s"], r["time_ratio"],
             r["trace_mib"], r["povray_mib"], r["memory_ratio"]))
     lines += ["", "Slopes of log(time) and log(peak memory) against log(size), fitted over the larger half of each range:", "",
               "| family | trace time | POV-Ray time | trace memory | POV-Ray memory |", "|---|---:|---:|---:|---:|"]

@@ -10,7 +10,8 @@
 //!
 //! The interface is small:
 //! - the pipeline: [`load`] (or [`load_str`]) a scene into the [`ir`], then [`render`] it to
-//!   a [`Film`];
+//!   a [`Film`] in memory, or [`render_to_file`] band by band into an EXR or PNG file (memory
+//!   independent of the image size);
 //! - [`ir`], the evaluated scene as plain data (a test may build one by hand and render it);
 //! - [`film`], images: reading, writing, comparing (FLIP with the default feature `flip`);
 //! - what the command line needs besides: [`memory`] (the allocator that enforces
@@ -182,18 +183,6 @@ pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Er
     let pool = render::thread_pool(options)?;
     let start = std::time::Instant::now();
     let built = pool.install(|| scene::Scene::build(scene));
-    let build_time = start.elapsed();
-    let mut rendered = render::render(&built, options, &pool);
-    rendered.stats.build_time = build_time;
-    Ok(rendered)
-}
-
-/// Like [`render`], but frees the IR once the render-ready scene is built (less peak memory
-/// for big meshes: the IR's copy of every mesh is gone before rendering starts).
-pub fn render_owned(scene: ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
-    let pool = render::thread_pool(options)?;
-    let start = std::time::Instant::now();
-    let built = pool.install(|| scene::Scene::build_owned(scene));
     let build_time = start.elapsed();
     let mut rendered = render::render(&built, options, &pool);
     rendered.stats.build_time = build_time;
