@@ -43,15 +43,6 @@ def loop_scene(n, path):
     speed.write(path, lines)
 
 
-def run(cmd, cwd):
-    """Wall time (s) and peak RSS (MiB) of one run."""
-    p = subprocess.run(["/usr/bin/time", "-f", "TIME %e %M"] + cmd, cwd=cwd, capture_output=True, text=True)
-    if p.returncode != 0:
-        sys.exit("failed: %s\n%s" % (" ".join(cmd), p.stderr[-2000:]))
-    line = [l for l in p.stderr.splitlines() if l.startswith("TIME ")][-1]
-    return float(line.split()[1]), int(line.split()[2]) / 1024.0
-
-
 def slope(points):
     """Least-squares slope of log y against log x."""
     xs = [math.log10(x) for x, _ in points]
@@ -156,9 +147,9 @@ def main():
                 scene = os.path.join(ROOT, "examples", "mirrors.rt")
                 mib_file = 0.0
             # (The loop of 10^7 needs more evaluation steps than the default budget.)
-            tt, tm = run([TRACE, scene, "-o", name + ".t.png", "--width", str(w), "--height", str(h),
+            tt, tm = speed.run([TRACE, scene, "-o", name + ".t.png", "--width", str(w), "--height", str(h),
                           "--aa", "off", "--quiet", "--max-steps", "1000000000"], tmp)
-            pt, pm = run(["povray", "+I" + scene, "+O" + name + ".p.png", "+FN", "+W%d" % w, "+H%d" % h,
+            pt, pm = speed.run(["povray", "+I" + scene, "+O" + name + ".p.png", "+FN", "+W%d" % w, "+H%d" % h,
                           "-D", "-A", "-GA"], tmp)
             row = {"family": family, "size": size, "file_mib": "%.1f" % mib_file,
                    "trace_s": "%.3f" % tt, "povray_s": "%.3f" % pt, "time_ratio": "%.2f" % (tt / pt),

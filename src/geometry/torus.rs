@@ -37,19 +37,7 @@ impl Torus {
             return Crossings::NONE;
         }
         let shift = enter.max(0.0);
-        let o = ray.origin + shift * d;
-        // Quartic in s for p = o + s·d (|d| = 1), with G = |p|² − R² − r²:
-        // G² + 4R²(y² − r²) = 0.
-        let e = o.length_squared() - big * big - small * small;
-        let g = o.dot(d);
-        let four_r2 = 4.0 * big * big;
-        let c: Poly = [
-            e * e + four_r2 * (o.y * o.y - small * small),
-            4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
-            4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
-            4.0 * g,
-            1.0,
-        ];
+        let c = self.quartic(ray.origin + shift * d, d);
         let margin = 1e-9 * bound;
         let roots = roots_in(&c, 4, (enter - shift) - margin, (exit - shift) + margin);
         let mut out = Crossings::NONE;
@@ -60,6 +48,23 @@ impl Torus {
             }
         }
         out
+    }
+
+    /// Coefficients of the quartic in `s` whose roots are where `o + s·d` (`|d| = 1`) meets the
+    /// torus: with G = |p|² − R² − r², G² + 4R²(y² − r²) = 0. Their size grows with `|o|`, so
+    /// [`Torus::intersect`] forms them near the torus.
+    pub fn quartic(&self, o: DVec3, d: DVec3) -> Poly {
+        let (big, small) = (self.major, self.minor);
+        let e = o.length_squared() - big * big - small * small;
+        let g = o.dot(d);
+        let four_r2 = 4.0 * big * big;
+        [
+            e * e + four_r2 * (o.y * o.y - small * small),
+            4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
+            4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
+            4.0 * g,
+            1.0,
+        ]
     }
 
     /// Outward normal (not unit length) at `p`.

@@ -25,8 +25,10 @@ const MIN_BYTES: usize = 1 << 18;
 /// enough that the chunks waiting in memory stay small (about 3,000 plain statements).
 const CHUNK_BYTES: usize = 1 << 18;
 
-/// Helpers at most.
-const MAX_HELPERS: usize = 3;
+/// Helpers at most: evaluating a plain statement takes about a sixth of the time parsing it
+/// does, so beyond six helpers the evaluating thread would be the limit (measured on two
+/// cores only, where two helpers run).
+const MAX_HELPERS: usize = 6;
 
 /// Evaluated statements handed back to their helper at a time.
 const GIVE_BACK_BATCH: usize = 256;
@@ -141,7 +143,7 @@ pub(super) fn start(
 }
 
 /// Helpers parsing the chunks that start at each of `starts` (increasing byte offsets), one
-/// helper a chunk up to three (tests choose the starts).
+/// helper a chunk up to the most helpers (tests choose the starts).
 #[cfg(test)]
 pub(super) fn spawn(source: &Arc<str>, file: FileId, starts: &[usize]) -> Ahead {
     spawn_helpers(source, file, starts, starts.len().min(MAX_HELPERS))

@@ -483,17 +483,8 @@ fn textbook_torus_hit(torus: &trace::geometry::Torus, ray: &Ray) -> Option<f64> 
         return None;
     }
     let h = h2.sqrt();
-    // G² + 4R²(y² − r²) = 0 with G = |p|² − R² − r², p = o + t·d.
-    let e = o.length_squared() - big * big - small * small;
-    let g = f;
-    let four_r2 = 4.0 * big * big;
-    let c = [
-        e * e + four_r2 * (o.y * o.y - small * small),
-        4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
-        4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
-        4.0 * g,
-        1.0,
-    ];
+    // The quartic formed at the ray's own origin.
+    let c = torus.quartic(o, d);
     let margin = 1e-9 * bound;
     let roots = roots_in(&c, 4, (-f - h).max(0.0) - margin, -f + h + margin);
     roots
