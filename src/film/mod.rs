@@ -458,6 +458,53 @@ mod tests {
     use super::*;
 
     #[test]
+    fn an_image_written_in_bands_is_the_image_written_whole() {
+        // An odd size, and bands of 5 rows: EXR's blocks of 16 scanlines straddle bands.
+        let (w, h) = (37, 23);
+        let mut film = Film::new(w, h);
+        for y in 0..h {
+            for x in 0..w {
+                let v = (x * 7 + y * 13) as f32 / 400.0;
+                film.set(x, y, [v, 1.0 - v, (x as f32 / w as f32).powi(2)]);
+            }
+        }
+        let dir = std::env::temp_dir().join(format!("trace-bands-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for name in ["img.exr", "img.png"] {
+            let (whole, banded) = (dir.join(format!("whole-{name}")), dir.join(name));
+            film.write(&whole).unwrap();
+            let mut y0 = 0;
+            write_streamed(&banded, w, h, Some(1), || {
+                (y0 < h).then(|| {
+                    let rows = 5.min(h - y0);
+                    let start = (y0 * w) as usize;
+                    let band = Rows {
+                        y0,
+                        pixels: film.pixels[start..start + (rows * w) as usize]
+                            .to_vec()
+                            .into(),
+                    };
+                    y0 += rows;
+                    band
+                })
+            })
+            .unwrap();
+            assert_eq!(
+                Film::read(&banded).unwrap(),
+                Film::read(&whole).unwrap(),
+                "{name}"
+            );
+            if name.ends_with("exr") {
+                assert_eq!(
+                    std::fs::read(&banded).unwrap(),
+                    std::fs::read(&whole).unwrap()
+                );
+            }
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
     fn srgb_round_trip() {
         for i in 0..=100 {
             let v = i as f64 / 100.0;
