@@ -20,7 +20,8 @@ static IN_USE: AtomicUsize = AtomicUsize::new(0);
 /// much unused: threads that allocate and free millions of small blocks (the parser and the
 /// evaluator do, side by side) would otherwise contend for the shared counter's cache line on
 /// every call, which made parsing on two threads slower than on one. The count is then
-/// exact to within two grains a thread.
+/// exact to within two grains a thread (a thread that ends leaves its unused credit counted:
+/// at most two grains for each parsing helper of a load).
 const GRAIN: usize = 1 << 20;
 
 thread_local! {
