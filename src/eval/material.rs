@@ -26,10 +26,7 @@ impl Evaluator<'_> {
                     other => return Err(type_error("a texture", &other, item.span)),
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
-                NodeKind::Finish => {
-                    let finish = ev.finish_block(item, (*texture.finish).clone())?;
-                    texture.finish = ev.shared_finish(finish);
-                }
+                NodeKind::Finish => texture.finish = ev.shared_finish_block(item, &texture.finish)?,
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
                     move_pigment(&mut texture.pigment, t);
@@ -314,6 +311,16 @@ impl Evaluator<'_> {
             once,
             bilinear,
         })
+    }
+
+    /// `finish { [Name] items }` applied to `base`, shared with an equal finish made before.
+    pub(super) fn shared_finish_block(
+        &mut self,
+        node: &Node,
+        base: &ir::Finish,
+    ) -> Result<Arc<ir::Finish>> {
+        let finish = self.finish_block(node, base.clone())?;
+        Ok(self.shared_finish(finish))
     }
 
     /// `finish { [Name] items }`, modifying `finish`.

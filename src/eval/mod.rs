@@ -448,9 +448,8 @@ impl<'a> Evaluator<'a> {
                             ev.default_texture.pigment = ev.pigment(child, base)?;
                         }
                         NodeKind::Finish => {
-                            let base = (*ev.default_texture.finish).clone();
-                            let finish = ev.finish_block(child, base)?;
-                            ev.default_texture.finish = ev.shared_finish(finish);
+                            let base = std::sync::Arc::clone(&ev.default_texture.finish);
+                            ev.default_texture.finish = ev.shared_finish_block(child, &base)?;
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),
                     }

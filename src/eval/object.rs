@@ -396,8 +396,7 @@ impl Evaluator<'_> {
                 if m.kind == NodeKind::Pigment {
                     texture.pigment = self.pigment(m, texture.pigment.clone())?;
                 } else {
-                    let finish = self.finish_block(m, (*texture.finish).clone())?;
-                    texture.finish = self.shared_finish(finish);
+                    texture.finish = self.shared_finish_block(m, &texture.finish)?;
                 }
                 object.texture = Some(texture);
             }

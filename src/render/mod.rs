@@ -115,7 +115,8 @@ pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
     let per_pixel = std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>();
     let band = (width as usize * band_rows).saturating_mul(per_pixel);
-    let writer = (width as usize * 64.min(height as usize)).saturating_mul(12);
+    let writer = (width as usize * 64.min(height as usize))
+        .saturating_mul(std::mem::size_of::<[f32; 3]>());
     band.saturating_add(writer)
 }
 
