@@ -10,8 +10,13 @@ For each curve it fits the slope of log(time) and log(memory) against log(size) 
 sizes where the renderer's start-up no longer dominates (the upper half of each range).
 
 Writes docs/scale.csv, docs/scale.md (table and slopes) and docs/scale.svg (log-log time and
-memory). Usage: scripts/scale.py [--quick | --from-csv]   (--quick: small sizes only, written
-to target/; --from-csv: the table and chart again from docs/scale.csv, without rendering)
+memory). Usage: scripts/scale.py [--quick | --from-csv | --family F | --throughput]
+  --quick:      small sizes only, written to target/;
+  --from-csv:   the table and chart again from docs/scale.csv, without rendering;
+  --family F:   measure family F (statements, loop or pixels) again and keep the other rows;
+  --throughput: parse throughput on a generated 100 MB file of sphere statements, plain and
+                with an expression in each (so the grammar reads them instead of the fast
+                lane), with the default threads and one; prints MB/s, writes nothing.
 """
 import csv
 import math
@@ -123,9 +128,16 @@ def main():
         return
     quick = "--quick" in sys.argv
     subprocess.run(["cargo", "build", "--release", "--quiet", "--manifest-path", os.path.join(ROOT, "Cargo.toml")], check=True)
+    if "--throughput" in sys.argv:
+        throughput()
+        return
+    only = sys.argv[sys.argv.index("--family") + 1] if "--family" in sys.argv else None
     statements = (1000, 10000) if quick else (1000, 10000, 100000, 1000000)
     loops = (1000, 10000) if quick else (1000, 10000, 100000, 1000000, 10000000)
     pixels = (10 ** 5, 10 ** 6) if quick else (10 ** 5, 10 ** 6, 10 ** 7, 10 ** 8, 10 ** 9)
+    if only:
+        statements, loops, pixels = [sizes if only == fam else () for fam, sizes in
+                                     (("statements", statements), ("loop", loops), ("pixels", pixels))]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         jobs = []
@@ -162,11 +174,45 @@ def main():
                     os.remove(os.path.join(tmp, f))
     docs = os.path.join(ROOT, "target") if quick else os.path.join(ROOT, "docs")
     suffix = "-quick" if quick else ""
+    if only:
+        # The other families' rows as last measured, in the table's order.
+        with open(os.path.join(docs, "scale.csv"), newline="") as fh:
+            kept = [r for r in csv.DictReader(fh) if r["family"] != only]
+        order = [fam for fam, _ in FAMILIES]
+        rows = sorted(kept + rows, key=lambda r: (order.index(r["family"]), int(r["size"])))
     with open(os.path.join(docs, "scale%s.csv" % suffix), "w", newline="") as fh:
         wr = csv.DictWriter(fh, fieldnames=list(rows[0]))
         wr.writeheader()
         wr.writerows(rows)
     write_docs(rows, docs, suffix)
+
+
+def throughput():
+    """Parse throughput (MB/s, from trace's own parse time) on a 100 MB statement file."""
+    with tempfile.TemporaryDirectory() as tmp:
+        plain = os.path.join(tmp, "plain.pov")
+        speed.spheres(1240000, plain)
+        with open(plain) as fh:
+            text = fh.read()
+        variants = [("plain statements (fast lane)", plain)]
+        expr = os.path.join(tmp, "expr.pov")
+        with open(expr, "w") as fh:
+            fh.write(text.replace(" pigment {", "*1 pigment {"))
+        variants.append(("an expression in each (grammar)", expr))
+        for label, path in variants:
+            mb = os.path.getsize(path) / 1e6
+            for threads in (None, 1):
+                best = None
+                for _ in range(3):
+                    cmd = [TRACE, path, "-o", os.path.join(tmp, "out.png"), "--width", "64",
+                           "--height", "48", "--aa", "off", "--stats"]
+                    if threads:
+                        cmd += ["--threads", str(threads)]
+                    out = subprocess.run(cmd, capture_output=True, text=True, check=True).stderr
+                    t = float([l for l in out.splitlines() if l.startswith("Parse Time")][0].split()[2])
+                    best = t if best is None else min(best, t)
+                print("%-34s %5.0f MB  %-15s parse %.2f s  %4.0f MB/s"
+                      % (label, mb, "one thread" if threads else "default threads", best, mb / best), flush=True)
 
 
 def write_docs(rows, docs, suffix):

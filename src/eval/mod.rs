@@ -46,10 +46,9 @@ pub struct LoadOptions {
 pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 
 impl LoadOptions {
-    /// Threads that may parse ahead of evaluation: one a core when there are several.
-    /// Evaluating a plain statement takes a sixth of the time parsing it does, so the
-    /// evaluating thread mostly waits, and with two cores two helpers beat one (1M spheres:
-    /// parse 1.66 s against 2.77 s; one thread alone 2.90 s).
+    /// Threads that may parse ahead of evaluation: at most one a core when there are several
+    /// (the parser takes one fewer when the file's statements take its fast lane, see
+    /// `syntax::ahead`).
     pub(crate) fn parse_helpers(&self) -> usize {
         let threads = self
             .threads

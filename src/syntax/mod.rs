@@ -6,6 +6,7 @@
 
 mod ahead;
 pub mod bulk;
+mod plain;
 
 mod grammar {
     #[derive(pest_derive::Parser)]
@@ -389,6 +390,10 @@ impl Iterator for Statements {
                     self.ready_from = Some(helper);
                     continue 'next;
                 }
+            }
+            if let Some((node, end)) = plain::statement(&self.source, self.pos, self.lower.file) {
+                self.pos = end;
+                return Some(Ok(node));
             }
             return match next_statement(&self.source, self.pos, &mut self.lower) {
                 None => {

@@ -1,0 +1,542 @@
+//! The fast lane for plain statements.
+//!
+//! Big generated or exported scenes are mostly one shape a statement with literal numbers:
+//! `sphere { <1.5, 2, -3>, 0.25 pigment { rgb <0.2, 0.5, 0.9> } }`, `object { Tree translate
+//! <4, 0, 7> }`. Such a statement is read here by a hand-written scanner into exactly the tree
+//! the grammar's lowering builds (spans included), several times faster than pest's general
+//! rules. The lane is narrow on purpose: shapes with literal arguments; `pigment` with one
+//! literal colour; `finish` with literal items; `texture` of those; `translate`, `rotate`,
+//! `scale` by a literal; plain flags; `object { Name … }`. Anything else — a comment, an
+//! expression, an identifier, a directive, an unknown word, a syntax error — gives up at once
+//! and the statement goes to the grammar, which reads it (or reports it) as always. The unit
+//! tests compare the two readings on every form the lane takes, byte offsets included.
+
+use super::{ColourPart, Expr, ExprKind, Node, NodeKind};
+use crate::diag::{FileId, Span};
+
+/// Reads the statement starting after the blanks at byte `pos` of `source`, if it is plain:
+/// its tree and the byte just after its closing `}`.
+pub(super) fn statement(source: &str, pos: usize, file: FileId) -> Option<(Node, usize)> {
+    let mut s = Scanner {
+        text: source,
+        at: pos,
+        file,
+    };
+    s.skip_blanks();
+    let node = s.object()?;
+    Some((node, s.at))
+}
+
+/// Shapes the lane reads: keyword, node kind, number of arguments.
+const SHAPES: [(&str, NodeKind, usize); 8] = [
+    ("sphere", NodeKind::Sphere, 2),
+    ("box", NodeKind::Box, 2),
+    ("cylinder", NodeKind::Cylinder, 3),
+    ("cone", NodeKind::Cone, 4),
+    ("triangle", NodeKind::Triangle, 3),
+    ("smooth_triangle", NodeKind::SmoothTriangle, 6),
+    ("torus", NodeKind::Torus, 2),
+    ("plane", NodeKind::Plane, 2),
+];
+
+/// Finish items taking one literal: keyword and node kind.
+const FINISH_ITEMS: [(&str, NodeKind); 9] = [
+    ("ambient", NodeKind::Ambient),
+    ("emission", NodeKind::Emission),
+    ("diffuse", NodeKind::Diffuse),
+    ("brilliance", NodeKind::Brilliance),
+    ("phong", NodeKind::Phong),
+    ("phong_size", NodeKind::PhongSize),
+    ("specular", NodeKind::Specular),
+    ("roughness", NodeKind::Roughness),
+    ("reflection", NodeKind::Reflection),
+];
+
+/// Flags the lane reads (without an `on`/`off` value).
+const FLAGS: [&str; 6] = [
+    "no_shadow",
+    "no_image",
+    "no_reflection",
+    "hollow",
+    "double_illuminate",
+    "open",
+];
+
+#[derive(Clone, Copy)]
+struct Scanner<'a> {
+    text: &'a str,
+    at: usize,
+    file: FileId,
+}
+
+impl<'a> Scanner<'a> {
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, start, end)
+    }
+
+    fn peek(&self) -> Option<u8> {
+        self.text.as_bytes().get(self.at).copied()
+    }
+
+    /// The grammar's implicit whitespace (comments are left to the grammar).
+    fn skip_blanks(&mut self) {
+        let bytes = self.text.as_bytes();
+        while self.at < bytes.len() && matches!(bytes[self.at], b' ' | b'\t'..=b'\r') {
+            self.at += 1;
+        }
+    }
+
+    fn eat(&mut self, byte: u8) -> Option<()> {
+        (self.peek() == Some(byte)).then(|| self.at += 1)
+    }
+
+    /// A word (`[A-Za-z_][A-Za-z0-9_]*`) and where it starts.
+    fn word(&mut self) -> Option<(&'a str, usize)> {
+        let bytes = self.text.as_bytes();
+        let start = self.at;
+        if !bytes.get(start).is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_') {
+            return None;
+        }
+        let mut end = start + 1;
+        while end < bytes.len() && (bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_') {
+            end += 1;
+        }
+        self.at = end;
+        Some((&self.text[start..end], start))
+    }
+
+    /// A node for the keyword `word` starting at `start`; span and children filled later.
+    fn node(&self, kind: NodeKind, word: &str, start: usize) -> Node {
+        let word_span = self.span(start, start + word.len());
+        Node {
+            kind,
+            span: word_span,
+            word: word.to_string(),
+            word_span,
+            args: Vec::new(),
+            children: Vec::new(),
+        }
+    }
+
+    /// `keyword { … }` of a shape, or `object { Name … }`.
+    fn object(&mut self) -> Option<Node> {
+        let (word, start) = self.word()?;
+        let mut node = if word == "object" {
+            let mut node = self.node(NodeKind::ObjectRef, word, start);
+            self.skip_blanks();
+            self.eat(b'{')?;
+            self.skip_blanks();
+            node.children.push(self.item_ref()?);
+            node
+        } else {
+            let &(word, kind, count) = SHAPES.iter().find(|s| s.0 == word)?;
+            let mut node = self.node(kind, word, start);
+            self.skip_blanks();
+            self.eat(b'{')?;
+            self.skip_blanks();
+            for i in 0..count {
+                if i > 0 && self.eat(b',').is_some() {
+                    self.skip_blanks();
+                }
+                node.args.push(self.literal()?);
+            }
+            node
+        };
+        self.modifiers(&mut node.children)?;
+        self.eat(b'}')?;
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// A declared name in `object { … }` (not a keyword, not a macro call or array element).
+    fn item_ref(&mut self) -> Option<Node> {
+        let (name, start) = self.word()?;
+        if super::is_keyword(name) {
+            return None;
+        }
+        let name_end = self.at;
+        self.skip_blanks();
+        if !self.peek().is_some_and(|b| b == b'}' || b.is_ascii_alphabetic() || b == b'_') {
+            return None;
+        }
+        let mut node = self.node(NodeKind::IdentRef, name, start);
+        node.word_span = self.span(start, name_end);
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// Object modifiers up to (not including) the closing `}`.
+    fn modifiers(&mut self, children: &mut Vec<Node>) -> Option<()> {
+        loop {
+            self.skip_blanks();
+            if self.peek() == Some(b'}') {
+                return Some(());
+            }
+            let (word, start) = self.word()?;
+            let child = match word {
+                "pigment" => self.pigment(start)?,
+                "finish" => self.finish(start)?,
+                "texture" => self.texture(start)?,
+                _ => match self.transform(word, start) {
+                    Some(node) => node?,
+                    None => self.flag(word, start)?,
+                },
+            };
+            children.push(child);
+        }
+    }
+
+    /// `translate`, `rotate` or `scale` by a literal (`None` if `word` is none of them).
+    fn transform(&mut self, word: &str, start: usize) -> Option<Option<Node>> {
+        let kind = match word {
+            "translate" => NodeKind::Translate,
+            "rotate" => NodeKind::Rotate,
+            "scale" => NodeKind::Scale,
+            _ => return None,
+        };
+        Some(self.with_literal(kind, word, start))
+    }
+
+    /// A keyword followed by one literal; the node runs to the blanks after the literal, as
+    /// the grammar's does.
+    fn with_literal(&mut self, kind: NodeKind, word: &str, start: usize) -> Option<Node> {
+        let mut node = self.node(kind, word, start);
+        self.skip_blanks();
+        node.args.push(self.literal()?);
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    fn flag(&mut self, word: &str, start: usize) -> Option<Node> {
+        let word = *FLAGS.iter().find(|f| **f == word)?;
+        let mut node = self.node(NodeKind::Flag, word, start);
+        self.skip_blanks();
+        // (`hollow on` and the like are the grammar's.)
+        let mut ahead = *self;
+        if let Some((next, _)) = ahead.word()
+            && matches!(next, "on" | "off" | "true" | "false" | "yes" | "no")
+        {
+            return None;
+        }
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// `pigment { [color] rgb… literal }`.
+    fn pigment(&mut self, start: usize) -> Option<Node> {
+        let mut node = self.node(NodeKind::Pigment, "pigment", start);
+        self.skip_blanks();
+        self.eat(b'{')?;
+        self.skip_blanks();
+        node.args.push(self.colour()?);
+        self.eat(b'}')?;
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// `rgb V`, `color rgbf V`, …: one typed colour of a literal, followed by `}`.
+    fn colour(&mut self) -> Option<Expr> {
+        let start = self.at;
+        let (mut kw, _) = self.word()?;
+        if kw == "color" || kw == "colour" {
+            self.skip_blanks();
+            (kw, _) = self.word()?;
+        }
+        let typed = kw.strip_prefix('s').unwrap_or(kw);
+        if !matches!(typed, "rgb" | "rgbf" | "rgbt" | "rgbft") {
+            return None;
+        }
+        self.skip_blanks();
+        let value = self.literal()?;
+        (self.peek() == Some(b'}')).then_some(())?;
+        Some(Expr {
+            kind: ExprKind::Colour(vec![ColourPart::Typed(kw.to_string(), value)]),
+            span: self.span(start, self.at),
+        })
+    }
+
+    /// `finish { item literal … }`.
+    fn finish(&mut self, start: usize) -> Option<Node> {
+        let mut node = self.node(NodeKind::Finish, "finish", start);
+        self.skip_blanks();
+        self.eat(b'{')?;
+        loop {
+            self.skip_blanks();
+            if self.eat(b'}').is_some() {
+                break;
+            }
+            let (word, item_start) = self.word()?;
+            let item = if word == "conserve_energy" {
+                self.node(NodeKind::ConserveEnergy, word, item_start)
+            } else {
+                let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
+                let item = self.with_literal(kind, word, item_start)?;
+                // (`diffuse A, B` is the grammar's.)
+                if self.peek() == Some(b',') {
+                    return None;
+                }
+                item
+            };
+            node.children.push(item);
+        }
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// `texture { pigment/finish/transforms }`.
+    fn texture(&mut self, start: usize) -> Option<Node> {
+        let mut node = self.node(NodeKind::Texture, "texture", start);
+        self.skip_blanks();
+        self.eat(b'{')?;
+        loop {
+            self.skip_blanks();
+            if self.eat(b'}').is_some() {
+                break;
+            }
+            let (word, item_start) = self.word()?;
+            let item = match word {
+                "pigment" => self.pigment(item_start)?,
+                "finish" => self.finish(item_start)?,
+                _ => self.transform(word, item_start)??,
+            };
+            node.children.push(item);
+        }
+        node.span = self.span(start, self.at);
+        Some(node)
+    }
+
+    /// A number or a vector of numbers that no operator follows (the grammar's `literal ~
+    /// literal_end`); leaves the scanner after the blanks that follow it.
+    fn literal(&mut self) -> Option<Expr> {
+        let start = self.at;
+        let kind = if self.peek() == Some(b'<') {
+            self.vector()?
+        } else {
+            ExprKind::Number(self.number()?)
+        };
+        let span = self.span(start, self.at);
+        self.skip_blanks();
+        // What may follow a literal without making it part of an expression (a subset of the
+        // grammar's `literal_end`).
+        let next = self.peek()?;
+        (next == b',' || next == b'}' || next == b'_' || next.is_ascii_alphanumeric())
+            .then_some(Expr { kind, span })
+    }
+
+    /// `<n, n, …>` of 2 to 5 plain numbers (commas optional before an unsigned number).
+    fn vector(&mut self) -> Option<ExprKind> {
+        self.eat(b'<')?;
+        let mut c = [0.0; 5];
+        let mut n = 0;
+        loop {
+            self.skip_blanks();
+            *c.get_mut(n)? = self.number()?;
+            n += 1;
+            let before = self.at;
+            self.skip_blanks();
+            match self.peek()? {
+                b'>' => {
+                    self.at += 1;
+                    break;
+                }
+                b',' => self.at += 1,
+                b'0'..=b'9' | b'.' if self.at > before => {}
+                _ => return None,
+            }
+        }
+        (n >= 2).then_some(ExprKind::PlainVector(c, n as u8))
+    }
+
+    /// The grammar's `plain_number`: `[+-]? (d+ (. d*)? | . d+) ([eE] [+-]? d+)?`, read as
+    /// the lowering reads it.
+    fn number(&mut self) -> Option<f64> {
+        let bytes = self.text.as_bytes();
+        let start = self.at;
+        let mut i = start;
+        if matches!(bytes.get(i), Some(b'+' | b'-')) {
+            i += 1;
+        }
+        let digits = |mut i: usize| {
+            while bytes.get(i).is_some_and(u8::is_ascii_digit) {
+                i += 1;
+            }
+            i
+        };
+        let int_end = digits(i);
+        if int_end > i {
+            i = int_end;
+            if bytes.get(i) == Some(&b'.') {
+                i = digits(i + 1);
+            }
+        } else if bytes.get(i) == Some(&b'.') && bytes.get(i + 1).is_some_and(u8::is_ascii_digit) {
+            i = digits(i + 1);
+        } else {
+            return None;
+        }
+        if matches!(bytes.get(i), Some(b'e' | b'E')) {
+            let mut j = i + 1;
+            if matches!(bytes.get(j), Some(b'+' | b'-')) {
+                j += 1;
+            }
+            let exp_end = digits(j);
+            if exp_end > j {
+                i = exp_end;
+            }
+        }
+        self.at = i;
+        Some(self.text[start..i].parse().unwrap_or(f64::NAN))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Lower, next_statement};
+    use super::*;
+
+    /// The grammar's reading of the statement at the start of `text`: tree and end.
+    fn by_grammar(text: &str) -> Option<(String, usize)> {
+        let mut lower = Lower {
+            file: FileId(0),
+            offset: 0,
+            bulk: Default::default(),
+        };
+        match next_statement(text, 0, &mut lower)? {
+            Ok((node, end)) => Some((format!("{node:?}"), end)),
+            Err(_) => None,
+        }
+    }
+
+    /// The lane's reading, checked against the grammar's whenever the lane takes the text.
+    fn by_lane(text: &str) -> Option<(String, usize)> {
+        let (node, end) = statement(text, 0, FileId(0))?;
+        let lane = (format!("{node:?}"), end);
+        assert_eq!(Some(&lane), by_grammar(text).as_ref(), "the two readings of {text:?} differ");
+        Some(lane)
+    }
+
+    const TAKEN: &[&str] = &[
+        "sphere { <1.5, -2, 3e2>, 0.25 }",
+        "sphere{<0,0,0>,1}",
+        "  sphere {\n\t< 1 , 2 , 3 >\n,\r\n.5\n}  ",
+        "sphere { <1 2 3> 1 }",
+        "sphere { <1 .5 3>, +1E-2 }",
+        "box { <-1,-1,-1>, <1,1,1> }",
+        "cylinder { <0,0,0>, <0,1,0>, .5 open }",
+        "cone { <0,0,0>, 1, <0,1,0>, 0 }",
+        "triangle { <0,0,0>, <1,0,0>, <0,1,0> }",
+        "smooth_triangle { <0,0,0>, <0,0,1>, <1,0,0>, <0,0,1>, <0,1,0>, <0,0,1> }",
+        "torus { 1, 0.25 rotate <90, 0, 0> }",
+        "plane { <0, 1, 0>, -1 hollow }",
+        "sphere { <0,0,0>, 1 pigment { rgb <0.2, 0.5, 0.9> } }",
+        "sphere { <0,0,0>, 1 pigment{color rgbf <1,0,0,0.5>} }",
+        "sphere { <0,0,0>, 1 pigment { colour srgb 0.5 } no_shadow }",
+        "sphere { <0,0,0>, 1 pigment { rgbft <1,1,1,0,0.5>}}",
+        "sphere { <0,0,0>, 1 finish { phong 0.5 phong_size 40 ambient 0.1 diffuse 0.7 conserve_energy reflection 0.2 } }",
+        "sphere { <0,0,0>, 1 finish { } }",
+        "sphere { <0,0,0>, 1 texture { pigment { rgb 1 } finish { specular 0.3 roughness 0.01 } scale 2 } }",
+        "sphere { <0,0,0>, 1 translate <1,2,3> scale 2 no_image no_reflection double_illuminate }",
+        "sphere { <0,0,0>, 1 finish { emission 1 brilliance 2 } }",
+        "object { Tree }",
+        "object {Tree translate <1,0,0>}",
+        "object { Tree pigment { rgb <1,0,0> } }",
+        "object { _t2 scale 3 }",
+        "sphere { <0,0,0>, 1 }\nsphere { <1,1,1>, 2 }",
+    ];
+
+    /// Statements the lane leaves to the grammar (which reads them differently, or needs
+    /// what the lane does not have).
+    const LEFT: &[&str] = &[
+        "/* c */ sphere { <0,0,0>, 1 }",
+        "sphere { <0,0,0>, 1 // c\n }",
+        "sphere { <0,0,0>, 0.5*2 }",
+        "sphere { <1 -2 3>, 1 }",
+        "sphere { <0,0,0> -1 }",
+        "sphere { <1 .5 3> +1E-2 }",
+        "sphere { <0,0,0> 1E }",
+        "sphere { <0,0,0>, R }",
+        "sphere { <1,2,3>.x, 1 }",
+        "sphere { <0,0,0>, 1 pigment { rgb <1,0,0> filter 0.5 } }",
+        "sphere { <0,0,0>, 1 pigment { Red } }",
+        "sphere { <0,0,0>, 1 pigment { color <1,0,0> } }",
+        "sphere { <0,0,0>, 1 finish { diffuse 0.6, 0.3 } }",
+        "sphere { <0,0,0>, 1 finish { phong albedo 0.6 } }",
+        "sphere { <0,0,0>, 1 hollow on }",
+        "sphere { <0,0,0>, 1 rotate 45*y }",
+        "sphere { <0,0,0>, 1 #if (1) #end }",
+        "sphere { <0,0,0>, 1 bogus 3 }",
+        "object { Tree(1) }",
+        "object { A[1] }",
+        "object { sphere { <0,0,0>, 1 } }",
+        "object { pigment }",
+        "box { <0,0,0> <1,1,1> }",
+        "sphere { <1>, 1 }",
+        "sphere { <1,2,3,4,5,6>, 1 }",
+        "disc { <0,0,0>, y, 1 }",
+        "#declare A = 1;",
+        "sphere { <0,0,0>, 1 ",
+        "",
+    ];
+
+    #[test]
+    fn the_lane_reads_plain_statements_as_the_grammar_does() {
+        for text in TAKEN {
+            assert!(by_lane(text).is_some(), "the lane should take {text:?}");
+        }
+        for text in LEFT {
+            assert!(by_lane(text).is_none(), "the lane should leave {text:?}");
+        }
+    }
+
+    /// Statements near the plain ones (a token dropped, doubled or replaced, blanks moved):
+    /// whatever the lane takes it reads as the grammar does.
+    #[test]
+    fn near_misses_are_read_as_the_grammar_does_or_left_to_it() {
+        const TOKENS: &[&str] = &[
+            "sphere", "box", "cone", "object", "Tree", "{", "}", "<", ">", ",", "1", "-2.5",
+            ".5", "3e2", "1e", "+4.", "pigment", "rgb", "color", "rgbt", "finish", "phong",
+            "diffuse", "translate", "no_shadow", "on", "(", "*", "-", ".", "/", " ", "\n",
+            "texture", "scale", "open", "conserve_energy", "x", "#", ";", "[",
+        ];
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |n: usize| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % n as u64) as usize
+        };
+        let (mut taken, mut cases) = (0, 0);
+        for text in TAKEN {
+            // Tokens split at blanks and punctuation, kept with their separators.
+            let mut tokens: Vec<String> = Vec::new();
+            for piece in text.split_inclusive(|c: char| " {}<>,\n".contains(c)) {
+                let (body, sep) = piece.split_at(piece.len() - 1);
+                if !body.is_empty() {
+                    tokens.push(body.to_string());
+                }
+                tokens.push(sep.to_string());
+            }
+            for _ in 0..400 {
+                let mut t = tokens.clone();
+                for _ in 0..1 + next(2) {
+                    let i = next(t.len());
+                    match next(4) {
+                        0 => {
+                            t.remove(i);
+                        }
+                        1 => t.insert(i, t[i].clone()),
+                        2 => t[i] = TOKENS[next(TOKENS.len())].to_string(),
+                        _ => t.insert(i, TOKENS[next(TOKENS.len())].to_string()),
+                    }
+                    if t.is_empty() {
+                        break;
+                    }
+                }
+                cases += 1;
+                taken += usize::from(by_lane(&t.concat()).is_some());
+            }
+        }
+        // Some variants stay plain (a blank moved, a number replaced): the comparison above
+        // then ran on them.
+        assert!(taken > cases / 20, "only {taken} of {cases} variants were taken");
+    }
+}
