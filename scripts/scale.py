@@ -177,7 +177,7 @@ def main():
     if only:
         # The other families' rows as last measured, in the table's order.
         with open(os.path.join(docs, "scale.csv"), newline="") as fh:
-            kept = [r for r in csv.DictReader(fh) if r["family"] != only]
+            kept = [dict(r, size=int(r["size"])) for r in csv.DictReader(fh) if r["family"] != only]
         order = [fam for fam, _ in FAMILIES]
         rows = sorted(kept + rows, key=lambda r: (order.index(r["family"]), int(r["size"])))
     with open(os.path.join(docs, "scale%s.csv" % suffix), "w", newline="") as fh:
