@@ -257,35 +257,36 @@ impl<'a> Scanner<'a> {
 
     /// `finish { item literal … }`.
     fn finish(&mut self, start: usize) -> Option<Node> {
-        let mut node = self.node(NodeKind::Finish, "finish", start);
-        self.skip_blanks();
-        self.eat(b'{')?;
-        loop {
-            self.skip_blanks();
-            if self.eat(b'}').is_some() {
-                break;
+        self.block(NodeKind::Finish, "finish", start, |s, word, item_start| {
+            if word == "conserve_energy" {
+                return Some(s.node(NodeKind::ConserveEnergy, word, item_start));
             }
-            let (word, item_start) = self.word()?;
-            let item = if word == "conserve_energy" {
-                self.node(NodeKind::ConserveEnergy, word, item_start)
-            } else {
-                let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
-                let item = self.with_literal(kind, word, item_start)?;
-                // (`diffuse A, B` is the grammar's.)
-                if self.peek() == Some(b',') {
-                    return None;
-                }
-                item
-            };
-            node.children.push(item);
-        }
-        node.span = self.span(start, self.at);
-        Some(node)
+            let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
+            let item = s.with_literal(kind, word, item_start)?;
+            // (`diffuse A, B` is the grammar's.)
+            (s.peek() != Some(b',')).then_some(item)
+        })
     }
 
     /// `texture { pigment/finish/transforms }`.
     fn texture(&mut self, start: usize) -> Option<Node> {
-        let mut node = self.node(NodeKind::Texture, "texture", start);
+        self.block(NodeKind::Texture, "texture", start, |s, word, item_start| match word {
+            "pigment" => s.pigment(item_start),
+            "finish" => s.finish(item_start),
+            _ => s.transform(word, item_start)?,
+        })
+    }
+
+    /// `word { item … }`, each item starting with a word that `item` reads (from the word and
+    /// where it starts).
+    fn block(
+        &mut self,
+        kind: NodeKind,
+        word: &str,
+        start: usize,
+        mut item: impl FnMut(&mut Self, &'a str, usize) -> Option<Node>,
+    ) -> Option<Node> {
+        let mut node = self.node(kind, word, start);
         self.skip_blanks();
         self.eat(b'{')?;
         loop {
@@ -294,12 +295,7 @@ impl<'a> Scanner<'a> {
                 break;
             }
             let (word, item_start) = self.word()?;
-            let item = match word {
-                "pigment" => self.pigment(item_start)?,
-                "finish" => self.finish(item_start)?,
-                _ => self.transform(word, item_start)??,
-            };
-            node.children.push(item);
+            node.children.push(item(self, word, item_start)?);
         }
         node.span = self.span(start, self.at);
         Some(node)
