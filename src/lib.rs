@@ -34,6 +34,7 @@ pub mod ir;
 pub mod memory;
 pub mod meshfile;
 pub mod output;
+pub mod pattern;
 
 /// Declares the pipeline's inner stages: public with the feature `internals`, private
 /// without.

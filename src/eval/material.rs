@@ -4,7 +4,8 @@ use super::value::{colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
 use crate::ir::{
-    self, Colour, ColourMap, ImageMap, Interior, Pattern, Pigment, Rgb, Texture, Transform,
+    self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
+    PigmentKind, Rgb, Texture, Transform, WaveShape,
 };
 use crate::syntax::{ExprKind, Node, NodeKind};
 use std::sync::Arc;
@@ -68,40 +69,35 @@ impl Evaluator<'_> {
                     ev.warn_bare_colour(&v, item.word_span, "in a pigment");
                     pigment = pigment_from(v, item.word_span, pigment.clone())?;
                 }
-                NodeKind::Checker => {
-                    let blue = Colour {
-                        rgb: Rgb::new(0.0, 0.0, 1.0),
-                        ..Colour::default()
+                NodeKind::Pattern => {
+                    let (kind, list) = ev.pattern_kind(item)?;
+                    let map = match list {
+                        Some(colours) => ColourMap {
+                            entries: colours
+                                .into_iter()
+                                .enumerate()
+                                .map(|(i, c)| (i as f64, c))
+                                .collect(),
+                        },
+                        None => ColourMap::default(),
                     };
-                    let green = Colour {
-                        rgb: Rgb::new(0.0, 1.0, 0.0),
-                        ..Colour::default()
-                    };
-                    let mut colours = [blue, green];
-                    for (slot, e) in colours.iter_mut().zip(&item.args) {
-                        let v = ev.eval(e)?;
-                        *slot = to_colour(
-                            colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?,
-                        );
-                    }
-                    pigment.pattern = Pattern::Checker(Box::new(colours));
+                    pigment.kind = PigmentKind::Pattern(Box::new(PatternPigment {
+                        pattern: Pattern::new(kind),
+                        map,
+                    }));
                 }
-                NodeKind::Gradient => {
-                    let axis = ev.vec3(&item.args[0])?;
-                    if axis.length_squared() == 0.0 {
+                NodeKind::PatternModifier => match &mut pigment.kind {
+                    PigmentKind::Pattern(p) => ev.pattern_modifier(item, &mut p.pattern)?,
+                    _ => {
                         return Err(Diagnostic::error(
-                            "gradient direction is the zero vector",
-                            item.args[0].span,
+                            format!("`{}` modifies a pattern, and this pigment has none", item.word),
+                            item.word_span,
                         ));
                     }
-                    pigment.pattern = Pattern::Gradient {
-                        axis: axis.normalize(),
-                        map: ColourMap::default(),
-                    };
-                }
+                },
                 NodeKind::ImageMap => {
                     let image = ev.image_map(item)?;
-                    pigment.pattern = Pattern::ImageMap(Arc::new(image));
+                    pigment.kind = PigmentKind::ImageMap(Arc::new(image));
                 }
                 NodeKind::ColourMap => map = Some((ev.colour_map(item)?, item.word_span)),
                 _ if Self::is_transform(item) => {
@@ -113,17 +109,90 @@ impl Evaluator<'_> {
             Ok(())
         })?;
         if let Some((m, map_span)) = map {
-            match &mut pigment.pattern {
-                Pattern::Gradient { map, .. } => *map = m,
+            match &mut pigment.kind {
+                PigmentKind::Pattern(p) if p.pattern.kind.list_len().is_none() => p.map = m,
                 _ => {
                     return Err(Diagnostic::error(
-                        "color_map applies only to a pattern such as gradient",
+                        "color_map applies only to a pattern such as gradient (checker takes a list of colours)",
                         map_span,
                     ));
                 }
             }
         }
         Ok(pigment)
+    }
+
+    /// The evaluator's pattern table: the pattern `item` names, from its arguments, and for a
+    /// discrete pattern its list of colours (the arguments, else POV-Ray's defaults).
+    pub(super) fn pattern_kind(&mut self, item: &Node) -> Result<(PatternKind, Option<Vec<Colour>>)> {
+        let colour = |r: f64, g: f64, b: f64| Colour {
+            rgb: Rgb::new(r, g, b),
+            ..Colour::default()
+        };
+        let (kind, defaults) = match item.word.as_str() {
+            "checker" => (PatternKind::Checker, vec![colour(0.0, 0.0, 1.0), colour(0.0, 1.0, 0.0)]),
+            "gradient" => {
+                let [e] = self.pattern_args::<1>(item)?;
+                let axis = self.vec3(e)?;
+                if axis.length_squared() == 0.0 {
+                    return Err(Diagnostic::error("gradient direction is the zero vector", e.span));
+                }
+                return Ok((PatternKind::Gradient(axis.normalize()), None));
+            }
+            _ => return Err(self.unknown_word(&item.word, item.word_span)),
+        };
+        // A discrete pattern: up to one colour an entry.
+        if item.args.len() > defaults.len() {
+            return Err(Diagnostic::error(
+                format!("`{}` takes at most {} colours", item.word, defaults.len()),
+                item.args[defaults.len()].span,
+            ));
+        }
+        let mut colours = defaults;
+        for (slot, e) in colours.iter_mut().zip(&item.args) {
+            let v = self.eval(e)?;
+            *slot = to_colour(colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?);
+        }
+        Ok((kind, Some(colours)))
+    }
+
+    /// The `N` arguments a pattern takes, or an error at the first one missing or too many.
+    fn pattern_args<'n, const N: usize>(&self, item: &'n Node) -> Result<[&'n crate::syntax::Expr; N]> {
+        match <&[crate::syntax::Expr; N]>::try_from(item.args.as_slice()) {
+            Ok(args) => Ok(args.each_ref()),
+            Err(_) => {
+                let at = item.args.get(N).map_or(item.span, |e| e.span);
+                Err(Diagnostic::error(
+                    format!(
+                        "`{}` takes {N} argument{}, here {}",
+                        item.word,
+                        if N == 1 { "" } else { "s" },
+                        item.args.len()
+                    ),
+                    at,
+                ))
+            }
+        }
+    }
+
+    /// A pattern modifier (`frequency 2`, `phase 0.5`, `ramp_wave` …) applied to `pattern`.
+    pub(super) fn pattern_modifier(&mut self, item: &Node, pattern: &mut Pattern) -> Result<()> {
+        let value = |ev: &mut Self| -> Result<f64> {
+            match item.args.first() {
+                Some(e) => ev.float(e),
+                None => Err(Diagnostic::error(
+                    format!("`{}` needs a value", item.word),
+                    item.word_span,
+                )),
+            }
+        };
+        match item.word.as_str() {
+            "frequency" => pattern.wave.frequency = value(self)?,
+            "phase" => pattern.wave.phase = value(self)?,
+            "ramp_wave" => pattern.wave.shape = WaveShape::Ramp,
+            _ => return Err(self.unknown_word(&item.word, item.word_span)),
+        }
+        Ok(())
     }
 
     /// Whether `item` is just the name of a declared colour or pigment (nothing after it).
@@ -464,7 +533,7 @@ fn pigment_from(v: Value, span: crate::diag::Span, pigment: Pigment) -> Result<P
         Value::Pigment(p) => p,
         other => match colour5(&other) {
             Some(c) => Pigment {
-                pattern: Pattern::Solid(to_colour(c)),
+                kind: PigmentKind::Solid(to_colour(c)),
                 transform: pigment.transform,
             },
             None => return Err(type_error("a colour or pigment", &other, span)),

@@ -7,6 +7,8 @@
 use glam::{DMat4, DVec3, Vec3};
 use std::sync::Arc;
 
+pub use crate::pattern::{Pattern, PatternKind, Wave, WaveShape};
+
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;
 
@@ -362,14 +364,14 @@ pub struct Texture {
     pub finish: Arc<Finish>,
 }
 
-/// A pigment: a pattern of colours placed in space.
+/// A pigment: colours placed in space.
 ///
 /// `.rt`: `pigment { color rgb <..> }`, `pigment { checker C0, C1 scale 2 }`,
 /// `pigment { gradient y color_map { [0 C0] [1 C1] } }`, `pigment { image_map { png "f.png" } }`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pigment {
     /// The colours.
-    pub pattern: Pattern,
+    pub kind: PigmentKind,
     /// World from pattern space: the pigment's own transformations, then those of its texture
     /// and of its object made after it was attached (POV-Ray moves a texture with its object
     /// only if it was attached first). `None` is the identity.
@@ -380,39 +382,41 @@ impl Pigment {
     /// Whether no point of the pigment lets light through (an image map may, by its alpha).
     pub fn is_opaque(&self) -> bool {
         let opaque = |c: &Colour| c.filter == 0.0 && c.transmit == 0.0;
-        match &self.pattern {
-            Pattern::Solid(c) => opaque(c),
-            Pattern::Checker(cs) => cs.iter().all(opaque),
-            Pattern::Gradient { map, .. } => map.entries.iter().all(|(_, c)| opaque(c)),
-            Pattern::ImageMap(_) => false,
+        match &self.kind {
+            PigmentKind::Solid(c) => opaque(c),
+            PigmentKind::Pattern(p) => p.map.entries.iter().all(|(_, c)| opaque(c)),
+            PigmentKind::ImageMap(_) => false,
         }
     }
 
     /// A solid colour.
     pub fn solid(c: Colour) -> Pigment {
         Pigment {
-            pattern: Pattern::Solid(c),
+            kind: PigmentKind::Solid(c),
             transform: None,
         }
     }
 }
 
-/// Colour patterns.
+/// What a pigment's colours are.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Pattern {
+pub enum PigmentKind {
     /// One colour everywhere.
     Solid(Colour),
-    /// `checker C0, C1`: unit cubes, `C0` where ⌊x⌋ + ⌊y⌋ + ⌊z⌋ is even.
-    Checker(Box<[Colour; 2]>),
-    /// `gradient V`: the colour map at the fraction of `p·V̂`.
-    Gradient {
-        /// Unit direction.
-        axis: DVec3,
-        /// The colour map.
-        map: ColourMap,
-    },
+    /// A pattern's value at each point, looked up in a colour map.
+    Pattern(Box<PatternPigment>),
     /// `image_map { png "file" … }`: planar projection onto the unit square of the x-y plane.
     ImageMap(Arc<ImageMap>),
+}
+
+/// `pigment { PATTERN color_map {…} }`, or a discrete pattern with its list of colours
+/// (`checker C0, C1`: the map holds C0 at 0 and C1 at 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternPigment {
+    /// Where the colours change.
+    pub pattern: Pattern,
+    /// Colours by pattern value.
+    pub map: ColourMap,
 }
 
 /// `color_map { [v C] … }`: colours at increasing values, interpolated between.

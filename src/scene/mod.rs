@@ -368,11 +368,10 @@ pub struct SurfaceHit {
 /// A cheap hash of the parts of a texture that most often differ (pattern kind, colour, main
 /// finish amounts); textures with equal fingerprints are then compared in full.
 fn fingerprint(t: &ir::Texture) -> u64 {
-    let (kind, colour) = match &t.pigment.pattern {
-        ir::Pattern::Solid(c) => (0, Some(c)),
-        ir::Pattern::Checker(_) => (1, None),
-        ir::Pattern::Gradient { .. } => (2, None),
-        ir::Pattern::ImageMap(_) => (3, None),
+    let (kind, colour) = match &t.pigment.kind {
+        ir::PigmentKind::Solid(c) => (0, Some(c)),
+        ir::PigmentKind::Pattern(_) => (1, None),
+        ir::PigmentKind::ImageMap(_) => (2, None),
     };
     let f = &t.finish;
     let mut words = [kind, 0, 0, 0, 0, 0, 0, 0, 0, 0];

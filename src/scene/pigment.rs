@@ -1,34 +1,48 @@
 //! Pigment evaluation: the colour of a pattern at a point (POV-Ray §12.2).
 
 use super::{Colour, Rgb};
-use crate::ir::{ColourMap, ImageMap, Pattern};
+use crate::ir::{self, ImageMap};
+use crate::pattern::Pattern;
 use glam::{DMat4, DVec3};
-
-/// POV-Ray's tolerance in the checker pattern: `floor(x + 1e-10)`.
-const CHECKER_TOLERANCE: f64 = 1e-10;
+use std::sync::Arc;
 
 /// A pigment placed in the world.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pigment {
-    /// The colours.
-    pub pattern: Pattern,
+    kind: Kind,
     /// Pattern space from world space; `None` is the identity.
-    pub pattern_from_world: Option<Box<DMat4>>,
+    pattern_from_world: Option<Box<DMat4>>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Kind {
+    Solid(Colour),
+    /// A pattern's value looked up in (value, colour) entries.
+    Pattern(Box<(Pattern, Box<[(f64, Colour)]>)>),
+    Image(Arc<ImageMap>),
 }
 
 impl Pigment {
     /// The pigment as placed by the IR.
-    pub fn new(p: &crate::ir::Pigment) -> Pigment {
+    pub fn new(p: &ir::Pigment) -> Pigment {
+        let kind = match &p.kind {
+            ir::PigmentKind::Solid(c) => Kind::Solid(*c),
+            ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new((
+                pp.pattern.clone(),
+                pp.map.entries.clone().into_boxed_slice(),
+            ))),
+            ir::PigmentKind::ImageMap(image) => Kind::Image(Arc::clone(image)),
+        };
         Pigment {
-            pattern: p.pattern.clone(),
+            kind,
             pattern_from_world: p.transform.as_ref().map(|t| Box::new(t.matrix.inverse())),
         }
     }
 
     /// The colour everywhere, if the pigment is a solid colour.
     pub fn solid(&self) -> Option<Colour> {
-        match &self.pattern {
-            Pattern::Solid(c) => Some(*c),
+        match &self.kind {
+            Kind::Solid(c) => Some(*c),
             _ => None,
         }
     }
@@ -36,46 +50,26 @@ impl Pigment {
     /// Whether the pigment may let light through somewhere (filter or transmit non-zero).
     pub fn may_be_transparent(&self) -> bool {
         let see_through = |c: &Colour| c.filter != 0.0 || c.transmit != 0.0;
-        match &self.pattern {
-            Pattern::Solid(c) => see_through(c),
-            Pattern::Checker(cs) => cs.iter().any(see_through),
-            Pattern::Gradient { map, .. } => map.entries.iter().any(|(_, c)| see_through(c)),
-            Pattern::ImageMap(_) => true,
+        match &self.kind {
+            Kind::Solid(c) => see_through(c),
+            Kind::Pattern(pm) => pm.1.iter().any(|(_, c)| see_through(c)),
+            Kind::Image(_) => true,
         }
     }
 
     /// The colour at world point `p`.
     pub fn colour_at(&self, p: DVec3) -> Colour {
-        if let Pattern::Solid(c) = &self.pattern {
+        if let Kind::Solid(c) = &self.kind {
             return *c;
         }
         let q = self
             .pattern_from_world
             .as_ref()
             .map_or(p, |m| m.transform_point3(p));
-        match &self.pattern {
-            Pattern::Solid(c) => *c,
-            Pattern::Checker(cs) => {
-                let k = (q.x + CHECKER_TOLERANCE).floor()
-                    + (q.y + CHECKER_TOLERANCE).floor()
-                    + (q.z + CHECKER_TOLERANCE).floor();
-                cs[(k.rem_euclid(2.0) != 0.0) as usize]
-            }
-            Pattern::Gradient { axis, map } => {
-                // POV-Ray: values above 1 wrap with fmod 1 (so 1.0 stays 1.0), then everything
-                // wraps with fmod 1.00001 and negatives are lifted into [0, 1): negative values
-                // drift by 1e-5 per unit, as in POV-Ray.
-                let mut v = q.dot(*axis);
-                if v > 1.0 {
-                    v %= 1.0;
-                }
-                v %= 1.00001;
-                if v < 0.0 {
-                    v -= v.floor();
-                }
-                lookup(map, v)
-            }
-            Pattern::ImageMap(image) => image_colour(image, q),
+        match &self.kind {
+            Kind::Solid(c) => *c,
+            Kind::Pattern(pm) => lookup(&pm.1, pm.0.value(q)),
+            Kind::Image(image) => image_colour(image, q),
         }
     }
 }
@@ -83,11 +77,10 @@ impl Pigment {
 /// The colour map at `v`: the first colour below the first entry, the last at or above the
 /// last, otherwise linear interpolation of all five channels toward the first entry whose
 /// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).
-pub fn lookup(map: &ColourMap, v: f64) -> Colour {
+pub fn lookup(entries: &[(f64, Colour)], v: f64) -> Colour {
     // POV-Ray's Search_Blend_Map, which also defines maps whose keys decrease: at or above
     // the last key, the last colour; otherwise scan from the first entry to the first key
     // not below `v` and blend with the entry scanned before it.
-    let entries = &map.entries;
     let last = entries.len() - 1;
     if v >= entries[last].0 {
         return entries[last].1;
@@ -168,6 +161,7 @@ fn image_colour(image: &ImageMap, q: DVec3) -> Colour {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ir::ColourMap;
 
     fn c(v: f64) -> Colour {
         Colour {
@@ -178,15 +172,19 @@ mod tests {
     }
 
     #[test]
-    fn checker_alternates_by_unit_cube() {
-        let p = Pigment {
-            pattern: Pattern::Checker(Box::new([c(0.0), c(1.0)])),
-            pattern_from_world: None,
-        };
-        assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.0));
-        assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(1.0));
-        assert_eq!(p.colour_at(DVec3::new(-0.5, 0.5, 0.5)), c(1.0));
-        assert_eq!(p.colour_at(DVec3::new(1.5, 1.5, 0.5)), c(0.0));
+    fn checker_picks_its_two_colours_by_unit_cube() {
+        let p = Pigment::new(&ir::Pigment {
+            kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
+                pattern: Pattern::new(crate::pattern::PatternKind::Checker),
+                map: ColourMap {
+                    entries: vec![(0.0, c(0.2)), (1.0, c(0.7))],
+                },
+            })),
+            transform: None,
+        });
+        assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.2));
+        assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(0.7));
+        assert_eq!(p.colour_at(DVec3::new(-0.5, 0.5, 0.5)), c(0.7));
     }
 
     #[test]
@@ -194,15 +192,15 @@ mod tests {
         let map = ColourMap {
             entries: vec![(0.2, c(0.0)), (0.6, c(1.0))],
         };
-        assert_eq!(lookup(&map, 0.0), c(0.0));
-        assert!((lookup(&map, 0.4).rgb.x - 0.5).abs() < 1e-12);
-        assert_eq!(lookup(&map, 0.9), c(1.0));
+        assert_eq!(lookup(&map.entries, 0.0), c(0.0));
+        assert!((lookup(&map.entries, 0.4).rgb.x - 0.5).abs() < 1e-12);
+        assert_eq!(lookup(&map.entries, 0.9), c(1.0));
         // Two entries at the same value: the earlier one wins exactly at that value.
         let map = ColourMap {
             entries: vec![(0.0, c(0.0)), (0.5, c(0.2)), (0.5, c(0.8)), (1.0, c(1.0))],
         };
-        assert_eq!(lookup(&map, 0.5), c(0.2));
-        assert!(lookup(&map, 0.5000001).rgb.x > 0.79);
+        assert_eq!(lookup(&map.entries, 0.5), c(0.2));
+        assert!(lookup(&map.entries, 0.5000001).rgb.x > 0.79);
     }
 
     #[test]
@@ -212,31 +210,16 @@ mod tests {
         let map = ColourMap {
             entries: vec![(0.0, c(0.0)), (0.6, c(0.6)), (0.3, c(0.3)), (1.0, c(1.0))],
         };
-        assert!((lookup(&map, 0.3).rgb.x - 0.3).abs() < 1e-12);
-        assert!((lookup(&map, 0.59).rgb.x - 0.59).abs() < 1e-12);
-        let at = lookup(&map, 0.61).rgb.x;
+        assert!((lookup(&map.entries, 0.3).rgb.x - 0.3).abs() < 1e-12);
+        assert!((lookup(&map.entries, 0.59).rgb.x - 0.59).abs() < 1e-12);
+        let at = lookup(&map.entries, 0.61).rgb.x;
         assert!((at - (0.3 + 0.7 * (0.31 / 0.7))).abs() < 1e-12, "{at}");
         // Keys 0.8 then 0.2: below 0.2 the first colour, from 0.2 on the last.
         let map = ColourMap {
             entries: vec![(0.8, c(0.0)), (0.2, c(1.0))],
         };
-        assert_eq!(lookup(&map, 0.1), c(0.0));
-        assert_eq!(lookup(&map, 0.5), c(1.0));
+        assert_eq!(lookup(&map.entries, 0.1), c(0.0));
+        assert_eq!(lookup(&map.entries, 0.5), c(1.0));
     }
 
-    #[test]
-    fn gradient_wraps_negative_values() {
-        let p = Pigment {
-            pattern: Pattern::Gradient {
-                axis: DVec3::Y,
-                map: ColourMap::default(),
-            },
-            pattern_from_world: None,
-        };
-        assert!((p.colour_at(DVec3::new(0.0, -0.25, 0.0)).rgb.x - 0.75).abs() < 1e-4);
-        // POV-Ray's drift on the negative side: −50.5 gives 0.5005.
-        assert!((p.colour_at(DVec3::new(0.0, -50.5, 0.0)).rgb.x - 0.5005).abs() < 1e-9);
-        assert!((p.colour_at(DVec3::new(0.0, 1.0, 0.0)).rgb.x - 1.0).abs() < 1e-12);
-        assert!((p.colour_at(DVec3::new(0.0, 1.25, 0.0)).rgb.x - 0.25).abs() < 1e-12);
-    }
 }

@@ -113,8 +113,10 @@ pub enum NodeKind {
     AreaLight,
     Adaptive,
     AreaIllumination,
-    Checker,
-    Gradient,
+    /// A pattern: its keyword (`word`) and arguments (`gradient y`, `checker C0, C1`).
+    Pattern,
+    /// A pattern modifier: keyword and optional value (`turbulence 0.5`, `sine_wave`).
+    PatternModifier,
     ColourMap,
     MapEntry,
     ImageMap,
@@ -812,8 +814,8 @@ impl Lower {
             Rule::area_light => NodeKind::AreaLight,
             Rule::adaptive => NodeKind::Adaptive,
             Rule::area_illumination => NodeKind::AreaIllumination,
-            Rule::checker => NodeKind::Checker,
-            Rule::gradient => NodeKind::Gradient,
+            Rule::pattern => NodeKind::Pattern,
+            Rule::pattern_modifier => NodeKind::PatternModifier,
             Rule::colour_map => NodeKind::ColourMap,
             Rule::map_entry => NodeKind::MapEntry,
             Rule::image_map => NodeKind::ImageMap,
@@ -1264,8 +1266,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_adaptive
             | kw_area_illumination
             | kw_sky_sphere
-            | kw_checker
-            | kw_gradient
+            | pattern_kw
+            | modifier_kw
             | kw_color_map
             | kw_colour_map
             | kw_image_map

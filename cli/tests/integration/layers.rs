@@ -10,10 +10,13 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("diag", &[]),
     ("syntax", &["diag"]),
     // meshfile: `mesh_file { }` reads OBJ and PLY files while evaluating.
-    ("eval", &["syntax", "ir", "diag", "meshfile"]),
-    ("ir", &["diag"]),
+    ("eval", &["syntax", "ir", "diag", "meshfile", "pattern"]),
+    ("ir", &["diag", "pattern"]),
     ("geometry", &[]),
-    ("scene", &["ir", "geometry"]),
+    // pattern: functions of a point (what a pigment or normal looks up), used by the IR's
+    // materials and by the render-ready ones.
+    ("pattern", &[]),
+    ("scene", &["ir", "geometry", "pattern"]),
     ("render", &["scene", "geometry", "film"]),
     // output: temporary files removed on interrupt or when memory runs out.
     ("film", &["output"]),
