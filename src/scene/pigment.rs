@@ -17,9 +17,16 @@ pub struct Pigment {
 #[derive(Clone, Debug, PartialEq)]
 enum Kind {
     Solid(Colour),
-    /// A pattern's value looked up in (value, colour) entries.
-    Pattern(Box<(Pattern, Box<[(f64, Colour)]>)>),
+    /// A pattern's value looked up in its map.
+    Pattern(Box<Mapped>),
     Image(Arc<ImageMap>),
+}
+
+/// A pattern and the (value, colour) entries its values are looked up in.
+#[derive(Clone, Debug, PartialEq)]
+struct Mapped {
+    pattern: Pattern,
+    map: Box<[(f64, Colour)]>,
 }
 
 impl Pigment {
@@ -27,10 +34,10 @@ impl Pigment {
     pub fn new(p: &ir::Pigment) -> Pigment {
         let kind = match &p.kind {
             ir::PigmentKind::Solid(c) => Kind::Solid(*c),
-            ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new((
-                pp.pattern.clone(),
-                pp.map.entries.clone().into_boxed_slice(),
-            ))),
+            ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new(Mapped {
+                pattern: pp.pattern.clone(),
+                map: pp.map.entries.clone().into_boxed_slice(),
+            })),
             ir::PigmentKind::ImageMap(image) => Kind::Image(Arc::clone(image)),
         };
         Pigment {
@@ -52,7 +59,7 @@ impl Pigment {
         let see_through = |c: &Colour| c.filter != 0.0 || c.transmit != 0.0;
         match &self.kind {
             Kind::Solid(c) => see_through(c),
-            Kind::Pattern(pm) => pm.1.iter().any(|(_, c)| see_through(c)),
+            Kind::Pattern(m) => m.map.iter().any(|(_, c)| see_through(c)),
             Kind::Image(_) => true,
         }
     }
@@ -68,7 +75,7 @@ impl Pigment {
             .map_or(p, |m| m.transform_point3(p));
         match &self.kind {
             Kind::Solid(c) => *c,
-            Kind::Pattern(pm) => lookup(&pm.1, pm.0.value(q)),
+            Kind::Pattern(m) => lookup(&m.map, m.pattern.value(q)),
             Kind::Image(image) => image_colour(image, q),
         }
     }
