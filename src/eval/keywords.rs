@@ -502,6 +502,8 @@ const SUPPORTED: &[&str] = &[
     "acosh",
     "adaptive",
     "adc_bailout",
+    "agate",
+    "agate_turb",
     "ambient",
     "ambient_light",
     "angle",
@@ -520,11 +522,18 @@ const SUPPORTED: &[&str] = &[
     "bitwise_xor",
     "blue",
     "box",
+    "boxed",
+    "bozo",
     "break",
+    "brick",
+    "brick_size",
     "brilliance",
+    "bump_size",
+    "bumps",
     "camera",
     "case",
     "ceil",
+    "cells",
     "checker",
     "chr",
     "circular",
@@ -537,15 +546,21 @@ const SUPPORTED: &[&str] = &[
     "concat",
     "cone",
     "conserve_energy",
+    "control0",
+    "control1",
     "cos",
     "cosh",
+    "crackle",
+    "cubic_wave",
     "cylinder",
+    "cylindrical",
     "datetime",
     "debug",
     "declare",
     "default",
     "defined",
     "degrees",
+    "dents",
     "deprecated",
     "diffuse",
     "dimension_size",
@@ -577,10 +592,14 @@ const SUPPORTED: &[&str] = &[
     "fog_offset",
     "fog_type",
     "for",
+    "form",
+    "frequency",
     "fresnel",
     "gradient",
+    "granite",
     "gray",
     "green",
+    "hexagon",
     "hollow",
     "if",
     "ifdef",
@@ -594,6 +613,8 @@ const SUPPORTED: &[&str] = &[
     "inverse",
     "ior",
     "jitter",
+    "lambda",
+    "leopard",
     "light_source",
     "ln",
     "local",
@@ -602,6 +623,7 @@ const SUPPORTED: &[&str] = &[
     "look_at",
     "macro",
     "map_type",
+    "marble",
     "material",
     "matrix",
     "max",
@@ -609,31 +631,45 @@ const SUPPORTED: &[&str] = &[
     "mesh",
     "mesh2",
     "metallic",
+    "metric",
     "min",
     "mod",
+    "mortar",
     "no",
     "no_shadow",
+    "noise_generator",
+    "normal",
     "normal_indices",
     "normal_vectors",
     "object",
+    "octaves",
     "off",
+    "offset",
+    "omega",
     "on",
     "once",
+    "onion",
     "open",
     "orient",
     "orthographic",
     "parallel",
     "perspective",
+    "phase",
     "phong",
     "phong_size",
     "pi",
     "pigment",
+    "planar",
     "plane",
     "png",
     "point_at",
+    "poly_wave",
     "pow",
+    "quilted",
+    "radial",
     "radians",
     "radius",
+    "ramp_wave",
     "rand",
     "range",
     "red",
@@ -643,21 +679,30 @@ const SUPPORTED: &[&str] = &[
     "rgbft",
     "rgbt",
     "right",
+    "ripples",
     "rotate",
     "roughness",
     "scale",
+    "scallop_wave",
     "seed",
     "select",
     "shadowless",
     "sin",
+    "sine_wave",
     "sinh",
     "sky",
     "sky_sphere",
     "smooth_triangle",
+    "solid",
     "specular",
     "sphere",
+    "spherical",
+    "spiral1",
+    "spiral2",
     "spotlight",
+    "spotted",
     "sqrt",
+    "square",
     "srgb",
     "srgbf",
     "srgbft",
@@ -680,7 +725,10 @@ const SUPPORTED: &[&str] = &[
     "translate",
     "transmit",
     "triangle",
+    "triangle_wave",
+    "triangular",
     "true",
+    "turbulence",
     "u",
     "undef",
     "union",
@@ -697,7 +745,10 @@ const SUPPORTED: &[&str] = &[
     "vrotate",
     "vstr",
     "warning",
+    "waves",
     "while",
+    "wood",
+    "wrinkles",
     "x",
     "y",
     "yes",
@@ -759,9 +810,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
         "dispersion" | "caustics" => "this interior item is outside trace's subset",
-        "normal" | "bump_map" | "bumps" | "dents" | "wrinkles" | "ripples" | "waves" => {
-            "surface normal perturbation is not supported by trace yet"
-        }
+        "bump_map" => "this normal pattern is not supported by trace yet",
         "irid" | "crand" | "albedo" => "this finish item is outside trace's subset",
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
@@ -770,13 +819,9 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
-        "agate" | "average" | "boxed" | "brick" | "bozo" | "cells" | "crackle" | "cylindrical"
-        | "density_file" | "facets" | "function" | "granite" | "hexagon" | "julia" | "leopard"
-        | "magnet" | "mandel" | "marble" | "onion" | "pavement" | "planar" | "quilted"
-        | "radial" | "spherical" | "spiral1" | "spiral2" | "spotted" | "square" | "tiling"
-        | "triangular" | "wood" | "object_pattern" | "slope" | "aoi" | "turbulence" | "warp"
-        | "frequency" | "phase" | "ramp_wave" | "sine_wave" | "noise_generator" | "octaves"
-        | "omega" | "lambda" | "uv_mapping" | "quick_color" | "quick_colour" | "material_map" => {
+        "average" | "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
+        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "warp" | "uv_mapping"
+        | "quick_color" | "quick_colour" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by" | "bounded_by"
@@ -805,14 +850,13 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "slice" | "smooth" | "sqr"
         | "strength" | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
-        | "water_level" | "offset" | "thickness" => {
+        | "water_level" | "thickness" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "agate_turb" | "altitude" | "black_hole" | "brick_size" | "bump_size" | "cube"
-        | "cubic_wave" | "dist_exp" | "flip" | "form" | "image_pattern" | "major_radius"
-        | "max_iteration" | "mortar" | "no_bump_scale" | "number_of_sides" | "number_of_tiles"
-        | "orientation" | "pigment_pattern" | "poly_wave" | "ratio" | "repeat" | "scallop_wave"
-        | "tile2" | "tiles" | "toroidal" | "triangle_wave" | "turb_depth" | "use_alpha"
+        "altitude" | "black_hole" | "cube" | "dist_exp" | "flip" | "image_pattern" | "major_radius"
+        | "max_iteration" | "no_bump_scale" | "number_of_sides" | "number_of_tiles"
+        | "orientation" | "pigment_pattern" | "ratio" | "repeat"
+        | "tile2" | "tiles" | "toroidal" | "turb_depth" | "use_alpha"
         | "use_color" | "use_colour" | "use_index" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
@@ -825,7 +869,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "all" | "alpha" | "gamma" | "premultiplied" => {
             "this image_map item is not supported by trace yet"
         }
-        "control0" | "control1" | "natural_spline" => "splines are not supported by trace yet",
+        "natural_spline" => "splines are not supported by trace yet",
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }

@@ -530,6 +530,7 @@ impl<'a> Evaluator<'a> {
                 let base = self.default_texture.pigment.clone();
                 Value::Pigment(self.pigment(node, base)?)
             }
+            NodeKind::Normal => Value::Normal(self.normal(node, None)?),
             NodeKind::Finish => {
                 let base = (*self.default_texture.finish).clone();
                 Value::Finish(self.finish_block(node, base)?)
@@ -661,6 +662,17 @@ impl<'a> Evaluator<'a> {
                             .ok_or_else(|| expr::type_error("a colour", &v, arg(0).span))?;
                         items.colour = value::to_colour(c);
                     }
+                }
+                NodeKind::Unknown
+                    if matches!(item.word.as_str(), "turbulence" | "octaves" | "omega" | "lambda") =>
+                {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "unsupported: `{}` in fog (fog turbulence is not supported by trace yet)",
+                            item.word
+                        ),
+                        item.word_span,
+                    ));
                 }
                 _ => return Err(ev.unknown_item(item, "fog")),
             }

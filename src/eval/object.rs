@@ -4,7 +4,7 @@
 //! modifiers on the group apply to every member, and the group's texture to the members that
 //! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
 
-use super::material::move_pigment;
+use super::material::move_texture;
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
@@ -148,11 +148,11 @@ impl ObjectValue {
                 }
             }
             if let Some(tex) = &mut part.texture {
-                move_pigment(&mut tex.pigment, t);
+                move_texture(tex, t);
             }
         }
         if let Some(tex) = &mut self.texture {
-            move_pigment(&mut tex.pigment, t);
+            move_texture(tex, t);
         }
         for light in &mut self.lights {
             super::transform_light(light, &t.matrix);
@@ -388,15 +388,19 @@ impl Evaluator<'_> {
                 self.set_texture(object, texture, m)?;
             }
 
-            NodeKind::Pigment | NodeKind::Finish => {
+            NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
                 let mut texture = object
                     .texture
                     .take()
                     .unwrap_or_else(|| self.default_texture.clone());
-                if m.kind == NodeKind::Pigment {
-                    texture.pigment = self.pigment(m, texture.pigment.clone())?;
-                } else {
-                    texture.finish = self.shared_finish_block(m, &texture.finish)?;
+                match m.kind {
+                    NodeKind::Pigment => {
+                        texture.pigment = self.pigment(m, texture.pigment.clone())?
+                    }
+                    NodeKind::Normal => {
+                        texture.normal = Some(Box::new(self.normal(m, texture.normal.take())?))
+                    }
+                    _ => texture.finish = self.shared_finish_block(m, &texture.finish)?,
                 }
                 object.texture = Some(texture);
             }

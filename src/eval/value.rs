@@ -39,6 +39,8 @@ pub enum Value {
     /// A colour: red, green, blue, filter, transmit.
     Colour([f64; 5]),
     Pigment(ir::Pigment),
+    /// A declared normal.
+    Normal(ir::Normal),
     Finish(ir::Finish),
     Texture(ir::Texture),
     Object(Box<super::ObjectValue>),
@@ -81,6 +83,7 @@ impl Value {
             Value::Vector(_) => "a vector",
             Value::Colour(_) => "a colour",
             Value::Pigment(_) => "a pigment",
+            Value::Normal(_) => "a normal",
             Value::Finish(_) => "a finish",
             Value::Texture(_) => "a texture",
             Value::Object(_) => "an object",

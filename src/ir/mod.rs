@@ -360,6 +360,8 @@ impl Transform {
 pub struct Texture {
     /// Colour at each point.
     pub pigment: Pigment,
+    /// The perturbation of the surface normal, if any.
+    pub normal: Option<Box<Normal>>,
     /// How light interacts with the surface (shared: most objects keep the default).
     pub finish: Arc<Finish>,
 }
@@ -396,6 +398,19 @@ impl Pigment {
             transform: None,
         }
     }
+}
+
+/// A normal perturbation: a pattern whose slope tilts the surface normal.
+///
+/// `.rt`: `normal { bumps 0.5 scale 0.2 }`, `normal { gradient x, 1 }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Normal {
+    /// The pattern (its wave and modifiers included).
+    pub pattern: Pattern,
+    /// The bump amount (`bumps 0.5`, `bump_size 0.5`).
+    pub amount: f64,
+    /// World from pattern space, as for a pigment. `None` is the identity.
+    pub transform: Option<Box<Transform>>,
 }
 
 /// What a pigment's colours are.
@@ -584,6 +599,7 @@ impl Default for Texture {
     fn default() -> Texture {
         Texture {
             pigment: Pigment::solid(Colour::default()),
+            normal: None,
             finish: Arc::new(Finish::default()),
         }
     }

@@ -1,19 +1,32 @@
 //! Patterns: POV-Ray 3.7's functions from a point of pattern space to a number.
 //!
 //! A pattern says only *where* things change, never *what* they change to: a pigment looks its
-//! value up in a colour map, and later a normal, a texture map or a slope map will look up the
-//! same value. Most patterns give a value in [0, 1] that then goes through the pattern's wave
-//! (frequency, phase and wave shape); the discrete ones (`checker`, and later `hexagon`,
-//! `brick` …) give the index of an entry of their list (0, 1, …) and skip the wave.
+//! value up in a colour map, a normal takes its slope, and later a texture map or a slope map
+//! will look up the same value. Most patterns give a value in [0, 1] that then goes through
+//! the pattern's wave (frequency, phase and wave shape); the discrete ones (`checker`,
+//! `hexagon`, `brick`, `square`, `triangular`) give the index of an entry of their list
+//! (0, 1, …). The formulas are POV-Ray 3.7.0.10's, in the same order of operations, so that
+//! the values are the same to the last bit (unit tests compare with values POV-Ray printed).
 //!
-//! Adding a pattern: a variant of [`PatternKind`], its arm in [`PatternKind::raw`] (or a
-//! function in a file of this module), and the keyword's arm in the evaluator's pattern table
+//! Adding a pattern: a variant of [`PatternKind`] and its arm in [`Pattern::raw`] (a function
+//! here or in a file of this module), and the keyword's arm in the evaluator's pattern table
 //! (`eval::material::pattern_kind`).
 
-use glam::DVec3;
+pub mod noise;
 
-/// POV-Ray's tolerance in the checker pattern: `floor(x + 1e-10)`.
-const CHECKER_TOLERANCE: f64 = 1e-10;
+use glam::DVec3;
+use noise::{Turbulence, dnoise, noise, trunc_i32};
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::sync::OnceLock;
+
+/// POV-Ray's `EPSILON`.
+const EPSILON: f64 = 1.0e-10;
+
+/// POV-Ray's `TWO_M_PI` (the same double as τ).
+const TWO_PI: f64 = std::f64::consts::TAU;
+
+/// Number of wave sources for `ripples` and `waves` (POV-Ray's default `number_of_waves`).
+const WAVES: usize = 10;
 
 /// A pattern with its modifiers, in pattern space (the pigment or normal carries the
 /// transformation into it).
@@ -21,27 +34,225 @@ const CHECKER_TOLERANCE: f64 = 1e-10;
 pub struct Pattern {
     /// Which function.
     pub kind: PatternKind,
-    /// What happens to the function's value before it is looked up (value patterns only).
+    /// What happens to the function's value before it is looked up.
     pub wave: Wave,
+    /// `turbulence …`: POV-Ray's classic turbulence, applied after the transformations. It
+    /// displaces the point, except for `marble` and `wood`, whose formulas use it instead
+    /// (and `agate`, which always has one, uses it both ways).
+    pub turbulence: Option<Box<Turbulence>>,
+    /// `noise_generator` 1, 2 or 3; 0 is the scene's (`global_settings`, default 2).
+    pub noise_generator: u8,
 }
 
 impl Pattern {
-    /// A pattern with the default wave (ramp, frequency 1, phase 0).
+    /// A pattern with POV-Ray's defaults for its kind (wave, frequency, turbulence).
     pub fn new(kind: PatternKind) -> Pattern {
+        let mut wave = Wave::default();
+        match kind {
+            PatternKind::Marble
+            | PatternKind::Wood
+            | PatternKind::Spiral1(_)
+            | PatternKind::Spiral2(_) => wave.shape = WaveShape::Triangle,
+            // POV-Ray skips the frequency step for these (a `frequency` after the pattern
+            // turns it back on).
+            PatternKind::Quilted { .. } => wave.frequency = 0.0,
+            _ if kind.list_len().is_some() => wave.frequency = 0.0,
+            _ => {}
+        }
+        let turbulence = matches!(kind, PatternKind::Agate { .. }).then(Box::default);
         Pattern {
             kind,
-            wave: Wave::default(),
+            wave,
+            turbulence,
+            noise_generator: 0,
         }
     }
 
-    /// The value at point `p` of pattern space: an entry index for a discrete pattern, else a
-    /// value in [0, 1].
+    /// The value at point `p` of pattern space: an entry index for a discrete pattern, else
+    /// (usually) a value in [0, 1].
     pub fn value(&self, p: DVec3) -> f64 {
-        let v = self.kind.raw(p);
-        if self.kind.list_len().is_some() {
-            v
+        self.wave.apply(self.raw(self.warp(p)))
+    }
+
+    /// The point after the pattern's warps (its classic turbulence, if it displaces).
+    pub fn warp(&self, p: DVec3) -> DVec3 {
+        let mut q = p;
+        if let Some(t) = &self.turbulence
+            && t.amount != DVec3::ZERO
+            && !matches!(self.kind, PatternKind::Marble | PatternKind::Wood)
+        {
+            let d = t.vector(q);
+            q = DVec3::new(
+                q.x + d.x * t.amount.x,
+                q.y + d.y * t.amount.y,
+                q.z + d.z * t.amount.z,
+            );
+        }
+        q.clamp(DVec3::splat(-1e17), DVec3::splat(1e17))
+    }
+
+    /// The noise generator used (the scene's default, 2, if none was given).
+    pub fn generator(&self) -> u8 {
+        if self.noise_generator == 0 {
+            2
         } else {
-            self.wave.apply(v)
+            self.noise_generator
+        }
+    }
+
+    /// The classic turbulence's scalar sum at `p` times its x amount, or 0 without one.
+    fn scalar_turbulence(&self, p: DVec3) -> f64 {
+        self.turbulence
+            .as_ref()
+            .map_or(0.0, |t| t.amount.x * t.scalar(p, self.generator()))
+    }
+
+    /// The function's own value at the warped point `p`, before the wave.
+    pub fn raw(&self, p: DVec3) -> f64 {
+        let generator = self.generator();
+        let DVec3 { x, y, z } = p;
+        match &self.kind {
+            PatternKind::Agate { turb } => {
+                let t = turb
+                    * self
+                        .turbulence
+                        .as_ref()
+                        .map_or(0.0, |t| t.scalar(p, generator));
+                let n = 0.5 * (cycloidal(1.3 * t + 1.1 * z) + 1.0);
+                if n < 0.0 { 0.0 } else { n.min(1.0).powf(0.77) }
+            }
+            PatternKind::Boxed => clip(x.abs().max(y.abs().max(z.abs()))),
+            PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
+            PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
+            PatternKind::Cells => {
+                let cell = |c: f64| (c + EPSILON).floor() as i32;
+                let k = noise::hash3d(cell(x), cell(y), cell(z));
+                pattern_rands()[k].min(1.0)
+            }
+            PatternKind::Checker => {
+                let k =
+                    ((x + EPSILON).floor() + (y + EPSILON).floor() + (z + EPSILON).floor()) as i64;
+                if k & 1 != 0 { 1.0 } else { 0.0 }
+            }
+            PatternKind::Crackle(c) => crackle(p, c, generator),
+            PatternKind::Cylindrical => clip((x * x + z * z).sqrt()),
+            PatternKind::Dents => {
+                let n = noise(p, generator);
+                n * n * n
+            }
+            PatternKind::Gradient(axis) => {
+                // Values above 1 wrap with fmod 1 (so 1.0 stays 1.0); the wave wraps the rest.
+                let r = (x * axis.x + y * axis.y) + z * axis.z;
+                if r > 1.0 { r % 1.0 } else { r }
+            }
+            PatternKind::Granite => {
+                let q = p * 4.0;
+                let (mut s, mut f) = (0.0, 1.0);
+                for _ in 0..6 {
+                    let r = q * f;
+                    let t = if generator == 1 {
+                        (0.5 - noise(r, 1)).abs()
+                    } else {
+                        (1.0 - 2.0 * noise(r, generator)).abs().min(0.5)
+                    };
+                    s += t / f;
+                    f *= 2.0;
+                }
+                s
+            }
+            PatternKind::Hexagon => hexagon(x, z),
+            PatternKind::Leopard => {
+                let v = ((x.sin() + y.sin()) + z.sin()) / 3.0;
+                v * v
+            }
+            PatternKind::Marble => x + self.scalar_turbulence(p),
+            PatternKind::Onion => ((x * x + y * y) + z * z).sqrt() % 1.0,
+            PatternKind::Planar => clip(y.abs()),
+            PatternKind::Quilted { control0, control1 } => {
+                let q = quilt_offset(p);
+                let t = quilt_cubic(q.length_povray(), *control0, *control1);
+                let q = q * t;
+                ((q.x.abs() + q.y.abs()) + q.z.abs()) / 3.0
+            }
+            PatternKind::Radial => {
+                if x.abs() < 0.001 && z.abs() < 0.001 {
+                    0.25
+                } else {
+                    0.25 + (x.atan2(z) + PI) / TWO_PI
+                }
+            }
+            PatternKind::Ripples => {
+                let mut s = 0.0;
+                for (src, _) in wave_sources() {
+                    s +=
+                        cycloidal(source_distance(p, *src) * self.wave.frequency + self.wave.phase);
+                }
+                0.5 * (1.0 + s / WAVES as f64)
+            }
+            PatternKind::Spherical => clip(((x * x + y * y) + z * z).sqrt()),
+            PatternKind::Spiral1(arms) | PatternKind::Spiral2(arms) => {
+                let turb = self.scalar_turbulence(p);
+                let rad = (x * x + y * y).sqrt();
+                let phi = if rad == 0.0 {
+                    0.0
+                } else if x < 0.0 {
+                    3.0 * FRAC_PI_2 - (y / rad).asin()
+                } else {
+                    FRAC_PI_2 + (y / rad).asin()
+                };
+                let v = ((z + rad) + arms * phi / TWO_PI) + turb;
+                if matches!(self.kind, PatternKind::Spiral1(_)) {
+                    v
+                } else {
+                    triangle_wave(rad) + triangle_wave(v)
+                }
+            }
+            PatternKind::Square => {
+                let (vx, vz) = (x.floor() as i64, z.floor() as i64);
+                match (vx & 1 != 0, vz & 1 != 0) {
+                    (true, true) => 2.0,
+                    (true, false) => 3.0,
+                    (false, true) => 1.0,
+                    (false, false) => 0.0,
+                }
+            }
+            PatternKind::Triangular => triangular(x, z),
+            PatternKind::Waves => {
+                let mut s = 0.0;
+                for (src, f) in wave_sources() {
+                    let len = source_distance(p, *src);
+                    s += cycloidal(len * self.wave.frequency * f + self.wave.phase) / f;
+                }
+                0.2 * (2.5 + s / WAVES as f64)
+            }
+            PatternKind::Wood => {
+                let (mut px, mut py) = (0.0, 0.0);
+                if let Some(t) = &self.turbulence {
+                    let d = t.vector(p);
+                    px = cycloidal((x + d.x) * t.amount.x);
+                    py = cycloidal((y + d.y) * t.amount.y);
+                }
+                let (px, py) = (px + x, py + y);
+                (px * px + py * py + 0.0 * 0.0).sqrt()
+            }
+            PatternKind::Wrinkles => {
+                let octave = |q: DVec3| {
+                    let n = noise(q, generator);
+                    if generator > 1 {
+                        (n * 2.0 - 0.5).clamp(0.0, 1.0)
+                    } else {
+                        n
+                    }
+                };
+                let mut v = octave(p);
+                let (mut lambda, mut omega) = (2.0, 0.5);
+                for _ in 1..10 {
+                    v += omega * octave(p * lambda);
+                    lambda *= 2.0;
+                    omega *= 0.5;
+                }
+                v / 2.0
+            }
         }
     }
 }
@@ -49,36 +260,112 @@ impl Pattern {
 /// The pattern functions.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PatternKind {
+    /// `agate`: turbulent bands; `agate_turb` (default 1) scales the turbulence.
+    Agate {
+        /// `agate_turb`.
+        turb: f64,
+    },
+    /// `boxed`: 1 at the origin down to 0 on the unit cube's surface.
+    Boxed,
+    /// `bozo`: noise.
+    Bozo,
+    /// `brick`: 1 in bricks of `brick_size`, 0 in mortar of width `mortar` (two entries).
+    Brick {
+        /// `brick_size` (default <8, 3, 4.5>).
+        size: DVec3,
+        /// `mortar` (default 0.5), as POV-Ray keeps it.
+        mortar: f64,
+    },
+    /// `bumps`: noise (as a normal: its slope, from the vector noise).
+    Bumps,
+    /// `cells`: one random value per unit cube.
+    Cells,
     /// `checker`: unit cubes, 0 where ⌊x⌋ + ⌊y⌋ + ⌊z⌋ is even, else 1 (two entries).
     Checker,
+    /// `crackle`: distances to random points, one per unit cube.
+    Crackle(Box<Crackle>),
+    /// `cylindrical`: 1 on the y axis down to 0 at radius 1.
+    Cylindrical,
+    /// `dents`: noise cubed.
+    Dents,
     /// `gradient V`: the fraction of `p·V̂` (unit `V̂`).
     Gradient(DVec3),
+    /// `granite`: six octaves of folded noise.
+    Granite,
+    /// `hexagon`: hexagons in the x-z plane (three entries).
+    Hexagon,
+    /// `leopard`: regular spots, `((sin x + sin y + sin z) / 3)²`.
+    Leopard,
+    /// `marble`: bands along x, disturbed by the turbulence.
+    Marble,
+    /// `onion`: concentric spheres.
+    Onion,
+    /// `planar`: 1 on the x-z plane down to 0 at |y| = 1.
+    Planar,
+    /// `quilted`: rounded cubes; `control0`, `control1` shape the rounding.
+    Quilted {
+        /// `control0` (default 1).
+        control0: f64,
+        /// `control1` (default 1).
+        control1: f64,
+    },
+    /// `radial`: the angle around the y axis.
+    Radial,
+    /// `ripples`: concentric waves from ten sources.
+    Ripples,
+    /// `spherical`: 1 at the origin down to 0 at radius 1.
+    Spherical,
+    /// `spiral1 N`: an N-armed spiral around the z axis.
+    Spiral1(f64),
+    /// `spiral2 N`: two crossed N-armed spirals.
+    Spiral2(f64),
+    /// `spotted`: noise.
+    Spotted,
+    /// `square`: squares in the x-z plane (four entries).
+    Square,
+    /// `triangular`: triangles in the x-z plane (six entries).
+    Triangular,
+    /// `waves`: waves of ten frequencies from ten sources.
+    Waves,
+    /// `wood`: concentric cylinders around the z axis, disturbed by the turbulence.
+    Wood,
+    /// `wrinkles`: ten octaves of clamped noise.
+    Wrinkles,
+}
+
+/// `crackle`'s parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Crackle {
+    /// `form` (default <−1, 1, 0>): weights of the nearest three distances.
+    pub form: DVec3,
+    /// `metric` (default 2, Euclidean).
+    pub metric: f64,
+    /// `offset` (default 0).
+    pub offset: f64,
+    /// `solid`: the noise at the nearest point instead of distances.
+    pub solid: bool,
+}
+
+impl Default for Crackle {
+    fn default() -> Crackle {
+        Crackle {
+            form: DVec3::new(-1.0, 1.0, 0.0),
+            metric: 2.0,
+            offset: 0.0,
+            solid: false,
+        }
+    }
 }
 
 impl PatternKind {
     /// For a discrete pattern, how many entries its list has (its values are 0, 1, …).
     pub fn list_len(&self) -> Option<usize> {
         match self {
-            PatternKind::Checker => Some(2),
-            PatternKind::Gradient(_) => None,
-        }
-    }
-
-    /// The function's own value at `p`, before the wave.
-    pub fn raw(&self, p: DVec3) -> f64 {
-        match self {
-            PatternKind::Checker => {
-                let k = (p.x + CHECKER_TOLERANCE).floor()
-                    + (p.y + CHECKER_TOLERANCE).floor()
-                    + (p.z + CHECKER_TOLERANCE).floor();
-                f64::from(k.rem_euclid(2.0) != 0.0)
-            }
-            PatternKind::Gradient(axis) => {
-                // POV-Ray: values above 1 wrap with fmod 1 (so 1.0 stays 1.0); the wave then
-                // wraps the rest.
-                let v = p.dot(*axis);
-                if v > 1.0 { v % 1.0 } else { v }
-            }
+            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Hexagon => Some(3),
+            PatternKind::Square => Some(4),
+            PatternKind::Triangular => Some(6),
+            _ => None,
         }
     }
 }
@@ -89,9 +376,9 @@ impl PatternKind {
 pub struct Wave {
     /// The wave's shape.
     pub shape: WaveShape,
-    /// `frequency` (default 1).
+    /// `frequency` (default 1; 0 skips the wrapping). POV-Ray keeps it in single precision.
     pub frequency: f64,
-    /// `phase` (default 0).
+    /// `phase` (default 0), in single precision as POV-Ray keeps it.
     pub phase: f64,
 }
 
@@ -110,21 +397,381 @@ impl Default for Wave {
 pub enum WaveShape {
     /// `ramp_wave`: the wrapped value as it is.
     Ramp,
+    /// `triangle_wave`: up and down again.
+    Triangle,
+    /// `sine_wave`.
+    Sine,
+    /// `scallop_wave`: |sin| of half the value.
+    Scallop,
+    /// `cubic_wave`: the smooth step 3v² − 2v³.
+    Cubic,
+    /// `poly_wave E`: v to the power E.
+    Poly(f64),
 }
 
 impl Wave {
     /// The looked-up value for raw value `v`.
     pub fn apply(&self, v: f64) -> f64 {
-        // POV-Ray wraps with fmod 1.00001 (so 1.0 stays 1.0) and lifts negatives into [0, 1):
-        // negative values drift by 1e-5 a unit, as in POV-Ray.
-        let mut v = (v * self.frequency + self.phase) % 1.00001;
+        let mut v = v;
+        if self.frequency != 0.0 {
+            // POV-Ray wraps with fmod 1.00001 (so 1.0 stays 1.0): values drift by 1e-5 a unit.
+            v = (v * self.frequency + self.phase) % 1.00001;
+        }
         if v < 0.0 {
             v -= v.floor();
         }
         match self.shape {
             WaveShape::Ramp => v,
+            WaveShape::Triangle => triangle_wave(v),
+            WaveShape::Sine => (1.0 + cycloidal(v)) * 0.5,
+            WaveShape::Scallop => cycloidal(v * 0.5).abs(),
+            WaveShape::Cubic => (v * v) * ((-2.0 * v) + 3.0),
+            WaveShape::Poly(e) => v.powf(e),
         }
     }
+}
+
+/// POV-Ray's `cycloidal`: sin(2πv) of the fraction of v, quantised as POV-Ray does.
+pub fn cycloidal(v: f64) -> f64 {
+    if v >= 0.0 {
+        (((v - v.floor()) * 50000.0) / 50000.0 * TWO_PI).sin()
+    } else {
+        0.0 - (((0.0 - (v + (0.0 - v).floor())) * 50000.0) / 50000.0 * TWO_PI).sin()
+    }
+}
+
+/// POV-Ray's `Triangle_Wave`: 0 → 1 → 0 over each unit.
+pub fn triangle_wave(v: f64) -> f64 {
+    let off = if v >= 0.0 {
+        v - v.floor()
+    } else {
+        v + 1.0 + v.abs().floor()
+    };
+    if off >= 0.5 {
+        2.0 * (1.0 - off)
+    } else {
+        2.0 * off
+    }
+}
+
+/// 1 − r within [0, 1], 1 below, 0 above.
+fn clip(r: f64) -> f64 {
+    if r < 0.0 {
+        1.0
+    } else if r > 1.0 {
+        0.0
+    } else {
+        1.0 - r
+    }
+}
+
+/// `|v|` summed in POV-Ray's order.
+trait PovLength {
+    fn length_povray(self) -> f64;
+}
+
+impl PovLength for DVec3 {
+    fn length_povray(self) -> f64 {
+        ((self.x * self.x + self.y * self.y) + self.z * self.z).sqrt()
+    }
+}
+
+/// Distance from wave source `src` (1 at the source itself).
+fn source_distance(p: DVec3, src: DVec3) -> f64 {
+    let len = (p - src).length_povray();
+    if len == 0.0 { 1.0 } else { len }
+}
+
+/// POV-Ray's ten wave sources for `ripples` and `waves`: unit directions from the vector
+/// noise and frequencies from its integer generator.
+pub fn wave_sources() -> &'static [(DVec3, f64); WAVES] {
+    static SOURCES: OnceLock<[(DVec3, f64); WAVES]> = OnceLock::new();
+    SOURCES.get_or_init(|| {
+        let mut seed: i32 = -560_851_967;
+        std::array::from_fn(|i| {
+            let d = dnoise(DVec3::new(i as f64, 0.0, 0.0));
+            let len = d.length_povray();
+            let src = if len == 0.0 {
+                d
+            } else {
+                DVec3::new(d.x / len, d.y / len, d.z / len)
+            };
+            seed = seed.wrapping_mul(1_812_433_253).wrapping_add(12345);
+            let f = f64::from((seed >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+            (src, f)
+        })
+    })
+}
+
+/// POV-Ray's random table for `cells` and `crackle`: the first outputs of the Mersenne
+/// Twister MT19937 with its default seed, divided by 2³².
+fn pattern_rands() -> &'static [f64] {
+    static RANDS: OnceLock<Vec<f64>> = OnceLock::new();
+    RANDS.get_or_init(|| {
+        const N: usize = 624;
+        let mut mt = [0u32; N];
+        mt[0] = 5489;
+        for i in 1..N {
+            mt[i] = 1_812_433_253u32
+                .wrapping_mul(mt[i - 1] ^ (mt[i - 1] >> 30))
+                .wrapping_add(i as u32);
+        }
+        let mut index = N;
+        let mut out = Vec::with_capacity(4100);
+        while out.len() < 4100 {
+            if index == N {
+                for i in 0..N {
+                    let y = (mt[i] & 0x8000_0000) | (mt[(i + 1) % N] & 0x7FFF_FFFF);
+                    let mut next = mt[(i + 397) % N] ^ (y >> 1);
+                    if y & 1 != 0 {
+                        next ^= 0x9908_B0DF;
+                    }
+                    mt[i] = next;
+                }
+                index = 0;
+            }
+            let mut y = mt[index];
+            index += 1;
+            y ^= y >> 11;
+            y ^= (y << 7) & 0x9D2C_5680;
+            y ^= (y << 15) & 0xEFC6_0000;
+            y ^= y >> 18;
+            out.push(f64::from(y) / 4294967296.0);
+        }
+        out
+    })
+}
+
+/// `brick`: 0 in the mortar, 1 in the bricks (running bond, courses along x and z).
+fn brick(p: DVec3, size: DVec3, mortar: f64) -> f64 {
+    let fud = 1e-10 + mortar;
+    let (x, y, z) = (p.x + fud, p.y + fud, p.z + fud);
+    let (mw, mh, md) = (mortar / size.x, mortar / size.y, mortar / size.z);
+    let frac = |a: f64| {
+        let f = a - f64::from(trunc_i32(a));
+        if f < 0.0 { f + 1.0 } else { f }
+    };
+    if frac(y / size.y) <= mh {
+        return 0.0;
+    }
+    let by = frac((y / size.y) * 0.5);
+    if frac(x / size.x) <= mw && by <= 0.5 {
+        return 0.0;
+    }
+    if frac((x / size.x) + 0.5) <= mw && by > 0.5 {
+        return 0.0;
+    }
+    if frac(z / size.z) <= md && by > 0.5 {
+        return 0.0;
+    }
+    if frac((z / size.z) + 0.5) <= md && by <= 0.5 {
+        return 0.0;
+    }
+    1.0
+}
+
+/// `hexagon`: which of three colours tiles the hexagon around (x, z).
+fn hexagon(x: f64, z: f64) -> f64 {
+    let x = x.abs();
+    let z = if z < 0.0 { 5.196152424 - z.abs() } else { z };
+    let mut xs = x / 0.5;
+    let mut zs = z / 0.866025404;
+    xs -= (xs / 6.0).floor() * 6.0;
+    zs -= (zs / 6.0).floor() * 6.0;
+    let xm = (xs.floor() as i64) % 6;
+    let zm = (zs.floor() as i64) % 6;
+    let v = match xm {
+        0 | 5 => match zm {
+            0 | 5 => 0,
+            1 | 2 => 1,
+            _ => 2,
+        },
+        2 | 3 => match zm {
+            0 | 1 => 2,
+            2 | 3 => 0,
+            _ => 1,
+        },
+        _ => {
+            let mut xl = xs - xm as f64;
+            let zl = zs - zm as f64;
+            if (xm + zm) % 2 == 1 {
+                xl = 1.0 - xl;
+            }
+            if xl == 0.0 {
+                xl = 0.0001;
+            }
+            if zl / xl < 1.0 {
+                match zm {
+                    0 | 3 => 0,
+                    2 | 5 => 1,
+                    _ => 2,
+                }
+            } else {
+                match zm {
+                    0 | 3 => 2,
+                    2 | 5 => 0,
+                    _ => 1,
+                }
+            }
+        }
+    };
+    f64::from(v) % 3.0
+}
+
+/// `triangular`: which of six colours tiles the triangle around (x, z).
+fn triangular(x: f64, z: f64) -> f64 {
+    const SQRT3: f64 = 1.7320508075688772;
+    const SQRT3_2: f64 = 0.8660254037844386;
+    let mut xs = x - 3.0 * (x / 3.0).floor();
+    let mut zs = z - SQRT3 * (z / SQRT3).floor();
+    let a = xs.floor() as i64;
+    xs -= a as f64;
+    let b = zs >= SQRT3_2;
+    if b {
+        zs = SQRT3 - zs;
+    }
+    let k = 1.0 - xs;
+    let ans: f64 = if xs != 0.0 && k != 0.0 {
+        let c = u8::from(zs / xs < SQRT3) + 2 * u8::from(zs / k < SQRT3);
+        match c {
+            3 => 0.0,
+            2 => 1.0,
+            1 => 3.0,
+            _ => 0.0,
+        }
+    } else {
+        1.0
+    };
+    let a = a as f64;
+    let ans = if ans as i64 % 2 == 1 {
+        (ans + 2.0 * a) % 6.0
+    } else {
+        (6.0 + ans - 2.0 * a) % 6.0
+    };
+    if b { 5.0 - ans } else { ans }
+}
+
+/// POV-Ray's `FLOOR` macro (which gives −3 for −2.0).
+fn floor_povray(a: f64) -> f64 {
+    if a >= 0.0 {
+        a.floor()
+    } else {
+        0.0 - (0.0 - a).floor() - 1.0
+    }
+}
+
+/// `quilted`'s offset from the centre of the point's unit cube.
+pub fn quilt_offset(p: DVec3) -> DVec3 {
+    let f = |c: f64| (c - floor_povray(c)) - 0.5;
+    DVec3::new(f(p.x), f(p.y), f(p.z))
+}
+
+/// `quilted`'s rounding curve.
+pub fn quilt_cubic(t: f64, p1: f64, p2: f64) -> f64 {
+    let it = 1.0 - t;
+    let it2 = it * it;
+    let t2 = t * t;
+    let t3 = t * t2;
+    ((t3 + 3.0 * t * it2 * p1) + 3.0 * t2 * it * p2) * 1.154700538
+}
+
+/// The 81 neighbour cubes `crackle` searches: offsets −2..=2 on each axis, at most one of
+/// them ±2, in POV-Ray's order.
+fn crackle_offsets() -> &'static [[i32; 3]] {
+    static OFFSETS: OnceLock<Vec<[i32; 3]>> = OnceLock::new();
+    OFFSETS.get_or_init(|| {
+        let mut v = Vec::with_capacity(81);
+        for dx in -2..=2 {
+            for dy in -2..=2 {
+                for dz in -2..=2 {
+                    let twos = [dx, dy, dz].iter().filter(|c: &&i32| c.abs() == 2).count();
+                    if twos <= 1 {
+                        v.push([dx, dy, dz]);
+                    }
+                }
+            }
+        }
+        v
+    })
+}
+
+/// `crackle`: the nearest three random points (one per unit cube) weighted by `form`, or the
+/// noise at the nearest (`solid`).
+fn crackle(p: DVec3, c: &Crackle, generator: u8) -> f64 {
+    let rands = pattern_rands();
+    let cell = [
+        (p.x - EPSILON).floor() as i32,
+        (p.y - EPSILON).floor() as i32,
+        (p.z - EPSILON).floor() as i32,
+    ];
+    let point = |o: &[i32; 3]| {
+        let n = [cell[0] + o[0], cell[1] + o[1], cell[2] + o[2]];
+        let seed = noise::hash3d(n[0] & 0xFFF, n[1] & 0xFFF, n[2] & 0xFFF);
+        DVec3::new(
+            f64::from(n[0]) + rands[seed],
+            f64::from(n[1]) + rands[seed + 1],
+            f64::from(n[2]) + rands[seed + 2],
+        )
+    };
+    let dist = |q: DVec3| {
+        let d = q - p;
+        if c.metric == 2.0 {
+            (d.x * d.x + d.y * d.y) + d.z * d.z
+        } else if c.metric == 1.0 {
+            (d.x.abs() + d.y.abs()) + d.z.abs()
+        } else {
+            (d.x.abs().powf(c.metric) + d.y.abs().powf(c.metric)) + d.z.abs().powf(c.metric)
+        }
+    };
+    let offsets = crackle_offsets();
+    let points: Vec<DVec3> = offsets.iter().map(point).collect();
+    let (mut m1, mut m2, mut m3) = (dist(points[0]), dist(points[1]), dist(points[2]));
+    let mut nearest = 0;
+    if m2 < m1 {
+        std::mem::swap(&mut m1, &mut m2);
+        nearest = 1;
+    }
+    if m3 < m1 {
+        std::mem::swap(&mut m1, &mut m3);
+        nearest = 2;
+    }
+    if m3 < m2 {
+        std::mem::swap(&mut m2, &mut m3);
+    }
+    for (i, q) in points.iter().enumerate().skip(3) {
+        let s = dist(*q);
+        if s < m1 {
+            (m3, m2, m1) = (m2, m1, s);
+            nearest = i;
+        } else if s < m2 {
+            (m3, m2) = (m2, s);
+        } else if s < m3 {
+            m3 = s;
+        }
+    }
+    if c.offset != 0.0 {
+        let o = if c.metric == 2.0 {
+            c.offset * c.offset
+        } else if c.metric == 1.0 {
+            c.offset
+        } else {
+            c.offset.powf(c.metric)
+        };
+        m1 += o;
+        m2 += o;
+        m3 += o;
+    }
+    let v = if c.solid {
+        noise(points[nearest], generator)
+    } else if c.metric == 2.0 {
+        (c.form.x * m1.sqrt() + c.form.y * m2.sqrt()) + c.form.z * m3.sqrt()
+    } else if c.metric == 1.0 {
+        (c.form.x * m1 + c.form.y * m2) + c.form.z * m3
+    } else {
+        let e = 1.0 / c.metric;
+        (c.form.x * m1.powf(e) + c.form.y * m2.powf(e)) + c.form.z * m3.powf(e)
+    };
+    v.clamp(0.0, 1.0)
 }
 
 #[cfg(test)]
@@ -148,5 +795,24 @@ mod tests {
         assert!((p.value(DVec3::new(0.0, -50.5, 0.0)) - 0.5005).abs() < 1e-9);
         assert!((p.value(DVec3::new(0.0, 1.0, 0.0)) - 1.0).abs() < 1e-12);
         assert!((p.value(DVec3::new(0.0, 1.25, 0.0)) - 0.25).abs() < 1e-12);
+    }
+
+    #[test]
+    fn povrays_tables_are_rebuilt_exactly() {
+        // MT19937's first output with the default seed, and entries 4096 and 4097 (the last
+        // that cells and crackle reach).
+        let r = pattern_rands();
+        assert_eq!(r[0], 3499211612.0 / 4294967296.0);
+        assert_eq!(r[4096], 1069229844.0 / 4294967296.0);
+        assert_eq!(r[4097], 1097566470.0 / 4294967296.0);
+        let w = wave_sources();
+        assert_eq!(
+            w[0].0,
+            DVec3::new(-0.6043782132577583, 0.4920484080339806, -0.6265902484802848)
+        );
+        assert_eq!(w[0].1, 0.9191158787805639);
+        assert_eq!(w[9].1, 0.168513138218344);
+        assert_eq!(crackle_offsets().len(), 81);
+        assert_eq!(crackle_offsets()[0], [-2, -1, -1]);
     }
 }

@@ -239,6 +239,10 @@ impl<'a> Tracer<'a> {
             1.0
         };
         let n = hit.normal * facing;
+        let n = material
+            .normal
+            .as_ref()
+            .map_or(n, |normal| normal.perturb(hit.point, n));
         let pigment = colour.rgb;
         let att = if scene.legacy_transparency {
             1.0 - (colour.filter * pigment.max_element() + colour.transmit)

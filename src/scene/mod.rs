@@ -14,12 +14,14 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 mod accel;
+mod normal;
 mod pigment;
 
 pub use crate::ir::{
     AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
     Rgb,
 };
+pub use normal::Normal;
 pub use pigment::Pigment;
 
 /// Index into [`Scene::materials`].
@@ -112,6 +114,8 @@ pub struct Light {
 pub struct Material {
     /// Pigment.
     pub pigment: Pigment,
+    /// Normal perturbation, if any.
+    pub normal: Option<Box<Normal>>,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -483,6 +487,7 @@ impl Scene {
             .into_iter()
             .map(|t| Material {
                 pigment: Pigment::new(&t.pigment),
+                normal: t.normal.as_deref().map(|n| Box::new(Normal::new(n))),
                 finish: Arc::clone(&t.finish),
             })
             .collect();

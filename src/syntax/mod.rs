@@ -86,6 +86,9 @@ pub enum NodeKind {
     // Materials.
     Texture,
     Pigment,
+    /// `normal { PATTERN [amount] … }`.
+    Normal,
+    BumpSize,
     Finish,
     /// `material { texture interior }`.
     Material,
@@ -695,7 +698,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         }
         macro_call => "a macro call",
         semicolon => "`;`",
-        flag | translate | rotate | scale | matrix | transform | texture | pigment | finish => {
+        flag | translate | rotate | scale | matrix | transform | texture | pigment | normal
+        | finish => {
             "an object modifier"
         }
         rbrace => "`}`",
@@ -789,6 +793,8 @@ impl Lower {
             Rule::inverse => NodeKind::Inverse,
             Rule::texture => NodeKind::Texture,
             Rule::pigment => NodeKind::Pigment,
+            Rule::normal => NodeKind::Normal,
+            Rule::bump_size => NodeKind::BumpSize,
             Rule::finish => NodeKind::Finish,
             Rule::material => NodeKind::Material,
             Rule::ambient => NodeKind::Ambient,
@@ -1217,6 +1223,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_no_image
             | kw_no_reflection
             | kw_no_shadow
+            | kw_normal
+            | kw_bump_size
             | kw_object
             | kw_orthographic
             | kw_perspective
