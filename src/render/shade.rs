@@ -238,11 +238,11 @@ impl<'a> Tracer<'a> {
         } else {
             1.0
         };
-        let n = hit.normal * facing;
+        let raw = hit.normal * facing;
         let n = material
             .normal
             .as_ref()
-            .map_or(n, |normal| normal.perturb(hit.point, n));
+            .map_or(raw, |normal| normal.perturb(hit.point, raw));
         let pigment = colour.rgb;
         let att = if scene.legacy_transparency {
             1.0 - (colour.filter * pigment.max_element() + colour.transmit)
@@ -302,8 +302,7 @@ impl<'a> Tracer<'a> {
                     // Total internal reflection: the mirror ray at full weight, instead of the
                     // surface's own reflection.
                     total_internal_reflection = true;
-                    let r = (d + 2.0 * cos_i * n).normalize();
-                    let mirror = scene.spawn(hit, ray.origin, r);
+                    let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                     self.counts.reflected += 1;
                     result += fade * self.trace(&mirror, level + 1, weight, interiors);
                 } else {
@@ -321,8 +320,7 @@ impl<'a> Tracer<'a> {
             self.counts.depth_limited += 1;
         }
         if wants_reflection && level < scene.max_trace_level {
-            let r = (d + 2.0 * cos_i * n).normalize();
-            let reflected = scene.spawn(hit, ray.origin, r);
+            let reflected = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
             self.counts.reflected += 1;
             // POV-Ray weighs a plain reflection by its largest possible value (max of min and
             // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
@@ -485,6 +483,22 @@ fn brilliance(cos: f64, exponent: f64) -> f64 {
     } else {
         0.0
     }
+}
+
+/// The mirror direction of `d` about the shading normal `n` (perturbed, facing the ray), as
+/// POV-Ray makes it: a direction that the perturbation would send into the surface (behind the
+/// unperturbed normal `raw`) is reflected about `raw` instead, or folded back out.
+fn mirror_direction(d: DVec3, n: DVec3, raw: DVec3) -> DVec3 {
+    let mut r = d + (-2.0 * d.dot(n)) * n;
+    let behind = r.dot(raw);
+    if behind < 0.0 {
+        if r.dot(n) < 0.0 {
+            r = d + (-2.0 * d.dot(raw)) * raw;
+        } else {
+            r += (-2.0 * behind) * raw;
+        }
+    }
+    r.normalize()
 }
 
 #[cfg(test)]
