@@ -820,6 +820,28 @@ mod tests {
         (p.pattern.clone(), inverse)
     }
 
+    /// The scene's noise generator: `global_settings`, else 1 before `#version 3.5`, else 2
+    /// (measured: `#version 3.1` gives generator 1's values, no version generator 2's).
+    #[test]
+    fn the_scene_noise_generator_follows_povray() {
+        let generator = |text: &str| {
+            crate::load_str(
+                std::path::Path::new("g.rt"),
+                text.to_string(),
+                &crate::LoadOptions::default(),
+            )
+            .unwrap()
+            .scene
+            .settings
+            .noise_generator
+        };
+        assert_eq!(generator("global_settings { noise_generator 3 }"), 3);
+        assert_eq!(generator("#version 3.1; global_settings { noise_generator 2 }"), 2);
+        assert_eq!(generator("#version 3.1;"), 1);
+        assert_eq!(generator("#version 3.7;"), 2);
+        assert_eq!(generator(""), 2);
+    }
+
     /// Every pattern, with modifiers, against the values POV-Ray 3.7.0.10 printed for the same
     /// pattern (`function { pattern { … } }` evaluated at the same points): the same doubles,
     /// except where a transformation is involved (POV-Ray builds inverse matrices from their

@@ -262,10 +262,12 @@ pub(crate) struct Evaluator<'a> {
     debug_output: String,
     /// The folders the scene may read files from.
     sandbox: sandbox::Sandbox,
-    sky_sphere: Option<ir::Pigment>,
+    sky_sphere: Option<ir::SkySphere>,
     fogs: Vec<ir::Fog>,
     env: HashMap<String, Value>,
     version: Option<f64>,
+    /// `global_settings { noise_generator N }`, if given.
+    noise_generator: Option<u8>,
     assumed_gamma: Option<f64>,
     settings: ir::Settings,
     camera: Option<CameraItems>,
@@ -310,6 +312,7 @@ impl<'a> Evaluator<'a> {
             env: HashMap::new(),
             version: None,
             assumed_gamma: None,
+            noise_generator: None,
             settings: ir::Settings::default(),
             camera: None,
             lights: Vec::new(),
@@ -475,32 +478,7 @@ impl<'a> Evaluator<'a> {
                 self.background = Rgb::new(c[0], c[1], c[2]) * (1.0 - c[4]);
             }
             NodeKind::GlobalSettings => self.global_settings(node)?,
-            NodeKind::SkySphere => {
-                let mut pigment: Option<ir::Pigment> = None;
-                self.each_item(&node.children, &mut |ev, item| {
-                    match item.kind {
-                        NodeKind::Pigment => {
-                            if pigment.is_some() {
-                                return Err(Diagnostic::error(
-                                    "unsupported: a sky_sphere with several (layered) pigments",
-                                    item.word_span,
-                                ));
-                            }
-                            pigment =
-                                Some(ev.pigment(item, ir::Pigment::solid(ir::Colour::default()))?);
-                        }
-                        _ if Self::is_transform(item) => {
-                            let t = ev.transform(item)?;
-                            if let Some(p) = &mut pigment {
-                                material::move_pigment(p, t);
-                            }
-                        }
-                        _ => return Err(ev.unknown_item(item, "sky_sphere")),
-                    }
-                    Ok(())
-                })?;
-                self.sky_sphere = pigment;
-            }
+            NodeKind::SkySphere => self.sky_sphere = Some(self.sky_sphere(node)?),
             _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
                 self.place(object, node.word_span)?;
@@ -522,6 +500,47 @@ impl<'a> Evaluator<'a> {
         Ok(())
     }
 
+    /// `sky_sphere { [Name] pigment {…}… [emission C] transforms }`. The transformations move
+    /// the whole sky, pigments given after them included (as in POV-Ray).
+    fn sky_sphere(&mut self, node: &Node) -> Result<ir::SkySphere> {
+        let mut sky = ir::SkySphere {
+            pigments: Vec::new(),
+            emission: Rgb::ONE,
+        };
+        let mut moved = ir::Transform::IDENTITY;
+        self.each_item(&node.children, &mut |ev, item| {
+            match item.kind {
+                NodeKind::IdentRef => match ev.lookup(item)? {
+                    Value::SkySphere(s) => sky = s,
+                    other => return Err(expr::type_error("a sky_sphere", &other, item.span)),
+                },
+                NodeKind::Pigment => sky
+                    .pigments
+                    .push(ev.pigment(item, ir::Pigment::solid(ir::Colour::default()))?),
+                NodeKind::Emission => {
+                    let v = ev.eval(&item.args[0])?;
+                    sky.emission = rgb(&v)
+                        .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                }
+                _ if Self::is_transform(item) => moved = moved.then(ev.transform(item)?),
+                _ => return Err(ev.unknown_item(item, "sky_sphere")),
+            }
+            Ok(())
+        })?;
+        if sky.pigments.is_empty() {
+            return Err(Diagnostic::error(
+                "this sky_sphere has no pigment (POV-Ray: empty sky_sphere statement)",
+                node.word_span,
+            ));
+        }
+        if moved != ir::Transform::IDENTITY {
+            for p in &mut sky.pigments {
+                material::move_pigment(p, moved);
+            }
+        }
+        Ok(sky)
+    }
+
     /// The value of a declared item (`#declare X = sphere { … }` and the like).
     fn item_value(&mut self, node: &Node) -> Result<Value> {
         Ok(match node.kind {
@@ -531,6 +550,7 @@ impl<'a> Evaluator<'a> {
                 Value::Pigment(self.pigment(node, base)?)
             }
             NodeKind::Normal => Value::Normal(self.normal(node, None)?),
+            NodeKind::SkySphere => Value::SkySphere(self.sky_sphere(node)?),
             NodeKind::Finish => {
                 let base = (*self.default_texture.finish).clone();
                 Value::Finish(self.finish_block(node, base)?)
@@ -579,6 +599,16 @@ impl<'a> Evaluator<'a> {
                     let v = ev.eval(&item.args[0])?;
                     ev.settings.ambient_light = rgb(&v)
                         .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                }
+                NodeKind::PatternModifier if item.word == "noise_generator" => {
+                    let e = item.args.first().ok_or_else(|| {
+                        Diagnostic::error("`noise_generator` needs a value", item.word_span)
+                    })?;
+                    let n = ev.float(e)?;
+                    if !(1.0..=3.0).contains(&n) {
+                        return Err(Diagnostic::error("noise_generator must be 1, 2 or 3", e.span));
+                    }
+                    ev.noise_generator = Some(n as u8);
                 }
                 _ => return Err(ev.unknown_item(item, "global_settings")),
             }
@@ -1002,6 +1032,10 @@ impl<'a> Evaluator<'a> {
             None => Gamma::Off,
         };
         self.settings.legacy_transparency = version < 3.7 - 1e-9;
+        // (POV-Ray's default generator is 2 unless the scene declares a version before 3.5.)
+        self.settings.noise_generator = self.noise_generator.unwrap_or(
+            if self.version.is_some_and(|v| v < 3.5 - 1e-9) { 1 } else { 2 },
+        );
         Ok(Evaluated {
             scene: ir::Scene {
                 camera,

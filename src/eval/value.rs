@@ -41,6 +41,8 @@ pub enum Value {
     Pigment(ir::Pigment),
     /// A declared normal.
     Normal(ir::Normal),
+    /// A declared sky_sphere.
+    SkySphere(ir::SkySphere),
     Finish(ir::Finish),
     Texture(ir::Texture),
     Object(Box<super::ObjectValue>),
@@ -84,6 +86,7 @@ impl Value {
             Value::Colour(_) => "a colour",
             Value::Pigment(_) => "a pigment",
             Value::Normal(_) => "a normal",
+            Value::SkySphere(_) => "a sky_sphere",
             Value::Finish(_) => "a finish",
             Value::Texture(_) => "a texture",
             Value::Object(_) => "an object",

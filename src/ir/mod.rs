@@ -37,8 +37,9 @@ pub struct Scene {
     /// Colour of rays that hit nothing (`background { color C }`), already multiplied by
     /// `1 − transmit` as POV-Ray does without alpha output.
     pub background: Rgb,
-    /// `sky_sphere { pigment }`: the colour of escaped rays by direction, over the background.
-    pub sky_sphere: Option<Pigment>,
+    /// `sky_sphere { pigment … }`: the colour of escaped rays by direction, over the
+    /// background.
+    pub sky_sphere: Option<SkySphere>,
     /// `fog { … }` statements (their order does not matter).
     pub fogs: Vec<Fog>,
     /// Scene-wide settings.
@@ -89,6 +90,9 @@ pub struct Settings {
     /// POV-Ray's pre-3.7 surface attenuation `1 − (filter·max(r,g,b) + transmit)` (scenes
     /// without `#version 3.7`) instead of `1 − filter − transmit`.
     pub legacy_transparency: bool,
+    /// The noise generator of patterns that name none (`noise_generator`; default 2, or 1
+    /// for scenes of `#version` before 3.5).
+    pub noise_generator: u8,
 }
 
 /// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
@@ -413,6 +417,17 @@ pub struct Normal {
     pub transform: Option<Box<Transform>>,
 }
 
+/// `sky_sphere { pigment {…} … emission C }`: pigments of the direction, layered (the last
+/// on top, seen through by its filter and transmit), each placed by its own transformations
+/// followed by the sky_sphere's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkySphere {
+    /// The pigments, bottom layer first.
+    pub pigments: Vec<Pigment>,
+    /// `emission` (default 1): multiplies the pigments' colours.
+    pub emission: Rgb,
+}
+
 /// What a pigment's colours are.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PigmentKind {
@@ -626,6 +641,7 @@ impl Default for Settings {
             adc_bailout: 1.0 / 255.0,
             ambient_light: Rgb::ONE,
             legacy_transparency: true,
+            noise_generator: 2,
         }
     }
 }

@@ -68,6 +68,15 @@ impl Pattern {
         }
     }
 
+    /// The pattern with noise generator `generator` if it names none.
+    pub fn with_generator(&self, generator: u8) -> Pattern {
+        let mut p = self.clone();
+        if p.noise_generator == 0 {
+            p.noise_generator = generator;
+        }
+        p
+    }
+
     /// The value at point `p` of pattern space: an entry index for a discrete pattern, else
     /// (usually) a value in [0, 1].
     pub fn value(&self, p: DVec3) -> f64 {

@@ -205,16 +205,36 @@ impl<'a> Tracer<'a> {
         fogged(self.scene, ray.origin, ray.direction, depth, colour)
     }
 
-    /// The colour of a ray that hits nothing: the sky_sphere over the background.
+    /// The colour of a ray that hits nothing: the sky_sphere's layers over the background,
+    /// top layer first, each seen through the ones above by their filter and transmit (POV-Ray's
+    /// `ComputeSky`, with its rule for scenes before 3.7 too).
     fn escaped(&self, direction: DVec3) -> Rgb {
-        match &self.scene.sky_sphere {
-            None => self.scene.background,
-            Some(sky) => {
-                let c = sky.colour_at(direction.normalize());
-                c.rgb * (1.0 - c.transmit - c.filter)
-                    + self.scene.background * c.transmit
-                    + self.scene.background * c.rgb * c.filter
+        let Some(sky) = &self.scene.sky_sphere else {
+            return self.scene.background;
+        };
+        let d = direction.normalize();
+        let background = self.scene.background;
+        let mut col = Rgb::ZERO;
+        if self.scene.legacy_transparency {
+            // POV-Ray 3.6: the layers' filter and transmit multiply, channel by channel.
+            let (mut through, mut filter, mut transmit, mut trans) = (Rgb::ONE, 1.0, 1.0, 1.0);
+            for p in sky.pigments.iter().rev() {
+                let c = p.colour_at(d);
+                col += c.rgb * (trans * (1.0 - c.filter - c.transmit));
+                through *= c.rgb;
+                filter *= c.filter;
+                transmit *= c.transmit;
+                trans = f64::abs(filter) + f64::abs(transmit);
             }
+            col * sky.emission + background * (through * filter + Rgb::splat(transmit))
+        } else {
+            let mut filter = Rgb::ONE;
+            for p in sky.pigments.iter().rev() {
+                let c = p.colour_at(d);
+                col += c.rgb * (1.0 - c.filter - c.transmit) * filter * sky.emission;
+                filter *= filter_colour(&c);
+            }
+            col + background * filter
         }
     }
 

@@ -48,7 +48,7 @@ pub struct Scene {
     /// Colour of escaped rays.
     pub background: Rgb,
     /// `sky_sphere`: the colour of escaped rays by direction.
-    pub sky_sphere: Option<Pigment>,
+    pub sky_sphere: Option<SkySphere>,
     /// Fogs with a positive distance (POV-Ray skips the others).
     pub fogs: Vec<Fog>,
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
@@ -107,6 +107,15 @@ pub struct Light {
     pub fade: Option<LightFade>,
     /// Soft-shadow grid.
     pub area: Option<AreaLight>,
+}
+
+/// The sky: pigments of the ray's direction, the last on top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkySphere {
+    /// Bottom layer first.
+    pub pigments: Vec<Pigment>,
+    /// Multiplies the pigments' colours.
+    pub emission: Rgb,
 }
 
 /// A resolved surface material.
@@ -486,8 +495,11 @@ impl Scene {
         let materials = textures
             .into_iter()
             .map(|t| Material {
-                pigment: Pigment::new(&t.pigment),
-                normal: t.normal.as_deref().map(|n| Box::new(Normal::new(n))),
+                pigment: Pigment::new(&t.pigment, ir.settings.noise_generator),
+                normal: t
+                    .normal
+                    .as_deref()
+                    .map(|n| Box::new(Normal::new(n, ir.settings.noise_generator))),
                 finish: Arc::clone(&t.finish),
             })
             .collect();
@@ -550,7 +562,14 @@ impl Scene {
             materials,
             interiors,
             background: ir.background,
-            sky_sphere: ir.sky_sphere.as_ref().map(Pigment::new),
+            sky_sphere: ir.sky_sphere.as_ref().map(|s| SkySphere {
+                pigments: s
+                    .pigments
+                    .iter()
+                    .map(|p| Pigment::new(p, ir.settings.noise_generator))
+                    .collect(),
+                emission: s.emission,
+            }),
             fogs: ir
                 .fogs
                 .iter()

@@ -37,12 +37,13 @@ pub struct Normal {
 }
 
 impl Normal {
-    /// The perturbation as placed by the IR.
-    pub fn new(n: &ir::Normal) -> Normal {
+    /// The perturbation as placed by the IR, its pattern using noise generator `generator`
+    /// unless it names its own.
+    pub fn new(n: &ir::Normal, generator: u8) -> Normal {
         let world_from_pattern = n.transform.as_ref().map_or(DMat4::IDENTITY, |t| t.matrix);
         let linear = DMat3::from_mat4(world_from_pattern);
         Normal {
-            pattern: n.pattern.clone(),
+            pattern: n.pattern.with_generator(generator),
             amount: f64::from(n.amount as f32),
             pattern_from_world: n.transform.as_ref().map(|t| t.matrix.inverse()),
             to_pattern: linear.transpose(),
@@ -179,10 +180,13 @@ mod tests {
     fn normal(kind: PatternKind, amount: f64, edit: impl FnOnce(&mut Pattern)) -> Normal {
         let mut pattern = Pattern::new(kind);
         edit(&mut pattern);
-        Normal::new(&ir::Normal {
-            pattern,
-            amount,
-            transform: None,
-        })
+        Normal::new(
+            &ir::Normal {
+                pattern,
+                amount,
+                transform: None,
+            },
+            2,
+        )
     }
 }

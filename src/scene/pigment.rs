@@ -30,12 +30,13 @@ struct Mapped {
 }
 
 impl Pigment {
-    /// The pigment as placed by the IR.
-    pub fn new(p: &ir::Pigment) -> Pigment {
+    /// The pigment as placed by the IR, its patterns using noise generator `generator` unless
+    /// they name their own.
+    pub fn new(p: &ir::Pigment, generator: u8) -> Pigment {
         let kind = match &p.kind {
             ir::PigmentKind::Solid(c) => Kind::Solid(*c),
             ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new(Mapped {
-                pattern: pp.pattern.clone(),
+                pattern: pp.pattern.with_generator(generator),
                 map: pp.map.entries.clone().into_boxed_slice(),
             })),
             ir::PigmentKind::ImageMap(image) => Kind::Image(Arc::clone(image)),
@@ -180,7 +181,8 @@ mod tests {
 
     #[test]
     fn checker_picks_its_two_colours_by_unit_cube() {
-        let p = Pigment::new(&ir::Pigment {
+        let p = Pigment::new(
+            &ir::Pigment {
             kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
                 pattern: Pattern::new(crate::pattern::PatternKind::Checker),
                 map: ColourMap {
@@ -188,7 +190,9 @@ mod tests {
                 },
             })),
             transform: None,
-        });
+            },
+            2,
+        );
         assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.2));
         assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(0.7));
         assert_eq!(p.colour_at(DVec3::new(-0.5, 0.5, 0.5)), c(0.7));
