@@ -659,12 +659,15 @@ const SUPPORTED: &[&str] = &[
     "phong_size",
     "pi",
     "pigment",
+    "pigment_map",
     "planar",
     "plane",
     "png",
     "point_at",
     "poly_wave",
     "pow",
+    "quick_color",
+    "quick_colour",
     "quilted",
     "radial",
     "radians",
@@ -815,13 +818,12 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
-        "pigment_map" | "texture_map" | "normal_map" | "slope_map" | "density_map" => LATER,
+        "texture_map" | "normal_map" | "slope_map" | "density_map" => LATER,
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
         "average" | "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
-        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "warp" | "uv_mapping"
-        | "quick_color" | "quick_colour" | "material_map" => {
+        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "warp" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by" | "bounded_by"

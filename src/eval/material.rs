@@ -6,7 +6,7 @@ use crate::diag::Diagnostic;
 use crate::pattern::noise;
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
-    PigmentKind, Rgb, Texture, Transform, WaveShape,
+    PigmentKind, PigmentMap, Rgb, Texture, Transform, WaveShape,
 };
 use crate::syntax::{ExprKind, Node, NodeKind};
 use std::sync::Arc;
@@ -80,7 +80,8 @@ impl Evaluator<'_> {
         if let Some(e) = node.args.first() {
             pigment = self.pigment_value(e, pigment)?;
         }
-        let mut map: Option<(ColourMap, crate::diag::Span)> = None;
+        let mut map: Option<(PigmentMap, crate::diag::Span)> = None;
+        let mut list: Vec<(Pigment, crate::diag::Span)> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 // A colour left by a directive or a macro call in the pigment's body.
@@ -95,11 +96,19 @@ impl Evaluator<'_> {
                 }
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
-                    let map = ev.pattern_map(item, &kind, rest)?;
+                    let map = PigmentMap::Colours(ev.pattern_map(item, &kind, rest)?);
                     pigment.kind = PigmentKind::Pattern(Box::new(PatternPigment {
                         pattern: Pattern::new(kind),
                         map,
                     }));
+                }
+                // The colour of POV-Ray's low-quality previews: read, not used.
+                NodeKind::PatternModifier
+                    if matches!(item.word.as_str(), "quick_color" | "quick_colour") =>
+                {
+                    if let Some(e) = item.args.first() {
+                        ev.eval(e)?;
+                    }
                 }
                 NodeKind::PatternModifier => match &mut pigment.kind {
                     PigmentKind::Pattern(p) => ev.pattern_modifier(item, &mut p.pattern)?,
@@ -114,7 +123,17 @@ impl Evaluator<'_> {
                     let image = ev.image_map(item)?;
                     pigment.kind = PigmentKind::ImageMap(Arc::new(image));
                 }
-                NodeKind::ColourMap => map = Some((ev.colour_map(item)?, item.word_span)),
+                NodeKind::ColourMap => {
+                    map = Some((PigmentMap::Colours(ev.colour_map(item)?), item.word_span))
+                }
+                NodeKind::PigmentMap => {
+                    map = Some((PigmentMap::Pigments(ev.pigment_map(item)?), item.word_span))
+                }
+                // `checker pigment {…} pigment {…}`: a discrete pattern's list of pigments.
+                NodeKind::Pigment => {
+                    let entry = ev.pigment(item, Pigment::solid(Colour::default()))?;
+                    list.push((entry, item.word_span));
+                }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
                     move_pigment(&mut pigment, t);
@@ -128,11 +147,44 @@ impl Evaluator<'_> {
                 PigmentKind::Pattern(p) if p.pattern.kind.list_len().is_none() => p.map = m,
                 _ => {
                     return Err(Diagnostic::error(
-                        "color_map applies only to a pattern such as gradient (checker takes a list of colours)",
+                        "color_map and pigment_map apply only to a pattern such as gradient (checker takes a list of colours or pigments)",
                         map_span,
                     ));
                 }
             }
+        }
+        if let Some((_, first_span)) = list.first() {
+            let PigmentKind::Pattern(p) = &mut pigment.kind else {
+                return Err(Diagnostic::error(
+                    "a pigment inside a pigment follows a pattern such as checker (a list of pigments)",
+                    *first_span,
+                ));
+            };
+            let Some(len) = p.pattern.kind.list_len() else {
+                return Err(Diagnostic::error(
+                    "a list of pigments follows a pattern such as checker, hexagon or brick (give this pattern a pigment_map)",
+                    *first_span,
+                ));
+            };
+            if let Some((_, extra)) = list.get(len) {
+                return Err(Diagnostic::error(
+                    format!("this pattern takes at most {len} pigments"),
+                    *extra,
+                ));
+            }
+            // The entries not given keep the pattern's default colours.
+            let PigmentMap::Colours(defaults) = &p.map else {
+                unreachable!("a discrete pattern starts with its list of colours")
+            };
+            let mut entries: Vec<(f64, Pigment)> = defaults
+                .entries
+                .iter()
+                .map(|(v, c)| (*v, Pigment::solid(*c)))
+                .collect();
+            for (slot, (entry, _)) in entries.iter_mut().zip(list) {
+                slot.1 = entry;
+            }
+            p.map = PigmentMap::Pigments(entries);
         }
         Ok(pigment)
     }
@@ -489,6 +541,27 @@ impl Evaluator<'_> {
             ),
             span,
         ));
+    }
+
+    /// `pigment_map { [v PIGMENT] … }` or `pigment_map { Name }`: each entry's pigment starts
+    /// black and unplaced (it is placed in the pattern's space).
+    pub(super) fn pigment_map(&mut self, node: &Node) -> Result<Vec<(f64, Pigment)>> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return match self.lookup(ident)? {
+                Value::PigmentMap(m) => Ok(m),
+                other => Err(type_error("a pigment_map", &other, ident.span)),
+            };
+        }
+        let mut entries = Vec::new();
+        for entry in &node.children {
+            let value = self.float(&entry.args[0])?;
+            let body = &entry.children[0];
+            entries.push((value, self.pigment(body, Pigment::solid(Colour::default()))?));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error("pigment_map has no entries", node.word_span));
+        }
+        Ok(entries)
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.

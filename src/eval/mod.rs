@@ -562,6 +562,7 @@ impl<'a> Evaluator<'a> {
                 Value::Material(texture, interior)
             }
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
+            NodeKind::PigmentMap => Value::PigmentMap(self.pigment_map(node)?),
             NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {

@@ -53,6 +53,8 @@ pub enum Value {
     /// `material {…}`: a texture and an interior, each only if given.
     Material(Option<ir::Texture>, Option<ir::Interior>),
     ColourMap(ir::ColourMap),
+    /// A declared pigment_map.
+    PigmentMap(Vec<(f64, ir::Pigment)>),
     Str(String),
     /// `array[…]`: its elements row-major, `None` where none was assigned yet.
     Array(Box<Array>),
@@ -96,6 +98,7 @@ impl Value {
             Value::Fog(_) => "a fog",
             Value::Material(..) => "a material",
             Value::ColourMap(_) => "a color_map",
+            Value::PigmentMap(_) => "a pigment_map",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",

@@ -390,7 +390,10 @@ impl Pigment {
         let opaque = |c: &Colour| c.filter == 0.0 && c.transmit == 0.0;
         match &self.kind {
             PigmentKind::Solid(c) => opaque(c),
-            PigmentKind::Pattern(p) => p.map.entries.iter().all(|(_, c)| opaque(c)),
+            PigmentKind::Pattern(p) => match &p.map {
+                PigmentMap::Colours(m) => m.entries.iter().all(|(_, c)| opaque(c)),
+                PigmentMap::Pigments(ps) => ps.iter().all(|(_, p)| p.is_opaque()),
+            },
             PigmentKind::ImageMap(_) => false,
         }
     }
@@ -445,8 +448,19 @@ pub enum PigmentKind {
 pub struct PatternPigment {
     /// Where the colours change.
     pub pattern: Pattern,
-    /// Colours by pattern value.
-    pub map: ColourMap,
+    /// What the pattern's values give.
+    pub map: PigmentMap,
+}
+
+/// What a pattern pigment looks its value up in.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PigmentMap {
+    /// `color_map`, or a discrete pattern's list of colours.
+    Colours(ColourMap),
+    /// `pigment_map { [v PIGMENT] … }`, or a discrete pattern's list of pigments
+    /// (`checker pigment {…} pigment {…}`). Each pigment is placed in the pattern's space
+    /// (after its warps): its transformation is relative to that space.
+    Pigments(Vec<(f64, Pigment)>),
 }
 
 /// `color_map { [v C] … }`: colours at increasing values, interpolated between.

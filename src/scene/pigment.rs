@@ -22,11 +22,19 @@ enum Kind {
     Image(Arc<ImageMap>),
 }
 
-/// A pattern and the (value, colour) entries its values are looked up in.
+/// A pattern and the entries its values are looked up in.
 #[derive(Clone, Debug, PartialEq)]
 struct Mapped {
     pattern: Pattern,
-    map: Box<[(f64, Colour)]>,
+    map: Map,
+}
+
+/// (value, colour) or (value, pigment) entries.
+#[derive(Clone, Debug, PartialEq)]
+enum Map {
+    Colours(Box<[(f64, Colour)]>),
+    /// Pigments placed in the pattern's space.
+    Pigments(Box<[(f64, Pigment)]>),
 }
 
 impl Pigment {
@@ -37,7 +45,14 @@ impl Pigment {
             ir::PigmentKind::Solid(c) => Kind::Solid(*c),
             ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new(Mapped {
                 pattern: pp.pattern.with_generator(generator),
-                map: pp.map.entries.clone().into_boxed_slice(),
+                map: match &pp.map {
+                    ir::PigmentMap::Colours(m) => Map::Colours(m.entries.clone().into()),
+                    ir::PigmentMap::Pigments(ps) => Map::Pigments(
+                        ps.iter()
+                            .map(|(v, p)| (*v, Pigment::new(p, generator)))
+                            .collect(),
+                    ),
+                },
             })),
             ir::PigmentKind::ImageMap(image) => Kind::Image(Arc::clone(image)),
         };
@@ -60,7 +75,10 @@ impl Pigment {
         let see_through = |c: &Colour| c.filter != 0.0 || c.transmit != 0.0;
         match &self.kind {
             Kind::Solid(c) => see_through(c),
-            Kind::Pattern(m) => m.map.iter().any(|(_, c)| see_through(c)),
+            Kind::Pattern(m) => match &m.map {
+                Map::Colours(cs) => cs.iter().any(|(_, c)| see_through(c)),
+                Map::Pigments(ps) => ps.iter().any(|(_, p)| p.may_be_transparent()),
+            },
             Kind::Image(_) => true,
         }
     }
@@ -76,7 +94,22 @@ impl Pigment {
             .map_or(p, |m| m.transform_point3(p));
         match &self.kind {
             Kind::Solid(c) => *c,
-            Kind::Pattern(m) => lookup(&m.map, m.pattern.value(q)),
+            Kind::Pattern(m) => match &m.map {
+                Map::Colours(cs) => lookup(cs, m.pattern.value(q)),
+                Map::Pigments(ps) => {
+                    // The entries' pigments see the point in the pattern's space, after its
+                    // warps (POV-Ray's Compute_Pigment for a pigment map).
+                    let w = m.pattern.warp(q);
+                    let v = m.pattern.wave.apply(m.pattern.raw(w));
+                    let (prev, cur, t) = search(ps, v);
+                    let c1 = ps[cur].1.colour_at(w);
+                    if prev == cur {
+                        c1
+                    } else {
+                        blend(ps[prev].1.colour_at(w), c1, t)
+                    }
+                }
+            },
             Kind::Image(image) => image_colour(image, q),
         }
     }
@@ -86,12 +119,32 @@ impl Pigment {
 /// last, otherwise linear interpolation of all five channels toward the first entry whose
 /// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).
 pub fn lookup(entries: &[(f64, Colour)], v: f64) -> Colour {
-    // POV-Ray's Search_Blend_Map, which also defines maps whose keys decrease: at or above
-    // the last key, the last colour; otherwise scan from the first entry to the first key
-    // not below `v` and blend with the entry scanned before it.
+    let (prev, cur, t) = search(entries, v);
+    if prev == cur {
+        entries[cur].1
+    } else {
+        blend(entries[prev].1, entries[cur].1, t)
+    }
+}
+
+/// `a` to `b` by `t`, in all five channels.
+fn blend(a: Colour, b: Colour, t: f64) -> Colour {
+    Colour {
+        rgb: a.rgb + (b.rgb - a.rgb) * t,
+        filter: a.filter + (b.filter - a.filter) * t,
+        transmit: a.transmit + (b.transmit - a.transmit) * t,
+    }
+}
+
+/// POV-Ray's `Search_Blend_Map`: the entries around `v` and the fraction of the way from the
+/// first to the second (`prev == cur`: that entry alone).
+fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
+    // It also defines maps whose keys decrease: at or above the last key, the last entry;
+    // otherwise scan from the first entry to the first key not below `v` and blend with the
+    // entry scanned before it.
     let last = entries.len() - 1;
     if v >= entries[last].0 {
-        return entries[last].1;
+        return (last, last, 0.0);
     }
     let (mut prev, mut cur) = (0, 0);
     while v > entries[cur].0 {
@@ -99,15 +152,9 @@ pub fn lookup(entries: &[(f64, Colour)], v: f64) -> Colour {
         cur += 1;
     }
     if prev == cur || v == entries[cur].0 {
-        return entries[cur].1;
+        return (cur, cur, 0.0);
     }
-    let ((v0, c0), (v1, c1)) = (entries[prev], entries[cur]);
-    let t = (v - v0) / (v1 - v0);
-    Colour {
-        rgb: c0.rgb + (c1.rgb - c0.rgb) * t,
-        filter: c0.filter + (c1.filter - c0.filter) * t,
-        transmit: c0.transmit + (c1.transmit - c0.transmit) * t,
-    }
+    (prev, cur, (v - entries[prev].0) / (entries[cur].0 - entries[prev].0))
 }
 
 /// Planar image map (POV-Ray `planar_image_map`, `image_map`): the unit square of the x-y
@@ -185,9 +232,9 @@ mod tests {
             &ir::Pigment {
             kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
                 pattern: Pattern::new(crate::pattern::PatternKind::Checker),
-                map: ColourMap {
+                map: ir::PigmentMap::Colours(ColourMap {
                     entries: vec![(0.0, c(0.2)), (1.0, c(0.7))],
-                },
+                }),
             })),
             transform: None,
             },

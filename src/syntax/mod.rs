@@ -88,6 +88,8 @@ pub enum NodeKind {
     Pigment,
     /// `normal { PATTERN [amount] … }`.
     Normal,
+    /// `pigment_map { [v PIGMENT] … }`.
+    PigmentMap,
     BumpSize,
     Finish,
     /// `material { texture interior }`.
@@ -794,6 +796,9 @@ impl Lower {
             Rule::texture => NodeKind::Texture,
             Rule::pigment => NodeKind::Pigment,
             Rule::normal => NodeKind::Normal,
+            Rule::map_pigment => NodeKind::Pigment,
+            Rule::pigment_map => NodeKind::PigmentMap,
+            Rule::pigment_map_entry => NodeKind::MapEntry,
             Rule::bump_size => NodeKind::BumpSize,
             Rule::finish => NodeKind::Finish,
             Rule::material => NodeKind::Material,
@@ -1224,6 +1229,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_no_reflection
             | kw_no_shadow
             | kw_normal
+            | kw_pigment_map
             | kw_bump_size
             | kw_object
             | kw_orthographic
