@@ -179,10 +179,7 @@ impl<'a> Evaluator<'a> {
             .collect();
         let value = match children.get(1 + subs.len()) {
             Some(item) if item.kind == NodeKind::LayeredTexture => {
-                Value::Unsupported(Box::new(Diagnostic::error(
-                    "unsupported: layered textures (not supported by trace yet)",
-                    item.children[1].word_span,
-                )))
+                self.layered_texture(item).or_else(unsupported_later)?
             }
             Some(item) if item.kind == NodeKind::Unparsed => {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
@@ -643,6 +640,21 @@ impl<'a> Evaluator<'a> {
 
 /// A declaration that failed because it uses something outside the subset is kept, to be
 /// reported only if the scene uses it (standard include files declare many such things).
+impl Evaluator<'_> {
+    /// `texture {…} texture {…} …`: each texture layered over the ones before it.
+    fn layered_texture(&mut self, item: &Node) -> Result<Value> {
+        let mut layered: Option<crate::ir::Texture> = None;
+        for t in item.children.iter().filter(|c| c.kind == NodeKind::Texture) {
+            let t = self.texture(t)?;
+            layered = Some(match layered {
+                Some(below) => super::material::layer(t, below),
+                None => t,
+            });
+        }
+        Ok(Value::Texture(layered.expect("a layered texture has textures")))
+    }
+}
+
 fn unsupported_later(d: Diagnostic) -> Result<Value> {
     // (Using a declaration that was itself outside the subset defers the same way.)
     if d.message.starts_with("unsupported:") || d.message.contains("cannot be used: unsupported:") {

@@ -24,12 +24,29 @@ pub(super) fn move_pigment(p: &mut Pigment, t: Transform) {
     append(&mut p.transform, t);
 }
 
-/// Appends a transformation to a texture's placement: its pigment's and its normal's.
+/// Appends a transformation to a texture's placement: its pigment's and its normal's, in
+/// every layer.
 pub(super) fn move_texture(texture: &mut Texture, t: Transform) {
     append(&mut texture.pigment.transform, t);
     if let Some(n) = &mut texture.normal {
         append(&mut n.transform, t);
     }
+    for layer in &mut texture.under {
+        move_texture(layer, t);
+    }
+}
+
+/// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
+/// last.
+pub(super) fn layer(mut top: Texture, below: Texture) -> Texture {
+    let mut under = below.under;
+    under.push(Texture {
+        under: Vec::new(),
+        ..below
+    });
+    under.append(&mut top.under);
+    top.under = under;
+    top
 }
 
 fn append(placement: &mut Option<Box<Transform>>, t: Transform) {

@@ -377,7 +377,7 @@ impl Evaluator<'_> {
             NodeKind::Material => {
                 let (texture, interior) = self.material(m)?;
                 if let Some(texture) = texture {
-                    self.set_texture(object, texture, m)?;
+                    self.set_texture(object, texture)?;
                 }
                 if interior.is_some() {
                     object.interior = interior;
@@ -385,7 +385,7 @@ impl Evaluator<'_> {
             }
             NodeKind::Texture => {
                 let texture = self.texture(m)?;
-                self.set_texture(object, texture, m)?;
+                self.set_texture(object, texture)?;
             }
 
             NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
@@ -462,21 +462,12 @@ impl Evaluator<'_> {
     }
 
     /// A texture given to an object by `texture {…}` or `material {…}`.
-    fn set_texture(
-        &mut self,
-        object: &mut ObjectValue,
-        texture: ir::Texture,
-        m: &Node,
-    ) -> Result<()> {
-        // A second texture is layered on top of the first in POV-Ray. An opaque top layer
-        // hides the one below, so replacing it is exact; a see-through one is not.
-        if object.texture.is_some() && !texture.pigment.is_opaque() {
-            return Err(Diagnostic::error(
-                "unsupported: a second, see-through texture on an object (POV-Ray layers textures; trace does not yet)",
-                m.word_span,
-            ));
-        }
-        object.texture = Some(texture);
+    fn set_texture(&mut self, object: &mut ObjectValue, texture: ir::Texture) -> Result<()> {
+        // A second texture is layered on top of the first, as in POV-Ray.
+        object.texture = Some(match object.texture.take() {
+            Some(below) => super::material::layer(texture, below),
+            None => texture,
+        });
         Ok(())
     }
 

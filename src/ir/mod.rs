@@ -357,7 +357,7 @@ impl Transform {
     }
 }
 
-/// A resolved texture: pigment and finish, with the pattern-space transform.
+/// A resolved texture: pigment, normal and finish, with the layers beneath it.
 ///
 /// `.rt`: `texture { pigment { ... } finish { ... } }`, or `pigment`/`finish` on an object.
 #[derive(Clone, Debug, PartialEq)]
@@ -366,6 +366,10 @@ pub struct Texture {
     pub pigment: Pigment,
     /// The perturbation of the surface normal, if any.
     pub normal: Option<Box<Normal>>,
+    /// Layered textures (`texture {…} texture {…}`): the layers beneath this one, bottom
+    /// first, each seen through the ones above by their filter and transmit (a layer's own
+    /// `under` is empty).
+    pub under: Vec<Texture>,
     /// How light interacts with the surface (shared: most objects keep the default).
     pub finish: Arc<Finish>,
 }
@@ -629,6 +633,7 @@ impl Default for Texture {
         Texture {
             pigment: Pigment::solid(Colour::default()),
             normal: None,
+            under: Vec::new(),
             finish: Arc::new(Finish::default()),
         }
     }

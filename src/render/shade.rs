@@ -249,8 +249,6 @@ impl<'a> Tracer<'a> {
     ) -> Rgb {
         let scene = self.scene;
         let material = scene.material(hit.material);
-        let finish = &material.finish;
-        let colour = material.pigment.colour_at(hit.point);
         let d = ray.direction;
         // Shade the side facing the ray (decided by the geometric normal).
         let facing = if hit.geometric_normal.dot(d) > 0.0 {
@@ -259,36 +257,10 @@ impl<'a> Tracer<'a> {
             1.0
         };
         let raw = hit.normal * facing;
-        let n = material
-            .normal
-            .as_ref()
-            .map_or(raw, |normal| normal.perturb(hit.point, raw));
-        let pigment = colour.rgb;
-        let att = if scene.legacy_transparency {
-            1.0 - (colour.filter * pigment.max_element() + colour.transmit)
-        } else {
-            1.0 - colour.filter - colour.transmit
-        };
-
-        // Ambient and emission.
-        let mut result =
-            pigment * finish.ambient * scene.ambient_light * att + pigment * finish.emission * att;
-
-        // Direct light.
-        for index in 0..scene.lights.len() {
-            let Some(sample) =
-                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
-            else {
-                continue;
-            };
-            result += self.lit(material, &colour, att, d, n, &sample);
-        }
 
         // Relative indices for this crossing (POV-Ray §9.1).
         let object = &scene.objects[hit.object.0 as usize];
         let crossing = Crossing::new(scene, interiors, hit.object);
-        let cos_i = -d.dot(n);
-        let reflectivity = reflectivity(material, &colour, cos_i, crossing.fresnel_eta);
         let interior = scene.interior(object);
         let fade = if crossing.inside && interior.fade_distance.abs() > 1e-10 {
             interior_fade(interior, t * d.length())
@@ -296,13 +268,54 @@ impl<'a> Tracer<'a> {
             Rgb::ONE
         };
 
-        // Transmission: straight on through ior-1 surfaces (same trace level), refracted
-        // otherwise; no secondary ray leaves a ray already at max_trace_level.
-        let mut total_internal_reflection = false;
-        let mut filter = filter_colour(&colour);
-        if finish.conserve_energy {
-            filter *= (Rgb::ONE - reflectivity).min(Rgb::ONE);
+        // Each layer (top first) adds its light as seen through the layers above it, `filter`
+        // (POV-Ray's ComputeLightedTexture); a texture has one layer unless layered.
+        let mut result = Rgb::ZERO;
+        let mut filter = Rgb::ONE;
+        let mut top = None;
+        let mut layers = 0;
+        for layer in material.layers() {
+            if grey(filter).abs().min(1.0) <= scene.adc_bailout {
+                break;
+            }
+            layers += 1;
+            let (n, colour, reflec) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
+            let pigment = colour.rgb;
+            let att = if scene.legacy_transparency {
+                1.0 - (colour.filter * pigment.max_element() + colour.transmit)
+            } else {
+                1.0 - colour.filter - colour.transmit
+            };
+            // Ambient and emission, then direct light.
+            let finish = &layer.finish;
+            let mut lit = pigment * finish.ambient * scene.ambient_light * att
+                + pigment * finish.emission * att;
+            for index in 0..scene.lights.len() {
+                let Some(sample) =
+                    self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
+                else {
+                    continue;
+                };
+                lit += self.lit(layer, &colour, att, d, n, &sample);
+            }
+            result += lit * filter;
+            filter *= filter_colour(&colour);
+            if finish.conserve_energy {
+                filter *= (Rgb::ONE - reflec).min(Rgb::ONE);
+            }
+            if top.is_none() {
+                top = Some((n, reflec));
+            }
         }
+        let Some((n, top_reflec)) = top else {
+            return result;
+        };
+        let cos_i = -d.dot(n);
+
+        // Transmission through all the layers: straight on through ior-1 surfaces (same trace
+        // level), refracted otherwise (by the top layer's normal); no secondary ray leaves a
+        // ray already at max_trace_level.
+        let mut total_internal_reflection = false;
         let wants_transmission =
             filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout;
         if wants_transmission && level >= scene.max_trace_level {
@@ -334,29 +347,69 @@ impl<'a> Tracer<'a> {
             }
         }
 
-        // Mirror reflection.
-        let wants_reflection = !total_internal_reflection && reflectivity.max_element() > 0.0;
-        if wants_reflection && level >= scene.max_trace_level {
-            self.counts.depth_limited += 1;
-        }
-        if wants_reflection && level < scene.max_trace_level {
-            let reflected = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
+        // Mirror reflection of each layer, weighted by what the layers above let through
+        // (after total internal reflection, only layers whose normal differs from the top's).
+        let mut above = Rgb::ONE;
+        for (i, layer) in material.layers().take(layers).enumerate() {
+            let (n_l, colour, reflec) = if i == 0 {
+                (n, None, top_reflec)
+            } else {
+                let (n_l, c, r) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
+                (n_l, Some(c), r)
+            };
+            let layer_weight = weight * grey(above).abs().min(1.0);
+            if i + 1 < layers {
+                // (What this layer lets through, for the weights of the layers below.)
+                let c = colour.unwrap_or_else(|| layer.pigment.colour_at(hit.point));
+                above *= filter_colour(&c);
+                if layer.finish.conserve_energy {
+                    above *= (Rgb::ONE - reflec).min(Rgb::ONE);
+                }
+            }
+            let same_normal = (n_l - n).abs().max_element() <= 1e-10;
+            if (total_internal_reflection && same_normal) || reflec.max_element() <= 0.0 {
+                continue;
+            }
+            if level >= scene.max_trace_level {
+                self.counts.depth_limited += 1;
+                continue;
+            }
+            let reflected = scene.spawn(hit, ray.origin, mirror_direction(d, n_l, raw));
             self.counts.reflected += 1;
             // POV-Ray weighs a plain reflection by its largest possible value (max of min and
             // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
-            let rf = &finish.reflection;
+            let rf = &layer.finish.reflection;
             let bound = if rf.fresnel {
-                reflectivity.max_element()
+                reflec.max_element()
             } else {
                 rf.max.max_element().max(rf.min.max_element())
             };
-            let mut seen = self.trace(&reflected, level + 1, weight * bound, interiors);
+            let mut seen = self.trace(&reflected, level + 1, layer_weight * bound, interiors);
             if rf.exponent != 1.0 {
                 seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
             }
-            result += reflectivity * seen;
+            result += reflec * seen;
         }
         result
+    }
+
+    /// One layer at the hit: its shading normal (perturbed if the layer has a normal), its
+    /// colour and its reflectivity.
+    fn layer_at(
+        &self,
+        layer: &Material,
+        hit: &SurfaceHit,
+        d: DVec3,
+        raw: DVec3,
+        fresnel_eta: f64,
+    ) -> (DVec3, Colour, Rgb) {
+        let n = layer
+            .normal
+            .as_ref()
+            .map_or(raw, |normal| normal.perturb(hit.point, raw));
+        let colour = layer.pigment.colour_at(hit.point);
+        let reflec = reflectivity(layer, &colour, -d.dot(n), fresnel_eta);
+        (n, colour, reflec)
     }
 
     /// Diffuse, phong and specular from one light sample (§7.3).

@@ -125,8 +125,44 @@ pub struct Material {
     pub pigment: Pigment,
     /// Normal perturbation, if any.
     pub normal: Option<Box<Normal>>,
+    /// Layered textures: the layers beneath, bottom first (each with none of its own).
+    pub under: Box<[Material]>,
     /// Finish.
     pub finish: Arc<Finish>,
+}
+
+impl Material {
+    /// The material of a texture (with its layers), its patterns using noise generator
+    /// `generator` unless they name their own.
+    pub fn new(t: &ir::Texture, generator: u8) -> Material {
+        Material {
+            pigment: Pigment::new(&t.pigment, generator),
+            normal: t
+                .normal
+                .as_deref()
+                .map(|n| Box::new(Normal::new(n, generator))),
+            under: t.under.iter().map(|l| Material::new(l, generator)).collect(),
+            finish: Arc::clone(&t.finish),
+        }
+    }
+
+    /// The layers, top first.
+    pub fn layers(&self) -> impl Iterator<Item = &Material> {
+        std::iter::once(self).chain(self.under.iter().rev())
+    }
+
+    /// Whether light may pass through somewhere (through every layer).
+    pub fn may_be_transparent(&self) -> bool {
+        self.layers().all(|l| l.pigment.may_be_transparent())
+    }
+
+    /// What the surface lets through at `p`: the product over the layers of
+    /// `rgb·filter + transmit` (POV-Ray's shadow texture).
+    pub fn filter_at(&self, p: DVec3) -> Rgb {
+        self.layers()
+            .map(|l| filter_colour(&l.pigment.colour_at(p)))
+            .fold(Rgb::ONE, |a, b| a * b)
+    }
 }
 
 /// `rgb·filter + transmit`: what a surface of colour `c` lets through, per channel.
@@ -494,14 +530,7 @@ impl Scene {
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
         let materials = textures
             .into_iter()
-            .map(|t| Material {
-                pigment: Pigment::new(&t.pigment, ir.settings.noise_generator),
-                normal: t
-                    .normal
-                    .as_deref()
-                    .map(|n| Box::new(Normal::new(n, ir.settings.noise_generator))),
-                finish: Arc::clone(&t.finish),
-            })
+            .map(|t| Material::new(t, ir.settings.noise_generator))
             .collect();
         // Each distinct mesh is built once, for all its instances (keyed by address).
         let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
@@ -753,7 +782,7 @@ impl Scene {
         let opaque_blocks = |i: u32| {
             let object = &self.objects[i as usize];
             !object.no_shadow
-                && !self.material(object.material).pigment.may_be_transparent()
+                && !self.material(object.material).may_be_transparent()
                 && object.shape.occludes(&Self::local_ray(object, ray))
         };
         let mut through = Rgb::ONE;
@@ -812,7 +841,7 @@ impl Scene {
     /// Whether object `i` can let light through to a shadow ray.
     fn filters_shadows(&self, i: u32) -> bool {
         let object = &self.objects[i as usize];
-        !object.no_shadow && self.material(object.material).pigment.may_be_transparent()
+        !object.no_shadow && self.material(object.material).may_be_transparent()
     }
 
     /// Multiplies `through` by the filter colour at each crossing of a transparent object
@@ -826,7 +855,7 @@ impl Scene {
         object
             .shape
             .for_each_crossing(&Self::local_ray(object, ray), |t| {
-                *through *= filter_colour(&material.pigment.colour_at(ray.at(t)));
+                *through *= material.filter_at(ray.at(t));
             });
     }
 
@@ -867,8 +896,7 @@ impl Scene {
             let (mut through, mut last_t) = (Rgb::ONE, 0.0);
             for &(t, i) in crossings.iter() {
                 let object = &self.objects[i as usize];
-                let colour = self.material(object.material).pigment.colour_at(ray.at(t));
-                through *= filter_colour(&colour);
+                through *= self.material(object.material).filter_at(ray.at(t));
                 match media.iter().position(|&m| m == object.medium) {
                     Some(k) => {
                         let interior = self.interior(object);
