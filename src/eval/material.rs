@@ -6,7 +6,7 @@ use crate::diag::Diagnostic;
 use crate::pattern::noise;
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
-    PigmentKind, PigmentMap, Rgb, Texture, Transform, WaveShape,
+    PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, WaveShape,
 };
 use crate::syntax::{ExprKind, Node, NodeKind};
 use std::sync::Arc;
@@ -24,16 +24,9 @@ pub(super) fn move_pigment(p: &mut Pigment, t: Transform) {
     append(&mut p.transform, t);
 }
 
-/// Appends a transformation to a texture's placement: its pigment's and its normal's, in
-/// every layer.
+/// Appends a transformation to a texture's placement (see [`Texture::transform`]).
 pub(super) fn move_texture(texture: &mut Texture, t: Transform) {
-    append(&mut texture.pigment.transform, t);
-    if let Some(n) = &mut texture.normal {
-        append(&mut n.transform, t);
-    }
-    for layer in &mut texture.under {
-        move_texture(layer, t);
-    }
+    texture.transform(t);
 }
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
@@ -55,9 +48,14 @@ fn append(placement: &mut Option<Box<Transform>>, t: Transform) {
 }
 
 impl Evaluator<'_> {
-    /// `texture { [Name] pigment {…} finish {…} transforms }`, starting from the default texture.
+    /// `texture { [Name] pigment {…} normal {…} finish {…} transforms }`, starting from the
+    /// default texture; or a pattern of textures (`checker texture {…} texture {…}`,
+    /// `gradient y texture_map {…}`).
     pub(super) fn texture(&mut self, node: &Node) -> Result<Texture> {
         let mut texture = self.default_texture.clone();
+        let mut list: Vec<(Texture, crate::diag::Span)> = Vec::new();
+        let mut map: Option<(Vec<(f64, Texture)>, crate::diag::Span)> = None;
+        let mut pattern_span = None;
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
@@ -73,15 +71,38 @@ impl Evaluator<'_> {
                     let t = ev.transform(item)?;
                     move_texture(&mut texture, t);
                 }
-                NodeKind::Unknown
-                    if matches!(item.word.as_str(), "checker" | "gradient" | "image_map") =>
-                {
+                NodeKind::Pattern => {
+                    let (kind, rest) = ev.pattern_kind(item)?;
+                    if let Some(extra) = rest.first() {
+                        return Err(Diagnostic::error(
+                            format!("a `{}` of textures takes textures, not values", item.word),
+                            extra.span,
+                        ));
+                    }
+                    texture.map = Some(Box::new(TextureMap {
+                        pattern: Pattern::new(kind),
+                        transform: None,
+                        entries: Vec::new(),
+                    }));
+                    pattern_span = Some(item.word_span);
+                }
+                NodeKind::PatternModifier => match &mut texture.map {
+                    Some(m) => ev.pattern_modifier(item, &mut m.pattern)?,
+                    None => {
+                        return Err(Diagnostic::error(
+                            format!("`{}` modifies a pattern, and this texture has none", item.word),
+                            item.word_span,
+                        ));
+                    }
+                },
+                NodeKind::Texture => {
+                    let t = ev.texture(item)?;
+                    list.push((t, item.word_span));
+                }
+                NodeKind::TextureMap => map = Some((ev.texture_map(item)?, item.word_span)),
+                NodeKind::Unknown if item.word == "image_map" => {
                     return Err(Diagnostic::error(
-                        format!(
-                            "unsupported: a `{}` pattern of textures (patterns of textures and \
-                             texture_map are not supported by trace yet; a `{}` pigment is supported)",
-                            item.word, item.word
-                        ),
+                        "unsupported: an `image_map` pattern of textures (material_map is not supported by trace yet)",
                         item.word_span,
                     ));
                 }
@@ -89,7 +110,84 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
+        let Some(m) = &mut texture.map else {
+            let stray = list.first().map(|(_, s)| *s).or(map.map(|(_, s)| s));
+            return match stray {
+                Some(span) => Err(Diagnostic::error(
+                    "textures inside a texture follow a pattern (checker texture {…} texture {…}, or gradient y texture_map {…})",
+                    span,
+                )),
+                None => Ok(texture),
+            };
+        };
+        if m.pattern.turbulence.is_some() {
+            return Err(Diagnostic::error(
+                "unsupported: turbulence on a pattern of textures (not supported by trace yet)",
+                pattern_span.unwrap_or(node.word_span),
+            ));
+        }
+        match (m.pattern.kind.list_len(), map) {
+            (_, Some((entries, span))) => {
+                if m.pattern.kind.list_len().is_some() || !list.is_empty() {
+                    return Err(Diagnostic::error(
+                        "texture_map applies only to a pattern such as gradient (checker takes a list of textures)",
+                        span,
+                    ));
+                }
+                m.entries = entries;
+            }
+            (Some(len), None) => {
+                if let Some((_, extra)) = list.get(len) {
+                    return Err(Diagnostic::error(
+                        format!("this pattern takes at most {len} textures"),
+                        *extra,
+                    ));
+                }
+                if list.is_empty() {
+                    return Err(Diagnostic::error(
+                        "this pattern of textures has no textures",
+                        pattern_span.unwrap_or(node.word_span),
+                    ));
+                }
+                let last = list.last().map(|(t, _)| t.clone()).expect("not empty");
+                let mut entries: Vec<(f64, Texture)> = list
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, (t, _))| (i as f64, t))
+                    .collect();
+                // (Entries not given repeat the last one given.)
+                while entries.len() < len {
+                    entries.push((entries.len() as f64, last.clone()));
+                }
+                m.entries = entries;
+            }
+            (None, None) => {
+                return Err(Diagnostic::error(
+                    "this pattern of textures needs a texture_map",
+                    pattern_span.unwrap_or(node.word_span),
+                ));
+            }
+        }
         Ok(texture)
+    }
+
+    /// `texture_map { [v TEXTURE_ITEMS] … }` or `texture_map { Name }`.
+    pub(super) fn texture_map(&mut self, node: &Node) -> Result<Vec<(f64, Texture)>> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return match self.lookup(ident)? {
+                Value::TextureMap(m) => Ok(m),
+                other => Err(type_error("a texture_map", &other, ident.span)),
+            };
+        }
+        let mut entries = Vec::new();
+        for entry in &node.children {
+            let value = self.float(&entry.args[0])?;
+            entries.push((value, self.texture(&entry.children[0])?));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error("texture_map has no entries", node.word_span));
+        }
+        Ok(entries)
     }
 
     /// `pigment { [colour | Name | checker … | gradient … | image_map {…}] [color_map] transforms }`.

@@ -55,6 +55,8 @@ pub enum Value {
     ColourMap(ir::ColourMap),
     /// A declared pigment_map.
     PigmentMap(Vec<(f64, ir::Pigment)>),
+    /// A declared texture_map.
+    TextureMap(Vec<(f64, ir::Texture)>),
     Str(String),
     /// `array[…]`: its elements row-major, `None` where none was assigned yet.
     Array(Box<Array>),
@@ -99,6 +101,7 @@ impl Value {
             Value::Material(..) => "a material",
             Value::ColourMap(_) => "a color_map",
             Value::PigmentMap(_) => "a pigment_map",
+            Value::TextureMap(_) => "a texture_map",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",

@@ -370,6 +370,9 @@ pub struct Texture {
     /// first, each seen through the ones above by their filter and transmit (a layer's own
     /// `under` is empty).
     pub under: Vec<Texture>,
+    /// A pattern of textures (`texture_map`, `checker texture {…} texture {…}`): when given,
+    /// the surface is the map's textures and this texture's own items are not used.
+    pub map: Option<Box<TextureMap>>,
     /// How light interacts with the surface (shared: most objects keep the default).
     pub finish: Arc<Finish>,
 }
@@ -422,6 +425,18 @@ pub struct Normal {
     pub amount: f64,
     /// World from pattern space, as for a pigment. `None` is the identity.
     pub transform: Option<Box<Transform>>,
+}
+
+/// `texture { PATTERN texture_map { [v TEXTURE] … } }` or a discrete pattern's list of
+/// textures: the textures are lit each on its own and blended by the pattern's value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextureMap {
+    /// Where the textures change.
+    pub pattern: Pattern,
+    /// World from pattern space (`None`: the identity).
+    pub transform: Option<Box<Transform>>,
+    /// (value, texture), each texture placed in the pattern's space.
+    pub entries: Vec<(f64, Texture)>,
 }
 
 /// `sky_sphere { pigment {…} … emission C }`: pigments of the direction, layered (the last
@@ -627,6 +642,27 @@ impl Reflection {
     }
 }
 
+impl Texture {
+    /// Moves the texture by `t` (after its own transformations): its pigment and normal in
+    /// every layer, and a pattern of textures with the textures in its space.
+    pub fn transform(&mut self, t: Transform) {
+        fn append(placement: &mut Option<Box<Transform>>, t: Transform) {
+            let before = placement.take().map_or(Transform::IDENTITY, |b| *b);
+            *placement = Some(Box::new(before.then(t)));
+        }
+        if let Some(m) = &mut self.map {
+            append(&mut m.transform, t);
+        }
+        append(&mut self.pigment.transform, t);
+        if let Some(n) = &mut self.normal {
+            append(&mut n.transform, t);
+        }
+        for layer in &mut self.under {
+            layer.transform(t);
+        }
+    }
+}
+
 impl Default for Texture {
     /// POV-Ray's default texture: black pigment, default finish.
     fn default() -> Texture {
@@ -634,6 +670,7 @@ impl Default for Texture {
             pigment: Pigment::solid(Colour::default()),
             normal: None,
             under: Vec::new(),
+            map: None,
             finish: Arc::new(Finish::default()),
         }
     }

@@ -247,8 +247,34 @@ impl<'a> Tracer<'a> {
         weight: f64,
         interiors: &Interiors,
     ) -> Rgb {
+        let material = self.scene.material(hit.material);
+        self.shade_material(material, ray, t, hit, level, weight, interiors)
+    }
+
+    /// The light leaving the surface hit, of `material`: a pattern of materials shades with
+    /// the one (or blends the two) its value picks, each lit on its own (POV-Ray's texture
+    /// maps).
+    #[allow(clippy::too_many_arguments)]
+    fn shade_material(
+        &mut self,
+        material: &'a Material,
+        ray: &Ray,
+        t: f64,
+        hit: &SurfaceHit,
+        level: u32,
+        weight: f64,
+        interiors: &Interiors,
+    ) -> Rgb {
+        if let Some(map) = &material.map {
+            let (prev, cur, f) = map.at(hit.point);
+            let c = self.shade_material(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
+            if prev == cur {
+                return c;
+            }
+            let p = self.shade_material(&map.entries[prev].1, ray, t, hit, level, weight, interiors);
+            return p * (1.0 - f) + c * f;
+        }
         let scene = self.scene;
-        let material = scene.material(hit.material);
         let d = ray.direction;
         // Shade the side facing the ray (decided by the geometric normal).
         let facing = if hit.geometric_normal.dot(d) > 0.0 {

@@ -127,6 +127,8 @@ pub struct Material {
     pub normal: Option<Box<Normal>>,
     /// Layered textures: the layers beneath, bottom first (each with none of its own).
     pub under: Box<[Material]>,
+    /// A pattern of materials: when given, the surface is these (and the rest unused).
+    pub map: Option<Box<MaterialMap>>,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -142,6 +144,24 @@ impl Material {
                 .as_deref()
                 .map(|n| Box::new(Normal::new(n, generator))),
             under: t.under.iter().map(|l| Material::new(l, generator)).collect(),
+            map: t.map.as_deref().map(|m| {
+                Box::new(MaterialMap {
+                    pattern: m.pattern.with_generator(generator),
+                    pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
+                    entries: m
+                        .entries
+                        .iter()
+                        .map(|(v, e)| {
+                            // The entries lie in the pattern's space: placed in the world.
+                            let mut e = e.clone();
+                            if let Some(t) = &m.transform {
+                                e.transform(**t);
+                            }
+                            (*v, Material::new(&e, generator))
+                        })
+                        .collect(),
+                })
+            }),
             finish: Arc::clone(&t.finish),
         }
     }
@@ -151,17 +171,48 @@ impl Material {
         std::iter::once(self).chain(self.under.iter().rev())
     }
 
-    /// Whether light may pass through somewhere (through every layer).
+    /// Whether light may pass through somewhere (through every layer, or some material of
+    /// a pattern of materials).
     pub fn may_be_transparent(&self) -> bool {
-        self.layers().all(|l| l.pigment.may_be_transparent())
+        match &self.map {
+            Some(m) => m.entries.iter().any(|(_, e)| e.may_be_transparent()),
+            None => self.layers().all(|l| l.pigment.may_be_transparent()),
+        }
     }
 
     /// What the surface lets through at `p`: the product over the layers of
-    /// `rgb·filter + transmit` (POV-Ray's shadow texture).
+    /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {
+        if let Some(m) = &self.map {
+            let (prev, cur, t) = m.at(p);
+            let f = m.entries[cur].1.filter_at(p);
+            return if prev == cur {
+                f
+            } else {
+                m.entries[prev].1.filter_at(p) * (1.0 - t) + f * t
+            };
+        }
         self.layers()
             .map(|l| filter_colour(&l.pigment.colour_at(p)))
             .fold(Rgb::ONE, |a, b| a * b)
+    }
+}
+
+/// A pattern of materials (`texture_map`, `checker texture {…} texture {…}`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialMap {
+    pattern: crate::pattern::Pattern,
+    pattern_from_world: Option<DMat4>,
+    /// (value, material), each placed in the world.
+    pub entries: Box<[(f64, Material)]>,
+}
+
+impl MaterialMap {
+    /// The entries around the pattern's value at world point `p` and the fraction of the way
+    /// from the first to the second (the same entry twice: that one alone).
+    pub fn at(&self, p: DVec3) -> (usize, usize, f64) {
+        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        pigment::search(&self.entries, self.pattern.value(q))
     }
 }
 

@@ -138,7 +138,7 @@ fn blend(a: Colour, b: Colour, t: f64) -> Colour {
 
 /// POV-Ray's `Search_Blend_Map`: the entries around `v` and the fraction of the way from the
 /// first to the second (`prev == cur`: that entry alone).
-fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
+pub(super) fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
     // It also defines maps whose keys decrease: at or above the last key, the last entry;
     // otherwise scan from the first entry to the first key not below `v` and blend with the
     // entry scanned before it.

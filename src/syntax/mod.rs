@@ -90,6 +90,8 @@ pub enum NodeKind {
     Normal,
     /// `pigment_map { [v PIGMENT] … }`.
     PigmentMap,
+    /// `texture_map { [v TEXTURE] … }`.
+    TextureMap,
     BumpSize,
     Finish,
     /// `material { texture interior }`.
@@ -799,6 +801,9 @@ impl Lower {
             Rule::map_pigment => NodeKind::Pigment,
             Rule::pigment_map => NodeKind::PigmentMap,
             Rule::pigment_map_entry => NodeKind::MapEntry,
+            Rule::texture_map => NodeKind::TextureMap,
+            Rule::texture_map_entry => NodeKind::MapEntry,
+            Rule::map_texture => NodeKind::Texture,
             Rule::bump_size => NodeKind::BumpSize,
             Rule::finish => NodeKind::Finish,
             Rule::material => NodeKind::Material,
@@ -1230,6 +1235,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_no_shadow
             | kw_normal
             | kw_pigment_map
+            | kw_texture_map
             | kw_bump_size
             | kw_object
             | kw_orthographic
