@@ -722,6 +722,7 @@ const SUPPORTED: &[&str] = &[
     "tan",
     "tanh",
     "texture",
+    "texture_map",
     "tightness",
     "torus",
     "transform",
@@ -731,6 +732,7 @@ const SUPPORTED: &[&str] = &[
     "triangle_wave",
     "triangular",
     "true",
+    "turb_depth",
     "turbulence",
     "u",
     "undef",
@@ -818,7 +820,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
-        "texture_map" | "normal_map" | "slope_map" | "density_map" => LATER,
+        "normal_map" | "slope_map" | "density_map" => LATER,
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
@@ -858,7 +860,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "altitude" | "black_hole" | "cube" | "dist_exp" | "flip" | "image_pattern" | "major_radius"
         | "max_iteration" | "no_bump_scale" | "number_of_sides" | "number_of_tiles"
         | "orientation" | "pigment_pattern" | "ratio" | "repeat"
-        | "tile2" | "tiles" | "toroidal" | "turb_depth" | "use_alpha"
+        | "tile2" | "tiles" | "toroidal" | "use_alpha"
         | "use_color" | "use_colour" | "use_index" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }

@@ -244,6 +244,8 @@ pub(crate) struct FogItems {
     offset: f64,
     alt: f64,
     alt_span: Span,
+    turbulence: Option<crate::pattern::noise::Turbulence>,
+    turb_depth: f64,
     /// Where the distance was given (for the check of its sign).
     distance_span: Span,
     up: DVec3,
@@ -629,6 +631,8 @@ impl<'a> Evaluator<'a> {
             offset: 0.0,
             alt: 0.0,
             alt_span: node.word_span,
+            turbulence: None,
+            turb_depth: 0.5,
             distance_span: node.word_span,
             up: DVec3::Y,
         };
@@ -668,9 +672,21 @@ impl<'a> Evaluator<'a> {
                     items.alt_span = arg(0).span;
                 }
                 NodeKind::FogOffset => items.offset = ev.float(arg(0))?,
-                // (Only matters with turbulence, which trace does not render.)
-                NodeKind::TurbDepth => {
-                    ev.float(arg(0))?;
+                NodeKind::TurbDepth => items.turb_depth = ev.float(arg(0))?,
+                NodeKind::PatternModifier
+                    if matches!(item.word.as_str(), "turbulence" | "octaves" | "omega" | "lambda") =>
+                {
+                    let e = item.args.first().ok_or_else(|| {
+                        Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)
+                    })?;
+                    let t = items.turbulence.get_or_insert_with(Default::default);
+                    let single = |v: f64| f64::from(v as f32);
+                    match item.word.as_str() {
+                        "turbulence" => t.amount = ev.vec3(e)?,
+                        "octaves" => t.octaves = (ev.float(e)? as i64).clamp(1, 10) as u32,
+                        "omega" => t.omega = single(ev.float(e)?),
+                        _ => t.lambda = single(ev.float(e)?),
+                    }
                 }
                 NodeKind::Up => items.up = ev.vec3(arg(0))?,
                 NodeKind::Translate => ev.warn(Diagnostic::warning(
@@ -694,17 +710,6 @@ impl<'a> Evaluator<'a> {
                             .ok_or_else(|| expr::type_error("a colour", &v, arg(0).span))?;
                         items.colour = value::to_colour(c);
                     }
-                }
-                NodeKind::Unknown
-                    if matches!(item.word.as_str(), "turbulence" | "octaves" | "omega" | "lambda") =>
-                {
-                    return Err(Diagnostic::error(
-                        format!(
-                            "unsupported: `{}` in fog (fog turbulence is not supported by trace yet)",
-                            item.word
-                        ),
-                        item.word_span,
-                    ));
                 }
                 _ => return Err(ev.unknown_item(item, "fog")),
             }
@@ -748,6 +753,12 @@ impl<'a> Evaluator<'a> {
             distance: items.distance,
             colour: items.colour,
             kind,
+            turbulence: items.turbulence.map(|turbulence| {
+                Box::new(ir::FogTurbulence {
+                    turbulence,
+                    depth: items.turb_depth,
+                })
+            }),
         })
     }
 

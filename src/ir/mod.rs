@@ -57,6 +57,18 @@ pub struct Fog {
     pub colour: Colour,
     /// Constant or ground fog.
     pub kind: FogKind,
+    /// `turbulence …` and `turb_depth`: the fog thins by POV-Ray's turbulence at the middle
+    /// of each ray's path through it.
+    pub turbulence: Option<Box<FogTurbulence>>,
+}
+
+/// A fog's turbulence.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FogTurbulence {
+    /// Amount (scales the point), octaves, omega, lambda.
+    pub turbulence: crate::pattern::noise::Turbulence,
+    /// `turb_depth` (default 0.5): how far the turbulence thins the fog.
+    pub depth: f64,
 }
 
 /// POV-Ray's fog types.

@@ -112,9 +112,10 @@ const MISS_DEPTH: f64 = 2.0e10;
 /// The fogs of `scene` over a ray segment from `origin` along the unit `direction`, `width`
 /// long, applied to the colour `c` seen at its end (POV-Ray's ComputeFog: attenuations
 /// multiply, fog colours add up, so the fogs' order does not matter).
-fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, width: f64, c: Rgb) -> Rgb {
+fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64, c: Rgb) -> Rgb {
     let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
     for fog in &scene.fogs {
+        let mut width = depth;
         let density = match fog.kind {
             FogKind::Constant => 1.0,
             FogKind::Ground { offset, alt, up } => {
@@ -130,6 +131,14 @@ fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, width: f64, c: Rgb) ->
                 }
             }
         };
+        if let Some(t) = &fog.turbulence {
+            // POV-Ray thins the fog by its turbulence at the middle of the path, the less the
+            // longer the path.
+            let p = (origin + direction * (width / 2.0)) * t.turbulence.amount;
+            let k = (-width / fog.distance).exp();
+            let turb = t.turbulence.scalar(p, scene.noise_generator);
+            width *= 1.0 - k * (turb * t.depth).min(1.0);
+        }
         let c = &fog.colour;
         let a = (-width * density / fog.distance).exp().max(c.transmit);
         attenuation *= a * (Rgb::splat(1.0 - c.filter) + c.rgb * c.filter);

@@ -62,6 +62,8 @@ pub struct Scene {
     pub ambient_light: Rgb,
     /// Pre-3.7 surface attenuation.
     pub legacy_transparency: bool,
+    /// The scene's noise generator (fog turbulence; patterns carry their own).
+    pub noise_generator: u8,
     /// Working gamma (applied when the film is written).
     pub gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
@@ -660,6 +662,7 @@ impl Scene {
             adc_bailout: ir.settings.adc_bailout,
             ambient_light: ir.settings.ambient_light,
             legacy_transparency: ir.settings.legacy_transparency,
+            noise_generator: ir.settings.noise_generator,
             gamma: ir.settings.gamma,
             index: None,
             scan_bounds: Vec::new(),

@@ -874,8 +874,7 @@ impl Lower {
             | Rule::misplaced_item
             | Rule::leftover
             | Rule::cylinder_camera
-            | Rule::texture_pattern
-            | Rule::fog_turbulence => NodeKind::Unknown,
+            | Rule::texture_pattern => NodeKind::Unknown,
             other => unreachable!("rule {other:?} is not a node"),
         };
         let mut node = Node {
@@ -902,7 +901,7 @@ impl Lower {
             node.children = inner.map(|p| self.node(p)).collect();
             return node;
         }
-        if matches!(rule, Rule::leftover | Rule::fog_turbulence) {
+        if rule == Rule::leftover {
             // Named by its first token.
             let text = pair.as_str();
             // At least the first character (which may be a blank such as U+00A0, or any
