@@ -586,6 +586,7 @@ const SUPPORTED: &[&str] = &[
     "file_exists",
     "filter",
     "finish",
+    "flip",
     "floor",
     "fog",
     "fog_alt",
@@ -677,6 +678,7 @@ const SUPPORTED: &[&str] = &[
     "range",
     "red",
     "reflection",
+    "repeat",
     "rgb",
     "rgbf",
     "rgbft",
@@ -750,6 +752,7 @@ const SUPPORTED: &[&str] = &[
     "vrotate",
     "vstr",
     "warning",
+    "warp",
     "waves",
     "while",
     "wood",
@@ -825,7 +828,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "only png image files are read by trace"
         }
         "average" | "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
-        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "warp" | "uv_mapping" | "material_map" => {
+        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by" | "bounded_by"
@@ -857,9 +860,9 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "water_level" | "thickness" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude" | "black_hole" | "cube" | "dist_exp" | "flip" | "image_pattern" | "major_radius"
+        "altitude" | "black_hole" | "cube" | "dist_exp" | "image_pattern" | "major_radius"
         | "max_iteration" | "no_bump_scale" | "number_of_sides" | "number_of_tiles"
-        | "orientation" | "pigment_pattern" | "ratio" | "repeat"
+        | "orientation" | "pigment_pattern" | "ratio"
         | "tile2" | "tiles" | "toroidal" | "use_alpha"
         | "use_color" | "use_colour" | "use_index" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"

@@ -6,7 +6,7 @@ use crate::diag::Diagnostic;
 use crate::pattern::noise;
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
-    PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, WaveShape,
+    PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
 };
 use crate::syntax::{ExprKind, Node, NodeKind};
 use std::sync::Arc;
@@ -225,6 +225,15 @@ impl Evaluator<'_> {
                         ev.eval(e)?;
                     }
                 }
+                NodeKind::Warp => match &mut pigment.kind {
+                    PigmentKind::Pattern(p) => ev.warp(item, &mut p.pattern, &mut pigment.transform)?,
+                    _ => {
+                        return Err(Diagnostic::error(
+                            "a warp bends a pattern, and this pigment has none",
+                            item.word_span,
+                        ));
+                    }
+                },
                 NodeKind::PatternModifier => match &mut pigment.kind {
                     PigmentKind::Pattern(p) => ev.pattern_modifier(item, &mut p.pattern)?,
                     _ => {
@@ -302,6 +311,88 @@ impl Evaluator<'_> {
             p.map = PigmentMap::Pigments(entries);
         }
         Ok(pigment)
+    }
+
+    /// `warp { … }` on `pattern`, whose placement so far is `placement`: the placement
+    /// becomes a warp applied after this one (POV-Ray applies the last-written warp or
+    /// transformation first).
+    pub(super) fn warp(
+        &mut self,
+        item: &Node,
+        pattern: &mut Pattern,
+        placement: &mut Option<Box<Transform>>,
+    ) -> Result<()> {
+        let first = item.children.first().ok_or_else(|| {
+            Diagnostic::error("this warp is empty", item.word_span)
+        })?;
+        let value = |ev: &mut Self, it: &Node| -> Result<glam::DVec3> {
+            let e = it.args.first().ok_or_else(|| {
+                Diagnostic::error(format!("`{}` needs a value", it.word), it.word_span)
+            })?;
+            ev.vec3(e)
+        };
+        let single = |v: f64| f64::from(v as f32);
+        let warp = match first.word.as_str() {
+            "turbulence" | "octaves" | "omega" | "lambda" => {
+                let mut t = noise::Turbulence::default();
+                for it in &item.children {
+                    let v = value(self, it)?;
+                    match it.word.as_str() {
+                        "turbulence" => t.amount = v,
+                        "octaves" => t.octaves = (v.x as i64).clamp(1, 10) as u32,
+                        "omega" => t.omega = single(v.x),
+                        "lambda" => t.lambda = single(v.x),
+                        _ => return Err(self.unknown_item(it, "a turbulence warp")),
+                    }
+                }
+                Warp::Turbulence(Box::new(t))
+            }
+            "repeat" => {
+                let v = value(self, first)?;
+                let axes: Vec<usize> = (0..3).filter(|&i| v[i] != 0.0).collect();
+                let axis = match axes.as_slice() {
+                    [a] => *a,
+                    [] => return Err(Diagnostic::error("no axis in repeat", first.args[0].span)),
+                    _ => {
+                        return Err(Diagnostic::error(
+                            "repeat along one axis only",
+                            first.args[0].span,
+                        ));
+                    }
+                };
+                let (mut offset, mut flip) = (glam::DVec3::ZERO, glam::DVec3::ONE);
+                for it in &item.children[1..] {
+                    let v = value(self, it)?;
+                    match it.word.as_str() {
+                        "offset" => offset = v,
+                        "flip" => flip = v.map(|c| if c != 0.0 { -1.0 } else { 1.0 }),
+                        _ => return Err(self.unknown_item(it, "a repeat warp")),
+                    }
+                }
+                Warp::Repeat {
+                    axis,
+                    width: v[axis] as f32,
+                    offset,
+                    flip,
+                }
+            }
+            _ => {
+                return Err(Diagnostic::error(
+                    format!(
+                        "unsupported: a `{}` warp (trace reads turbulence and repeat warps)",
+                        first.word
+                    ),
+                    first.word_span,
+                ));
+            }
+        };
+        let mut warps = vec![warp];
+        if let Some(t) = placement.take() {
+            warps.push(Warp::Transform(t.matrix.inverse()));
+        }
+        warps.append(&mut pattern.warps);
+        pattern.warps = warps;
+        Ok(())
     }
 
     /// The evaluator's pattern table: the pattern `item` names, made from the arguments it
@@ -505,6 +596,7 @@ impl Evaluator<'_> {
                     };
                     match item.kind {
                         NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
+                        NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
                         _ if Self::is_transform(item) => {
                             let t = ev.transform(item)?;
@@ -1041,12 +1133,9 @@ mod tests {
         let mut current: Option<(String, crate::ir::Pattern, Option<glam::DMat4>)> = None;
         for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
             if let Some(body) = line.strip_prefix("@ ") {
-                // `warp { }` blocks are not read by trace yet.
-                current = (!body.contains("warp")).then(|| {
-                    let (p, m) = pattern_of(body);
-                    blocks.push(body.to_string());
-                    (body.to_string(), p, m)
-                });
+                let (p, m) = pattern_of(body);
+                blocks.push(body.to_string());
+                current = Some((body.to_string(), p, m));
                 continue;
             }
             let Some((body, pattern, inverse)) = &current else {
@@ -1063,7 +1152,7 @@ mod tests {
             }
             checked += 1;
         }
-        assert!(blocks.len() >= 50, "{} pattern variants read", blocks.len());
+        assert!(blocks.len() >= 56, "{} pattern variants read", blocks.len());
         assert!(checked >= 1500, "{checked} values compared");
     }
 }

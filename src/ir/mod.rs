@@ -7,7 +7,7 @@
 use glam::{DMat4, DVec3, Vec3};
 use std::sync::Arc;
 
-pub use crate::pattern::{Pattern, PatternKind, Wave, WaveShape};
+pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;

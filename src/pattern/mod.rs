@@ -42,6 +42,65 @@ pub struct Pattern {
     pub turbulence: Option<Box<Turbulence>>,
     /// `noise_generator` 1, 2 or 3; 0 is the scene's (`global_settings`, default 2).
     pub noise_generator: u8,
+    /// `warp { … }`s and the transformations between them, in the order they apply to a
+    /// point (the last written first). The transformations after the last warp are the
+    /// pigment's or normal's placement, applied before these.
+    pub warps: Vec<Warp>,
+}
+
+/// A warp of pattern space.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Warp {
+    /// Transformations written before a later warp: pattern space from the space outside.
+    Transform(glam::DMat4),
+    /// `warp { turbulence … }`: the point moves by the vector turbulence times the amount.
+    Turbulence(Box<Turbulence>),
+    /// `warp { repeat V offset O flip F }`: the slab [0, width) along one axis repeats, each
+    /// copy shifted by `offset` times its number and, for odd copies, mirrored on the axes of
+    /// `flip`.
+    Repeat {
+        /// 0, 1 or 2.
+        axis: usize,
+        /// The slab's width (single precision, as POV-Ray keeps it).
+        width: f32,
+        /// `offset`.
+        offset: DVec3,
+        /// −1 on the mirrored axes, 1 elsewhere.
+        flip: DVec3,
+    },
+}
+
+impl Warp {
+    fn apply(&self, q: DVec3) -> DVec3 {
+        match self {
+            Warp::Transform(m) => m.transform_point3(q),
+            Warp::Turbulence(t) => {
+                let d = t.vector(q);
+                DVec3::new(
+                    q.x + d.x * t.amount.x,
+                    q.y + d.y * t.amount.y,
+                    q.z + d.z * t.amount.z,
+                )
+            }
+            Warp::Repeat {
+                axis,
+                width,
+                offset,
+                flip,
+            } => {
+                let block = (q[*axis] / f64::from(*width)).floor() as f32;
+                let mut r = q;
+                r[*axis] = q[*axis] - f64::from(block * width);
+                if (block as i32) & 1 != 0 {
+                    r *= *flip;
+                    if flip[*axis] < 0.0 {
+                        r[*axis] += f64::from(*width);
+                    }
+                }
+                r + f64::from(block) * *offset
+            }
+        }
+    }
 }
 
 impl Pattern {
@@ -65,6 +124,7 @@ impl Pattern {
             wave,
             turbulence,
             noise_generator: 0,
+            warps: Vec::new(),
         }
     }
 
@@ -83,9 +143,12 @@ impl Pattern {
         self.wave.apply(self.raw(self.warp(p)))
     }
 
-    /// The point after the pattern's warps (its classic turbulence, if it displaces).
+    /// The point after the pattern's warps (its classic turbulence last, if it displaces).
     pub fn warp(&self, p: DVec3) -> DVec3 {
         let mut q = p;
+        for w in &self.warps {
+            q = w.apply(q);
+        }
         if let Some(t) = &self.turbulence
             && t.amount != DVec3::ZERO
             && !matches!(self.kind, PatternKind::Marble | PatternKind::Wood)

@@ -40,7 +40,13 @@ impl Normal {
     /// The perturbation as placed by the IR, its pattern using noise generator `generator`
     /// unless it names its own.
     pub fn new(n: &ir::Normal, generator: u8) -> Normal {
-        let world_from_pattern = n.transform.as_ref().map_or(DMat4::IDENTITY, |t| t.matrix);
+        // The placement, then the transformations among the pattern's warps.
+        let mut world_from_pattern = n.transform.as_ref().map_or(DMat4::IDENTITY, |t| t.matrix);
+        for w in &n.pattern.warps {
+            if let crate::pattern::Warp::Transform(m) = w {
+                world_from_pattern *= m.inverse();
+            }
+        }
         let linear = DMat3::from_mat4(world_from_pattern);
         Normal {
             pattern: n.pattern.with_generator(generator),

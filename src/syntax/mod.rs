@@ -92,6 +92,10 @@ pub enum NodeKind {
     PigmentMap,
     /// `texture_map { [v TEXTURE] … }`.
     TextureMap,
+    /// `warp { … }`.
+    Warp,
+    /// An item of a warp: its keyword (`word`) and values.
+    WarpItem,
     BumpSize,
     Finish,
     /// `material { texture interior }`.
@@ -802,6 +806,8 @@ impl Lower {
             Rule::pigment_map => NodeKind::PigmentMap,
             Rule::pigment_map_entry => NodeKind::MapEntry,
             Rule::texture_map => NodeKind::TextureMap,
+            Rule::warp => NodeKind::Warp,
+            Rule::warp_item => NodeKind::WarpItem,
             Rule::texture_map_entry => NodeKind::MapEntry,
             Rule::map_texture => NodeKind::Texture,
             Rule::bump_size => NodeKind::BumpSize,
@@ -1235,6 +1241,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_normal
             | kw_pigment_map
             | kw_texture_map
+            | kw_warp
+            | warp_kw
             | kw_bump_size
             | kw_object
             | kw_orthographic
