@@ -257,14 +257,17 @@ impl<'a> Tracer<'a> {
         interiors: &Interiors,
     ) -> Rgb {
         let material = self.scene.material(hit.material);
-        self.shade_material(material, ray, t, hit, level, weight, interiors)
+        match &material.map {
+            None => self.shade_layers(material, ray, t, hit, level, weight, interiors),
+            Some(_) => self.shade_mapped(material, ray, t, hit, level, weight, interiors),
+        }
     }
 
-    /// The light leaving the surface hit, of `material`: a pattern of materials shades with
-    /// the one (or blends the two) its value picks, each lit on its own (POV-Ray's texture
-    /// maps).
+    /// A pattern of materials: the one (or the blend of the two) its value picks, each lit on
+    /// its own (POV-Ray's texture maps).
     #[allow(clippy::too_many_arguments)]
-    fn shade_material(
+    #[inline(never)]
+    fn shade_mapped(
         &mut self,
         material: &'a Material,
         ray: &Ray,
@@ -274,15 +277,31 @@ impl<'a> Tracer<'a> {
         weight: f64,
         interiors: &Interiors,
     ) -> Rgb {
-        if let Some(map) = &material.map {
-            let (prev, cur, f) = map.at(hit.point);
-            let c = self.shade_material(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
-            if prev == cur {
-                return c;
-            }
-            let p = self.shade_material(&map.entries[prev].1, ray, t, hit, level, weight, interiors);
-            return p * (1.0 - f) + c * f;
+        let Some(map) = &material.map else {
+            return self.shade_layers(material, ray, t, hit, level, weight, interiors);
+        };
+        let (prev, cur, f) = map.at(hit.point);
+        let c = self.shade_mapped(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
+        if prev == cur {
+            return c;
         }
+        let p = self.shade_mapped(&map.entries[prev].1, ray, t, hit, level, weight, interiors);
+        p * (1.0 - f) + c * f
+    }
+
+    /// The light leaving the surface hit, of `material` (not a pattern of materials): its
+    /// layers' light, then what passes through them and what they reflect.
+    #[allow(clippy::too_many_arguments)]
+    fn shade_layers(
+        &mut self,
+        material: &'a Material,
+        ray: &Ray,
+        t: f64,
+        hit: &SurfaceHit,
+        level: u32,
+        weight: f64,
+        interiors: &Interiors,
+    ) -> Rgb {
         let scene = self.scene;
         let d = ray.direction;
         // Shade the side facing the ray (decided by the geometric normal).
@@ -305,46 +324,25 @@ impl<'a> Tracer<'a> {
 
         // Each layer (top first) adds its light as seen through the layers above it, `filter`
         // (POV-Ray's ComputeLightedTexture); a texture has one layer unless layered.
-        let mut result = Rgb::ZERO;
-        let mut filter = Rgb::ONE;
-        let mut top = None;
-        let mut layers = 0;
-        for layer in material.layers() {
+        let (n, colour, top_reflec) = self.layer_at(material, hit, d, raw, crossing.fresnel_eta);
+        let mut result = self.layer_light(material, &colour, n, ray, hit);
+        let mut filter = filter_colour(&colour);
+        if material.finish.conserve_energy {
+            filter *= (Rgb::ONE - top_reflec).min(Rgb::ONE);
+        }
+        let mut layers = 1;
+        for layer in material.under.iter().rev() {
             if grey(filter).abs().min(1.0) <= scene.adc_bailout {
                 break;
             }
             layers += 1;
-            let (n, colour, reflec) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
-            let pigment = colour.rgb;
-            let att = if scene.legacy_transparency {
-                1.0 - (colour.filter * pigment.max_element() + colour.transmit)
-            } else {
-                1.0 - colour.filter - colour.transmit
-            };
-            // Ambient and emission, then direct light.
-            let finish = &layer.finish;
-            let mut lit = pigment * finish.ambient * scene.ambient_light * att
-                + pigment * finish.emission * att;
-            for index in 0..scene.lights.len() {
-                let Some(sample) =
-                    self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
-                else {
-                    continue;
-                };
-                lit += self.lit(layer, &colour, att, d, n, &sample);
-            }
-            result += lit * filter;
+            let (n_l, colour, reflec) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
+            result += self.layer_light(layer, &colour, n_l, ray, hit) * filter;
             filter *= filter_colour(&colour);
-            if finish.conserve_energy {
+            if layer.finish.conserve_energy {
                 filter *= (Rgb::ONE - reflec).min(Rgb::ONE);
             }
-            if top.is_none() {
-                top = Some((n, reflec));
-            }
         }
-        let Some((n, top_reflec)) = top else {
-            return result;
-        };
         let cos_i = -d.dot(n);
 
         // Transmission through all the layers: straight on through ior-1 surfaces (same trace
@@ -384,52 +382,104 @@ impl<'a> Tracer<'a> {
 
         // Mirror reflection of each layer, weighted by what the layers above let through
         // (after total internal reflection, only layers whose normal differs from the top's).
-        let mut above = Rgb::ONE;
-        for (i, layer) in material.layers().take(layers).enumerate() {
-            let (n_l, colour, reflec) = if i == 0 {
-                (n, None, top_reflec)
-            } else {
-                let (n_l, c, r) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
-                (n_l, Some(c), r)
-            };
-            let layer_weight = weight * grey(above).abs().min(1.0);
-            if i + 1 < layers {
-                // (What this layer lets through, for the weights of the layers below.)
-                let c = colour.unwrap_or_else(|| layer.pigment.colour_at(hit.point));
+        let ctx = (ray, hit, raw, level, interiors);
+        if !total_internal_reflection {
+            result += self.mirror(material, n, top_reflec, weight, ctx);
+        }
+        if layers > 1 {
+            let mut above = Rgb::ONE;
+            let mut previous = (material, top_reflec, None);
+            for layer in material.layers().take(layers).skip(1) {
+                // (What the layer above lets through.)
+                let (upper, upper_reflec, upper_colour) = previous;
+                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_at(hit.point));
                 above *= filter_colour(&c);
-                if layer.finish.conserve_energy {
-                    above *= (Rgb::ONE - reflec).min(Rgb::ONE);
+                if upper.finish.conserve_energy {
+                    above *= (Rgb::ONE - upper_reflec).min(Rgb::ONE);
                 }
+                let (n_l, colour, reflec) =
+                    self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
+                previous = (layer, reflec, Some(colour));
+                let same_normal = (n_l - n).abs().max_element() <= 1e-10;
+                if total_internal_reflection && same_normal {
+                    continue;
+                }
+                let w = weight * grey(above).abs().min(1.0);
+                result += self.mirror(layer, n_l, reflec, w, ctx);
             }
-            let same_normal = (n_l - n).abs().max_element() <= 1e-10;
-            if (total_internal_reflection && same_normal) || reflec.max_element() <= 0.0 {
-                continue;
-            }
-            if level >= scene.max_trace_level {
-                self.counts.depth_limited += 1;
-                continue;
-            }
-            let reflected = scene.spawn(hit, ray.origin, mirror_direction(d, n_l, raw));
-            self.counts.reflected += 1;
-            // POV-Ray weighs a plain reflection by its largest possible value (max of min and
-            // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
-            let rf = &layer.finish.reflection;
-            let bound = if rf.fresnel {
-                reflec.max_element()
-            } else {
-                rf.max.max_element().max(rf.min.max_element())
-            };
-            let mut seen = self.trace(&reflected, level + 1, layer_weight * bound, interiors);
-            if rf.exponent != 1.0 {
-                seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
-            }
-            result += reflec * seen;
         }
         result
     }
 
+    /// One layer's ambient, emission and direct light, for its colour and shading normal.
+    #[inline]
+    fn layer_light(
+        &mut self,
+        layer: &Material,
+        colour: &Colour,
+        n: DVec3,
+        ray: &Ray,
+        hit: &SurfaceHit,
+    ) -> Rgb {
+        let scene = self.scene;
+        let pigment = colour.rgb;
+        let att = if scene.legacy_transparency {
+            1.0 - (colour.filter * pigment.max_element() + colour.transmit)
+        } else {
+            1.0 - colour.filter - colour.transmit
+        };
+        let finish = &layer.finish;
+        let mut lit = pigment * finish.ambient * scene.ambient_light * att
+            + pigment * finish.emission * att;
+        for index in 0..scene.lights.len() {
+            let Some(sample) =
+                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
+            else {
+                continue;
+            };
+            lit += self.lit(layer, colour, att, ray.direction, n, &sample);
+        }
+        lit
+    }
+
+    /// The mirror reflection of one layer with shading normal `n` and reflectivity `reflec`,
+    /// traced at `weight` (times POV-Ray's bound on the reflectivity).
+    fn mirror(
+        &mut self,
+        layer: &Material,
+        n: DVec3,
+        reflec: Rgb,
+        weight: f64,
+        (ray, hit, raw, level, interiors): (&Ray, &SurfaceHit, DVec3, u32, &Interiors),
+    ) -> Rgb {
+        if reflec.max_element() <= 0.0 {
+            return Rgb::ZERO;
+        }
+        let scene = self.scene;
+        if level >= scene.max_trace_level {
+            self.counts.depth_limited += 1;
+            return Rgb::ZERO;
+        }
+        let reflected = scene.spawn(hit, ray.origin, mirror_direction(ray.direction, n, raw));
+        self.counts.reflected += 1;
+        // POV-Ray weighs a plain reflection by its largest possible value (max of min and
+        // max), whatever the angle; only Fresnel reflection uses the actual reflectivity.
+        let rf = &layer.finish.reflection;
+        let bound = if rf.fresnel {
+            reflec.max_element()
+        } else {
+            rf.max.max_element().max(rf.min.max_element())
+        };
+        let mut seen = self.trace(&reflected, level + 1, weight * bound, interiors);
+        if rf.exponent != 1.0 {
+            seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
+        }
+        reflec * seen
+    }
+
     /// One layer at the hit: its shading normal (perturbed if the layer has a normal), its
     /// colour and its reflectivity.
+    #[inline]
     fn layer_at(
         &self,
         layer: &Material,

@@ -131,6 +131,8 @@ pub struct Material {
     pub under: Box<[Material]>,
     /// A pattern of materials: when given, the surface is these (and the rest unused).
     pub map: Option<Box<MaterialMap>>,
+    /// Whether light may pass through somewhere (asked for every shadow ray's candidates).
+    see_through: bool,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -139,7 +141,7 @@ impl Material {
     /// The material of a texture (with its layers), its patterns using noise generator
     /// `generator` unless they name their own.
     pub fn new(t: &ir::Texture, generator: u8) -> Material {
-        Material {
+        let mut m = Material {
             pigment: Pigment::new(&t.pigment, generator),
             normal: t
                 .normal
@@ -165,7 +167,13 @@ impl Material {
                 })
             }),
             finish: Arc::clone(&t.finish),
-        }
+            see_through: false,
+        };
+        m.see_through = match &m.map {
+            Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
+            None => m.layers().all(|l| l.pigment.may_be_transparent()),
+        };
+        m
     }
 
     /// The layers, top first.
@@ -176,10 +184,7 @@ impl Material {
     /// Whether light may pass through somewhere (through every layer, or some material of
     /// a pattern of materials).
     pub fn may_be_transparent(&self) -> bool {
-        match &self.map {
-            Some(m) => m.entries.iter().any(|(_, e)| e.may_be_transparent()),
-            None => self.layers().all(|l| l.pigment.may_be_transparent()),
-        }
+        self.see_through
     }
 
     /// What the surface lets through at `p`: the product over the layers of
@@ -753,6 +758,7 @@ impl Scene {
     }
 
     /// The nearest hit along `ray`.
+    #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
@@ -801,6 +807,7 @@ impl Scene {
     }
 
     /// Surface details for a hit found by [`Scene::intersect`].
+    #[inline]
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit {
         let object = &self.objects[hit.object.0 as usize];
         let point = ray.at(hit.t);
