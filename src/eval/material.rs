@@ -173,19 +173,37 @@ impl Evaluator<'_> {
 
     /// `texture_map { [v TEXTURE_ITEMS] … }` or `texture_map { Name }`.
     pub(super) fn texture_map(&mut self, node: &Node) -> Result<Vec<(f64, Texture)>> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return match self.lookup(ident)? {
+        self.map_entries(
+            node,
+            "texture_map",
+            |v| match v {
                 Value::TextureMap(m) => Ok(m),
-                other => Err(type_error("a texture_map", &other, ident.span)),
-            };
+                other => Err(Box::new(other)),
+            },
+            |ev, body| ev.texture(body),
+        )
+    }
+
+    /// The entries of a `pigment_map` or `texture_map` (`what`): `[v ITEMS]` each read by
+    /// `entry`, or a declared map of the same kind (`declared` takes it out of its value).
+    fn map_entries<T>(
+        &mut self,
+        node: &Node,
+        what: &str,
+        declared: impl Fn(Value) -> std::result::Result<Vec<(f64, T)>, Box<Value>>,
+        mut entry: impl FnMut(&mut Self, &Node) -> Result<T>,
+    ) -> Result<Vec<(f64, T)>> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return declared(self.lookup(ident)?)
+                .map_err(|other| type_error(&format!("a {what}"), &other, ident.span));
         }
         let mut entries = Vec::new();
-        for entry in &node.children {
-            let value = self.float(&entry.args[0])?;
-            entries.push((value, self.texture(&entry.children[0])?));
+        for e in &node.children {
+            let value = self.float(&e.args[0])?;
+            entries.push((value, entry(self, &e.children[0])?));
         }
         if entries.is_empty() {
-            return Err(Diagnostic::error("texture_map has no entries", node.word_span));
+            return Err(Diagnostic::error(format!("{what} has no entries"), node.word_span));
         }
         Ok(entries)
     }
@@ -753,22 +771,15 @@ impl Evaluator<'_> {
     /// `pigment_map { [v PIGMENT] … }` or `pigment_map { Name }`: each entry's pigment starts
     /// black and unplaced (it is placed in the pattern's space).
     pub(super) fn pigment_map(&mut self, node: &Node) -> Result<Vec<(f64, Pigment)>> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return match self.lookup(ident)? {
+        self.map_entries(
+            node,
+            "pigment_map",
+            |v| match v {
                 Value::PigmentMap(m) => Ok(m),
-                other => Err(type_error("a pigment_map", &other, ident.span)),
-            };
-        }
-        let mut entries = Vec::new();
-        for entry in &node.children {
-            let value = self.float(&entry.args[0])?;
-            let body = &entry.children[0];
-            entries.push((value, self.pigment(body, Pigment::solid(Colour::default()))?));
-        }
-        if entries.is_empty() {
-            return Err(Diagnostic::error("pigment_map has no entries", node.word_span));
-        }
-        Ok(entries)
+                other => Err(Box::new(other)),
+            },
+            |ev, body| ev.pigment(body, Pigment::solid(Colour::default())),
+        )
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.
