@@ -498,6 +498,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
 /// error), sorted.
 const SUPPORTED: &[&str] = &[
     "abs",
+    "accuracy",
     "acos",
     "acosh",
     "adaptive",
@@ -637,6 +638,7 @@ const SUPPORTED: &[&str] = &[
     "mod",
     "mortar",
     "no",
+    "no_bump_scale",
     "no_shadow",
     "noise_generator",
     "normal",
@@ -697,6 +699,7 @@ const SUPPORTED: &[&str] = &[
     "sinh",
     "sky",
     "sky_sphere",
+    "slope_map",
     "smooth_triangle",
     "solid",
     "specular",
@@ -823,7 +826,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
-        "normal_map" | "slope_map" | "density_map" => LATER,
+        "normal_map" | "density_map" => LATER,
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
@@ -852,7 +855,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "falloff_angle" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "accuracy" | "all_intersections" | "b_spline" | "bezier_spline" | "component"
+        "all_intersections" | "b_spline" | "bezier_spline" | "component"
         | "conic_sweep" | "contained_by" | "cubic_spline" | "evaluate" | "flatness"
         | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "slice" | "smooth" | "sqr"
@@ -861,7 +864,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this shape or shape item is not supported by trace yet"
         }
         "altitude" | "black_hole" | "cube" | "dist_exp" | "image_pattern" | "major_radius"
-        | "max_iteration" | "no_bump_scale" | "number_of_sides" | "number_of_tiles"
+        | "max_iteration" | "number_of_sides" | "number_of_tiles"
         | "orientation" | "pigment_pattern" | "ratio"
         | "tile2" | "tiles" | "toroidal" | "use_alpha"
         | "use_color" | "use_colour" | "use_index" | "width" => {

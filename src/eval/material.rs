@@ -603,6 +603,9 @@ impl Evaluator<'_> {
                         pattern: Pattern::new(kind),
                         amount,
                         transform: None,
+                        accuracy: f64::from(0.02f32),
+                        no_bump_scale: false,
+                        slope_map: None,
                     });
                 }
                 _ => {
@@ -613,6 +616,19 @@ impl Evaluator<'_> {
                         ));
                     };
                     match item.kind {
+                        NodeKind::PatternModifier if item.word == "accuracy" => {
+                            let e = item.args.first().ok_or_else(|| {
+                                Diagnostic::error("`accuracy` needs a value", item.word_span)
+                            })?;
+                            n.accuracy = f64::from(ev.float(e)? as f32);
+                        }
+                        NodeKind::PatternModifier if item.word == "no_bump_scale" => {
+                            n.no_bump_scale = match item.args.first() {
+                                Some(e) => ev.float(e)? != 0.0,
+                                None => true,
+                            };
+                        }
+                        NodeKind::SlopeMap => n.slope_map = Some(ev.slope_map(item)?),
                         NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
                         NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
@@ -780,6 +796,31 @@ impl Evaluator<'_> {
             },
             |ev, body| ev.pigment(body, Pigment::solid(Colour::default())),
         )
+    }
+
+    /// `slope_map { [v <height, slope>] … }`.
+    fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
+        let mut entries = Vec::new();
+        for e in &node.children {
+            if e.kind == NodeKind::IdentRef {
+                return Err(Diagnostic::error(
+                    "unsupported: a declared slope_map (write its entries here)",
+                    e.span,
+                ));
+            }
+            let value = self.float(&e.args[0])?;
+            let v = self.eval(&e.args[1])?;
+            let point = match &v {
+                Value::Vector(p) if p.len >= 2 => [p.c[0], p.c[1]],
+                Value::Float(f) => [*f, *f],
+                _ => return Err(type_error("a 2-vector <height, slope>", &v, e.args[1].span)),
+            };
+            entries.push((value, point));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error("slope_map has no entries", node.word_span));
+        }
+        Ok(entries)
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.

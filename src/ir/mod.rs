@@ -437,6 +437,14 @@ pub struct Normal {
     pub amount: f64,
     /// World from pattern space, as for a pigment. `None` is the identity.
     pub transform: Option<Box<Transform>>,
+    /// `accuracy`: the distance between the samples of a pattern's slope (default 0.02,
+    /// single precision as POV-Ray keeps it).
+    pub accuracy: f64,
+    /// `no_bump_scale`: the bumps keep their slope when the pattern is scaled.
+    pub no_bump_scale: bool,
+    /// `slope_map { [v <height, slope>] … }`: the pattern's value mapped to a height before
+    /// its slope is taken (a cubic through the entries' heights and slopes).
+    pub slope_map: Option<Vec<(f64, [f64; 2])>>,
 }
 
 /// `texture { PATTERN texture_map { [v TEXTURE] … } }` or a discrete pattern's list of

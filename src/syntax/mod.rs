@@ -94,6 +94,8 @@ pub enum NodeKind {
     TextureMap,
     /// `warp { … }`.
     Warp,
+    /// `slope_map { [v <height, slope>] … }`.
+    SlopeMap,
     /// An item of a warp: its keyword (`word`) and values.
     WarpItem,
     BumpSize,
@@ -807,6 +809,8 @@ impl Lower {
             Rule::pigment_map_entry => NodeKind::MapEntry,
             Rule::texture_map => NodeKind::TextureMap,
             Rule::warp => NodeKind::Warp,
+            Rule::slope_map => NodeKind::SlopeMap,
+            Rule::slope_entry => NodeKind::MapEntry,
             Rule::warp_item => NodeKind::WarpItem,
             Rule::texture_map_entry => NodeKind::MapEntry,
             Rule::map_texture => NodeKind::Texture,
@@ -1242,6 +1246,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_pigment_map
             | kw_texture_map
             | kw_warp
+            | kw_slope_map
             | warp_kw
             | kw_bump_size
             | kw_object
