@@ -517,6 +517,7 @@ const SUPPORTED: &[&str] = &[
     "atan",
     "atan2",
     "atanh",
+    "average",
     "background",
     "bitwise_and",
     "bitwise_or",
@@ -830,7 +831,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
-        "average" | "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
+        "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
         | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }

@@ -447,6 +447,7 @@ impl Evaluator<'_> {
                 return Ok((kind, &args[1..]));
             }
             "agate" => PatternKind::Agate { turb: 1.0 },
+            "average" => PatternKind::Average,
             "boxed" => PatternKind::Boxed,
             "bozo" => PatternKind::Bozo,
             "brick" => PatternKind::Brick {
@@ -583,6 +584,12 @@ impl Evaluator<'_> {
                 },
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
+                    if kind == PatternKind::Average {
+                        return Err(Diagnostic::error(
+                            "unsupported: an average of normals (normal_map is not supported by trace yet)",
+                            item.word_span,
+                        ));
+                    }
                     if kind.list_len().is_some() {
                         return Err(Diagnostic::error(
                             format!("unsupported: a `{}` normal (a pattern of normals is not supported by trace yet)", item.word),

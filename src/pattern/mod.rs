@@ -193,6 +193,7 @@ impl Pattern {
                 let n = 0.5 * (cycloidal(1.3 * t + 1.1 * z) + 1.0);
                 if n < 0.0 { 0.0 } else { n.min(1.0).powf(0.77) }
             }
+            PatternKind::Average => 0.0,
             PatternKind::Boxed => clip(x.abs().max(y.abs().max(z.abs()))),
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
             PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
@@ -337,6 +338,9 @@ pub enum PatternKind {
         /// `agate_turb`.
         turb: f64,
     },
+    /// `average`: no value of its own; a pigment averages its `pigment_map`'s pigments,
+    /// weighted by their entries' values.
+    Average,
     /// `boxed`: 1 at the origin down to 0 on the unit cube's surface.
     Boxed,
     /// `bozo`: noise.

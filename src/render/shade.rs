@@ -280,6 +280,15 @@ impl<'a> Tracer<'a> {
         let Some(map) = &material.map else {
             return self.shade_layers(material, ray, t, hit, level, weight, interiors);
         };
+        if map.averages() {
+            // POV-Ray's average of textures: each lit, weighted by its entry's value.
+            let total: f64 = map.entries.iter().map(|(w, _)| w).sum();
+            let mut sum = Rgb::ZERO;
+            for (w, e) in map.entries.iter() {
+                sum += self.shade_mapped(e, ray, t, hit, level, weight, interiors) * *w;
+            }
+            return sum / total;
+        }
         let (prev, cur, f) = map.at(hit.point);
         let c = self.shade_mapped(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
         if prev == cur {

@@ -191,6 +191,15 @@ impl Material {
     /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {
         if let Some(m) = &self.map {
+            if m.averages() {
+                let total: f64 = m.entries.iter().map(|(w, _)| w).sum();
+                return m
+                    .entries
+                    .iter()
+                    .map(|(w, e)| e.filter_at(p) * *w)
+                    .fold(Rgb::ZERO, |a, b| a + b)
+                    / total;
+            }
             let (prev, cur, t) = m.at(p);
             let f = m.entries[cur].1.filter_at(p);
             return if prev == cur {
@@ -215,6 +224,11 @@ pub struct MaterialMap {
 }
 
 impl MaterialMap {
+    /// Whether the map averages its materials (`average`) instead of picking by value.
+    pub fn averages(&self) -> bool {
+        self.pattern.kind == crate::pattern::PatternKind::Average
+    }
+
     /// The entries around the pattern's value at world point `p` and the fraction of the way
     /// from the first to the second (the same entry twice: that one alone).
     pub fn at(&self, p: DVec3) -> (usize, usize, f64) {

@@ -2,7 +2,7 @@
 
 use super::{Colour, Rgb};
 use crate::ir::{self, ImageMap};
-use crate::pattern::Pattern;
+use crate::pattern::{Pattern, PatternKind};
 use glam::{DMat4, DVec3};
 use std::sync::Arc;
 
@@ -94,6 +94,14 @@ impl Pigment {
             .map_or(p, |m| m.transform_point3(p));
         match &self.kind {
             Kind::Solid(c) => *c,
+            Kind::Pattern(m) if m.pattern.kind == PatternKind::Average => {
+                // POV-Ray's average: the entries weighted by their values.
+                let w = m.pattern.warp(q);
+                match &m.map {
+                    Map::Colours(cs) => average(cs.iter().map(|(v, c)| (*v, *c))),
+                    Map::Pigments(ps) => average(ps.iter().map(|(v, p)| (*v, p.colour_at(w)))),
+                }
+            }
             Kind::Pattern(m) => match &m.map {
                 Map::Colours(cs) => lookup(cs, m.pattern.value(q)),
                 Map::Pigments(ps) => {
@@ -124,6 +132,22 @@ pub fn lookup(entries: &[(f64, Colour)], v: f64) -> Colour {
         entries[cur].1
     } else {
         blend(entries[prev].1, entries[cur].1, t)
+    }
+}
+
+/// The mean of colours weighted by their weights (POV-Ray's `average`).
+pub(super) fn average(weighted: impl Iterator<Item = (f64, Colour)>) -> Colour {
+    let (mut sum, mut total) = (Colour::default(), 0.0);
+    for (w, c) in weighted {
+        sum.rgb += c.rgb * w;
+        sum.filter += c.filter * w;
+        sum.transmit += c.transmit * w;
+        total += w;
+    }
+    Colour {
+        rgb: sum.rgb / total,
+        filter: sum.filter / total,
+        transmit: sum.transmit / total,
     }
 }
 
