@@ -644,6 +644,7 @@ const SUPPORTED: &[&str] = &[
     "noise_generator",
     "normal",
     "normal_indices",
+    "normal_map",
     "normal_vectors",
     "object",
     "octaves",
@@ -827,7 +828,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
-        "normal_map" | "density_map" => LATER,
+        "density_map" => LATER,
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }

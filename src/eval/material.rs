@@ -584,12 +584,6 @@ impl Evaluator<'_> {
                 },
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
-                    if kind == PatternKind::Average {
-                        return Err(Diagnostic::error(
-                            "unsupported: an average of normals (normal_map is not supported by trace yet)",
-                            item.word_span,
-                        ));
-                    }
                     if kind.list_len().is_some() {
                         return Err(Diagnostic::error(
                             format!("unsupported: a `{}` normal (a pattern of normals is not supported by trace yet)", item.word),
@@ -613,8 +607,10 @@ impl Evaluator<'_> {
                         accuracy: f64::from(0.02f32),
                         no_bump_scale: false,
                         slope_map: None,
+                        map: None,
                     });
                 }
+                NodeKind::Unknown => return Err(ev.unknown_item(item, "normal")),
                 _ => {
                     let Some(n) = &mut normal else {
                         return Err(Diagnostic::error(
@@ -636,6 +632,20 @@ impl Evaluator<'_> {
                             };
                         }
                         NodeKind::SlopeMap => n.slope_map = Some(ev.slope_map(item)?),
+                        NodeKind::NormalMap => {
+                            let mut entries = Vec::new();
+                            for e in &item.children {
+                                let value = ev.float(&e.args[0])?;
+                                entries.push((value, ev.normal(&e.children[0], None)?));
+                            }
+                            if entries.is_empty() {
+                                return Err(Diagnostic::error(
+                                    "normal_map has no entries",
+                                    item.word_span,
+                                ));
+                            }
+                            n.map = Some(entries);
+                        }
                         NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
                         NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
@@ -649,7 +659,15 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
-        normal.ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))
+        let normal =
+            normal.ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))?;
+        if normal.pattern.kind == PatternKind::Average && normal.map.is_none() {
+            return Err(Diagnostic::error(
+                "an average of normals needs a normal_map",
+                node.word_span,
+            ));
+        }
+        Ok(normal)
     }
 
     /// A pattern modifier (`frequency 2`, `turbulence 0.5`, `sine_wave`, `agate_turb 0.3` …)

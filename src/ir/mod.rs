@@ -445,6 +445,9 @@ pub struct Normal {
     /// `slope_map { [v <height, slope>] … }`: the pattern's value mapped to a height before
     /// its slope is taken (a cubic through the entries' heights and slopes).
     pub slope_map: Option<Vec<(f64, [f64; 2])>>,
+    /// `normal_map { [v NORMAL] … }`: normals by the pattern's value (blended), or averaged
+    /// for `average`; each placed in the pattern's space.
+    pub map: Option<Vec<(f64, Normal)>>,
 }
 
 /// `texture { PATTERN texture_map { [v TEXTURE] … } }` or a discrete pattern's list of

@@ -40,6 +40,8 @@ pub struct Normal {
     no_bump_scale: bool,
     /// `slope_map` entries: value, (height, slope).
     slope_map: Option<Box<[SlopeEntry]>>,
+    /// `normal_map` entries: value, normal placed in this pattern's space.
+    map: Option<Box<[(f64, Normal)]>>,
 }
 
 impl Normal {
@@ -63,6 +65,11 @@ impl Normal {
             accuracy: n.accuracy,
             no_bump_scale: n.no_bump_scale,
             slope_map: n.slope_map.as_ref().map(|m| m.clone().into_boxed_slice()),
+            map: n.map.as_ref().map(|m| {
+                m.iter()
+                    .map(|(v, e)| (*v, Normal::new(e, generator)))
+                    .collect()
+            }),
         }
     }
 
@@ -74,6 +81,27 @@ impl Normal {
         let mut n = unit(self.to_pattern * unit(n));
         let a = self.amount;
         let pattern = &self.pattern;
+        if let Some(map) = &self.map {
+            // A normal_map: the entries' normals at the pattern's point, blended by the
+            // pattern's value (averaged for `average`), as POV-Ray's Perturb_Normal does.
+            n = if pattern.kind == crate::pattern::PatternKind::Average {
+                let total: f64 = map.iter().map(|(w, _)| w).sum();
+                map.iter()
+                    .map(|(w, e)| e.perturb(tp, n) * *w)
+                    .fold(DVec3::ZERO, |a, b| a + b)
+                    / total
+            } else {
+                let v = pattern.wave.apply(pattern.raw(tp));
+                let (prev, cur, t) = super::pigment::search(map, v);
+                let c = map[cur].1.perturb(tp, n);
+                if prev == cur {
+                    c
+                } else {
+                    map[prev].1.perturb(tp, n) * (1.0 - t) + c * t
+                }
+            };
+            return (self.to_world * unit(n)).normalize();
+        }
         match &pattern.kind {
             PatternKind::Bumps => n += a * dnoise(tp),
             PatternKind::Dents => {

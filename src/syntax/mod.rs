@@ -96,6 +96,8 @@ pub enum NodeKind {
     Warp,
     /// `slope_map { [v <height, slope>] … }`.
     SlopeMap,
+    /// `normal_map { [v NORMAL] … }`.
+    NormalMap,
     /// An item of a warp: its keyword (`word`) and values.
     WarpItem,
     BumpSize,
@@ -810,6 +812,9 @@ impl Lower {
             Rule::texture_map => NodeKind::TextureMap,
             Rule::warp => NodeKind::Warp,
             Rule::slope_map => NodeKind::SlopeMap,
+            Rule::normal_map => NodeKind::NormalMap,
+            Rule::normal_map_entry => NodeKind::MapEntry,
+            Rule::map_normal => NodeKind::Normal,
             Rule::slope_entry => NodeKind::MapEntry,
             Rule::warp_item => NodeKind::WarpItem,
             Rule::texture_map_entry => NodeKind::MapEntry,
@@ -1247,6 +1252,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_texture_map
             | kw_warp
             | kw_slope_map
+            | kw_normal_map
             | warp_kw
             | kw_bump_size
             | kw_object
