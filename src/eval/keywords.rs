@@ -646,6 +646,7 @@ const SUPPORTED: &[&str] = &[
     "normal_indices",
     "normal_map",
     "normal_vectors",
+    "number_of_waves",
     "object",
     "octaves",
     "off",
@@ -846,7 +847,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" | "spline" => LATER,
         "charset" | "hf_gray_16" | "irid_wavelength" | "max_intersections"
-        | "noise_generator_gs" | "number_of_waves" | "subsurface_gs" => {
+        | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }
         "aa_level" | "aa_threshold" | "always_sample" | "anisotropy" | "autostop" | "collect"

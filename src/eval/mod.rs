@@ -604,6 +604,23 @@ impl<'a> Evaluator<'a> {
                     ev.settings.ambient_light = rgb(&v)
                         .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
                 }
+                NodeKind::PatternModifier if item.word == "number_of_waves" => {
+                    let e = item.args.first().ok_or_else(|| {
+                        Diagnostic::error("`number_of_waves` needs a value", item.word_span)
+                    })?;
+                    let n = ev.float(e)?.trunc();
+                    // (POV-Ray reads 0 or less as 1.)
+                    if n > crate::pattern::MAX_WAVES as f64 {
+                        return Err(Diagnostic::error(
+                            format!(
+                                "unsupported: more than {} waves",
+                                crate::pattern::MAX_WAVES
+                            ),
+                            e.span,
+                        ));
+                    }
+                    ev.settings.number_of_waves = n.max(1.0) as u8;
+                }
                 NodeKind::PatternModifier if item.word == "noise_generator" => {
                     let e = item.args.first().ok_or_else(|| {
                         Diagnostic::error("`noise_generator` needs a value", item.word_span)

@@ -105,6 +105,8 @@ pub struct Settings {
     /// The noise generator of patterns that name none (`noise_generator`; default 2, or 1
     /// for scenes of `#version` before 3.5).
     pub noise_generator: u8,
+    /// `number_of_waves` (default 10): the wave sources of `ripples` and `waves`.
+    pub number_of_waves: u8,
 }
 
 /// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
@@ -721,6 +723,7 @@ impl Default for Settings {
             ambient_light: Rgb::ONE,
             legacy_transparency: true,
             noise_generator: 2,
+            number_of_waves: 10,
         }
     }
 }

@@ -25,8 +25,8 @@ const EPSILON: f64 = 1.0e-10;
 /// POV-Ray's `TWO_M_PI` (the same double as τ).
 const TWO_PI: f64 = std::f64::consts::TAU;
 
-/// Number of wave sources for `ripples` and `waves` (POV-Ray's default `number_of_waves`).
-const WAVES: usize = 10;
+/// Most wave sources for `ripples` and `waves` (`number_of_waves`; POV-Ray's default is 10).
+pub const MAX_WAVES: usize = 64;
 
 /// A pattern with its modifiers, in pattern space (the pigment or normal carries the
 /// transformation into it).
@@ -42,10 +42,22 @@ pub struct Pattern {
     pub turbulence: Option<Box<Turbulence>>,
     /// `noise_generator` 1, 2 or 3; 0 is the scene's (`global_settings`, default 2).
     pub noise_generator: u8,
+    /// Wave sources of `ripples` and `waves` (`number_of_waves`, 1 ..= [`MAX_WAVES`]); 0 is
+    /// the scene's (default 10).
+    pub number_of_waves: u8,
     /// `warp { … }`s and the transformations between them, in the order they apply to a
     /// point (the last written first). The transformations after the last warp are the
     /// pigment's or normal's placement, applied before these.
     pub warps: Vec<Warp>,
+}
+
+/// What a scene's `global_settings` give the patterns that name nothing themselves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneDefaults {
+    /// `noise_generator` (1, 2 or 3).
+    pub generator: u8,
+    /// `number_of_waves` (1 ..= [`MAX_WAVES`]).
+    pub waves: u8,
 }
 
 /// A warp of pattern space.
@@ -124,17 +136,31 @@ impl Pattern {
             wave,
             turbulence,
             noise_generator: 0,
+            number_of_waves: 0,
             warps: Vec::new(),
         }
     }
 
-    /// The pattern with noise generator `generator` if it names none.
-    pub fn with_generator(&self, generator: u8) -> Pattern {
+    /// The pattern with the scene's noise generator and number of waves where it names none.
+    pub fn with_scene(&self, scene: SceneDefaults) -> Pattern {
         let mut p = self.clone();
         if p.noise_generator == 0 {
-            p.noise_generator = generator;
+            p.noise_generator = scene.generator;
+        }
+        if p.number_of_waves == 0 {
+            p.number_of_waves = scene.waves;
         }
         p
+    }
+
+    /// The wave sources `ripples` and `waves` use.
+    pub fn waves(&self) -> &'static [(DVec3, f64)] {
+        let n = if self.number_of_waves == 0 {
+            10
+        } else {
+            self.number_of_waves as usize
+        };
+        &wave_sources()[..n.min(MAX_WAVES)]
     }
 
     /// The value at point `p` of pattern space: an entry index for a discrete pattern, else
@@ -256,11 +282,12 @@ impl Pattern {
             }
             PatternKind::Ripples => {
                 let mut s = 0.0;
-                for (src, _) in wave_sources() {
+                let waves = self.waves();
+                for (src, _) in waves {
                     s +=
                         cycloidal(source_distance(p, *src) * self.wave.frequency + self.wave.phase);
                 }
-                0.5 * (1.0 + s / WAVES as f64)
+                0.5 * (1.0 + s / waves.len() as f64)
             }
             PatternKind::Spherical => clip(((x * x + y * y) + z * z).sqrt()),
             PatternKind::Spiral1(arms) | PatternKind::Spiral2(arms) => {
@@ -292,11 +319,12 @@ impl Pattern {
             PatternKind::Triangular => triangular(x, z),
             PatternKind::Waves => {
                 let mut s = 0.0;
-                for (src, f) in wave_sources() {
+                let waves = self.waves();
+                for (src, f) in waves {
                     let len = source_distance(p, *src);
                     s += cycloidal(len * self.wave.frequency * f + self.wave.phase) / f;
                 }
-                0.2 * (2.5 + s / WAVES as f64)
+                0.2 * (2.5 + s / waves.len() as f64)
             }
             PatternKind::Wood => {
                 let (mut px, mut py) = (0.0, 0.0);
@@ -560,8 +588,8 @@ fn source_distance(p: DVec3, src: DVec3) -> f64 {
 
 /// POV-Ray's ten wave sources for `ripples` and `waves`: unit directions from the vector
 /// noise and frequencies from its integer generator.
-pub fn wave_sources() -> &'static [(DVec3, f64); WAVES] {
-    static SOURCES: OnceLock<[(DVec3, f64); WAVES]> = OnceLock::new();
+pub fn wave_sources() -> &'static [(DVec3, f64); MAX_WAVES] {
+    static SOURCES: OnceLock<[(DVec3, f64); MAX_WAVES]> = OnceLock::new();
     SOURCES.get_or_init(|| {
         let mut seed: i32 = -560_851_967;
         std::array::from_fn(|i| {

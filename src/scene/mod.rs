@@ -140,17 +140,17 @@ pub struct Material {
 impl Material {
     /// The material of a texture (with its layers), its patterns using noise generator
     /// `generator` unless they name their own.
-    pub fn new(t: &ir::Texture, generator: u8) -> Material {
+    pub fn new(t: &ir::Texture, scene: crate::pattern::SceneDefaults) -> Material {
         let mut m = Material {
-            pigment: Pigment::new(&t.pigment, generator),
+            pigment: Pigment::new(&t.pigment, scene),
             normal: t
                 .normal
                 .as_deref()
-                .map(|n| Box::new(Normal::new(n, generator))),
-            under: t.under.iter().map(|l| Material::new(l, generator)).collect(),
+                .map(|n| Box::new(Normal::new(n, scene))),
+            under: t.under.iter().map(|l| Material::new(l, scene)).collect(),
             map: t.map.as_deref().map(|m| {
                 Box::new(MaterialMap {
-                    pattern: m.pattern.with_generator(generator),
+                    pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
                     entries: m
                         .entries
@@ -161,7 +161,7 @@ impl Material {
                             if let Some(t) = &m.transform {
                                 e.transform(**t);
                             }
-                            (*v, Material::new(&e, generator))
+                            (*v, Material::new(&e, scene))
                         })
                         .collect(),
                 })
@@ -570,6 +570,14 @@ fn material_ids(ir: &ir::Scene) -> (Vec<MaterialId>, Vec<&ir::Texture>) {
     (ids.into_iter().map(MaterialId).collect(), textures)
 }
 
+/// What the scene's settings give patterns that name nothing themselves.
+fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
+    crate::pattern::SceneDefaults {
+        generator: ir.settings.noise_generator,
+        waves: ir.settings.number_of_waves,
+    }
+}
+
 /// The bits of an interior, as a key for sharing equal ones.
 fn interior_key(i: &Interior) -> u64 {
     [i.ior, i.fade_distance, i.fade_power, i.fade_colour.x, i.fade_colour.y, i.fade_colour.z]
@@ -602,7 +610,7 @@ impl Scene {
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
         let materials = textures
             .into_iter()
-            .map(|t| Material::new(t, ir.settings.noise_generator))
+            .map(|t| Material::new(t, pattern_defaults(ir)))
             .collect();
         // Each distinct mesh is built once, for all its instances (keyed by address).
         let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
@@ -667,7 +675,7 @@ impl Scene {
                 pigments: s
                     .pigments
                     .iter()
-                    .map(|p| Pigment::new(p, ir.settings.noise_generator))
+                    .map(|p| Pigment::new(p, pattern_defaults(ir)))
                     .collect(),
                 emission: s.emission,
             }),

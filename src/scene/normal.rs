@@ -8,7 +8,7 @@
 
 use crate::ir;
 use crate::pattern::noise::{dnoise, noise};
-use crate::pattern::{Pattern, PatternKind, cycloidal, quilt_cubic, quilt_offset, wave_sources};
+use crate::pattern::{Pattern, PatternKind, cycloidal, quilt_cubic, quilt_offset};
 use glam::{DMat3, DMat4, DVec3};
 
 /// POV-Ray's sampling directions for the slope of a pattern: a regular tetrahedron.
@@ -47,7 +47,7 @@ pub struct Normal {
 impl Normal {
     /// The perturbation as placed by the IR, its pattern using noise generator `generator`
     /// unless it names its own.
-    pub fn new(n: &ir::Normal, generator: u8) -> Normal {
+    pub fn new(n: &ir::Normal, scene: crate::pattern::SceneDefaults) -> Normal {
         // The placement, then the transformations among the pattern's warps.
         let mut world_from_pattern = n.transform.as_ref().map_or(DMat4::IDENTITY, |t| t.matrix);
         for w in &n.pattern.warps {
@@ -57,7 +57,7 @@ impl Normal {
         }
         let linear = DMat3::from_mat4(world_from_pattern);
         Normal {
-            pattern: n.pattern.with_generator(generator),
+            pattern: n.pattern.with_scene(scene),
             amount: f64::from(n.amount as f32),
             pattern_from_world: n.transform.as_ref().map(|t| t.matrix.inverse()),
             to_pattern: linear.transpose(),
@@ -67,7 +67,7 @@ impl Normal {
             slope_map: n.slope_map.as_ref().map(|m| m.clone().into_boxed_slice()),
             map: n.map.as_ref().map(|m| {
                 m.iter()
-                    .map(|(v, e)| (*v, Normal::new(e, generator)))
+                    .map(|(v, e)| (*v, Normal::new(e, scene)))
                     .collect()
             }),
         }
@@ -119,7 +119,7 @@ impl Normal {
                 n += a * r;
             }
             PatternKind::Ripples | PatternKind::Waves => {
-                let waves = wave_sources();
+                let waves = pattern.waves();
                 let count = waves.len() as f64;
                 for (src, f) in waves {
                     let d = tp - *src;
@@ -184,7 +184,13 @@ mod tests {
         )
         .unwrap_or_else(|e| panic!("{body}: {e}"));
         let n = loaded.scene.objects[0].texture.normal.as_deref().expect("a normal");
-        Normal::new(n, 2)
+        Normal::new(
+            n,
+            crate::pattern::SceneDefaults {
+                generator: 2,
+                waves: 10,
+            },
+        )
     }
 
     /// Perturbed normals of a plane facing −z against POV-Ray's, for every setup of the test

@@ -40,16 +40,16 @@ enum Map {
 impl Pigment {
     /// The pigment as placed by the IR, its patterns using noise generator `generator` unless
     /// they name their own.
-    pub fn new(p: &ir::Pigment, generator: u8) -> Pigment {
+    pub fn new(p: &ir::Pigment, scene: crate::pattern::SceneDefaults) -> Pigment {
         let kind = match &p.kind {
             ir::PigmentKind::Solid(c) => Kind::Solid(*c),
             ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new(Mapped {
-                pattern: pp.pattern.with_generator(generator),
+                pattern: pp.pattern.with_scene(scene),
                 map: match &pp.map {
                     ir::PigmentMap::Colours(m) => Map::Colours(m.entries.clone().into()),
                     ir::PigmentMap::Pigments(ps) => Map::Pigments(
                         ps.iter()
-                            .map(|(v, p)| (*v, Pigment::new(p, generator)))
+                            .map(|(v, p)| (*v, Pigment::new(p, scene)))
                             .collect(),
                     ),
                 },
@@ -262,7 +262,10 @@ mod tests {
             })),
             transform: None,
             },
-            2,
+            crate::pattern::SceneDefaults {
+                generator: 2,
+                waves: 10,
+            },
         );
         assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.2));
         assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(0.7));
