@@ -392,6 +392,22 @@ impl<'a> Evaluator<'a> {
                 node.word_span,
             );
         }
+        if matches!(
+            (context, node.word.as_str()),
+            ("pigment", "pigment_map" | "color_map" | "colour_map")
+                | ("normal", "normal_map")
+                | ("texture", "texture_map")
+        ) {
+            // A map the grammar could not read (it reads maps where they may stand): an entry
+            // holds what trace does not read yet, such as a function pattern.
+            return Diagnostic::error(
+                format!(
+                    "unsupported: an entry of this `{}` that trace cannot read yet (a function pattern or another construct outside the subset)",
+                    node.word
+                ),
+                node.word_span,
+            );
+        }
         match keywords::status(&node.word) {
             Some(keywords::Status::Unsupported(_)) => self.unknown_word(&node.word, node.word_span),
             // A keyword trace reads elsewhere: say that it is misplaced, not unknown.
