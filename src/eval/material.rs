@@ -19,15 +19,6 @@ fn brick_mortar(m: f64) -> f64 {
 /// POV-Ray's bump amount when a normal pattern gives none.
 const DEFAULT_BUMP_SIZE: f64 = 0.5;
 
-/// Appends a transformation to a pigment's placement.
-pub(super) fn move_pigment(p: &mut Pigment, t: Transform) {
-    append(&mut p.transform, t);
-}
-
-/// Appends a transformation to a texture's placement (see [`Texture::transform`]).
-pub(super) fn move_texture(texture: &mut Texture, t: Transform) {
-    texture.transform(t);
-}
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
 /// last.
@@ -40,11 +31,6 @@ pub(super) fn layer(mut top: Texture, below: Texture) -> Texture {
     under.append(&mut top.under);
     top.under = under;
     top
-}
-
-fn append(placement: &mut Option<Box<Transform>>, t: Transform) {
-    let before = placement.take().map_or(Transform::IDENTITY, |b| *b);
-    *placement = Some(Box::new(before.then(t)));
 }
 
 impl Evaluator<'_> {
@@ -69,7 +55,7 @@ impl Evaluator<'_> {
                 NodeKind::Finish => texture.finish = ev.shared_finish_block(item, &texture.finish)?,
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
-                    move_texture(&mut texture, t);
+                    texture.transform(t);
                 }
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
@@ -278,7 +264,7 @@ impl Evaluator<'_> {
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
-                    move_pigment(&mut pigment, t);
+                    t.append_to(&mut pigment.transform);
                 }
                 _ => return Err(ev.unknown_item(item, "pigment")),
             }
@@ -651,7 +637,7 @@ impl Evaluator<'_> {
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
                         _ if Self::is_transform(item) => {
                             let t = ev.transform(item)?;
-                            append(&mut n.transform, t);
+                            t.append_to(&mut n.transform);
                         }
                         _ => return Err(ev.unknown_item(item, "normal")),
                     }
@@ -1130,7 +1116,7 @@ impl Evaluator<'_> {
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
                     if let Some(texture) = &mut texture {
-                        move_texture(texture, t);
+                        texture.transform(t);
                     }
                 }
                 _ => return Err(ev.unknown_item(item, "material")),

@@ -553,7 +553,7 @@ impl<'a> Evaluator<'a> {
         }
         if moved != ir::Transform::IDENTITY {
             for p in &mut sky.pigments {
-                material::move_pigment(p, moved);
+                moved.append_to(&mut p.transform);
             }
         }
         Ok(sky)

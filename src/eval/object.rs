@@ -4,7 +4,6 @@
 //! modifiers on the group apply to every member, and the group's texture to the members that
 //! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
 
-use super::material::move_texture;
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
@@ -148,11 +147,11 @@ impl ObjectValue {
                 }
             }
             if let Some(tex) = &mut part.texture {
-                move_texture(tex, t);
+                tex.transform(t);
             }
         }
         if let Some(tex) = &mut self.texture {
-            move_texture(tex, t);
+            tex.transform(t);
         }
         for light in &mut self.lights {
             super::transform_light(light, &t.matrix);

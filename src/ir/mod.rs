@@ -363,6 +363,12 @@ impl Transform {
         }
     }
 
+    /// Appends this transformation to a placement (`None` is the identity).
+    pub fn append_to(self, placement: &mut Option<Box<Transform>>) {
+        let before = placement.take().map_or(Transform::IDENTITY, |b| *b);
+        *placement = Some(Box::new(before.then(self)));
+    }
+
     /// The inverse transformation.
     pub fn inverse(self) -> Transform {
         Transform {
@@ -671,16 +677,12 @@ impl Texture {
     /// Moves the texture by `t` (after its own transformations): its pigment and normal in
     /// every layer, and a pattern of textures with the textures in its space.
     pub fn transform(&mut self, t: Transform) {
-        fn append(placement: &mut Option<Box<Transform>>, t: Transform) {
-            let before = placement.take().map_or(Transform::IDENTITY, |b| *b);
-            *placement = Some(Box::new(before.then(t)));
-        }
         if let Some(m) = &mut self.map {
-            append(&mut m.transform, t);
+            t.append_to(&mut m.transform);
         }
-        append(&mut self.pigment.transform, t);
+        t.append_to(&mut self.pigment.transform);
         if let Some(n) = &mut self.normal {
-            append(&mut n.transform, t);
+            t.append_to(&mut n.transform);
         }
         for layer in &mut self.under {
             layer.transform(t);

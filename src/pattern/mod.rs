@@ -828,7 +828,8 @@ fn crackle(p: DVec3, c: &Crackle, generator: u8) -> f64 {
         }
     };
     let offsets = crackle_offsets();
-    let points: Vec<DVec3> = offsets.iter().map(point).collect();
+    // (On the stack: crackle runs for every shading sample.)
+    let points: [DVec3; 81] = std::array::from_fn(|i| point(&offsets[i]));
     let (mut m1, mut m2, mut m3) = (dist(points[0]), dist(points[1]), dist(points[2]));
     let mut nearest = 0;
     if m2 < m1 {
