@@ -522,6 +522,7 @@ const SUPPORTED: &[&str] = &[
     "bitwise_and",
     "bitwise_or",
     "bitwise_xor",
+    "black_hole",
     "blue",
     "box",
     "boxed",
@@ -569,6 +570,7 @@ const SUPPORTED: &[&str] = &[
     "dimensions",
     "direction",
     "disc",
+    "dist_exp",
     "distance",
     "div",
     "else",
@@ -625,6 +627,7 @@ const SUPPORTED: &[&str] = &[
     "log",
     "look_at",
     "macro",
+    "major_radius",
     "map_type",
     "marble",
     "material",
@@ -657,6 +660,7 @@ const SUPPORTED: &[&str] = &[
     "onion",
     "open",
     "orient",
+    "orientation",
     "orthographic",
     "parallel",
     "perspective",
@@ -720,6 +724,7 @@ const SUPPORTED: &[&str] = &[
     "srgbt",
     "str",
     "strcmp",
+    "strength",
     "strlen",
     "strlwr",
     "strupr",
@@ -732,6 +737,7 @@ const SUPPORTED: &[&str] = &[
     "texture",
     "texture_map",
     "tightness",
+    "toroidal",
     "torus",
     "transform",
     "translate",
@@ -862,14 +868,14 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "conic_sweep" | "contained_by" | "cubic_spline" | "evaluate" | "flatness"
         | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "slice" | "smooth" | "sqr"
-        | "strength" | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
+        | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
         | "water_level" | "thickness" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude" | "black_hole" | "cube" | "dist_exp" | "image_pattern" | "major_radius"
+        "altitude" | "cube" | "image_pattern"
         | "max_iteration" | "number_of_sides" | "number_of_tiles"
-        | "orientation" | "pigment_pattern" | "ratio"
-        | "tile2" | "tiles" | "toroidal" | "use_alpha"
+        | "pigment_pattern" | "ratio"
+        | "tile2" | "tiles" | "use_alpha"
         | "use_color" | "use_colour" | "use_index" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }

@@ -3,7 +3,7 @@
 use super::value::{colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
-use crate::pattern::noise;
+use crate::pattern::{BlackHole, Mapping, MappingWarp, noise};
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
     PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
@@ -380,15 +380,83 @@ impl Evaluator<'_> {
                     flip,
                 }
             }
-            _ => {
-                return Err(Diagnostic::error(
-                    format!(
-                        "unsupported: a `{}` warp (trace reads turbulence and repeat warps)",
-                        first.word
-                    ),
-                    first.word_span,
-                ));
+            "black_hole" => {
+                let (center, radius) = match first.args.as_slice() {
+                    [c, r] => (self.vec3(c)?, self.float(r)?),
+                    _ => {
+                        return Err(Diagnostic::error(
+                            "`black_hole` takes a centre and a radius: `black_hole <x, y, z>, r`",
+                            first.span,
+                        ));
+                    }
+                };
+                let mut b = BlackHole {
+                    center,
+                    radius,
+                    strength: 1.0,
+                    falloff: 2.0,
+                    inverse: false,
+                    kind: 0,
+                    repeat: None,
+                    uncertainty: None,
+                };
+                for it in &item.children[1..] {
+                    match it.word.as_str() {
+                        "inverse" if it.args.is_empty() => b.inverse = true,
+                        "strength" => b.strength = value(self, it)?.x,
+                        "falloff" => b.falloff = value(self, it)?.x,
+                        "type" => b.kind = value(self, it)?.x as i32,
+                        "repeat" => b.repeat = Some(value(self, it)?),
+                        "turbulence" => b.uncertainty = Some(value(self, it)?),
+                        _ => return Err(self.unknown_item(it, "a black_hole warp")),
+                    }
+                }
+                Warp::BlackHole(Box::new(b.checked()))
             }
+            "cylindrical" | "spherical" | "toroidal" | "planar" | "cubic" => {
+                let mut m = MappingWarp {
+                    mapping: match first.word.as_str() {
+                        "cylindrical" => Mapping::Cylindrical,
+                        "spherical" => Mapping::Spherical,
+                        "toroidal" => Mapping::Toroidal { major_radius: 1.0 },
+                        "cubic" => Mapping::Cubic,
+                        _ => Mapping::Planar { offset: 0.0 },
+                    },
+                    orientation: glam::DVec3::Z,
+                    dist_exp: 0.0,
+                };
+                match (first.word.as_str(), first.args.as_slice()) {
+                    (_, []) => {}
+                    ("planar", [v, offset]) => {
+                        m.orientation = self.vec3(v)?.normalize_or_zero();
+                        m.mapping = Mapping::Planar {
+                            offset: self.float(offset)?,
+                        };
+                    }
+                    _ => {
+                        return Err(Diagnostic::error(
+                            format!("`{}` takes no value here", first.word),
+                            first.args[0].span,
+                        ));
+                    }
+                }
+                for it in &item.children[1..] {
+                    match (it.word.as_str(), &mut m.mapping) {
+                        ("orientation", Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. }) => {
+                            m.orientation = value(self, it)?.normalize_or_zero();
+                        }
+                        ("dist_exp", Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. }) => {
+                            m.dist_exp = value(self, it)?.x;
+                        }
+                        ("major_radius", Mapping::Toroidal { major_radius }) => {
+                            *major_radius = value(self, it)?.x;
+                        }
+                        _ => return Err(self.unknown_item(it, &format!("a {} warp", first.word))),
+                    }
+                }
+                Warp::Mapping(Box::new(m))
+            }
+            _ => return Err(self.unknown_item(first, "a warp")),
         };
         let mut warps = vec![warp];
         if let Some(t) = placement.take() {

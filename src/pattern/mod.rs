@@ -80,6 +80,241 @@ pub enum Warp {
         /// −1 on the mirrored axes, 1 elsewhere.
         flip: DVec3,
     },
+    /// `warp { black_hole C, R … }`: points within R of the centre are pulled towards it
+    /// (pushed with `inverse`).
+    BlackHole(Box<BlackHole>),
+    /// The mapping warps: pattern space wrapped around a shape, `(angle, height or second
+    /// angle, distance)` before the orientation turns it.
+    Mapping(Box<MappingWarp>),
+}
+
+/// `warp { black_hole … }` (POV-Ray's type 0, the only one it implements).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlackHole {
+    /// The centre (of the first copy, with `repeat`).
+    pub center: DVec3,
+    /// The radius of the region it affects.
+    pub radius: f64,
+    /// `strength` (1): how far a point moves, as a fraction of its distance from the centre.
+    pub strength: f64,
+    /// `falloff` (2): the power of the fall-off towards the edge.
+    pub falloff: f64,
+    /// `inverse`: push instead of pull.
+    pub inverse: bool,
+    /// `type` other than 0 leaves points where they are, as in POV-Ray.
+    pub kind: i32,
+    /// `repeat V`: a copy in every cell of this size (0 on an axis: no repeat along it).
+    pub repeat: Option<DVec3>,
+    /// `turbulence V`: each copy's centre moves by up to this, by its cell's random numbers.
+    pub uncertainty: Option<DVec3>,
+}
+
+impl BlackHole {
+    /// POV-Ray's parse-time checks of a repeating black hole: the centre at least a radius
+    /// in, and cells wide enough for the hole and its uncertainty (a cell under 1e-10 does
+    /// not repeat).
+    pub fn checked(mut self) -> BlackHole {
+        let Some(repeat) = self.repeat.as_mut() else {
+            return self;
+        };
+        let u = self.uncertainty.unwrap_or(DVec3::ZERO);
+        for i in 0..3 {
+            if repeat[i] > 0.0 {
+                if self.center[i] < self.radius {
+                    self.center[i] = self.radius;
+                }
+                let least = self.center[i] + self.radius + u[i];
+                if repeat[i] < least {
+                    repeat[i] = least;
+                }
+                if repeat[i] < EPSILON {
+                    repeat[i] = 0.0;
+                }
+            }
+        }
+        self
+    }
+
+    fn apply(&self, q: DVec3) -> DVec3 {
+        let mut center = self.center;
+        if let Some(repeat) = self.repeat {
+            let mut block = [0i32; 3];
+            for i in 0..3 {
+                if repeat[i] >= EPSILON {
+                    block[i] = trunc_i32((q[i] / repeat[i]).floor());
+                }
+            }
+            if let Some(u) = self.uncertainty {
+                let seed = noise::hash3d(block[0], block[1], block[2]);
+                let r = pattern_rands();
+                center += DVec3::new(r[seed] * u.x, r[seed + 1] * u.y, r[seed + 2] * u.z);
+            }
+            center += repeat * DVec3::new(block[0] as f64, block[1] as f64, block[2] as f64);
+        }
+        let delta = q - center;
+        let length = delta.length();
+        if length >= self.radius || self.kind != 0 {
+            return q;
+        }
+        let near = (self.radius - length) / self.radius;
+        let strength = (near.powf(self.falloff) * self.strength).min(1.0);
+        q + delta * if self.inverse { -strength } else { strength }
+    }
+}
+
+/// Which shape a mapping warp wraps pattern space around.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Mapping {
+    /// `cylindrical`: (angle around y, y, distance from the y axis).
+    Cylindrical,
+    /// `spherical`: (longitude, latitude, distance from the origin).
+    Spherical,
+    /// `toroidal`: (angle around y, angle around the ring, distance from the ring) for a ring
+    /// of `major_radius`.
+    Toroidal {
+        /// `major_radius` (1).
+        major_radius: f64,
+    },
+    /// `planar V, offset`: (x, y, offset).
+    Planar {
+        /// The offset that becomes z.
+        offset: f64,
+    },
+    /// `cubic`: a cube's six faces unfolded on the xy square as a box's uv map does.
+    Cubic,
+}
+
+/// A mapping warp with its modifiers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MappingWarp {
+    /// The shape.
+    pub mapping: Mapping,
+    /// `orientation V` (normalised; z by default): which axis the mapped coordinates turn to.
+    pub orientation: DVec3,
+    /// `dist_exp E` (0): the angles are scaled by the distance to this power.
+    pub dist_exp: f64,
+}
+
+impl MappingWarp {
+    fn apply(&self, q: DVec3) -> DVec3 {
+        let (x, y, z) = (q.x, q.y, q.z);
+        // The angle of (x, z) from +x, a fraction of a turn in [0, 1).
+        let turn = |x: f64, z: f64, len: f64| {
+            if z == 0.0 {
+                if x > 0.0 { 0.0 } else { PI }
+            } else {
+                let t = (x / len).acos();
+                if z < 0.0 { TWO_PI - t } else { t }
+            }
+        };
+        let scaled = |v: f64, d: f64| {
+            if self.dist_exp == 1.0 {
+                v * d
+            } else if self.dist_exp != 0.0 {
+                v * d.powf(self.dist_exp)
+            } else {
+                v
+            }
+        };
+        let mapped = match self.mapping {
+            Mapping::Planar { offset } => DVec3::new(x, y, offset),
+            Mapping::Cylindrical => {
+                let len = (x * x + z * z).sqrt();
+                if len == 0.0 {
+                    return q;
+                }
+                DVec3::new(scaled(turn(x, z, len) / TWO_PI, len), y, len)
+            }
+            Mapping::Spherical => {
+                let dist = (x * x + y * y + z * z).sqrt();
+                if dist == 0.0 {
+                    return q;
+                }
+                let (x, y, z) = (x / dist, y / dist, z / dist);
+                let phi = 0.5 + y.asin() / PI;
+                let len = (x * x + z * z).sqrt();
+                let theta = if len == 0.0 {
+                    0.0
+                } else {
+                    turn(x, z, len) / TWO_PI
+                };
+                DVec3::new(scaled(theta, dist), scaled(phi, dist), dist)
+            }
+            Mapping::Toroidal { major_radius } => {
+                let len = (x * x + z * z).sqrt();
+                if len == 0.0 {
+                    return q;
+                }
+                let theta = 0.0 - turn(x, z, len);
+                let x = len - major_radius;
+                let len = (x * x + y * y).sqrt();
+                let mut phi = (-x / len).acos();
+                if y > 0.0 {
+                    phi = TWO_PI - phi;
+                }
+                let (theta, phi) = (theta / -TWO_PI, phi / TWO_PI);
+                DVec3::new(scaled(theta, len), scaled(phi, len), len)
+            }
+            Mapping::Cubic => return cubic_warp(q),
+        };
+        let o = self.orientation;
+        if o == DVec3::Z {
+            return mapped;
+        }
+        let (x, y, z) = (mapped.x, mapped.y, mapped.z);
+        DVec3::new(
+            o.x * z + o.y * x + o.z * x,
+            o.x * y + o.y * -z + o.z * y,
+            o.x * -x + o.y * y + o.z * z,
+        )
+    }
+}
+
+/// `warp { cubic }`: the point's face of the origin-centred cube it lies on, unfolded.
+fn cubic_warp(q: DVec3) -> DVec3 {
+    let (x, y, z) = (q.x, q.y, q.z);
+    let (ax, ay, az) = (x.abs(), y.abs(), z.abs());
+    let third = 1.0 / 3.0;
+    if x >= 0.0 && x >= ay && x >= az {
+        DVec3::new(
+            0.75 - 0.25 * (z / x + 1.0) / 2.0,
+            third + third * (y / x + 1.0) / 2.0,
+            x,
+        )
+    } else if y >= 0.0 && y >= ax && y >= az {
+        DVec3::new(
+            0.25 + 0.25 * (x / y + 1.0) / 2.0,
+            1.0 - third * (z / y + 1.0) / 2.0,
+            y,
+        )
+    } else if z >= 0.0 && z >= ax && z >= ay {
+        DVec3::new(
+            0.25 + 0.25 * (x / z + 1.0) / 2.0,
+            third + third * (y / z + 1.0) / 2.0,
+            z,
+        )
+    } else if x < 0.0 && x <= -ay && x <= -az {
+        let x = -x;
+        DVec3::new(
+            0.25 * (z / x + 1.0) / 2.0,
+            third + third * (y / x + 1.0) / 2.0,
+            x,
+        )
+    } else if y < 0.0 && y <= -ax && y <= -az {
+        let y = -y;
+        DVec3::new(
+            0.25 + 0.25 * (x / y + 1.0) / 2.0,
+            third * (z / y + 1.0) / 2.0,
+            y,
+        )
+    } else {
+        let z = -z;
+        DVec3::new(
+            1.0 - 0.25 * (x / z + 1.0) / 2.0,
+            third + third * (y / z + 1.0) / 2.0,
+            z,
+        )
+    }
 }
 
 impl Warp {
@@ -111,6 +346,8 @@ impl Warp {
                 }
                 r + f64::from(block) * *offset
             }
+            Warp::BlackHole(b) => b.apply(q),
+            Warp::Mapping(m) => m.apply(q),
         }
     }
 }
