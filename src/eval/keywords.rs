@@ -66,6 +66,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "break",
     "brick",
     "brick_size",
+    "brightness",
     "brilliance",
     "bump_map",
     "bump_size",
@@ -97,8 +98,10 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "contained_by",
     "control0",
     "control1",
+    "coords",
     "cos",
     "cosh",
+    "count",
     "crackle",
     "crand",
     "cube",
@@ -130,6 +133,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "dispersion_samples",
     "dist_exp",
     "distance",
+    "distance_maximum",
     "div",
     "double_illuminate",
     "dtag",
@@ -139,6 +143,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "emission",
     "end",
     "error",
+    "error_bound",
     "evaluate",
     "exp",
     "expand_thresholds",
@@ -179,13 +184,16 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "gif",
     "global",
     "global_lights",
+    "global_settings",
     "gradient",
     "granite",
     "gray",
+    "gray_threshold",
     "green",
     "hdr",
     "height_field",
     "hexagon",
+    "hf_gray_16",
     "hierarchy",
     "hollow",
     "hypercomplex",
@@ -229,6 +237,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "log",
     "look_at",
     "looks_like",
+    "low_error_factor",
     "macro",
     "magnet",
     "major_radius",
@@ -246,6 +255,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "max_sample",
     "max_trace",
     "max_trace_level",
+    "maximum_reuse",
     "media",
     "media_attenuation",
     "media_interaction",
@@ -255,11 +265,15 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "mesh_camera",
     "metallic",
     "method",
+    "metric",
     "min",
+    "min_extent",
+    "minimum_reuse",
     "mm_per_unit",
     "mod",
     "mortar",
     "natural_spline",
+    "nearest_count",
     "no",
     "no_bump_scale",
     "no_image",
@@ -334,6 +348,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "quilted",
     "radial",
     "radians",
+    "radiosity",
     "radius",
     "rainbow",
     "ramp_wave",
@@ -341,6 +356,8 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "range",
     "ratio",
     "read",
+    "reciprocal",
+    "recursion_limit",
     "red",
     "reflection",
     "reflection_exponent",
@@ -373,6 +390,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "sint32be",
     "sint32le",
     "sint8",
+    "size",
     "sky",
     "sky_sphere",
     "slice",
@@ -380,6 +398,7 @@ pub const POVRAY_KEYWORDS: &[&str] = &[
     "slope_map",
     "smooth",
     "smooth_triangle",
+    "solid",
     "sor",
     "spacing",
     "specular",
@@ -551,6 +570,7 @@ const SUPPORTED: &[&str] = &[
     "conserve_energy",
     "control0",
     "control1",
+    "coords",
     "cos",
     "cosh",
     "crackle",
@@ -581,6 +601,7 @@ const SUPPORTED: &[&str] = &[
     "exp",
     "exponent",
     "face_indices",
+    "facets",
     "fade_color",
     "fade_colour",
     "fade_distance",
@@ -704,6 +725,7 @@ const SUPPORTED: &[&str] = &[
     "sin",
     "sine_wave",
     "sinh",
+    "size",
     "sky",
     "sky_sphere",
     "slope_map",
@@ -839,7 +861,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
-        "density_file" | "facets" | "function" | "julia" | "magnet" | "mandel"
+        "density_file" | "function" | "julia" | "magnet" | "mandel"
         | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
@@ -861,13 +883,15 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
         | "no_radiosity" | "pass_through" | "pretrace_end" | "pretrace_start" | "samples"
         | "save_file" | "spacing" | "steps" | "target" | "exterior" | "arc_angle"
-        | "falloff_angle" => {
+        | "falloff_angle" | "brightness" | "count" | "distance_maximum" | "error_bound"
+        | "gray_threshold" | "low_error_factor" | "maximum_reuse" | "minimum_reuse"
+        | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
         "all_intersections" | "b_spline" | "bezier_spline" | "component"
         | "conic_sweep" | "contained_by" | "cubic_spline" | "evaluate" | "flatness"
         | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
-        | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "slice" | "smooth" | "sqr"
+        | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
         | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
         | "water_level" | "thickness" => {
             "this shape or shape item is not supported by trace yet"

@@ -59,6 +59,7 @@ impl Evaluator<'_> {
                 }
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
+                    normal_only(&kind, item)?;
                     if let Some(extra) = rest.first() {
                         return Err(Diagnostic::error(
                             format!("a `{}` of textures takes textures, not values", item.word),
@@ -215,6 +216,7 @@ impl Evaluator<'_> {
                 }
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
+                    normal_only(&kind, item)?;
                     let map = PigmentMap::Colours(ev.pattern_map(item, &kind, rest)?);
                     pigment.kind = PigmentKind::Pattern(Box::new(PatternPigment {
                         pattern: Pattern::new(kind),
@@ -514,6 +516,7 @@ impl Evaluator<'_> {
             "crackle" => PatternKind::Crackle(Box::default()),
             "cylindrical" => PatternKind::Cylindrical,
             "dents" => PatternKind::Dents,
+            "facets" => PatternKind::Facets(Default::default()),
             "granite" => PatternKind::Granite,
             "hexagon" => PatternKind::Hexagon,
             "leopard" => PatternKind::Leopard,
@@ -808,13 +811,25 @@ impl Evaluator<'_> {
                     _ => return Err(misplaced("quilted")),
                 }
             }
+            "coords" | "size" | "metric" if matches!(pattern.kind, PatternKind::Facets(_)) => {
+                // `metric` is a vector, of which POV-Ray uses x.
+                let v = self.vec3(arg()?)?.x;
+                if let PatternKind::Facets(f) = &mut pattern.kind {
+                    match item.word.as_str() {
+                        "coords" => f.coords = v,
+                        "size" => f.size = v,
+                        _ => f.metric = v,
+                    }
+                }
+            }
+            "coords" | "size" => return Err(misplaced("facets")),
             "form" | "metric" | "offset" | "solid" => {
                 let PatternKind::Crackle(c) = &mut pattern.kind else {
                     return Err(misplaced("crackle"));
                 };
                 match item.word.as_str() {
                     "form" => c.form = self.vec3(arg()?)?,
-                    "metric" => c.metric = self.float(arg()?)?,
+                    "metric" => c.metric = self.vec3(arg()?)?.x,
                     "offset" => c.offset = self.float(arg()?)?,
                     _ => c.solid = true,
                 }
@@ -1286,4 +1301,15 @@ mod tests {
         assert!(blocks.len() >= 56, "{} pattern variants read", blocks.len());
         assert!(checked >= 1500, "{checked} values compared");
     }
+}
+
+/// POV-Ray's refusal of a normal-only pattern (`facets`) in a pigment or a texture.
+fn normal_only(kind: &PatternKind, item: &Node) -> Result<()> {
+    if matches!(kind, PatternKind::Facets(_)) {
+        return Err(Diagnostic::error(
+            format!("`{}` can stand only in a normal (POV-Ray refuses it elsewhere too)", item.word),
+            item.word_span,
+        ));
+    }
+    Ok(())
 }

@@ -472,6 +472,8 @@ impl Pattern {
             }
             PatternKind::Crackle(c) => crackle(p, c, generator),
             PatternKind::Cylindrical => clip((x * x + z * z).sqrt()),
+            // A normal only (the evaluator refuses it elsewhere).
+            PatternKind::Facets(_) => 0.0,
             PatternKind::Dents => {
                 let n = noise(p, generator);
                 n * n * n
@@ -629,6 +631,10 @@ pub enum PatternKind {
     Cylindrical,
     /// `dents`: noise cubed.
     Dents,
+    /// `facets` (normals only): flat facets, the normal replaced by the nearest of random
+    /// points around it (or, with `coords`, tilted by the noise at the nearest random point
+    /// around the surface point).
+    Facets(Facets),
     /// `gradient V`: the fraction of `p·V̂` (unit `V̂`).
     Gradient(DVec3),
     /// `granite`: six octaves of folded noise.
@@ -685,6 +691,77 @@ pub struct Crackle {
     pub offset: f64,
     /// `solid`: the noise at the nearest point instead of distances.
     pub solid: bool,
+}
+
+/// `facets`' parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Facets {
+    /// `size` (0.1): the facets' size.
+    pub size: f64,
+    /// `coords` (0): facets by position, with this much tilt; 0 for facets by direction.
+    pub coords: f64,
+    /// `metric` (2): the distance's exponent.
+    pub metric: f64,
+}
+
+impl Default for Facets {
+    fn default() -> Facets {
+        Facets {
+            size: 0.1,
+            coords: 0.0,
+            metric: 2.0,
+        }
+    }
+}
+
+/// POV-Ray's `PickInCube`: the random point of the unit cube holding `p` (cells below the
+/// point by a hair).
+fn pick_in_cube(p: DVec3) -> DVec3 {
+    let flo = (p - DVec3::splat(EPSILON)).floor();
+    let seed = noise::hash3d(trunc_i32(flo.x), trunc_i32(flo.y), trunc_i32(flo.z));
+    let r = pattern_rands();
+    flo + DVec3::new(r[seed], r[seed + 1], r[seed + 2])
+}
+
+/// The `facets` normal at pattern point `p` for the unit normal `n` in pattern space (not
+/// normalised), as POV-Ray's facets normal computes it.
+pub fn facets_normal(p: DVec3, n: DVec3, f: &Facets) -> DVec3 {
+    let scale = if f.size < 1e-6 { 1e6 } else { 1.0 / f.size };
+    let t = if f.coords != 0.0 { p } else { n } * scale;
+    let distance = |d: DVec3| {
+        if f.metric == 2.0 {
+            d.length_squared()
+        } else if f.metric == 1.0 {
+            // (POV-Ray sums the differences without their signs here.)
+            d.x + d.y + d.z
+        } else {
+            d.x.abs().powf(f.metric) + d.y.abs().powf(f.metric) + d.z.abs().powf(f.metric)
+        }
+    };
+    // The random points of this cube and of the 80 around it within a knight's move.
+    let mut best: Option<(f64, DVec3)> = None;
+    for ax in -2..=2i32 {
+        for ay in -2..=2i32 {
+            for az in -2..=2i32 {
+                if (ax.abs() > 1) as u8 + (ay.abs() > 1) as u8 + (az.abs() > 1) as u8 > 1 {
+                    continue;
+                }
+                let c = pick_in_cube(t + DVec3::new(ax as f64, ay as f64, az as f64));
+                let d = distance(c - t);
+                if best.is_none_or(|(m, _)| d < m) {
+                    best = Some((d, c));
+                }
+            }
+        }
+    }
+    let nearest = best.map_or(t, |(_, c)| c);
+    if f.coords != 0.0 {
+        let pert = dnoise(nearest);
+        let pert = pert - n * pert.dot(n);
+        n + f.coords * pert
+    } else {
+        nearest
+    }
 }
 
 impl Default for Crackle {

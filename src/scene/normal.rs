@@ -8,7 +8,7 @@
 
 use crate::ir;
 use crate::pattern::noise::{dnoise, noise};
-use crate::pattern::{Pattern, PatternKind, cycloidal, quilt_cubic, quilt_offset};
+use crate::pattern::{Pattern, PatternKind, cycloidal, facets_normal, quilt_cubic, quilt_offset};
 use glam::{DMat3, DMat4, DVec3};
 
 /// POV-Ray's sampling directions for the slope of a pattern: a regular tetrahedron.
@@ -133,6 +133,7 @@ impl Normal {
                     n += (s / (len * count)) * d;
                 }
             }
+            PatternKind::Facets(f) => n = facets_normal(tp, n, f),
             PatternKind::Quilted { control0, control1 } => {
                 let q = quilt_offset(tp);
                 let t = quilt_cubic(q.length(), *control0, *control1);
