@@ -1224,6 +1224,17 @@ fn pigment_from(v: Value, span: crate::diag::Span, pigment: Pigment) -> Result<P
     })
 }
 
+/// POV-Ray's refusal of a normal-only pattern (`facets`) in a pigment or a texture.
+fn normal_only(kind: &PatternKind, item: &Node) -> Result<()> {
+    if matches!(kind, PatternKind::Facets(_)) {
+        return Err(Diagnostic::error(
+            format!("`{}` can stand only in a normal (POV-Ray refuses it elsewhere too)", item.word),
+            item.word_span,
+        ));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use crate::ir::PigmentKind;
@@ -1303,13 +1314,3 @@ mod tests {
     }
 }
 
-/// POV-Ray's refusal of a normal-only pattern (`facets`) in a pigment or a texture.
-fn normal_only(kind: &PatternKind, item: &Node) -> Result<()> {
-    if matches!(kind, PatternKind::Facets(_)) {
-        return Err(Diagnostic::error(
-            format!("`{}` can stand only in a normal (POV-Ray refuses it elsewhere too)", item.word),
-            item.word_span,
-        ));
-    }
-    Ok(())
-}
