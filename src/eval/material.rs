@@ -82,6 +82,15 @@ impl Evaluator<'_> {
                         ));
                     }
                 },
+                NodeKind::Warp => match &mut texture.map {
+                    Some(m) => ev.warp(item, &mut m.pattern, &mut m.transform)?,
+                    None => {
+                        return Err(Diagnostic::error(
+                            "a warp in a texture applies to its pattern, and this texture has none (a pigment's or normal's warp goes inside it)",
+                            item.word_span,
+                        ));
+                    }
+                },
                 NodeKind::Texture => {
                     let t = ev.texture(item)?;
                     list.push((t, item.word_span));
@@ -107,12 +116,6 @@ impl Evaluator<'_> {
                 None => Ok(texture),
             };
         };
-        if m.pattern.turbulence.is_some() {
-            return Err(Diagnostic::error(
-                "unsupported: turbulence on a pattern of textures (not supported by trace yet)",
-                pattern_span.unwrap_or(node.word_span),
-            ));
-        }
         match (m.pattern.kind.list_len(), map) {
             (_, Some((entries, span))) => {
                 if m.pattern.kind.list_len().is_some() || !list.is_empty() {

@@ -282,6 +282,10 @@ impl<'a> Tracer<'a> {
         };
         if map.averages() {
             // POV-Ray's average of textures: each lit, weighted by its entry's value.
+            let hit = &SurfaceHit {
+                texture_point: map.entry_point(hit.texture_point),
+                ..*hit
+            };
             let total: f64 = map.entries.iter().map(|(w, _)| w).sum();
             let mut sum = Rgb::ZERO;
             for (w, e) in map.entries.iter() {
@@ -289,7 +293,11 @@ impl<'a> Tracer<'a> {
             }
             return sum / total;
         }
-        let (prev, cur, f) = map.at(hit.point);
+        let (prev, cur, f, texture_point) = map.at(hit.texture_point);
+        let hit = &SurfaceHit {
+            texture_point,
+            ..*hit
+        };
         let c = self.shade_mapped(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
         if prev == cur {
             return c;
@@ -401,7 +409,7 @@ impl<'a> Tracer<'a> {
             for layer in material.layers().take(layers).skip(1) {
                 // (What the layer above lets through.)
                 let (upper, upper_reflec, upper_colour) = previous;
-                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_at(hit.point));
+                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_at(hit.texture_point));
                 above *= filter_colour(&c);
                 if upper.finish.conserve_energy {
                     above *= (Rgb::ONE - upper_reflec).min(Rgb::ONE);
@@ -500,8 +508,8 @@ impl<'a> Tracer<'a> {
         let n = layer
             .normal
             .as_ref()
-            .map_or(raw, |normal| normal.perturb(hit.point, raw));
-        let colour = layer.pigment.colour_at(hit.point);
+            .map_or(raw, |normal| normal.perturb(hit.texture_point, raw));
+        let colour = layer.pigment.colour_at(hit.texture_point);
         let reflec = reflectivity(layer, &colour, -d.dot(n), fresnel_eta);
         (n, colour, reflec)
     }

@@ -152,6 +152,7 @@ impl Material {
                 Box::new(MaterialMap {
                     pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
+                    world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
                     entries: m
                         .entries
                         .iter()
@@ -192,6 +193,7 @@ impl Material {
     pub fn filter_at(&self, p: DVec3) -> Rgb {
         if let Some(m) = &self.map {
             if m.averages() {
+                let p = m.entry_point(p);
                 let total: f64 = m.entries.iter().map(|(w, _)| w).sum();
                 return m
                     .entries
@@ -200,7 +202,7 @@ impl Material {
                     .fold(Rgb::ZERO, |a, b| a + b)
                     / total;
             }
-            let (prev, cur, t) = m.at(p);
+            let (prev, cur, t, p) = m.at(p);
             let f = m.entries[cur].1.filter_at(p);
             return if prev == cur {
                 f
@@ -219,6 +221,7 @@ impl Material {
 pub struct MaterialMap {
     pattern: crate::pattern::Pattern,
     pattern_from_world: Option<DMat4>,
+    world_from_pattern: Option<DMat4>,
     /// (value, material), each placed in the world.
     pub entries: Box<[(f64, Material)]>,
 }
@@ -229,11 +232,30 @@ impl MaterialMap {
         self.pattern.kind == crate::pattern::PatternKind::Average
     }
 
-    /// The entries around the pattern's value at world point `p` and the fraction of the way
-    /// from the first to the second (the same entry twice: that one alone).
-    pub fn at(&self, p: DVec3) -> (usize, usize, f64) {
+    /// The entries around the pattern's value at world point `p`, the fraction of the way
+    /// from the first to the second (the same entry twice: that one alone), and the point
+    /// where the entries are evaluated.
+    pub fn at(&self, p: DVec3) -> (usize, usize, f64, DVec3) {
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
-        pigment::search(&self.entries, self.pattern.value(q))
+        let warped = self.pattern.warp(q);
+        let v = self.pattern.wave.apply(self.pattern.raw(warped));
+        let (prev, cur, t) = pigment::search(&self.entries, v);
+        (prev, cur, t, self.world_point(q, warped, p))
+    }
+
+    /// Where the entries are evaluated for world point `p` (`average` has no value to look up).
+    pub fn entry_point(&self, p: DVec3) -> DVec3 {
+        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        self.world_point(q, self.pattern.warp(q), p)
+    }
+
+    /// The entries see the pattern's warped point: placed in the world as they are, that is
+    /// the warped point taken back out of the pattern's space (`p` itself if nothing moved).
+    fn world_point(&self, q: DVec3, warped: DVec3, p: DVec3) -> DVec3 {
+        if warped == q {
+            return p;
+        }
+        self.world_from_pattern.map_or(warped, |m| m.transform_point3(warped))
     }
 }
 
@@ -476,6 +498,10 @@ const TIE: f64 = 1e-10;
 pub struct SurfaceHit {
     /// World-space point.
     pub point: DVec3,
+    /// Where the surface's patterns are evaluated: the point itself, except inside a warped
+    /// pattern of materials, whose entries see the warped point (POV-Ray passes the point
+    /// its warps made on to the entries).
+    pub texture_point: DVec3,
     /// Unit shading normal in world space (interpolated on smooth triangles).
     pub normal: DVec3,
     /// Unit geometric normal in world space (same side as `normal`).
@@ -848,6 +874,7 @@ impl Scene {
         }
         SurfaceHit {
             point,
+            texture_point: point,
             normal,
             geometric_normal,
             material: object.material,
