@@ -621,6 +621,7 @@ const SUPPORTED: &[&str] = &[
     "form",
     "frequency",
     "fresnel",
+    "global_settings",
     "gradient",
     "granite",
     "gray",
@@ -635,6 +636,7 @@ const SUPPORTED: &[&str] = &[
     "inside_vector",
     "int",
     "interior",
+    "interior_texture",
     "interpolate",
     "inverse",
     "ior",
@@ -916,7 +918,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }
-        "interior_texture" | "texture_list" | "uv_indices" | "hierarchy" => {
+        "texture_list" | "uv_indices" | "hierarchy" => {
             "this object item is not supported by trace yet"
         }
         "area_illumination" | "global_lights" => {

@@ -1,6 +1,6 @@
 //! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
 
-use super::value::{colour5, to_colour};
+use super::value::{MaterialValue, colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
 use crate::pattern::{BlackHole, Mapping, MappingWarp, noise};
@@ -1184,24 +1184,25 @@ impl Evaluator<'_> {
         Ok(interior)
     }
 
-    /// `material { [Name] texture {…} interior {…} transforms }`: what it sets, the texture and
-    /// interior each only if given (transforms move the texture).
-    pub(super) fn material(&mut self, node: &Node) -> Result<(Option<Texture>, Option<Interior>)> {
-        let (mut texture, mut interior): (Option<Texture>, Option<Interior>) = (None, None);
+    /// `material { [Name] texture {…} interior_texture {…} interior {…} transforms }`: what
+    /// it sets, each only if given (transforms move the textures).
+    pub(super) fn material(&mut self, node: &Node) -> Result<MaterialValue> {
+        let mut m = MaterialValue::default();
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Material(t, i) => (texture, interior) = (t, i),
+                    Value::Material(v) => m = *v,
                     other => return Err(type_error("a material", &other, item.span)),
                 },
-                NodeKind::Texture => texture = Some(ev.texture(item)?),
+                NodeKind::Texture => m.texture = Some(ev.texture(item)?),
+                NodeKind::InteriorTexture => m.interior_texture = Some(ev.texture(item)?),
                 NodeKind::Interior => {
-                    let base = interior.unwrap_or_default();
-                    interior = Some(ev.interior(item, base)?);
+                    let base = m.interior.unwrap_or_default();
+                    m.interior = Some(ev.interior(item, base)?);
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
-                    if let Some(texture) = &mut texture {
+                    for texture in [&mut m.texture, &mut m.interior_texture].into_iter().flatten() {
                         texture.transform(t);
                     }
                 }
@@ -1209,7 +1210,7 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
-        Ok((texture, interior))
+        Ok(m)
     }
 }
 

@@ -575,10 +575,7 @@ impl<'a> Evaluator<'a> {
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
             NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
-            NodeKind::Material => {
-                let (texture, interior) = self.material(node)?;
-                Value::Material(texture, interior)
-            }
+            NodeKind::Material => Value::Material(Box::new(self.material(node)?)),
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
             NodeKind::PigmentMap => Value::PigmentMap(self.pigment_map(node)?),
             NodeKind::TextureMap => Value::TextureMap(self.texture_map(node)?),

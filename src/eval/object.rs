@@ -18,6 +18,8 @@ struct Part {
     transform: Option<Transform>,
     /// The member's own texture (for a union member), if any.
     texture: Option<Texture>,
+    /// The member's own interior texture (seen from inside), if any.
+    interior_texture: Option<Texture>,
     /// The member's own interior, if any.
     interior: Option<Interior>,
     /// With `interior`: which of the object's own interiors it is (members of a nested union
@@ -39,6 +41,8 @@ pub struct ObjectValue {
     parts: Vec<Part>,
     /// The object's (or group's) texture, applied to parts without their own.
     texture: Option<Texture>,
+    /// The object's (or group's) interior texture, applied to parts without their own.
+    interior_texture: Option<Texture>,
     /// The object's (or group's) interior, applied to parts without their own.
     interior: Option<Interior>,
     /// How many distinct interiors the parts have of their own (`interior_group` counts
@@ -105,6 +109,7 @@ impl ObjectValue {
                 shape,
                 transform: None,
                 texture: None,
+                interior_texture: None,
                 interior: None,
                 interior_group: 0,
                 vertex_normals: None,
@@ -113,6 +118,7 @@ impl ObjectValue {
                 hollow: None,
             }],
             texture: None,
+            interior_texture: None,
             interior: None,
             own_interiors: 0,
             lights: Vec::new(),
@@ -124,6 +130,7 @@ impl ObjectValue {
         ObjectValue {
             parts: Vec::new(),
             texture: None,
+            interior_texture: None,
             interior: None,
             own_interiors: 0,
             lights: Vec::new(),
@@ -146,11 +153,11 @@ impl ObjectValue {
                     }
                 }
             }
-            if let Some(tex) = &mut part.texture {
+            for tex in [&mut part.texture, &mut part.interior_texture].into_iter().flatten() {
                 tex.transform(t);
             }
         }
-        if let Some(tex) = &mut self.texture {
+        for tex in [&mut self.texture, &mut self.interior_texture].into_iter().flatten() {
             tex.transform(t);
         }
         for light in &mut self.lights {
@@ -321,6 +328,8 @@ impl Evaluator<'_> {
                     let base = group.own_interiors;
                     for mut part in m.parts {
                         part.texture = part.texture.or_else(|| m.texture.clone());
+                        part.interior_texture =
+                            part.interior_texture.or_else(|| m.interior_texture.clone());
                         if part.interior.is_some() {
                             part.interior_group += base;
                         } else if m.interior.is_some() {
@@ -374,17 +383,24 @@ impl Evaluator<'_> {
     fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, is_cone: bool) -> Result<()> {
         match m.kind {
             NodeKind::Material => {
-                let (texture, interior) = self.material(m)?;
-                if let Some(texture) = texture {
+                let v = self.material(m)?;
+                if let Some(texture) = v.texture {
                     self.set_texture(object, texture)?;
                 }
-                if interior.is_some() {
-                    object.interior = interior;
+                if let Some(texture) = v.interior_texture {
+                    set_interior_texture(object, texture);
+                }
+                if v.interior.is_some() {
+                    object.interior = v.interior;
                 }
             }
             NodeKind::Texture => {
                 let texture = self.texture(m)?;
                 self.set_texture(object, texture)?;
+            }
+            NodeKind::InteriorTexture => {
+                let texture = self.texture(m)?;
+                set_interior_texture(object, texture);
             }
 
             NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
@@ -508,6 +524,10 @@ impl Evaluator<'_> {
                 .texture
                 .or_else(|| object.texture.clone())
                 .unwrap_or_else(|| self.default_texture.clone());
+            let interior_texture = part
+                .interior_texture
+                .or_else(|| object.interior_texture.clone())
+                .map(Box::new);
             // (Objects without an interior share one default interior.)
             let interior = match part.interior.or(object.interior) {
                 Some(interior) => self.shared_interior(interior),
@@ -517,6 +537,7 @@ impl Evaluator<'_> {
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
                 texture,
+                interior_texture,
                 interior,
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,
@@ -884,4 +905,13 @@ pub(super) fn assemble_mesh(
         mesh.normals = unit_normals.iter().map(|v| v.as_vec3()).collect();
     }
     (mesh, degenerate, dropped_smooth)
+}
+
+/// An interior texture given to an object: a second one is layered on the first, as POV-Ray
+/// links them.
+fn set_interior_texture(object: &mut ObjectValue, texture: Texture) {
+    object.interior_texture = Some(match object.interior_texture.take() {
+        Some(below) => super::material::layer(texture, below),
+        None => texture,
+    });
 }

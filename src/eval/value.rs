@@ -50,8 +50,8 @@ pub enum Value {
     Camera(Box<super::CameraItems>),
     Interior(ir::Interior),
     Fog(Box<super::FogItems>),
-    /// `material {…}`: a texture and an interior, each only if given.
-    Material(Option<ir::Texture>, Option<ir::Interior>),
+    /// `material {…}`: a texture, an interior texture and an interior, each only if given.
+    Material(Box<MaterialValue>),
     ColourMap(ir::ColourMap),
     /// A declared pigment_map.
     PigmentMap(Vec<(f64, ir::Pigment)>),
@@ -157,4 +157,15 @@ pub fn srgb_decode(v: f64) -> f64 {
     } else {
         ((v + 0.055) / 1.055).powf(2.4)
     }
+}
+
+/// What a `material {…}` sets: each only if given.
+#[derive(Clone, Debug, Default)]
+pub struct MaterialValue {
+    /// `texture {…}`.
+    pub texture: Option<ir::Texture>,
+    /// `interior_texture {…}`.
+    pub interior_texture: Option<ir::Texture>,
+    /// `interior {…}`.
+    pub interior: Option<ir::Interior>,
 }

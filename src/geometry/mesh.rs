@@ -218,7 +218,7 @@ impl TriangleMesh {
     }
 
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).
-    pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64)) {
+    pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         self.bvh
             .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, p| {
@@ -227,7 +227,7 @@ impl TriangleMesh {
                     let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
                     counters::record(counters::TRIANGLE, crossing.is_some());
                     if let Some(t) = crossing {
-                        f(t);
+                        f(t, i as u32);
                     }
                 }
             });
@@ -236,7 +236,7 @@ impl TriangleMesh {
     /// The number of crossings along the ray.
     pub fn count_crossings(&self, ray: &Ray) -> usize {
         let mut n = 0;
-        self.for_each_crossing(ray, |_| n += 1);
+        self.for_each_crossing(ray, |_, _| n += 1);
         n
     }
 
@@ -259,7 +259,9 @@ impl TriangleMesh {
     /// The geometric normal of a triangle (not unit length; orientation from the winding).
     pub fn geometric_normal(&self, triangle: u32) -> DVec3 {
         let [a, b, c] = self.corners(triangle as usize);
-        (b - a).cross(c - a)
+        // POV-Ray's orientation, (c − a) × (b − a), which decides the side that shows an
+        // interior texture.
+        (c - a).cross(b - a)
     }
 
     /// The shading normal at `p` on a triangle: interpolated vertex normals for a smooth

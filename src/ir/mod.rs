@@ -224,6 +224,9 @@ pub struct Object {
     pub transform: Option<Box<Transform>>,
     /// The resolved surface.
     pub texture: Texture,
+    /// `interior_texture`: the surface seen from inside (where the normal faces away from
+    /// the ray), if it differs.
+    pub interior_texture: Option<Box<Texture>>,
     /// What is inside (index of refraction, fade).
     pub interior: Arc<Interior>,
     /// `no_shadow`: the object casts no shadow.

@@ -264,9 +264,9 @@ pub fn filter_colour(c: &Colour) -> Rgb {
     c.rgb * c.filter + Rgb::splat(c.transmit)
 }
 
-/// Per thread, for a shadow ray through fading interiors: its crossings (distance, object)
+/// Per thread, for a shadow ray through fading interiors: its crossings (distance, object, part)
 /// and the list of media it is in.
-type ShadowScratch = (Vec<(f64, u32)>, Vec<u32>);
+type ShadowScratch = (Vec<(f64, u32, u32)>, Vec<u32>);
 
 /// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
 /// `fade_distance` that is not zero).
@@ -340,19 +340,22 @@ impl Shape {
         }
     }
 
-    /// Calls `f` with the distance of every surface crossing along the ray (in increasing
-    /// order, except for meshes).
-    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64)) {
+    /// Calls `f` with the distance and part of every surface crossing along the ray (in
+    /// increasing order, except for meshes).
+    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         match self {
             Shape::Mesh(m) => {
                 let mut any = false;
-                m.for_each_crossing(ray, |t| {
+                m.for_each_crossing(ray, |t, part| {
                     any = true;
-                    f(t)
+                    f(t, part)
                 });
                 counters::record(counters::MESH, any);
             }
-            other => other.intersect(ray).as_slice().iter().for_each(|&t| f(t)),
+            other => {
+                let c = other.intersect(ray);
+                c.as_slice().iter().zip(c.parts()).for_each(|(&t, &part)| f(t, part));
+            }
         }
     }
 
@@ -449,6 +452,8 @@ pub struct Object {
     pub transform: Option<Box<ObjectTransform>>,
     /// Its material.
     pub material: MaterialId,
+    /// Its material seen from inside (`interior_texture`; else `material`).
+    pub back_material: MaterialId,
     /// Casts no shadow.
     pub no_shadow: bool,
     /// Inside swapped with outside.
@@ -466,6 +471,22 @@ pub struct Object {
 }
 
 impl Object {
+    /// The material seen along `direction` at a surface of unit normal `normal` (outward,
+    /// before any `inverse`): the interior texture where the normal faces away from the ray,
+    /// as POV-Ray picks it.
+    #[inline]
+    fn side(&self, normal: DVec3, direction: DVec3) -> MaterialId {
+        if self.back_material == self.material {
+            return self.material;
+        }
+        let outward = if self.inverse { -normal } else { normal };
+        if outward.dot(direction) > 0.0 {
+            self.back_material
+        } else {
+            self.material
+        }
+    }
+
     /// The world-space bounding box, `None` for unbounded shapes. Bounds that overflowed (a
     /// huge scale) make the object unbounded, tested for every ray, rather than a box no
     /// structure can hold.
@@ -589,11 +610,27 @@ fn shared_ids<'a, T: PartialEq + Sync>(
     (ids, distinct)
 }
 
-/// Material ids for the objects of `ir`, equal textures sharing one, and the texture of each id.
-fn material_ids(ir: &ir::Scene) -> (Vec<MaterialId>, Vec<&ir::Texture>) {
-    let textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
+/// Material ids for the objects of `ir` (outside, inside), equal textures sharing one, and
+/// the texture of each id. Without an interior texture both sides have the same id.
+#[allow(clippy::type_complexity)]
+fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Texture>) {
+    let mut textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
+    textures.extend(ir.objects.iter().filter_map(|o| o.interior_texture.as_deref()));
     let (ids, textures) = shared_ids(&textures, fingerprint);
-    (ids.into_iter().map(MaterialId).collect(), textures)
+    let mut inside = ids[ir.objects.len()..].iter();
+    let sides = ir
+        .objects
+        .iter()
+        .zip(&ids)
+        .map(|(o, &id)| {
+            let back = match &o.interior_texture {
+                Some(_) => *inside.next().expect("one id per interior texture"),
+                None => id,
+            };
+            (MaterialId(id), MaterialId(back))
+        })
+        .collect();
+    (sides, textures)
 }
 
 /// What the scene's settings give patterns that name nothing themselves.
@@ -652,7 +689,7 @@ impl Scene {
             .par_iter()
             .zip(ids)
             .zip(interior_ids)
-            .map(|((o, material), interior)| {
+            .map(|((o, (material, back_material)), interior)| {
                 let (shape, transform) =
                     build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
                 let mut object = Object {
@@ -660,6 +697,7 @@ impl Scene {
                     bounded: false,
                     transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
                     material,
+                    back_material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     hollow: o.hollow,
@@ -740,18 +778,14 @@ impl Scene {
             }
             start += group.len();
         }
-        scene.any_transparent = scene.objects.iter().any(|o| {
-            !o.no_shadow
-                && scene.materials[o.material.0 as usize]
-                    .pigment
-                    .may_be_transparent()
-        });
+        let see_through = |o: &Object| {
+            [o.material, o.back_material]
+                .iter()
+                .any(|m| scene.materials[m.0 as usize].may_be_transparent())
+        };
+        scene.any_transparent = scene.objects.iter().any(|o| !o.no_shadow && see_through(o));
         scene.shadow_fades = scene.objects.iter().any(|o| {
-            !o.no_shadow
-                && fades(&scene.interiors[o.interior as usize])
-                && scene.materials[o.material.0 as usize]
-                    .pigment
-                    .may_be_transparent()
+            !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
         });
         (scene, bounds)
     }
@@ -877,7 +911,7 @@ impl Scene {
             texture_point: point,
             normal,
             geometric_normal,
-            material: object.material,
+            material: object.side(normal, ray.direction),
             object: hit.object,
         }
     }
@@ -951,7 +985,26 @@ impl Scene {
     /// Whether object `i` can let light through to a shadow ray.
     fn filters_shadows(&self, i: u32) -> bool {
         let object = &self.objects[i as usize];
-        !object.no_shadow && self.material(object.material).may_be_transparent()
+        !object.no_shadow
+            && (self.material(object.material).may_be_transparent()
+                || self.material(object.back_material).may_be_transparent())
+    }
+
+    /// The material a ray meets where it crosses `object` at distance `t` on `part`: its
+    /// interior texture where the surface faces away from the ray.
+    fn crossing_material(&self, object: &Object, ray: &Ray, t: f64, part: u32) -> &Material {
+        if object.back_material == object.material {
+            return self.material(object.material);
+        }
+        let point = ray.at(t);
+        let normal = match &object.transform {
+            None => object.shape.normals(point, part).0,
+            Some(tr) => {
+                let local = tr.object_from_world.transform_point3(point);
+                tr.normal_to_world * object.shape.normals(local, part).0
+            }
+        };
+        self.material(object.side(normal, ray.direction))
     }
 
     /// Multiplies `through` by the filter colour at each crossing of a transparent object
@@ -961,11 +1014,10 @@ impl Scene {
             return;
         }
         let object = &self.objects[i as usize];
-        let material = self.material(object.material);
         object
             .shape
-            .for_each_crossing(&Self::local_ray(object, ray), |t| {
-                *through *= material.filter_at(ray.at(t));
+            .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
+                *through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
             });
     }
 
@@ -990,13 +1042,13 @@ impl Scene {
                     let object = &self.objects[i as usize];
                     object
                         .shape
-                        .for_each_crossing(&Self::local_ray(object, ray), |t| {
-                            crossings.push((t, i))
+                        .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
+                            crossings.push((t, i, part))
                         });
                 }
             });
             crossings.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            for &(_, i) in crossings.iter() {
+            for &(_, i, _) in crossings.iter() {
                 let object = &self.objects[i as usize];
                 if !media.contains(&object.medium) && self.contains(object, ray.origin) {
                     media.push(object.medium);
@@ -1004,9 +1056,9 @@ impl Scene {
             }
             let length = ray.direction.length();
             let (mut through, mut last_t) = (Rgb::ONE, 0.0);
-            for &(t, i) in crossings.iter() {
+            for &(t, i, part) in crossings.iter() {
                 let object = &self.objects[i as usize];
-                through *= self.material(object.material).filter_at(ray.at(t));
+                through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
                 match media.iter().position(|&m| m == object.medium) {
                     Some(k) => {
                         let interior = self.interior(object);
@@ -1208,6 +1260,7 @@ mod tests {
                 shape,
                 transform: Some(Box::new(ir::Transform { matrix: transform })),
                 texture: ir::Texture::default(),
+                interior_texture: None,
                 interior: Default::default(),
                 no_shadow: false,
                 inverse: false,

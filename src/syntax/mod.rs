@@ -140,6 +140,8 @@ pub enum NodeKind {
     Once,
     Interpolate,
     Interior,
+    /// `interior_texture { … }` (a texture's items).
+    InteriorTexture,
     Ior,
     FadeDistance,
     FadePower,
@@ -855,6 +857,7 @@ impl Lower {
             Rule::once => NodeKind::Once,
             Rule::interpolate => NodeKind::Interpolate,
             Rule::interior => NodeKind::Interior,
+            Rule::interior_texture => NodeKind::InteriorTexture,
             Rule::ior => NodeKind::Ior,
             Rule::fade_distance => NodeKind::FadeDistance,
             Rule::fade_power => NodeKind::FadePower,
@@ -1314,6 +1317,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_once
             | kw_interpolate
             | kw_interior
+            | kw_interior_texture
             | kw_ior
             | kw_fade_distance
             | kw_fade_power
