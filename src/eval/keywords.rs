@@ -574,6 +574,7 @@ const SUPPORTED: &[&str] = &[
     "cos",
     "cosh",
     "crackle",
+    "crand",
     "cubic_wave",
     "cylinder",
     "cylindrical",
@@ -640,6 +641,8 @@ const SUPPORTED: &[&str] = &[
     "interpolate",
     "inverse",
     "ior",
+    "irid",
+    "irid_wavelength",
     "jitter",
     "lambda",
     "leopard",
@@ -760,6 +763,7 @@ const SUPPORTED: &[&str] = &[
     "tanh",
     "texture",
     "texture_map",
+    "thickness",
     "tightness",
     "toroidal",
     "torus",
@@ -855,7 +859,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
         "dispersion" | "caustics" => "this interior item is outside trace's subset",
         "bump_map" => "this normal pattern is not supported by trace yet",
-        "irid" | "crand" | "albedo" => "this finish item is outside trace's subset",
+        "albedo" => "this finish item is outside trace's subset",
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
@@ -876,7 +880,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "file input/output is not supported by trace yet"
         }
         "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" | "spline" => LATER,
-        "charset" | "hf_gray_16" | "irid_wavelength" | "max_intersections"
+        "charset" | "hf_gray_16" | "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }
@@ -895,7 +899,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
         | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
-        | "water_level" | "thickness" => {
+        | "water_level" => {
             "this shape or shape item is not supported by trace yet"
         }
         "altitude" | "cube" | "image_pattern"

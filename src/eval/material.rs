@@ -1116,6 +1116,19 @@ impl Evaluator<'_> {
                 }
                 NodeKind::Metallic => f.metallic = ev.optional_float(item, 1.0)?,
                 NodeKind::ConserveEnergy => f.conserve_energy = true,
+                NodeKind::Crand => f.crand = ev.float(arg(0))?,
+                NodeKind::Irid => {
+                    f.irid.amount = ev.float(arg(0))?;
+                    for it in &item.children {
+                        match (it.kind, it.word.as_str()) {
+                            (NodeKind::Thickness, _) => f.irid.thickness = ev.float(&it.args[0])?,
+                            (NodeKind::PatternModifier, "turbulence") if !it.args.is_empty() => {
+                                f.irid.turbulence = ev.vec3(&it.args[0])?.x;
+                            }
+                            _ => return Err(ev.unknown_item(it, "irid")),
+                        }
+                    }
+                }
                 NodeKind::Reflection => ev.reflection(item, &mut f.reflection)?,
                 NodeKind::Ior => {
                     return Err(Diagnostic::error(

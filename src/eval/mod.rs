@@ -617,6 +617,11 @@ impl<'a> Evaluator<'a> {
                     ev.settings.ambient_light = rgb(&v)
                         .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
                 }
+                NodeKind::IridWavelength => {
+                    let v = ev.eval(&item.args[0])?;
+                    ev.settings.irid_wavelength = rgb(&v)
+                        .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                }
                 NodeKind::PatternModifier if item.word == "number_of_waves" => {
                     let e = item.args.first().ok_or_else(|| {
                         Diagnostic::error("`number_of_waves` needs a value", item.word_span)

@@ -107,6 +107,8 @@ pub struct Settings {
     pub noise_generator: u8,
     /// `number_of_waves` (default 10): the wave sources of `ripples` and `waves`.
     pub number_of_waves: u8,
+    /// `irid_wavelength` (default <0.70, 0.52, 0.48>): the wavelengths `irid` uses.
+    pub irid_wavelength: Rgb,
 }
 
 /// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
@@ -618,6 +620,22 @@ pub struct Finish {
     pub reflection: Reflection,
     /// `conserve_energy`: reflection reduces transmission.
     pub conserve_energy: bool,
+    /// `crand` (default 0): each light's diffuse intensity less a random fraction up to this
+    /// (a grainy surface).
+    pub crand: f64,
+    /// `irid { … }`: thin-film interference.
+    pub irid: Irid,
+}
+
+/// `irid { amount thickness T turbulence V }`: a thin film's interference colours.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Irid {
+    /// The amount (0: none).
+    pub amount: f64,
+    /// `thickness` (default 0).
+    pub thickness: f64,
+    /// `turbulence` (the x of the vector given): the thickness varies by up to this fraction.
+    pub turbulence: f64,
 }
 
 impl Default for Finish {
@@ -635,6 +653,8 @@ impl Default for Finish {
             metallic: 0.0,
             reflection: Reflection::default(),
             conserve_energy: false,
+            crand: 0.0,
+            irid: Irid::default(),
         }
     }
 }
@@ -729,6 +749,7 @@ impl Default for Settings {
             legacy_transparency: true,
             noise_generator: 2,
             number_of_waves: 10,
+            irid_wavelength: Rgb::new(0.70, 0.52, 0.48),
         }
     }
 }

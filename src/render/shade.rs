@@ -454,7 +454,18 @@ impl<'a> Tracer<'a> {
             else {
                 continue;
             };
-            lit += self.lit(layer, colour, att, ray.direction, n, &sample);
+            // `crand`: the diffuse intensity less a random fraction (a hash of the point and
+            // the light, so the same for any thread count).
+            let grain = if finish.crand > 0.0 {
+                finish.crand * grain(hit.point, index)
+            } else {
+                0.0
+            };
+            let mut light = self.lit(layer, colour, att, ray.direction, n, &sample, grain);
+            if finish.irid.amount > 0.0 {
+                light *= scene.irid(finish, sample.direction, ray.direction, n, hit.point);
+            }
+            lit += light;
         }
         lit
     }
@@ -488,6 +499,10 @@ impl<'a> Tracer<'a> {
             rf.max.max_element().max(rf.min.max_element())
         };
         let mut seen = self.trace(&reflected, level + 1, weight * bound, interiors);
+        if layer.finish.irid.amount > 0.0 {
+            let to = reflected.direction.normalize();
+            seen *= scene.irid(&layer.finish, to, ray.direction, n, hit.point);
+        }
         if rf.exponent != 1.0 {
             seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
         }
@@ -515,6 +530,9 @@ impl<'a> Tracer<'a> {
     }
 
     /// Diffuse, phong and specular from one light sample (§7.3).
+    /// The light of one light sample on a layer; `grain` is subtracted from the diffuse
+    /// intensity (`crand`).
+    #[allow(clippy::too_many_arguments)]
     fn lit(
         &self,
         material: &Material,
@@ -523,6 +541,7 @@ impl<'a> Tracer<'a> {
         d: DVec3,
         n: DVec3,
         s: &LightSample,
+        grain: f64,
     ) -> Rgb {
         let finish = &material.finish;
         let pigment = colour.rgb;
@@ -531,13 +550,13 @@ impl<'a> Tracer<'a> {
         let cos_nl = n.dot(s.direction);
         if cos_nl >= 0.0 {
             if finish.diffuse > 0.0 {
-                result +=
-                    pigment * lc * finish.diffuse * att * brilliance(cos_nl, finish.brilliance);
+                let intensity = finish.diffuse * att * brilliance(cos_nl, finish.brilliance);
+                result += pigment * lc * (intensity - grain);
             }
         } else if finish.diffuse_back > 0.0 {
             // A light behind the surface lights it through, with the back-side diffuse.
-            result +=
-                pigment * lc * finish.diffuse_back * att * brilliance(-cos_nl, finish.brilliance);
+            let intensity = finish.diffuse_back * att * brilliance(-cos_nl, finish.brilliance);
+            result += pigment * lc * (intensity - grain);
         }
         if s.highlights && cos_nl > 0.0 && (finish.phong > 0.0 || finish.specular > 0.0) {
             let lc_metal = if finish.metallic != 0.0 {
@@ -565,6 +584,16 @@ impl<'a> Tracer<'a> {
         }
         result
     }
+}
+
+/// A number in [0, 1) for `crand`, from the bits of the point and the light's index.
+fn grain(p: DVec3, light: usize) -> f64 {
+    let mut h = (light as u64).wrapping_add(0x9E37_79B9_7F4A_7C15);
+    for v in [p.x, p.y, p.z] {
+        h = (h ^ v.to_bits()).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        h ^= h >> 31;
+    }
+    (h >> 11) as f64 / (1u64 << 53) as f64
 }
 
 /// POV-Ray's reflectivity for incidence cosine `cos_i` (§7.5); `eta` is the relative index
@@ -695,6 +724,24 @@ mod tests {
         assert!(metallic_fresnel(1.0).abs() < 1e-6);
         // Grazing (x = 1): 0.014567225/0.0144 − 0.011612903 ≈ 1.0 (clamped).
         assert!((metallic_fresnel(0.0) - 1.0).abs() < 1e-6);
+    }
+
+    /// `crand`'s numbers are uniform in [0, 1) like POV-Ray's (its mean darkening is
+    /// `crand / 2`), differ between neighbouring points and lights, and repeat for a point.
+    #[test]
+    fn crand_grain_is_uniform_and_repeatable() {
+        let (mut sum, mut below_tenth, n) = (0.0, 0, 20_000);
+        for i in 0..n {
+            let p = DVec3::new(i as f64 * 1e-3, 0.5, -2.0);
+            let g = grain(p, i % 3);
+            assert!((0.0..1.0).contains(&g));
+            assert_eq!(g, grain(p, i % 3));
+            sum += g;
+            below_tenth += usize::from(g < 0.1);
+        }
+        assert!((sum / n as f64 - 0.5).abs() < 0.01, "{}", sum / n as f64);
+        assert!((below_tenth as f64 / n as f64 - 0.1).abs() < 0.01);
+        assert_ne!(grain(DVec3::ONE, 0), grain(DVec3::ONE, 1));
     }
 
     #[test]

@@ -64,6 +64,8 @@ pub struct Scene {
     pub legacy_transparency: bool,
     /// The scene's noise generator (fog turbulence; patterns carry their own).
     pub noise_generator: u8,
+    /// `irid_wavelength`: the wavelengths of thin-film interference (`irid`).
+    pub irid_wavelength: Rgb,
     /// Working gamma (applied when the film is written).
     pub gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
@@ -754,6 +756,7 @@ impl Scene {
             ambient_light: ir.settings.ambient_light,
             legacy_transparency: ir.settings.legacy_transparency,
             noise_generator: ir.settings.noise_generator,
+            irid_wavelength: ir.settings.irid_wavelength,
             gamma: ir.settings.gamma,
             index: None,
             scan_bounds: Vec::new(),
@@ -988,6 +991,33 @@ impl Scene {
         !object.no_shadow
             && (self.material(object.material).may_be_transparent()
                 || self.material(object.back_material).may_be_transparent())
+    }
+
+    /// POV-Ray's thin-film interference (`irid`): the factor on the light arriving from unit
+    /// direction `to` and leaving along `d` at a surface of normal `n`, point `p`.
+    pub fn irid(&self, finish: &Finish, to: DVec3, d: DVec3, n: DVec3, p: DVec3) -> Rgb {
+        let irid = &finish.irid;
+        let mut thickness = irid.thickness;
+        if irid.turbulence != 0.0 {
+            // A fixed turbulence (5 octaves), from 0..1 to 1 ± the amount.
+            let t = crate::pattern::noise::Turbulence {
+                amount: DVec3::ONE,
+                octaves: 5,
+                omega: 0.5,
+                lambda: 2.0,
+            };
+            let noise = 2.0 * t.scalar(p, self.noise_generator) - 1.0;
+            thickness *= 1.0 + noise * irid.turbulence;
+        }
+        let w = self.irid_wavelength;
+        let cos_light = n.dot(to).abs();
+        let cos_eye = n.dot(d.normalize()).abs();
+        let interference = 2.0 * std::f64::consts::PI * thickness * (cos_light + cos_eye);
+        Rgb::new(
+            1.0 + irid.amount * (interference / w.x).cos(),
+            1.0 + irid.amount * (interference / w.y).cos(),
+            1.0 + irid.amount * (interference / w.z).cos(),
+        )
     }
 
     /// The material a ray meets where it crosses `object` at distance `t` on `part`: its

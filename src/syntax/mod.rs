@@ -114,6 +114,10 @@ pub enum NodeKind {
     Roughness,
     Metallic,
     ConserveEnergy,
+    Crand,
+    Irid,
+    Thickness,
+    IridWavelength,
     Albedo,
     Reflection,
     Falloff,
@@ -834,6 +838,10 @@ impl Lower {
             Rule::roughness => NodeKind::Roughness,
             Rule::metallic => NodeKind::Metallic,
             Rule::conserve_energy => NodeKind::ConserveEnergy,
+            Rule::crand => NodeKind::Crand,
+            Rule::irid => NodeKind::Irid,
+            Rule::thickness => NodeKind::Thickness,
+            Rule::irid_wavelength => NodeKind::IridWavelength,
             Rule::albedo => NodeKind::Albedo,
             Rule::reflection => NodeKind::Reflection,
             Rule::falloff => NodeKind::Falloff,
@@ -1225,6 +1233,10 @@ fn is_word(rule: Rule) -> bool {
             | kw_color
             | kw_colour
             | kw_conserve_energy
+            | kw_crand
+            | kw_irid
+            | kw_irid_wavelength
+            | kw_thickness
             | kw_declare
             | kw_default
             | kw_diffuse
