@@ -692,20 +692,7 @@ impl Evaluator<'_> {
                             };
                         }
                         NodeKind::SlopeMap => n.slope_map = Some(ev.slope_map(item)?),
-                        NodeKind::NormalMap => {
-                            let mut entries = Vec::new();
-                            for e in &item.children {
-                                let value = ev.float(&e.args[0])?;
-                                entries.push((value, ev.normal(&e.children[0], None)?));
-                            }
-                            if entries.is_empty() {
-                                return Err(Diagnostic::error(
-                                    "normal_map has no entries",
-                                    item.word_span,
-                                ));
-                            }
-                            n.map = Some(entries);
-                        }
+                        NodeKind::NormalMap => n.map = Some(ev.normal_map(item)?),
                         NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
                         NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
@@ -896,15 +883,35 @@ impl Evaluator<'_> {
     }
 
     /// `slope_map { [v <height, slope>] … }`.
-    fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
+    /// `normal_map { [v NORMAL_ITEMS] … }` or `normal_map { Name }`.
+    pub(super) fn normal_map(&mut self, node: &Node) -> Result<Vec<(f64, ir::Normal)>> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return match self.lookup(ident)? {
+                Value::NormalMap(m) => Ok(m),
+                other => Err(type_error("a normal_map", &other, ident.span)),
+            };
+        }
         let mut entries = Vec::new();
         for e in &node.children {
-            if e.kind == NodeKind::IdentRef {
-                return Err(Diagnostic::error(
-                    "unsupported: a declared slope_map (write its entries here)",
-                    e.span,
-                ));
-            }
+            let value = self.float(&e.args[0])?;
+            entries.push((value, self.normal(&e.children[0], None)?));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error("normal_map has no entries", node.word_span));
+        }
+        Ok(entries)
+    }
+
+    /// `slope_map { [v <height, slope>] … }` or `slope_map { Name }`.
+    pub(super) fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
+        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
+            return match self.lookup(ident)? {
+                Value::SlopeMap(m) => Ok(m),
+                other => Err(type_error("a slope_map", &other, ident.span)),
+            };
+        }
+        let mut entries = Vec::new();
+        for e in &node.children {
             let value = self.float(&e.args[0])?;
             let v = self.eval(&e.args[1])?;
             let point = match &v {

@@ -579,6 +579,8 @@ impl<'a> Evaluator<'a> {
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
             NodeKind::PigmentMap => Value::PigmentMap(self.pigment_map(node)?),
             NodeKind::TextureMap => Value::TextureMap(self.texture_map(node)?),
+            NodeKind::NormalMap => Value::NormalMap(self.normal_map(node)?),
+            NodeKind::SlopeMap => Value::SlopeMap(self.slope_map(node)?),
             NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
             NodeKind::Transform => Value::Transform(self.transform(node)?),
             NodeKind::Camera => {

@@ -57,6 +57,10 @@ pub enum Value {
     PigmentMap(Vec<(f64, ir::Pigment)>),
     /// A declared texture_map.
     TextureMap(Vec<(f64, ir::Texture)>),
+    /// A declared normal_map.
+    NormalMap(Vec<(f64, ir::Normal)>),
+    /// A declared slope_map: value, (height, slope).
+    SlopeMap(Vec<(f64, [f64; 2])>),
     Str(String),
     /// `array[…]`: its elements row-major, `None` where none was assigned yet.
     Array(Box<Array>),
@@ -102,6 +106,8 @@ impl Value {
             Value::ColourMap(_) => "a color_map",
             Value::PigmentMap(_) => "a pigment_map",
             Value::TextureMap(_) => "a texture_map",
+            Value::NormalMap(_) => "a normal_map",
+            Value::SlopeMap(_) => "a slope_map",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Unsupported(_) => "an unsupported value",
