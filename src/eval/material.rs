@@ -95,7 +95,13 @@ impl Evaluator<'_> {
                     let t = ev.texture(item)?;
                     list.push((t, item.word_span));
                 }
-                NodeKind::TextureMap => map = Some((ev.texture_map(item)?, item.word_span)),
+                NodeKind::TextureMap => {
+                    let average = texture
+                        .map
+                        .as_ref()
+                        .is_some_and(|m| m.pattern.kind == PatternKind::Average);
+                    map = Some((ev.texture_map(item, average)?, item.word_span))
+                }
                 NodeKind::Unknown if item.word == "image_map" => {
                     return Err(Diagnostic::error(
                         "unsupported: an `image_map` pattern of textures (material_map is not supported by trace yet)",
@@ -162,10 +168,11 @@ impl Evaluator<'_> {
     }
 
     /// `texture_map { [v TEXTURE_ITEMS] … }` or `texture_map { Name }`.
-    pub(super) fn texture_map(&mut self, node: &Node) -> Result<Vec<(f64, Texture)>> {
+    pub(super) fn texture_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, Texture)>> {
         self.map_entries(
             node,
             "texture_map",
+            average,
             |v| match v {
                 Value::TextureMap(m) => Ok(m),
                 other => Err(Box::new(other)),
@@ -174,12 +181,14 @@ impl Evaluator<'_> {
         )
     }
 
-    /// The entries of a `pigment_map` or `texture_map` (`what`): `[v ITEMS]` each read by
-    /// `entry`, or a declared map of the same kind (`declared` takes it out of its value).
+    /// The entries of a `pigment_map`, `normal_map` or `texture_map` (`what`): `[v ITEMS]`
+    /// each read by `entry`, or a declared map of the same kind (`declared` takes it out of
+    /// its value). In the map of an `average` the weight `v` may be left out (1, as POV-Ray).
     fn map_entries<T>(
         &mut self,
         node: &Node,
         what: &str,
+        average: bool,
         declared: impl Fn(Value) -> std::result::Result<Vec<(f64, T)>, Box<Value>>,
         mut entry: impl FnMut(&mut Self, &Node) -> Result<T>,
     ) -> Result<Vec<(f64, T)>> {
@@ -189,7 +198,16 @@ impl Evaluator<'_> {
         }
         let mut entries = Vec::new();
         for e in &node.children {
-            let value = self.float(&e.args[0])?;
+            let value = match e.args.first() {
+                Some(v) => self.float(v)?,
+                None if average => 1.0,
+                None => {
+                    return Err(Diagnostic::error(
+                        format!("this {what} entry needs its value first (only an average's entries may leave it out)"),
+                        e.span,
+                    ));
+                }
+            };
             entries.push((value, entry(self, &e.children[0])?));
         }
         if entries.is_empty() {
@@ -260,7 +278,9 @@ impl Evaluator<'_> {
                     map = Some((PigmentMap::Colours(ev.colour_map(item)?), item.word_span))
                 }
                 NodeKind::PigmentMap => {
-                    map = Some((PigmentMap::Pigments(ev.pigment_map(item)?), item.word_span))
+                    let average = matches!(&pigment.kind,
+                        PigmentKind::Pattern(p) if p.pattern.kind == PatternKind::Average);
+                    map = Some((PigmentMap::Pigments(ev.pigment_map(item, average)?), item.word_span))
                 }
                 // `checker pigment {…} pigment {…}`: a discrete pattern's list of pigments.
                 NodeKind::Pigment => {
@@ -692,7 +712,10 @@ impl Evaluator<'_> {
                             };
                         }
                         NodeKind::SlopeMap => n.slope_map = Some(ev.slope_map(item)?),
-                        NodeKind::NormalMap => n.map = Some(ev.normal_map(item)?),
+                        NodeKind::NormalMap => {
+                            let average = n.pattern.kind == PatternKind::Average;
+                            n.map = Some(ev.normal_map(item, average)?)
+                        }
                         NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
                         NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
                         NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
@@ -870,10 +893,11 @@ impl Evaluator<'_> {
 
     /// `pigment_map { [v PIGMENT] … }` or `pigment_map { Name }`: each entry's pigment starts
     /// black and unplaced (it is placed in the pattern's space).
-    pub(super) fn pigment_map(&mut self, node: &Node) -> Result<Vec<(f64, Pigment)>> {
+    pub(super) fn pigment_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, Pigment)>> {
         self.map_entries(
             node,
             "pigment_map",
+            average,
             |v| match v {
                 Value::PigmentMap(m) => Ok(m),
                 other => Err(Box::new(other)),
@@ -884,22 +908,17 @@ impl Evaluator<'_> {
 
     /// `slope_map { [v <height, slope>] … }`.
     /// `normal_map { [v NORMAL_ITEMS] … }` or `normal_map { Name }`.
-    pub(super) fn normal_map(&mut self, node: &Node) -> Result<Vec<(f64, ir::Normal)>> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return match self.lookup(ident)? {
+    pub(super) fn normal_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, ir::Normal)>> {
+        self.map_entries(
+            node,
+            "normal_map",
+            average,
+            |v| match v {
                 Value::NormalMap(m) => Ok(m),
-                other => Err(type_error("a normal_map", &other, ident.span)),
-            };
-        }
-        let mut entries = Vec::new();
-        for e in &node.children {
-            let value = self.float(&e.args[0])?;
-            entries.push((value, self.normal(&e.children[0], None)?));
-        }
-        if entries.is_empty() {
-            return Err(Diagnostic::error("normal_map has no entries", node.word_span));
-        }
-        Ok(entries)
+                other => Err(Box::new(other)),
+            },
+            |ev, body| ev.normal(body, None),
+        )
     }
 
     /// `slope_map { [v <height, slope>] … }` or `slope_map { Name }`.
