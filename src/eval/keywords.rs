@@ -550,6 +550,7 @@ const SUPPORTED: &[&str] = &[
     "brick",
     "brick_size",
     "brilliance",
+    "bump_map",
     "bump_size",
     "bumps",
     "camera",
@@ -633,6 +634,7 @@ const SUPPORTED: &[&str] = &[
     "ifdef",
     "ifndef",
     "image_map",
+    "image_pattern",
     "include",
     "inside_vector",
     "int",
@@ -780,6 +782,10 @@ const SUPPORTED: &[&str] = &[
     "undef",
     "union",
     "up",
+    "use_alpha",
+    "use_color",
+    "use_colour",
+    "use_index",
     "v",
     "val",
     "vaxis_rotate",
@@ -858,7 +864,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
         "dispersion" | "caustics" => "this interior item is outside trace's subset",
-        "bump_map" => "this normal pattern is not supported by trace yet",
         "albedo" => "this finish item is outside trace's subset",
         "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
@@ -902,11 +907,10 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "water_level" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude" | "cube" | "image_pattern"
+        "altitude" | "cube"
         | "max_iteration" | "number_of_sides" | "number_of_tiles"
         | "pigment_pattern" | "ratio"
-        | "tile2" | "tiles" | "use_alpha"
-        | "use_color" | "use_colour" | "use_index" | "width" => {
+        | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "internal" | "pattern" | "precompute" | "prod" | "sum" | "vturbulence" => {

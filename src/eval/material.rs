@@ -3,12 +3,13 @@
 use super::value::{MaterialValue, colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
+use crate::pattern::image::ImageUse;
 use crate::pattern::{BlackHole, Mapping, MappingWarp, noise};
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
     PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
 };
-use crate::syntax::{ExprKind, Node, NodeKind};
+use crate::syntax::{Node, NodeKind};
 use std::sync::Arc;
 
 /// `mortar` as POV-Ray keeps it: 2e-10 less, in single precision.
@@ -18,6 +19,31 @@ fn brick_mortar(m: f64) -> f64 {
 
 /// POV-Ray's bump amount when a normal pattern gives none.
 const DEFAULT_BUMP_SIZE: f64 = 0.5;
+
+/// An image read for `image_map`, `image_pattern` or `bump_map`.
+struct ImageRead {
+    image: ImageMap,
+    kind: ImageRole,
+}
+
+/// What an image is read for.
+enum ImageRole {
+    /// `image_map`: its colours.
+    Colours,
+    /// `image_pattern`: a value pattern.
+    Pattern(ImageUse),
+    /// `bump_map`: heights, with the `bump_size` given inside.
+    Bumps(Option<f64>),
+}
+
+/// Whether a PNG file's pixels are palette indices (colour type 3 in its header).
+fn png_has_palette(path: &std::path::Path) -> bool {
+    use std::io::Read;
+    let mut header = [0u8; 26];
+    std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut header))
+        .is_ok_and(|()| header[25] == 3)
+}
 
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
@@ -102,7 +128,20 @@ impl Evaluator<'_> {
                         .is_some_and(|m| m.pattern.kind == PatternKind::Average);
                     map = Some((ev.texture_map(item, average)?, item.word_span))
                 }
-                NodeKind::Unknown if item.word == "image_map" => {
+                NodeKind::ImageMap if item.word == "image_pattern" => {
+                    let read = ev.image_map(item)?;
+                    let use_ = match read.kind {
+                        ImageRole::Pattern(use_) => use_,
+                        _ => ImageUse::Colour,
+                    };
+                    texture.map = Some(Box::new(TextureMap {
+                        pattern: Pattern::new(PatternKind::Image(Arc::new(read.image), use_)),
+                        transform: None,
+                        entries: Vec::new(),
+                    }));
+                    pattern_span = Some(item.word_span);
+                }
+                NodeKind::ImageMap | NodeKind::Unknown if item.word == "image_map" => {
                     return Err(Diagnostic::error(
                         "unsupported: an `image_map` pattern of textures (material_map is not supported by trace yet)",
                         item.word_span,
@@ -271,8 +310,26 @@ impl Evaluator<'_> {
                     }
                 },
                 NodeKind::ImageMap => {
-                    let image = ev.image_map(item)?;
-                    pigment.kind = PigmentKind::ImageMap(Arc::new(image));
+                    let read = ev.image_map(item)?;
+                    match read.kind {
+                        ImageRole::Colours => {
+                            pigment.kind = PigmentKind::ImageMap(Arc::new(read.image))
+                        }
+                        ImageRole::Pattern(use_) => {
+                            let kind = PatternKind::Image(Arc::new(read.image), use_);
+                            let map = PigmentMap::Colours(ev.pattern_map(item, &kind, &[])?);
+                            pigment.kind = PigmentKind::Pattern(Box::new(PatternPigment {
+                                pattern: Pattern::new(kind),
+                                map,
+                            }));
+                        }
+                        ImageRole::Bumps(_) => {
+                            return Err(Diagnostic::error(
+                                "`bump_map` can stand only in a normal (POV-Ray refuses it elsewhere too)",
+                                item.word_span,
+                            ));
+                        }
+                    }
                 }
                 NodeKind::ColourMap => {
                     map = Some((PigmentMap::Colours(ev.colour_map(item)?), item.word_span))
@@ -690,6 +747,33 @@ impl Evaluator<'_> {
                         map: None,
                     });
                 }
+                NodeKind::ImageMap => {
+                    let read = ev.image_map(item)?;
+                    let (kind, amount) = match read.kind {
+                        ImageRole::Bumps(size) => (
+                            PatternKind::BumpMap(Arc::new(read.image)),
+                            size.unwrap_or(DEFAULT_BUMP_SIZE),
+                        ),
+                        ImageRole::Pattern(use_) => {
+                            (PatternKind::Image(Arc::new(read.image), use_), DEFAULT_BUMP_SIZE)
+                        }
+                        ImageRole::Colours => {
+                            return Err(Diagnostic::error(
+                                "an `image_map` is a pigment: a normal takes `bump_map` or `image_pattern`",
+                                item.word_span,
+                            ));
+                        }
+                    };
+                    normal = Some(ir::Normal {
+                        pattern: Pattern::new(kind),
+                        amount,
+                        transform: None,
+                        accuracy: f64::from(0.02f32),
+                        no_bump_scale: false,
+                        slope_map: None,
+                        map: None,
+                    });
+                }
                 NodeKind::Unknown => return Err(ev.unknown_item(item, "normal")),
                 _ => {
                     let Some(n) = &mut normal else {
@@ -993,15 +1077,18 @@ impl Evaluator<'_> {
     }
 
     /// `image_map { [png] "file" [map_type 0] [once] [interpolate n] }`.
-    fn image_map(&mut self, node: &Node) -> Result<ImageMap> {
+    /// `image_map { [png] "file" … }`, `image_pattern { … }` or `bump_map { … }`: the image
+    /// (the colours of an image_map decoded to working gamma; the others' numbers as the file
+    /// holds them, as POV-Ray reads them) and what it is for.
+    fn image_map(&mut self, node: &Node) -> Result<ImageRead> {
         let file_expr = &node.args[0];
-        let ExprKind::Str(file) = &file_expr.kind else {
-            return Err(Diagnostic::error(
-                "expected a file name in quotes",
-                file_expr.span,
-            ));
+        let file = &match self.eval(file_expr)? {
+            Value::Str(s) => s,
+            other => return Err(type_error("a file name (a string)", &other, file_expr.span)),
         };
+        let role = node.word.as_str();
         let (mut once, mut bilinear) = (false, false);
+        let (mut use_, mut use_index, mut bump_size) = (ImageUse::Colour, false, None);
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::ImageType => {}
@@ -1028,7 +1115,16 @@ impl Evaluator<'_> {
                         }
                     };
                 }
-                _ if matches!(item.word.as_str(), "filter" | "transmit") => {
+                NodeKind::ImageUse if role != "image_map" => match item.word.as_str() {
+                    "use_alpha" if role == "image_pattern" => use_ = ImageUse::Alpha,
+                    "use_alpha" => return Err(ev.unknown_item(item, role)),
+                    "use_index" => (use_, use_index) = (ImageUse::Colour, true),
+                    _ => (use_, use_index) = (ImageUse::Colour, false),
+                },
+                NodeKind::BumpSize if role == "bump_map" => {
+                    bump_size = Some(ev.float(&item.args[0])?)
+                }
+                _ if role == "image_map" && matches!(item.word.as_str(), "filter" | "transmit") => {
                     return Err(Diagnostic::error(
                         format!(
                             "unsupported: `{}` in an image_map (see-through palette entries or a whole image made see-through are not supported by trace yet)",
@@ -1037,36 +1133,42 @@ impl Evaluator<'_> {
                         item.word_span,
                     ));
                 }
-                _ => return Err(ev.unknown_item(item, "image_map")),
+                _ => return Err(ev.unknown_item(item, role)),
             }
             Ok(())
         })?;
         if !file.to_ascii_lowercase().ends_with(".png") {
             return Err(Diagnostic::error(
-                "unsupported: image_map reads PNG files only",
+                format!("unsupported: {role} reads PNG files only"),
                 file_expr.span,
             ));
         }
         let path = self.find_file(file, "image", file_expr.span)?;
-        let img = image::ImageReader::open(&path)
-            .map_err(|e| {
-                Diagnostic::error(
-                    format!("cannot open image {}: {e}", path.display()),
-                    file_expr.span,
-                )
-            })?
+        let cannot = |what: &str, e: &dyn std::fmt::Display| {
+            Diagnostic::error(format!("cannot {what} image {}: {e}", path.display()), file_expr.span)
+        };
+        if use_index && role == "bump_map" && png_has_palette(&path) {
+            return Err(Diagnostic::error(
+                "unsupported: use_index with a palette image (the palette's indices as heights are not supported by trace yet)",
+                file_expr.span,
+            ));
+        }
+        let decoded = image::ImageReader::open(&path)
+            .map_err(|e| cannot("open", &e))?
             .decode()
-            .map_err(|e| {
-                Diagnostic::error(
-                    format!("cannot decode image {}: {e}", path.display()),
-                    file_expr.span,
-                )
-            })?
-            .into_rgba16();
-        // PNG values are sRGB-encoded: decode to linear, then into the working gamma.
+            .map_err(|e| cannot("decode", &e))?;
+        let has_alpha = decoded.color().has_alpha();
+        let img = decoded.into_rgba16();
+        // An image_map's PNG values are sRGB-encoded: decoded to linear, then into the working
+        // gamma. image_pattern and bump_map take the numbers as they are.
         let gamma = self.assumed_gamma.unwrap_or(1.0);
+        let colours = role == "image_map";
         let to_working = |v: u16| {
-            let linear = super::value::srgb_decode(v as f64 / 65535.0);
+            let v = v as f64 / 65535.0;
+            if !colours {
+                return v as f32;
+            }
+            let linear = super::value::srgb_decode(v);
             (if gamma == 1.0 {
                 linear
             } else {
@@ -1084,14 +1186,21 @@ impl Evaluator<'_> {
                 ]
             })
             .collect();
-        Ok(ImageMap {
+        let image = ImageMap {
             file: file.clone(),
             width: img.width(),
             height: img.height(),
             pixels,
+            has_alpha,
             once,
             bilinear,
-        })
+        };
+        let kind = match role {
+            "image_map" => ImageRole::Colours,
+            "image_pattern" => ImageRole::Pattern(use_),
+            _ => ImageRole::Bumps(bump_size),
+        };
+        Ok(ImageRead { image, kind })
     }
 
     /// `finish { [Name] items }` applied to `base`, shared with an equal finish made before.

@@ -539,33 +539,8 @@ impl Default for ColourMap {
     }
 }
 
-/// A decoded image for `image_map`.
-#[derive(Clone, PartialEq)]
-pub struct ImageMap {
-    /// The file as named in the scene.
-    pub file: String,
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// Pixels, top row first: linear (working-gamma) rgb and transmit (1 − alpha).
-    pub pixels: Vec<[f32; 4]>,
-    /// `once`: no tiling; outside the unit square the pigment is fully transparent.
-    pub once: bool,
-    /// `interpolate 2` (bilinear) or none (nearest pixel).
-    pub bilinear: bool,
-}
-
-impl std::fmt::Debug for ImageMap {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("ImageMap")
-            .field("file", &self.file)
-            .field("size", &(self.width, self.height))
-            .field("once", &self.once)
-            .field("bilinear", &self.bilinear)
-            .finish()
-    }
-}
+/// A decoded image (`image_map`, `image_pattern`, `bump_map`).
+pub use crate::pattern::image::ImageMap;
 
 /// `interior { ior fade_distance fade_power fade_color }`.
 #[derive(Clone, Copy, Debug, PartialEq)]

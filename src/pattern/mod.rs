@@ -12,6 +12,7 @@
 //! here or in a file of this module), and the keyword's arm in the evaluator's pattern table
 //! (`eval::material::pattern_kind`).
 
+pub mod image;
 pub mod noise;
 
 use glam::DVec3;
@@ -363,7 +364,7 @@ impl Pattern {
             | PatternKind::Spiral2(_) => wave.shape = WaveShape::Triangle,
             // POV-Ray skips the frequency step for these (a `frequency` after the pattern
             // turns it back on).
-            PatternKind::Quilted { .. } => wave.frequency = 0.0,
+            PatternKind::Quilted { .. } | PatternKind::Image(..) => wave.frequency = 0.0,
             _ if kind.list_len().is_some() => wave.frequency = 0.0,
             _ => {}
         }
@@ -472,8 +473,9 @@ impl Pattern {
             }
             PatternKind::Crackle(c) => crackle(p, c, generator),
             PatternKind::Cylindrical => clip((x * x + z * z).sqrt()),
-            // A normal only (the evaluator refuses it elsewhere).
-            PatternKind::Facets(_) => 0.0,
+            // Normals only (the evaluator refuses them elsewhere).
+            PatternKind::Facets(_) | PatternKind::BumpMap(_) => 0.0,
+            PatternKind::Image(image, use_) => image.value(p, *use_),
             PatternKind::Dents => {
                 let n = noise(p, generator);
                 n * n * n
@@ -631,6 +633,10 @@ pub enum PatternKind {
     Cylindrical,
     /// `dents`: noise cubed.
     Dents,
+    /// `image_pattern { … }`: the grey (or transparency) of an image's pixels.
+    Image(std::sync::Arc<image::ImageMap>, image::ImageUse),
+    /// `bump_map { … }` (normals only): an image's grey as a height field.
+    BumpMap(std::sync::Arc<image::ImageMap>),
     /// `facets` (normals only): flat facets, the normal replaced by the nearest of random
     /// points around it (or, with `coords`, tilted by the noise at the nearest random point
     /// around the surface point).

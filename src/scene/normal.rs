@@ -134,6 +134,7 @@ impl Normal {
                 }
             }
             PatternKind::Facets(f) => n = facets_normal(tp, n, f),
+            PatternKind::BumpMap(image) => n = image.bump(tp, a, n),
             PatternKind::Quilted { control0, control1 } => {
                 let q = quilt_offset(tp);
                 let t = quilt_cubic(q.length(), *control0, *control1);

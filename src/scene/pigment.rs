@@ -181,59 +181,20 @@ pub(super) fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
     (prev, cur, (v - entries[prev].0) / (entries[cur].0 - entries[prev].0))
 }
 
-/// Planar image map (POV-Ray `planar_image_map`, `image_map`): the unit square of the x-y
-/// plane, image row 0 at y = 1, tiled unless `once`.
+/// Planar image map (POV-Ray `planar_image_map`, `image_map`): the image's pixel, fully
+/// transparent white off a `once` image.
 fn image_colour(image: &ImageMap, q: DVec3) -> Colour {
-    const EDGE: f64 = 1e-10;
-    if image.once && !((0.0..=1.0).contains(&q.x) && (0.0..=1.0).contains(&q.y)) {
-        // Outside a `once` image: fully transparent (white, transmit 1).
-        return Colour {
+    match image.at(q) {
+        Some(px) => Colour {
+            rgb: Rgb::new(px[0] as f64, px[1] as f64, px[2] as f64),
+            filter: 0.0,
+            transmit: px[3] as f64,
+        },
+        None => Colour {
             rgb: Rgb::ONE,
             filter: 0.0,
             transmit: 1.0,
-        };
-    }
-    let (w, h) = (image.width as f64, image.height as f64);
-    let mut u = (q.x * w) % w + EDGE;
-    if u < 0.0 {
-        u += w;
-    }
-    let mut y = h - ((q.y * h) % h + EDGE);
-    if y < 0.0 {
-        y += h;
-    } else if y >= h {
-        y -= h;
-    }
-    let (iw, ih) = (image.width as i64, image.height as i64);
-    let texel = |x: i64, y: i64| {
-        let (x, y) = if image.once {
-            (x.clamp(0, iw - 1), y.clamp(0, ih - 1))
-        } else {
-            (x.rem_euclid(iw), y.rem_euclid(ih))
-        };
-        image.pixels[y as usize * image.width as usize + x as usize]
-    };
-    let px = if image.bilinear {
-        // Pixel centres at integer + ½: blend pixel i−1 and i with the fraction of u + ½.
-        let (x, yy) = (u + 0.5, y + 0.5);
-        let (i, j) = (x.floor() as i64, yy.floor() as i64);
-        let (p, r) = ((x - x.floor()) as f32, (yy - yy.floor()) as f32);
-        let mix = |a: [f32; 4], b: [f32; 4], t: f32| {
-            std::array::from_fn::<f32, 4, _>(|k| a[k] + (b[k] - a[k]) * t)
-        };
-        let top = mix(texel(i - 1, j - 1), texel(i, j - 1), p);
-        let bottom = mix(texel(i - 1, j), texel(i, j), p);
-        mix(top, bottom, r)
-    } else {
-        texel(
-            (u.floor() as i64).min(iw - 1),
-            (y.floor() as i64).min(ih - 1),
-        )
-    };
-    Colour {
-        rgb: Rgb::new(px[0] as f64, px[1] as f64, px[2] as f64),
-        filter: 0.0,
-        transmit: px[3] as f64,
+        },
     }
 }
 

@@ -143,6 +143,8 @@ pub enum NodeKind {
     MapType,
     Once,
     Interpolate,
+    /// `use_color`, `use_index`, `use_alpha` in an image pattern or bump map.
+    ImageUse,
     Interior,
     /// `interior_texture { … }` (a texture's items).
     InteriorTexture,
@@ -860,6 +862,7 @@ impl Lower {
             Rule::colour_map => NodeKind::ColourMap,
             Rule::map_entry => NodeKind::MapEntry,
             Rule::image_map => NodeKind::ImageMap,
+            Rule::image_use => NodeKind::ImageUse,
             Rule::image_type => NodeKind::ImageType,
             Rule::map_type => NodeKind::MapType,
             Rule::once => NodeKind::Once,
@@ -1324,6 +1327,12 @@ fn is_word(rule: Rule) -> bool {
             | kw_color_map
             | kw_colour_map
             | kw_image_map
+            | kw_image_pattern
+            | kw_bump_map
+            | kw_use_colour
+            | kw_use_color
+            | kw_use_index
+            | kw_use_alpha
             | kw_png
             | kw_map_type
             | kw_once
