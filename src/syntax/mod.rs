@@ -1107,7 +1107,7 @@ impl Lower {
                     }
                 }
             }
-            Rule::paren | Rule::colour_base => {
+            Rule::paren | Rule::colour_base | Rule::colour_named => {
                 self.expr(pair.into_inner().next().expect("parenthesised expression"))
             }
             Rule::plain_vector => {
@@ -1171,7 +1171,9 @@ impl Lower {
                 let mut parts = Vec::new();
                 for part in pair.into_inner() {
                     match part.as_rule() {
-                        Rule::colour_base => parts.push(ColourPart::Base(self.expr(part))),
+                        Rule::colour_base | Rule::colour_named => {
+                            parts.push(ColourPart::Base(self.expr(part)))
+                        }
                         Rule::colour_typed | Rule::colour_channel => {
                             let rule = part.as_rule();
                             let mut inner = part.into_inner();
