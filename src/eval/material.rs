@@ -36,13 +36,29 @@ enum ImageRole {
     Bumps(Option<f64>),
 }
 
-/// Whether a PNG file's pixels are palette indices (colour type 3 in its header).
-fn png_has_palette(path: &std::path::Path) -> bool {
-    use std::io::Read;
-    let mut header = [0u8; 26];
-    std::fs::File::open(path)
-        .and_then(|mut f| f.read_exact(&mut header))
-        .is_ok_and(|()| header[25] == 3)
+/// A palette PNG's pixel indices (top row first), `None` for other files.
+fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
+    let file = std::io::BufReader::new(std::fs::File::open(path).ok()?);
+    let mut decoder = png::Decoder::new(file);
+    decoder.set_transformations(png::Transformations::IDENTITY);
+    let mut reader = decoder.read_info().ok()?;
+    if reader.info().color_type != png::ColorType::Indexed {
+        return None;
+    }
+    let mut buf = vec![0; reader.output_buffer_size()?];
+    let out = reader.next_frame(&mut buf).ok()?;
+    let bits = out.bit_depth as usize;
+    let (w, h) = (out.width as usize, out.height as usize);
+    let mut indices = Vec::with_capacity(w * h);
+    for row in buf.chunks(out.line_size).take(h) {
+        for x in 0..w {
+            let bit = x * bits;
+            let byte = row[bit / 8];
+            let shift = 8 - bits - bit % 8;
+            indices.push((byte >> shift) & ((1u16 << bits) - 1) as u8);
+        }
+    }
+    Some(indices)
 }
 
 
@@ -1147,12 +1163,6 @@ impl Evaluator<'_> {
         let cannot = |what: &str, e: &dyn std::fmt::Display| {
             Diagnostic::error(format!("cannot {what} image {}: {e}", path.display()), file_expr.span)
         };
-        if use_index && role == "bump_map" && png_has_palette(&path) {
-            return Err(Diagnostic::error(
-                "unsupported: use_index with a palette image (the palette's indices as heights are not supported by trace yet)",
-                file_expr.span,
-            ));
-        }
         let decoded = image::ImageReader::open(&path)
             .map_err(|e| cannot("open", &e))?
             .decode()
@@ -1186,11 +1196,16 @@ impl Evaluator<'_> {
                 ]
             })
             .collect();
+        // `use_index` on a palette image: bump heights are the pixels' indices.
+        let indices = (use_index && role == "bump_map")
+            .then(|| palette_indices(&path))
+            .flatten();
         let image = ImageMap {
             file: file.clone(),
             width: img.width(),
             height: img.height(),
             pixels,
+            indices,
             has_alpha,
             once,
             bilinear,

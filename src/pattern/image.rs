@@ -19,6 +19,9 @@ pub struct ImageMap {
     /// (working gamma); for `image_pattern` and `bump_map` it is the file's values, as POV-Ray
     /// reads them there without gamma.
     pub pixels: Vec<[f32; 4]>,
+    /// For `bump_map … use_index` on a palette image: each pixel's palette index, the height
+    /// POV-Ray takes then (without interpolation).
+    pub indices: Option<Vec<u8>>,
     /// Whether the file has an alpha channel (`use_alpha` reads red otherwise).
     pub has_alpha: bool,
     /// `once`: no tiling; outside the unit square the image is absent.
@@ -127,7 +130,17 @@ impl ImageMap {
             return n;
         };
         let (w, h) = (self.width as f64, self.height as f64);
-        let g1 = f64::from(grey(self.texel(x, y)));
+        // The height at pixel coordinates: the palette index (use_index, no interpolation),
+        // else the grey.
+        let height = |x: f64, y: f64| match &self.indices {
+            Some(indices) if !self.bilinear => {
+                let (iw, ih) = (self.width as usize, self.height as usize);
+                let (i, j) = ((x as usize).min(iw - 1), (y as usize).min(ih - 1));
+                f64::from(indices[j * iw + i])
+            }
+            _ => f64::from(grey(self.texel(x, y))),
+        };
+        let g1 = height(x, y);
         x -= 1.0;
         y += 1.0;
         let wrap = |v: f64, size: f64| {
@@ -140,9 +153,9 @@ impl ImageMap {
             }
         };
         (x, y) = (wrap(x, w), wrap(y, h));
-        let g2 = f64::from(grey(self.texel(x, y)));
+        let g2 = height(x, y);
         x = wrap(x + 2.0, w);
-        let g3 = f64::from(grey(self.texel(x, y)));
+        let g3 = height(x, y);
         let p1 = DVec3::new(0.0, amount * g1, 0.0);
         let p2 = DVec3::new(-1.0, amount * g2, 1.0);
         let p3 = DVec3::new(1.0, amount * g3, 1.0);
