@@ -20,6 +20,11 @@ fn brick_mortar(m: f64) -> f64 {
 /// POV-Ray's bump amount when a normal pattern gives none.
 const DEFAULT_BUMP_SIZE: f64 = 0.5;
 
+/// A number as POV-Ray keeps it in single precision (map keys, some pattern parameters).
+fn single(v: f64) -> f64 {
+    f64::from(v as f32)
+}
+
 /// An image read for `image_map`, `image_pattern` or `bump_map`.
 struct ImageRead {
     image: ImageMap,
@@ -254,7 +259,7 @@ impl Evaluator<'_> {
         let mut entries = Vec::new();
         for e in &node.children {
             let value = match e.args.first() {
-                Some(v) => self.float(v)?,
+                Some(v) => single(self.float(v)?),
                 None if average => 1.0,
                 None => {
                     return Err(Diagnostic::error(
@@ -433,7 +438,6 @@ impl Evaluator<'_> {
             })?;
             ev.vec3(e)
         };
-        let single = |v: f64| f64::from(v as f32);
         let warp = match first.word.as_str() {
             "turbulence" | "octaves" | "omega" | "lambda" => {
                 let mut t = noise::Turbulence::default();
@@ -848,7 +852,6 @@ impl Evaluator<'_> {
                 Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)
             })
         };
-        let single = |v: f64| f64::from(v as f32);
         let misplaced = |what: &str| {
             Diagnostic::error(
                 format!("`{}` applies only to {what}", item.word),
@@ -1031,7 +1034,7 @@ impl Evaluator<'_> {
         }
         let mut entries = Vec::new();
         for e in &node.children {
-            let value = self.float(&e.args[0])?;
+            let value = single(self.float(&e.args[0])?);
             let v = self.eval(&e.args[1])?;
             let point = match &v {
                 Value::Vector(p) if p.len >= 2 => [p.c[0], p.c[1]],
@@ -1063,7 +1066,8 @@ impl Evaluator<'_> {
                 _ => unreachable!("the grammar gives a map entry 2 or 4 expressions"),
             };
             for (value_expr, colour_expr) in points {
-                let value = self.float(value_expr)?;
+                // (POV-Ray keeps map keys in single precision.)
+                let value = single(self.float(value_expr)?);
                 let v = self.eval(colour_expr)?;
                 self.warn_bare_colour(&v, colour_expr.span, "in a color_map entry");
                 let colour = to_colour(
@@ -1092,7 +1096,6 @@ impl Evaluator<'_> {
         Ok(ColourMap { entries })
     }
 
-    /// `image_map { [png] "file" [map_type 0] [once] [interpolate n] }`.
     /// `image_map { [png] "file" … }`, `image_pattern { … }` or `bump_map { … }`: the image
     /// (the colours of an image_map decoded to working gamma; the others' numbers as the file
     /// holds them, as POV-Ray reads them) and what it is for.
