@@ -182,6 +182,11 @@ impl Evaluator<'_> {
                 None => Ok(texture),
             };
         };
+        // A declared pattern of textures, modified (`texture { Mountain scale 2 }`): its
+        // entries stay.
+        if map.is_none() && list.is_empty() && !m.entries.is_empty() {
+            return Ok(texture);
+        }
         match (m.pattern.kind.list_len(), map) {
             (_, Some((entries, span))) => {
                 if m.pattern.kind.list_len().is_some() || !list.is_empty() {
@@ -741,12 +746,8 @@ impl Evaluator<'_> {
                 },
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
-                    if kind.list_len().is_some() {
-                        return Err(Diagnostic::error(
-                            format!("unsupported: a `{}` normal (a pattern of normals is not supported by trace yet)", item.word),
-                            item.word_span,
-                        ));
-                    }
+                    // (A discrete pattern bumps by the slope of its entry number, as in POV-Ray;
+                    // a list of normals after it is not read yet.)
                     let amount = match rest {
                         [] => DEFAULT_BUMP_SIZE,
                         [e] => ev.float(e)?,
