@@ -181,9 +181,12 @@ fn write_png<'a>(
 }
 
 /// A linear value as an 8-bit sRGB byte, as POV-Ray writes PNGs: `floor(255·srgb(v) + 0.5)`
-/// of the value clamped to [0, 1].
+/// of the value clamped to [0, 1]. POV-Ray's values are exact doubles; the film's single
+/// precision can put an exact tie a hair below it (`Gray30` of a scene without gamma, 0.3,
+/// is 76.5 and POV-Ray writes 77), so a tie within the film's precision rounds up as there.
 fn srgb8(v: f32) -> u8 {
-    (255.0 * linear_to_srgb((v as f64).clamp(0.0, 1.0)) + 0.5).floor() as u8
+    const FILM_PRECISION: f64 = 1e-5;
+    (255.0 * linear_to_srgb((v as f64).clamp(0.0, 1.0)) + 0.5 + FILM_PRECISION).floor() as u8
 }
 
 /// A linear-light RGB image, top row first.
