@@ -758,15 +758,7 @@ impl Evaluator<'_> {
                             ));
                         }
                     };
-                    normal = Some(ir::Normal {
-                        pattern: Pattern::new(kind),
-                        amount,
-                        transform: None,
-                        accuracy: f64::from(0.02f32),
-                        no_bump_scale: false,
-                        slope_map: None,
-                        map: None,
-                    });
+                    normal = Some(ir::Normal::new(Pattern::new(kind), amount));
                 }
                 NodeKind::ImageMap => {
                     let read = ev.image_map(item)?;
@@ -785,15 +777,7 @@ impl Evaluator<'_> {
                             ));
                         }
                     };
-                    normal = Some(ir::Normal {
-                        pattern: Pattern::new(kind),
-                        amount,
-                        transform: None,
-                        accuracy: f64::from(0.02f32),
-                        no_bump_scale: false,
-                        slope_map: None,
-                        map: None,
-                    });
+                    normal = Some(ir::Normal::new(Pattern::new(kind), amount));
                 }
                 NodeKind::Unknown => return Err(ev.unknown_item(item, "normal")),
                 _ => {

@@ -463,6 +463,21 @@ pub struct Normal {
     pub map: Option<Vec<(f64, Normal)>>,
 }
 
+impl Normal {
+    /// A normal of `pattern` bumped by `amount`, with POV-Ray's defaults for the rest.
+    pub fn new(pattern: Pattern, amount: f64) -> Normal {
+        Normal {
+            pattern,
+            amount,
+            transform: None,
+            accuracy: f64::from(0.02f32),
+            no_bump_scale: false,
+            slope_map: None,
+            map: None,
+        }
+    }
+}
+
 /// `texture { PATTERN texture_map { [v TEXTURE] … } }` or a discrete pattern's list of
 /// textures: the textures are lit each on its own and blended by the pattern's value.
 #[derive(Clone, Debug, PartialEq)]
