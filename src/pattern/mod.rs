@@ -720,18 +720,42 @@ impl Default for Facets {
     }
 }
 
-/// POV-Ray's `PickInCube`: the random point of the unit cube holding `p` (cells below the
-/// point by a hair).
-fn pick_in_cube(p: DVec3) -> DVec3 {
-    let flo = (p - DVec3::splat(EPSILON)).floor();
-    let seed = noise::hash3d(trunc_i32(flo.x), trunc_i32(flo.y), trunc_i32(flo.z));
+/// The random point of unit cell `cell` (POV-Ray's `PickInCube` for a point in that cell).
+fn cell_point(cell: [i32; 3]) -> DVec3 {
+    let seed = noise::hash3d(cell[0], cell[1], cell[2]);
     let r = pattern_rands();
-    flo + DVec3::new(r[seed], r[seed + 1], r[seed + 2])
+    DVec3::new(cell[0] as f64, cell[1] as f64, cell[2] as f64)
+        + DVec3::new(r[seed], r[seed + 1], r[seed + 2])
+}
+
+/// The random points of a cell and of the 80 cells around it within a knight's move, in
+/// POV-Ray's order.
+fn facet_candidates(cell: [i32; 3]) -> [DVec3; 81] {
+    let mut points = [DVec3::ZERO; 81];
+    let mut k = 0;
+    for ax in -2..=2i32 {
+        for ay in -2..=2i32 {
+            for az in -2..=2i32 {
+                if (ax.abs() > 1) as u8 + (ay.abs() > 1) as u8 + (az.abs() > 1) as u8 > 1 {
+                    continue;
+                }
+                points[k] = cell_point([cell[0] + ax, cell[1] + ay, cell[2] + az]);
+                k += 1;
+            }
+        }
+    }
+    points
 }
 
 /// The `facets` normal at pattern point `p` for the unit normal `n` in pattern space (not
 /// normalised), as POV-Ray's facets normal computes it.
 pub fn facets_normal(p: DVec3, n: DVec3, f: &Facets) -> DVec3 {
+    thread_local! {
+        /// The last cell's candidates (POV-Ray keeps the same cache per thread; neighbouring
+        /// samples mostly fall in one cell).
+        static LAST: std::cell::RefCell<Option<([i32; 3], [DVec3; 81])>> =
+            const { std::cell::RefCell::new(None) };
+    }
     let scale = if f.size < 1e-6 { 1e6 } else { 1.0 / f.size };
     let t = if f.coords != 0.0 { p } else { n } * scale;
     let distance = |d: DVec3| {
@@ -744,23 +768,22 @@ pub fn facets_normal(p: DVec3, n: DVec3, f: &Facets) -> DVec3 {
             d.x.abs().powf(f.metric) + d.y.abs().powf(f.metric) + d.z.abs().powf(f.metric)
         }
     };
-    // The random points of this cube and of the 80 around it within a knight's move.
-    let mut best: Option<(f64, DVec3)> = None;
-    for ax in -2..=2i32 {
-        for ay in -2..=2i32 {
-            for az in -2..=2i32 {
-                if (ax.abs() > 1) as u8 + (ay.abs() > 1) as u8 + (az.abs() > 1) as u8 > 1 {
-                    continue;
-                }
-                let c = pick_in_cube(t + DVec3::new(ax as f64, ay as f64, az as f64));
-                let d = distance(c - t);
-                if best.is_none_or(|(m, _)| d < m) {
-                    best = Some((d, c));
-                }
+    let flo = (t - DVec3::splat(EPSILON)).floor();
+    let cell = [trunc_i32(flo.x), trunc_i32(flo.y), trunc_i32(flo.z)];
+    let nearest = LAST.with_borrow_mut(|last| {
+        let points = match last {
+            Some((c, points)) if *c == cell => points,
+            _ => &mut last.insert((cell, facet_candidates(cell))).1,
+        };
+        let mut best = (distance(points[0] - t), points[0]);
+        for &c in &points[1..] {
+            let d = distance(c - t);
+            if d < best.0 {
+                best = (d, c);
             }
         }
-    }
-    let nearest = best.map_or(t, |(_, c)| c);
+        best.1
+    });
     if f.coords != 0.0 {
         let pert = dnoise(nearest);
         let pert = pert - n * pert.dot(n);
