@@ -85,6 +85,31 @@ impl Cone {
     }
 }
 
+
+impl super::shape::Surface for Cone {
+    const NAME: &'static str = "Cone/Cylinder";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
+        let n = self.normal(p, part);
+        (n, n)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        let r = self.r0.max(self.r1);
+        Some((DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0)))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

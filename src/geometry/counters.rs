@@ -7,33 +7,7 @@
 
 use std::cell::Cell;
 
-/// Kinds of test, in the order of [`Tests`]' arrays.
-pub const KINDS: [&str; 8] = [
-    "Sphere",
-    "Plane",
-    "Box",
-    "Cone/Cylinder",
-    "Disc",
-    "Torus",
-    "Mesh",
-    "Triangle",
-];
-/// Index of a sphere test.
-pub const SPHERE: usize = 0;
-/// Index of a plane test.
-pub const PLANE: usize = 1;
-/// Index of a box test.
-pub const BOX: usize = 2;
-/// Index of a cone or cylinder test.
-pub const CONE: usize = 3;
-/// Index of a disc test.
-pub const DISC: usize = 4;
-/// Index of a torus test.
-pub const TORUS: usize = 5;
-/// Index of a mesh test (one per mesh object entered; its triangles count as [`TRIANGLE`]).
-pub const MESH: usize = 6;
-/// Index of one ray–triangle test inside a mesh.
-pub const TRIANGLE: usize = 7;
+pub use super::shape::KINDS;
 
 /// Tests made and tests that found a crossing, by kind.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -72,6 +72,30 @@ impl Cuboid {
     }
 }
 
+
+impl super::shape::Surface for Cuboid {
+    const NAME: &'static str = "Box";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
+        let n = self.normal(p, part);
+        (n, n)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some((self.min, self.max))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

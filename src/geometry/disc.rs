@@ -38,6 +38,30 @@ impl Disc {
     }
 }
 
+
+impl super::shape::Surface for Disc {
+    const NAME: &'static str = "Disc";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, _p: DVec3, _part: u32) -> (DVec3, DVec3) {
+        (self.normal, self.normal)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        // POV-Ray: the half-space on the disc's back side.
+        (p - self.centre).dot(self.normal) < 0.0
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some((self.centre - self.radius, self.centre + self.radius))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -197,7 +197,7 @@ impl TriangleMesh {
                 for i in self.group(p) {
                     let [a, b, c] = self.corners(i);
                     let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
-                    counters::record(counters::TRIANGLE, crossing.is_some());
+                    counters::record(super::shape::TRIANGLE, crossing.is_some());
                     if let Some(t) = crossing {
                         tmax = t;
                         best = Some((t, i as u32));
@@ -225,7 +225,7 @@ impl TriangleMesh {
                 for i in self.group(p) {
                     let [a, b, c] = self.corners(i);
                     let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
-                    counters::record(counters::TRIANGLE, crossing.is_some());
+                    counters::record(super::shape::TRIANGLE, crossing.is_some());
                     if let Some(t) = crossing {
                         f(t, i as u32);
                     }
@@ -247,7 +247,7 @@ impl TriangleMesh {
             for i in self.group(p) {
                 let [a, b, c] = self.corners(i);
                 let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
-                counters::record(counters::TRIANGLE, crossing.is_some());
+                counters::record(super::shape::TRIANGLE, crossing.is_some());
                 if crossing.is_some() {
                     return 0.0;
                 }
@@ -286,6 +286,37 @@ impl TriangleMesh {
             Some(dir) => self.count_crossings(&Ray::new(p, dir)) % 2 == 1,
             None => false,
         }
+    }
+}
+
+
+impl super::shape::Surface for TriangleMesh {
+    const NAME: &'static str = "Mesh";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, p: DVec3, triangle: u32) -> (DVec3, DVec3) {
+        (self.normal(p, triangle), self.geometric_normal(triangle))
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some(self.bounds)
+    }
+
+    fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
+        self.for_each_crossing(ray, f)
+    }
+
+    fn occludes(&self, ray: &Ray) -> bool {
+        self.occluded(ray)
     }
 }
 

@@ -13,6 +13,7 @@ mod disc;
 pub mod mesh;
 mod plane;
 pub mod poly;
+pub mod shape;
 mod sphere;
 mod torus;
 pub mod triangle;
@@ -23,6 +24,7 @@ pub use disc::Disc;
 pub use mesh::TriangleMesh;
 pub use plane::Plane;
 pub use sphere::Sphere;
+pub use shape::{Shape, Surface};
 pub use torus::Torus;
 
 use glam::{DMat4, DVec3};

@@ -35,6 +35,29 @@ impl Plane {
     }
 }
 
+
+impl super::shape::Surface for Plane {
+    const NAME: &'static str = "Plane";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, _p: DVec3, _part: u32) -> (DVec3, DVec3) {
+        (self.normal, self.normal)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -52,6 +52,30 @@ impl Sphere {
     }
 }
 
+
+impl super::shape::Surface for Sphere {
+    const NAME: &'static str = "Sphere";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, p: DVec3, _part: u32) -> (DVec3, DVec3) {
+        let n = self.normal(p);
+        (n, n)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some((self.centre - self.radius.abs(), self.centre + self.radius.abs()))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

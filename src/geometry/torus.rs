@@ -80,6 +80,31 @@ impl Torus {
     }
 }
 
+
+impl super::shape::Surface for Torus {
+    const NAME: &'static str = "Torus";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        self.intersect(ray)
+    }
+
+    #[inline]
+    fn normals(&self, p: DVec3, _part: u32) -> (DVec3, DVec3) {
+        let n = self.normal(p);
+        (n, n)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.contains(p)
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        let (a, b) = (self.major + self.minor, self.minor);
+        Some((DVec3::new(-a, -b, -a), DVec3::new(a, b, a)))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,7 +4,7 @@
 //! once per distinct value; lights are collected. The renderer sees only this module's types.
 
 use crate::geometry::{
-    Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, counters, offset_origin,
+    Cone, Crossings, Cuboid, Disc, Plane, Ray, Shape, Sphere, Torus, TriangleMesh, offset_origin,
 };
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
@@ -288,136 +288,6 @@ pub fn interior_fade(interior: &Interior, d: f64) -> Rgb {
         )
     } else {
         fc + (Rgb::ONE - fc) / (1.0 + (d / interior.fade_distance).powf(interior.fade_power))
-    }
-}
-
-/// Geometry, in object space.
-#[derive(Clone, Debug)]
-pub enum Shape {
-    /// Sphere.
-    Sphere(Sphere),
-    /// Infinite plane.
-    Plane(Plane),
-    /// Axis-aligned box.
-    Box(Cuboid),
-    /// Cylinder or cone, in its canonical frame (the object transform includes the frame).
-    Cone(Cone),
-    /// Disc (boxed: the largest shape, and a rare one, would make every object bigger).
-    Disc(Box<Disc>),
-    /// Torus.
-    Torus(Torus),
-    /// Triangle mesh, shared between instances.
-    Mesh(Arc<TriangleMesh>),
-}
-
-impl Shape {
-    /// The kind of test in [`counters`].
-    fn test_kind(&self) -> usize {
-        match self {
-            Shape::Sphere(_) => counters::SPHERE,
-            Shape::Plane(_) => counters::PLANE,
-            Shape::Box(_) => counters::BOX,
-            Shape::Cone(_) => counters::CONE,
-            Shape::Disc(_) => counters::DISC,
-            Shape::Torus(_) => counters::TORUS,
-            Shape::Mesh(_) => counters::MESH,
-        }
-    }
-
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        let crossings = self.intersect_uncounted(ray);
-        counters::record(self.test_kind(), !crossings.is_empty());
-        crossings
-    }
-
-    fn intersect_uncounted(&self, ray: &Ray) -> Crossings {
-        match self {
-            Shape::Sphere(s) => s.intersect(ray),
-            Shape::Plane(p) => p.intersect(ray),
-            Shape::Box(b) => b.intersect(ray),
-            Shape::Cone(c) => c.intersect(ray),
-            Shape::Disc(d) => d.intersect(ray),
-            Shape::Torus(t) => t.intersect(ray),
-            Shape::Mesh(m) => m.intersect(ray),
-        }
-    }
-
-    /// Calls `f` with the distance and part of every surface crossing along the ray (in
-    /// increasing order, except for meshes).
-    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
-        match self {
-            Shape::Mesh(m) => {
-                let mut any = false;
-                m.for_each_crossing(ray, |t, part| {
-                    any = true;
-                    f(t, part)
-                });
-                counters::record(counters::MESH, any);
-            }
-            other => {
-                let c = other.intersect(ray);
-                c.as_slice().iter().zip(c.parts()).for_each(|(&t, &part)| f(t, part));
-            }
-        }
-    }
-
-    /// Whether an object-space point is inside.
-    fn contains(&self, p: DVec3) -> bool {
-        match self {
-            Shape::Sphere(s) => s.contains(p),
-            Shape::Plane(pl) => pl.contains(p),
-            Shape::Box(b) => b.contains(p),
-            Shape::Cone(c) => c.contains(p),
-            Shape::Torus(t) => t.contains(p),
-            // POV-Ray: the half-space on the disc's back side.
-            Shape::Disc(d) => (p - d.centre).dot(d.normal) < 0.0,
-            Shape::Mesh(m) => m.contains(p),
-        }
-    }
-
-    /// Whether anything of the shape lies on the ray.
-    fn occludes(&self, ray: &Ray) -> bool {
-        match self {
-            Shape::Mesh(m) => {
-                let blocked = m.occluded(ray);
-                counters::record(counters::MESH, blocked);
-                blocked
-            }
-            other => !other.intersect(ray).is_empty(),
-        }
-    }
-
-    /// (shading normal, geometric normal) in object space, not necessarily unit length.
-    fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
-        let n = match self {
-            Shape::Sphere(s) => s.normal(p),
-            Shape::Plane(pl) => pl.normal(),
-            Shape::Box(b) => b.normal(p, part),
-            Shape::Cone(c) => c.normal(p, part),
-            Shape::Disc(d) => d.normal(),
-            Shape::Torus(t) => t.normal(p),
-            Shape::Mesh(m) => return (m.normal(p, part), m.geometric_normal(part)),
-        };
-        (n, n)
-    }
-
-    /// Object-space bounding box, `None` when unbounded.
-    fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        Some(match self {
-            Shape::Sphere(s) => (s.centre - s.radius.abs(), s.centre + s.radius.abs()),
-            Shape::Plane(_) => return None,
-            Shape::Box(b) => (b.min, b.max),
-            Shape::Cone(c) => {
-                let r = c.r0.max(c.r1);
-                (DVec3::new(-r, -r, 0.0), DVec3::new(r, r, 1.0))
-            }
-            Shape::Disc(d) => (d.centre - d.radius, d.centre + d.radius),
-            Shape::Torus(t) => {
-                let (a, b) = (t.major + t.minor, t.minor);
-                (DVec3::new(-a, -b, -a), DVec3::new(a, b, a))
-            }
-            Shape::Mesh(m) => m.bounds,
-        })
     }
 }
 

@@ -1,0 +1,190 @@
+//! The shape contract: what every shape gives the tracer, and the one list of shapes.
+//!
+//! A shape is plain geometry in object space that implements [`Surface`]: all its crossings
+//! with a ray (POV-Ray's interior bookkeeping needs every one, not only the nearest), the
+//! normals at a crossing, an inside test, its bounds and the name `--stats` counts it under.
+//! [`Shape`] is an enum generated from the list at the end of this file, so the tracer calls
+//! shapes through `match` (static dispatch, no `dyn` on the hot path) and counts every test in
+//! one place.
+//!
+//! Adding a shape: a file in `geometry/` with its type and its `Surface` impl (with unit tests),
+//! and one line in the list below. The scene builder turns the IR's shape into it
+//! (`scene::build`), and the evaluator reads its syntax.
+
+use super::{Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, counters};
+use glam::DVec3;
+use std::sync::Arc;
+
+/// What a shape provides, in its own (object) space.
+pub trait Surface {
+    /// The name of its tests in `--stats`.
+    const NAME: &'static str;
+
+    /// Every crossing of the ray within its interval, nearest first, each with a part tag
+    /// (which face or triangle) for [`Surface::normals`].
+    fn intersect(&self, ray: &Ray) -> Crossings;
+
+    /// (shading normal, geometric normal) at surface point `p` of part `part`, pointing out of
+    /// the shape, not necessarily unit length.
+    fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3);
+
+    /// Whether point `p` is inside (POV-Ray's inside test, which CSG-free scenes use for
+    /// interiors and fog).
+    fn contains(&self, p: DVec3) -> bool;
+
+    /// The bounding box, `None` when unbounded.
+    fn bounds(&self) -> Option<(DVec3, DVec3)>;
+
+    /// Calls `f` with the distance and part of every crossing (in any order). Shapes with more
+    /// crossings than [`Crossings`] holds (meshes) override it.
+    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+        let c = self.intersect(ray);
+        for (&t, &part) in c.as_slice().iter().zip(c.parts()) {
+            f(t, part);
+        }
+    }
+
+    /// Whether anything of the shape lies on the ray (shadow rays; may stop at the first).
+    fn occludes(&self, ray: &Ray) -> bool {
+        !self.intersect(ray).is_empty()
+    }
+}
+
+/// A shape behind a pointer is the shape.
+macro_rules! forward_surface {
+    ($ptr:ident) => {
+        impl<T: Surface> Surface for $ptr<T> {
+            const NAME: &'static str = T::NAME;
+            #[inline]
+            fn intersect(&self, ray: &Ray) -> Crossings {
+                (**self).intersect(ray)
+            }
+            #[inline]
+            fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
+                (**self).normals(p, part)
+            }
+            fn contains(&self, p: DVec3) -> bool {
+                (**self).contains(p)
+            }
+            fn bounds(&self) -> Option<(DVec3, DVec3)> {
+                (**self).bounds()
+            }
+            fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
+                (**self).for_each_crossing(ray, f)
+            }
+            fn occludes(&self, ray: &Ray) -> bool {
+                (**self).occludes(ray)
+            }
+        }
+    };
+}
+forward_surface!(Box);
+forward_surface!(Arc);
+
+/// Generates [`Shape`], its dispatch to [`Surface`] with the test counters, and the counters'
+/// names from the list of shapes.
+macro_rules! shapes {
+    ($($(#[$doc:meta])* $variant:ident($ty:ty),)*) => {
+        /// A shape in object space (the object's transformation carries it into the world).
+        #[derive(Clone, Debug)]
+        pub enum Shape {
+            $($(#[$doc])* $variant($ty),)*
+        }
+
+        /// The kinds of intersection test `--stats` counts: one per shape, then a triangle
+        /// inside a mesh.
+        #[derive(Clone, Copy)]
+        #[repr(usize)]
+        enum Kind {
+            $($variant,)*
+            Triangle,
+        }
+
+        /// Index of one ray–triangle test inside a mesh in the counters.
+        pub const TRIANGLE: usize = Kind::Triangle as usize;
+
+        /// The names of the kinds of test, in the counters' order.
+        pub const KINDS: [&str; TRIANGLE + 1] = [$(<$ty as Surface>::NAME,)* "Triangle"];
+
+        impl Shape {
+            /// The shape's index in the counters.
+            #[inline]
+            fn kind(&self) -> usize {
+                match self {
+                    $(Shape::$variant(_) => Kind::$variant as usize,)*
+                }
+            }
+
+            /// Every crossing of the ray (counted).
+            #[inline]
+            pub fn intersect(&self, ray: &Ray) -> Crossings {
+                let crossings = match self {
+                    $(Shape::$variant(s) => s.intersect(ray),)*
+                };
+                counters::record(self.kind(), !crossings.is_empty());
+                crossings
+            }
+
+            /// (shading normal, geometric normal) at `p` on part `part`.
+            #[inline]
+            pub fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
+                match self {
+                    $(Shape::$variant(s) => s.normals(p, part),)*
+                }
+            }
+
+            /// Whether an object-space point is inside.
+            pub fn contains(&self, p: DVec3) -> bool {
+                match self {
+                    $(Shape::$variant(s) => s.contains(p),)*
+                }
+            }
+
+            /// Object-space bounding box, `None` when unbounded.
+            pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+                match self {
+                    $(Shape::$variant(s) => s.bounds(),)*
+                }
+            }
+
+            /// Calls `f` with the distance and part of every crossing (counted as one test).
+            pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+                let mut any = false;
+                let mut each = |t, part| {
+                    any = true;
+                    f(t, part)
+                };
+                match self {
+                    $(Shape::$variant(s) => s.for_each_crossing(ray, &mut each),)*
+                }
+                counters::record(self.kind(), any);
+            }
+
+            /// Whether anything of the shape lies on the ray (counted).
+            pub fn occludes(&self, ray: &Ray) -> bool {
+                let blocked = match self {
+                    $(Shape::$variant(s) => s.occludes(ray),)*
+                };
+                counters::record(self.kind(), blocked);
+                blocked
+            }
+        }
+    };
+}
+
+shapes! {
+    /// `sphere`.
+    Sphere(Sphere),
+    /// `plane`.
+    Plane(Plane),
+    /// `box`.
+    Box(Cuboid),
+    /// Cylinder or cone, in its canonical frame (the object transform includes the frame).
+    Cone(Cone),
+    /// `disc` (boxed: the largest shape, and a rare one, would make every object bigger).
+    Disc(Box<Disc>),
+    /// `torus`.
+    Torus(Torus),
+    /// Triangle mesh, shared between instances.
+    Mesh(Arc<TriangleMesh>),
+}
