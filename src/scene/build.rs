@@ -1,0 +1,522 @@
+//! Building the render-ready scene from the IR: shapes in their object spaces, materials and
+//! interiors stored once per distinct value, ranks for POV-Ray's tie order, the top-level index.
+
+use super::query::fades;
+use super::*;
+use crate::geometry::{Cone, Cuboid, Disc, Plane, Sphere, Torus};
+use rayon::prelude::*;
+use std::collections::HashMap;
+
+/// A cheap hash of the parts of a texture that most often differ (pattern kind, colour, main
+/// finish amounts); textures with equal fingerprints are then compared in full.
+fn fingerprint(t: &ir::Texture) -> u64 {
+    let (kind, colour) = match &t.pigment.kind {
+        ir::PigmentKind::Solid(c) => (0, Some(c)),
+        ir::PigmentKind::Pattern(_) => (1, None),
+        ir::PigmentKind::ImageMap(_) => (2, None),
+    };
+    let f = &t.finish;
+    let mut words = [kind, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+    for (w, v) in words[1..]
+        .iter_mut()
+        .zip([f.ambient.x, f.diffuse, f.phong, f.specular])
+    {
+        *w = v.to_bits();
+    }
+    if let Some(c) = colour {
+        for (w, v) in words[5..]
+            .iter_mut()
+            .zip([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit])
+        {
+            *w = v.to_bits();
+        }
+    }
+    // A multiply–rotate mix (the keys are not adversarial; SipHash was a third of the
+    // per-object build time).
+    words.iter().fold(0u64, |h, &w| {
+        (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
+    })
+}
+
+/// Ids for `values`, equal values sharing one (hash-consing), numbered in order of first
+/// appearance, and the value of each id. `fingerprint` must give equal values equal keys;
+/// values with equal keys are compared in full. (Sorting by key on all cores, rather than a
+/// hash table filled in order: with a million distinct values most lookups missed the cache.)
+fn shared_ids<'a, T: PartialEq + Sync>(
+    values: &[&'a T],
+    fingerprint: impl Fn(&T) -> u64 + Sync,
+) -> (Vec<u32>, Vec<&'a T>) {
+    // Positions sorted by key, then position: equal values lie together, the first one first.
+    let mut order: Vec<(u64, u32)> = values
+        .par_iter()
+        .enumerate()
+        .map(|(i, v)| (fingerprint(v), i as u32))
+        .collect();
+    order.par_sort_unstable();
+    // For each position, the first position holding an equal value.
+    let mut first = vec![0u32; values.len()];
+    let mut distinct_in_group: Vec<u32> = Vec::new();
+    for group in order.chunk_by(|a, b| a.0 == b.0) {
+        distinct_in_group.clear();
+        for &(_, i) in group {
+            let same = distinct_in_group
+                .iter()
+                .copied()
+                .find(|&d| values[d as usize] == values[i as usize]);
+            first[i as usize] = same.unwrap_or_else(|| {
+                distinct_in_group.push(i);
+                i
+            });
+        }
+    }
+    // Ids in order of first appearance.
+    let mut ids: Vec<u32> = Vec::with_capacity(values.len());
+    let mut distinct = Vec::new();
+    for (i, &f) in first.iter().enumerate() {
+        let id = if f as usize == i {
+            distinct.push(values[i]);
+            distinct.len() as u32 - 1
+        } else {
+            ids[f as usize]
+        };
+        ids.push(id);
+    }
+    (ids, distinct)
+}
+
+/// Material ids for the objects of `ir` (outside, inside), equal textures sharing one, and
+/// the texture of each id. Without an interior texture both sides have the same id.
+#[allow(clippy::type_complexity)]
+fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Texture>) {
+    let mut textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
+    textures.extend(ir.objects.iter().filter_map(|o| o.interior_texture.as_deref()));
+    let (ids, textures) = shared_ids(&textures, fingerprint);
+    let mut inside = ids[ir.objects.len()..].iter();
+    let sides = ir
+        .objects
+        .iter()
+        .zip(&ids)
+        .map(|(o, &id)| {
+            let back = match &o.interior_texture {
+                Some(_) => *inside.next().expect("one id per interior texture"),
+                None => id,
+            };
+            (MaterialId(id), MaterialId(back))
+        })
+        .collect();
+    (sides, textures)
+}
+
+/// What the scene's settings give patterns that name nothing themselves.
+fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
+    crate::pattern::SceneDefaults {
+        generator: ir.settings.noise_generator,
+        waves: ir.settings.number_of_waves,
+    }
+}
+
+/// The bits of an interior, as a key for sharing equal ones.
+fn interior_key(i: &Interior) -> u64 {
+    [i.ior, i.fade_distance, i.fade_power, i.fade_colour.x, i.fade_colour.y, i.fade_colour.z]
+        .iter()
+        .fold(0u64, |h, v| {
+            (h ^ v.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
+        })
+}
+
+impl Scene {
+    /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
+    pub fn build(ir: &ir::Scene) -> Scene {
+        let (scene, bounds) = Scene::build_objects(ir);
+        scene.with_index(bounds)
+    }
+
+    /// Like [`Scene::build`], but frees the IR's objects before building the acceleration
+    /// structure, which needs the most memory.
+    pub fn build_owned(ir: ir::Scene) -> Scene {
+        let (scene, bounds) = Scene::build_objects(&ir);
+        drop(ir);
+        scene.with_index(bounds)
+    }
+
+    /// Everything but the acceleration structure, and the world bounds of each object.
+    fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
+        let (ids, textures) = material_ids(ir);
+        let (interior_ids, interiors) =
+            shared_ids(&ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(), interior_key);
+        let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
+        let materials = textures
+            .into_iter()
+            .map(|t| Material::new(t, pattern_defaults(ir)))
+            .collect();
+        // Each distinct mesh is built once, for all its instances (keyed by address).
+        let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
+        for o in &ir.objects {
+            if let ir::Shape::Mesh(mesh) = &o.shape {
+                meshes
+                    .entry(Arc::as_ptr(mesh) as usize)
+                    .or_insert_with(|| Arc::new(build_mesh(mesh)));
+            }
+        }
+        let (objects, bounds): (Vec<Object>, Vec<_>) = ir
+            .objects
+            .par_iter()
+            .zip(ids)
+            .zip(interior_ids)
+            .map(|((o, (material, back_material)), interior)| {
+                let (shape, transform) =
+                    build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
+                let mut object = Object {
+                    shape,
+                    bounded: false,
+                    transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
+                    material,
+                    back_material,
+                    no_shadow: o.no_shadow,
+                    inverse: o.inverse,
+                    hollow: o.hollow,
+                    rank: 0,
+                    interior,
+                    medium: o.medium,
+                };
+                let bounds = object.world_bounds();
+                object.bounded = bounds.is_some();
+                (object, bounds)
+            })
+            .unzip();
+        let c = &ir.camera;
+        let mut scene = Scene {
+            camera: Camera {
+                projection: c.projection,
+                location: c.location,
+                direction: c.direction,
+                right: c.right,
+                up: c.up,
+            },
+            lights: ir
+                .lights
+                .iter()
+                .map(|l| Light {
+                    position: l.position,
+                    colour: l.colour,
+                    kind: l.kind.clone(),
+                    shadowless: l.shadowless,
+                    fade: l.fade,
+                    area: l.area.clone(),
+                })
+                .collect(),
+            objects,
+            materials,
+            interiors,
+            background: ir.background,
+            sky_sphere: ir.sky_sphere.as_ref().map(|s| SkySphere {
+                pigments: s
+                    .pigments
+                    .iter()
+                    .map(|p| Pigment::new(p, pattern_defaults(ir)))
+                    .collect(),
+                emission: s.emission,
+            }),
+            fogs: ir
+                .fogs
+                .iter()
+                .filter(|f| f.distance.abs() > 1e-10)
+                .cloned()
+                .collect(),
+            max_trace_level: ir.settings.max_trace_level,
+            adc_bailout: ir.settings.adc_bailout,
+            ambient_light: ir.settings.ambient_light,
+            legacy_transparency: ir.settings.legacy_transparency,
+            noise_generator: ir.settings.noise_generator,
+            irid_wavelength: ir.settings.irid_wavelength,
+            gamma: ir.settings.gamma,
+            index: None,
+            scan_bounds: Vec::new(),
+            any_transparent: false,
+            shadow_fades: false,
+            bounded_last: false,
+        };
+        // POV-Ray tests objects in scene order when there are fewer than three objects and
+        // lights, and otherwise (bounding on) the unbounded ones (planes) first; a union is one
+        // object to it, bounded if all its members are, and among the members the later one
+        // takes a tie (its intersections are taken from a stack).
+        let top_level = ir.objects.iter().filter(|o| o.member == 0).count();
+        scene.bounded_last = top_level + scene.lights.len() >= 3;
+        let n = scene.objects.len() as u64;
+        let mut start = 0;
+        for group in ir.objects.chunk_by(|_, next| next.member != 0) {
+            let objects = &mut scene.objects[start..start + group.len()];
+            let later = scene.bounded_last && objects.iter().all(|o| o.bounded);
+            let base = start as u64 + if later { n } else { 0 };
+            for (o, member) in objects.iter_mut().zip(group) {
+                o.rank = (base << 32) | u64::from(u32::MAX - member.member);
+            }
+            start += group.len();
+        }
+        let see_through = |o: &Object| {
+            [o.material, o.back_material]
+                .iter()
+                .any(|m| scene.materials[m.0 as usize].may_be_transparent())
+        };
+        scene.any_transparent = scene.objects.iter().any(|o| !o.no_shadow && see_through(o));
+        scene.shadow_fades = scene.objects.iter().any(|o| {
+            !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
+        });
+        (scene, bounds)
+    }
+
+    /// The scene with its top-level index over objects of the given world bounds (or, for
+    /// few objects, the bounds to test each object against).
+    fn with_index(mut self, bounds: Vec<Option<(DVec3, DVec3)>>) -> Scene {
+        match accel::ObjectIndex::prepare(&bounds) {
+            Some(prepared) => {
+                drop(bounds);
+                self.index = Some(prepared.build());
+            }
+            None => self.scan_bounds = bounds,
+        }
+        self
+    }
+
+    /// Whether a top-level BVH serves the ray queries (scenes of few objects test every
+    /// object for every ray instead).
+    pub fn has_index(&self) -> bool {
+        self.index.is_some()
+    }
+
+    /// The same scene without its top-level BVH, testing every object for every ray: the
+    /// stability suite compares its pictures with the BVH's.
+    #[cfg(feature = "internals")]
+    pub fn without_index(mut self) -> Scene {
+        self.index = None;
+        self.scan_bounds = self.objects.iter().map(Object::world_bounds).collect();
+        self
+    }
+}
+
+/// If `m` is a translation plus uniform scale, the sphere it maps `s` to.
+fn similarity_sphere(s: &Sphere, m: &DMat4) -> Option<(DVec3, f64)> {
+    let linear = DMat3::from_mat4(*m);
+    let k = linear.x_axis.x;
+    let is_uniform_scale = k > 0.0 && linear == DMat3::from_diagonal(DVec3::splat(k));
+    is_uniform_scale.then(|| (m.transform_point3(s.centre), s.radius * k))
+}
+
+/// The render shape for an IR shape, with its (possibly extended) object transform. Meshes
+/// are built once per distinct IR mesh and shared.
+fn build_shape(
+    shape: &ir::Shape,
+    transform: Option<DMat4>,
+    meshes: &HashMap<usize, Arc<TriangleMesh>>,
+) -> (Shape, Option<DMat4>) {
+    match shape {
+        ir::Shape::Sphere { centre, radius } => {
+            let s = Sphere {
+                centre: *centre,
+                radius: *radius,
+            };
+            // Fold translations and uniform scales into the sphere: no matrix per ray.
+            match transform.map(|m| similarity_sphere(&s, &m)) {
+                Some(Some((centre, radius))) => (Shape::Sphere(Sphere { centre, radius }), None),
+                _ => (Shape::Sphere(s), transform),
+            }
+        }
+        ir::Shape::Plane { normal, distance } => (
+            Shape::Plane(Plane {
+                normal: *normal,
+                distance: *distance,
+            }),
+            transform,
+        ),
+        ir::Shape::Box { min, max } => (
+            Shape::Box(Cuboid {
+                min: *min,
+                max: *max,
+            }),
+            transform,
+        ),
+        ir::Shape::Cone {
+            base,
+            base_radius,
+            cap,
+            cap_radius,
+            open,
+        } => {
+            // Canonical frame: x, y unit vectors across the axis, z the axis from base to cap.
+            let axis = *cap - *base;
+            let w = axis.normalize();
+            let u = w.any_orthonormal_vector();
+            let v = w.cross(u);
+            let frame = DMat4::from_cols(
+                u.extend(0.0),
+                v.extend(0.0),
+                axis.extend(0.0),
+                base.extend(1.0),
+            );
+            let cone = Cone {
+                r0: *base_radius,
+                r1: *cap_radius,
+                open: *open,
+            };
+            (
+                Shape::Cone(cone),
+                Some(transform.unwrap_or(DMat4::IDENTITY) * frame),
+            )
+        }
+        ir::Shape::Disc {
+            centre,
+            normal,
+            radius,
+            hole_radius,
+        } => (
+            Shape::Disc(Box::new(Disc {
+                centre: *centre,
+                normal: *normal,
+                radius: *radius,
+                hole_radius: *hole_radius,
+            })),
+            transform,
+        ),
+        ir::Shape::Torus { major, minor } => (
+            Shape::Torus(Torus {
+                major: *major,
+                minor: *minor,
+            }),
+            transform,
+        ),
+        ir::Shape::Mesh(mesh) => {
+            let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
+            (Shape::Mesh(Arc::clone(built)), transform)
+        }
+    }
+}
+
+fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
+    let mut built = TriangleMesh::new(
+        mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
+        mesh.triangles.clone(),
+        mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
+        mesh.normal_indices.clone(),
+    );
+    built.inside_vector = mesh.inside_vector;
+    built
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shared_ids_number_equal_values_once_in_order_of_first_appearance() {
+        let v = [5.0, 7.0, 5.0, 9.0, 7.0, 1.0];
+        let refs: Vec<&f64> = v.iter().collect();
+        // A fingerprint that gives every value the same key: all compared in full.
+        let (ids, distinct) = shared_ids(&refs, |_| 42);
+        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
+        assert_eq!(distinct, [&5.0, &7.0, &9.0, &1.0]);
+        // And one that tells them apart.
+        let (ids, _) = shared_ids(&refs, |x| x.to_bits());
+        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
+    }
+
+    fn scene_with(shape: ir::Shape, transform: DMat4) -> Scene {
+        let ir = ir::Scene {
+            camera: ir::Camera::default(),
+            lights: vec![],
+            objects: vec![ir::Object {
+                shape,
+                transform: Some(Box::new(ir::Transform { matrix: transform })),
+                texture: ir::Texture::default(),
+                interior_texture: None,
+                interior: Default::default(),
+                no_shadow: false,
+                inverse: false,
+                hollow: false,
+                member: 0,
+                medium: 0,
+            }],
+            background: Rgb::ZERO,
+            sky_sphere: None,
+            fogs: vec![],
+            settings: ir::Settings::default(),
+        };
+        Scene::build(&ir)
+    }
+
+    #[test]
+    fn transformed_sphere_equals_analytic_sphere() {
+        let m = DMat4::from_translation(DVec3::new(1.0, 2.0, 3.0))
+            * DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0));
+        let s = scene_with(
+            ir::Shape::Sphere {
+                centre: DVec3::ZERO,
+                radius: 1.0,
+            },
+            m,
+        );
+        // Along x through the centre the ellipsoid extends ±2.
+        let r = Ray::new(DVec3::new(-10.0, 2.0, 3.0), DVec3::X);
+        let hit = s.intersect(&r).expect("hit");
+        assert!((hit.t - 9.0).abs() < 1e-12);
+        let surf = s.surface(&r, &hit);
+        assert!((surf.normal - -DVec3::X).length() < 1e-12);
+        // Off-axis normal follows the inverse transpose: at (x, y) on the ellipse x²/4 + y² = 1
+        // the normal is ∝ (x/4, y).
+        let r = Ray::new(DVec3::new(1.0 + 2.0f64.sqrt(), 10.0, 3.0), -DVec3::Y);
+        let hit = s.intersect(&r).expect("hit");
+        let surf = s.surface(&r, &hit);
+        let expected = DVec3::new(2.0f64.sqrt() / 4.0, 1.0 / 2.0f64.sqrt(), 0.0).normalize();
+        assert!(
+            (surf.normal - expected).length() < 1e-9,
+            "{:?}",
+            surf.normal
+        );
+    }
+
+    #[test]
+    fn rotated_box_is_hit_at_rotated_face() {
+        let m = DMat4::from_rotation_y(std::f64::consts::FRAC_PI_4);
+        let s = scene_with(
+            ir::Shape::Box {
+                min: DVec3::splat(-1.0),
+                max: DVec3::splat(1.0),
+            },
+            m,
+        );
+        let r = Ray::new(DVec3::new(0.0, 0.0, -10.0), DVec3::Z);
+        let hit = s.intersect(&r).expect("hit");
+        assert!((hit.t - (10.0 - 2.0f64.sqrt())).abs() < 1e-12);
+    }
+
+    #[test]
+    fn scaled_plane_keeps_t_in_world_units() {
+        let m = DMat4::from_scale(DVec3::splat(3.0));
+        let s = scene_with(
+            ir::Shape::Plane {
+                normal: DVec3::Y,
+                distance: 1.0,
+            },
+            m,
+        );
+        let r = Ray::new(DVec3::new(0.0, 10.0, 0.0), -DVec3::Y);
+        let hit = s.intersect(&r).expect("hit");
+        assert!((hit.t - 7.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn uniformly_scaled_sphere_is_folded_into_its_shape() {
+        let m = DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0));
+        let s = scene_with(
+            ir::Shape::Sphere {
+                centre: DVec3::ZERO,
+                radius: 1.0,
+            },
+            m,
+        );
+        assert!(s.objects[0].transform.is_none());
+        let Shape::Sphere(sphere) = s.objects[0].shape else {
+            panic!("sphere expected")
+        };
+        assert_eq!((sphere.centre, sphere.radius), (DVec3::X, 2.0));
+    }
+}

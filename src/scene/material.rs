@@ -1,0 +1,177 @@
+//! Render-ready materials: a texture's pigment, normal and finish with its layers, or a
+//! pattern of materials.
+
+use super::*;
+
+/// A resolved surface material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Pigment.
+    pub pigment: Pigment,
+    /// Normal perturbation, if any.
+    pub normal: Option<Box<Normal>>,
+    /// Layered textures: the layers beneath, bottom first (each with none of its own).
+    pub under: Box<[Material]>,
+    /// A pattern of materials: when given, the surface is these (and the rest unused).
+    pub map: Option<Box<MaterialMap>>,
+    /// Whether light may pass through somewhere (asked for every shadow ray's candidates).
+    see_through: bool,
+    /// Finish.
+    pub finish: Arc<Finish>,
+}
+
+impl Material {
+    /// The material of a texture (with its layers), its patterns using noise generator
+    /// `generator` unless they name their own.
+    pub fn new(t: &ir::Texture, scene: crate::pattern::SceneDefaults) -> Material {
+        let mut m = Material {
+            pigment: Pigment::new(&t.pigment, scene),
+            normal: t
+                .normal
+                .as_deref()
+                .map(|n| Box::new(Normal::new(n, scene))),
+            under: t.under.iter().map(|l| Material::new(l, scene)).collect(),
+            map: t.map.as_deref().map(|m| {
+                Box::new(MaterialMap {
+                    pattern: m.pattern.with_scene(scene),
+                    pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
+                    world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
+                    entries: m
+                        .entries
+                        .iter()
+                        .map(|(v, e)| {
+                            // The entries lie in the pattern's space: placed in the world.
+                            let mut e = e.clone();
+                            if let Some(t) = &m.transform {
+                                e.transform(**t);
+                            }
+                            (*v, Material::new(&e, scene))
+                        })
+                        .collect(),
+                })
+            }),
+            finish: Arc::clone(&t.finish),
+            see_through: false,
+        };
+        m.see_through = match &m.map {
+            Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
+            None => m.layers().all(|l| l.pigment.may_be_transparent()),
+        };
+        m
+    }
+
+    /// The layers, top first.
+    pub fn layers(&self) -> impl Iterator<Item = &Material> {
+        std::iter::once(self).chain(self.under.iter().rev())
+    }
+
+    /// Whether light may pass through somewhere (through every layer, or some material of
+    /// a pattern of materials).
+    pub fn may_be_transparent(&self) -> bool {
+        self.see_through
+    }
+
+    /// What the surface lets through at `p`: the product over the layers of
+    /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
+    pub fn filter_at(&self, p: DVec3) -> Rgb {
+        if let Some(m) = &self.map {
+            if m.averages() {
+                let p = m.entry_point(p);
+                let total: f64 = m.entries.iter().map(|(w, _)| w).sum();
+                return m
+                    .entries
+                    .iter()
+                    .map(|(w, e)| e.filter_at(p) * *w)
+                    .fold(Rgb::ZERO, |a, b| a + b)
+                    / total;
+            }
+            let (prev, cur, t, p) = m.at(p);
+            let f = m.entries[cur].1.filter_at(p);
+            return if prev == cur {
+                f
+            } else {
+                m.entries[prev].1.filter_at(p) * (1.0 - t) + f * t
+            };
+        }
+        self.layers()
+            .map(|l| filter_colour(&l.pigment.colour_at(p)))
+            .fold(Rgb::ONE, |a, b| a * b)
+    }
+}
+
+/// A pattern of materials (`texture_map`, `checker texture {…} texture {…}`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialMap {
+    pattern: crate::pattern::Pattern,
+    pattern_from_world: Option<DMat4>,
+    world_from_pattern: Option<DMat4>,
+    /// (value, material), each placed in the world.
+    pub entries: Box<[(f64, Material)]>,
+}
+
+impl MaterialMap {
+    /// Whether the map averages its materials (`average`) instead of picking by value.
+    pub fn averages(&self) -> bool {
+        self.pattern.kind == crate::pattern::PatternKind::Average
+    }
+
+    /// The entries around the pattern's value at world point `p`, the fraction of the way
+    /// from the first to the second (the same entry twice: that one alone), and the point
+    /// where the entries are evaluated.
+    pub fn at(&self, p: DVec3) -> (usize, usize, f64, DVec3) {
+        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        let warped = self.pattern.warp(q);
+        let v = self.pattern.wave.apply(self.pattern.raw(warped));
+        let (prev, cur, t) = pigment::search(&self.entries, v);
+        (prev, cur, t, self.world_point(q, warped, p))
+    }
+
+    /// Where the entries are evaluated for world point `p` (`average` has no value to look up).
+    pub fn entry_point(&self, p: DVec3) -> DVec3 {
+        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        self.world_point(q, self.pattern.warp(q), p)
+    }
+
+    /// The entries see the pattern's warped point: placed in the world as they are, that is
+    /// the warped point taken back out of the pattern's space (`p` itself if nothing moved).
+    fn world_point(&self, q: DVec3, warped: DVec3, p: DVec3) -> DVec3 {
+        if warped == q {
+            return p;
+        }
+        self.world_from_pattern.map_or(warped, |m| m.transform_point3(warped))
+    }
+}
+
+/// `rgb·filter + transmit`: what a surface of colour `c` lets through, per channel.
+pub fn filter_colour(c: &Colour) -> Rgb {
+    c.rgb * c.filter + Rgb::splat(c.transmit)
+}
+
+impl Scene {
+    /// POV-Ray's thin-film interference (`irid`): the factor on the light arriving from unit
+    /// direction `to` and leaving along `d` at a surface of normal `n`, point `p`.
+    pub fn irid(&self, finish: &Finish, to: DVec3, d: DVec3, n: DVec3, p: DVec3) -> Rgb {
+        let irid = &finish.irid;
+        let mut thickness = irid.thickness;
+        if irid.turbulence != 0.0 {
+            // A fixed turbulence (5 octaves), from 0..1 to 1 ± the amount.
+            let t = crate::pattern::noise::Turbulence {
+                amount: DVec3::ONE,
+                octaves: 5,
+                omega: 0.5,
+                lambda: 2.0,
+            };
+            let noise = 2.0 * t.scalar(p, self.noise_generator) - 1.0;
+            thickness *= 1.0 + noise * irid.turbulence;
+        }
+        let w = self.irid_wavelength;
+        let cos_light = n.dot(to).abs();
+        let cos_eye = n.dot(d.normalize()).abs();
+        let interference = 2.0 * std::f64::consts::PI * thickness * (cos_light + cos_eye);
+        Rgb::new(
+            1.0 + irid.amount * (interference / w.x).cos(),
+            1.0 + irid.amount * (interference / w.y).cos(),
+            1.0 + irid.amount * (interference / w.z).cos(),
+        )
+    }
+}

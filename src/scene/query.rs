@@ -1,0 +1,325 @@
+//! Ray queries on the built scene: the nearest hit through the index, the surface at a hit,
+//! what reaches a light through transparent objects, inside tests.
+
+use super::*;
+use std::cell::RefCell;
+
+impl Scene {
+    /// The interior of `object`.
+    pub fn interior(&self, object: &Object) -> &Interior {
+        &self.interiors[object.interior as usize]
+    }
+
+    /// The material with id `id`.
+    pub fn material(&self, id: MaterialId) -> &Material {
+        &self.materials[id.0 as usize]
+    }
+
+    /// Crossings of a world ray with one object (object space when transformed; `t` is the
+    /// same in both spaces because the direction is not renormalised).
+    fn crossings(object: &Object, ray: &Ray) -> Crossings {
+        match &object.transform {
+            None => object.shape.intersect(ray),
+            Some(t) => object
+                .shape
+                .intersect(&ray.transformed(&t.object_from_world)),
+        }
+    }
+
+    /// The nearest hit along `ray`.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut ray = *ray;
+        // Two hits within rounding of each other (a glass box standing on the floor plane: the
+        // ray leaves the glass where it meets the floor) are one point, and the object first in
+        // POV-Ray's test order is hit, as in POV-Ray, whose depths there are exactly equal;
+        // rounding would otherwise pick either at random from pixel to pixel. So each hit
+        // leaves room for a tie just beyond it.
+        let mut test = |i: u32, ray: &Ray| -> Option<f64> {
+            let object = &self.objects[i as usize];
+            let (t, part) = Self::crossings(object, ray).first_part()?;
+            if let Some(b) = &best {
+                let tied = (t - b.t).abs() <= TIE * b.t.abs();
+                if tied && self.objects[b.object.0 as usize].rank < object.rank {
+                    return None;
+                }
+            }
+            best = Some(Hit {
+                t,
+                object: ObjectId(i),
+                part,
+            });
+            Some(t + TIE * t.abs())
+        };
+        match &self.index {
+            Some(index) => {
+                for &i in &index.unbounded {
+                    if let Some(t) = test(i, &ray) {
+                        ray.tmax = t;
+                    }
+                }
+                index.closest(&ray, |i, tmax| test(i, &Ray { tmax, ..ray }));
+            }
+            None => {
+                let inv = ray.direction.recip();
+                for (i, &bounds) in self.scan_bounds.iter().enumerate() {
+                    if may_hit(bounds, &ray, inv) {
+                        if let Some(t) = test(i as u32, &ray) {
+                            ray.tmax = t;
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Surface details for a hit found by [`Scene::intersect`].
+    #[inline]
+    pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit {
+        let object = &self.objects[hit.object.0 as usize];
+        let point = ray.at(hit.t);
+        let (normal, geometric) = match &object.transform {
+            None => object.shape.normals(point, hit.part),
+            Some(t) => {
+                let local = t.object_from_world.transform_point3(point);
+                let (n, g) = object.shape.normals(local, hit.part);
+                (t.normal_to_world * n, t.normal_to_world * g)
+            }
+        };
+        let normal = normal.normalize();
+        let mut geometric_normal = geometric.normalize();
+        if geometric_normal.dot(normal) < 0.0 {
+            geometric_normal = -geometric_normal;
+        }
+        SurfaceHit {
+            point,
+            texture_point: point,
+            normal,
+            geometric_normal,
+            material: object.side(normal, ray.direction),
+            object: hit.object,
+        }
+    }
+
+    /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
+    /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
+    /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
+    /// segments run inside objects whose fade_power is positive (see
+    /// `faded_crossings`). Objects with `no_shadow` are skipped; refraction is
+    /// ignored, as in POV-Ray.
+    pub fn transmittance(&self, ray: &Ray) -> Rgb {
+        let opaque_blocks = |i: u32| {
+            let object = &self.objects[i as usize];
+            !object.no_shadow
+                && !self.material(object.material).may_be_transparent()
+                && object.shape.occludes(&Self::local_ray(object, ray))
+        };
+        let mut through = Rgb::ONE;
+        match &self.index {
+            Some(index) => {
+                // First any opaque blocker (stops at the first), then the transparent ones.
+                if index.unbounded.iter().any(|&i| opaque_blocks(i))
+                    || index.any(ray, opaque_blocks)
+                {
+                    return Rgb::ZERO;
+                }
+                if !self.any_transparent {
+                    return through;
+                }
+                if self.shadow_fades {
+                    return self.faded_crossings(ray, |f| {
+                        index.unbounded.iter().for_each(|&i| f(i));
+                        index.each(ray, f);
+                    });
+                }
+                for &i in &index.unbounded {
+                    self.filter_through(i, ray, &mut through);
+                }
+                index.each(ray, |i| self.filter_through(i, ray, &mut through));
+            }
+            None => {
+                let inv = ray.direction.recip();
+                let candidates = || {
+                    self.scan_bounds
+                        .iter()
+                        .enumerate()
+                        .filter(move |(_, b)| may_hit(**b, ray, inv))
+                        .map(|(i, _)| i as u32)
+                };
+                if candidates().any(opaque_blocks) {
+                    return Rgb::ZERO;
+                }
+                if self.shadow_fades {
+                    return self.faded_crossings(ray, |f| candidates().for_each(f));
+                }
+                for i in candidates() {
+                    self.filter_through(i, ray, &mut through);
+                }
+            }
+        }
+        through
+    }
+
+    fn local_ray(object: &Object, ray: &Ray) -> Ray {
+        match &object.transform {
+            None => *ray,
+            Some(t) => ray.transformed(&t.object_from_world),
+        }
+    }
+
+    /// Whether object `i` can let light through to a shadow ray.
+    fn filters_shadows(&self, i: u32) -> bool {
+        let object = &self.objects[i as usize];
+        !object.no_shadow
+            && (self.material(object.material).may_be_transparent()
+                || self.material(object.back_material).may_be_transparent())
+    }
+
+    /// The material a ray meets where it crosses `object` at distance `t` on `part`: its
+    /// interior texture where the surface faces away from the ray.
+    fn crossing_material(&self, object: &Object, ray: &Ray, t: f64, part: u32) -> &Material {
+        if object.back_material == object.material {
+            return self.material(object.material);
+        }
+        let point = ray.at(t);
+        let normal = match &object.transform {
+            None => object.shape.normals(point, part).0,
+            Some(tr) => {
+                let local = tr.object_from_world.transform_point3(point);
+                tr.normal_to_world * object.shape.normals(local, part).0
+            }
+        };
+        self.material(object.side(normal, ray.direction))
+    }
+
+    /// Multiplies `through` by the filter colour at each crossing of a transparent object
+    /// with a shadow ray (the order of crossings does not matter when no interior fades).
+    fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
+        if !self.filters_shadows(i) {
+            return;
+        }
+        let object = &self.objects[i as usize];
+        object
+            .shape
+            .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
+                *through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
+            });
+    }
+
+    /// What a shadow ray lets through when interiors fade: POV-Ray's walk from the surface to
+    /// the light, one crossing after the other, with a list of the media the ray is in. At a
+    /// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
+    /// applies over the distance from the previous crossing of any object (so a medium
+    /// shared by overlapping union members fades only between their surfaces, and an object
+    /// around another fades only from the inner one's exit); otherwise it enters. The list
+    /// starts with the media of the crossed objects that contain the ray's origin.
+    /// `candidates` calls its argument with every object the ray may cross.
+    fn faded_crossings(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
+        thread_local! {
+            /// Per thread: the crossings (distance, object) and the list of media.
+            static SCRATCH: RefCell<ShadowScratch> = const { RefCell::new((Vec::new(), Vec::new())) };
+        }
+        SCRATCH.with_borrow_mut(|(crossings, media)| {
+            crossings.clear();
+            media.clear();
+            candidates(&mut |i| {
+                if self.filters_shadows(i) {
+                    let object = &self.objects[i as usize];
+                    object
+                        .shape
+                        .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
+                            crossings.push((t, i, part))
+                        });
+                }
+            });
+            crossings.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            for &(_, i, _) in crossings.iter() {
+                let object = &self.objects[i as usize];
+                if !media.contains(&object.medium) && self.contains(object, ray.origin) {
+                    media.push(object.medium);
+                }
+            }
+            let length = ray.direction.length();
+            let (mut through, mut last_t) = (Rgb::ONE, 0.0);
+            for &(t, i, part) in crossings.iter() {
+                let object = &self.objects[i as usize];
+                through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
+                match media.iter().position(|&m| m == object.medium) {
+                    Some(k) => {
+                        let interior = self.interior(object);
+                        if fades(interior) {
+                            through *= interior_fade(interior, (t - last_t) * length);
+                        }
+                        media.remove(k);
+                    }
+                    None => media.push(object.medium),
+                }
+                last_t = t;
+            }
+            through
+        })
+    }
+
+    /// Whether world point `p` is inside `object` (POV-Ray's inside test; thin shapes have no
+    /// inside; `inverse` swaps).
+    pub fn contains(&self, object: &Object, p: DVec3) -> bool {
+        let local = object
+            .transform
+            .as_ref()
+            .map_or(p, |t| t.object_from_world.transform_point3(p));
+        object.shape.contains(local) != object.inverse
+    }
+
+    /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
+    pub fn spawn(&self, hit: &SurfaceHit, from: DVec3, dir: DVec3) -> Ray {
+        Ray::new(
+            offset_origin(
+                hit.point,
+                hit.geometric_normal,
+                dir,
+                from.abs().max_element(),
+            ),
+            dir,
+        )
+    }
+}
+
+
+/// Per thread, for a shadow ray through fading interiors: its crossings (distance, object, part)
+/// and the list of media it is in.
+type ShadowScratch = (Vec<(f64, u32, u32)>, Vec<u32>);
+
+/// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
+/// `fade_distance` that is not zero).
+pub(super) fn fades(interior: &Interior) -> bool {
+    interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10
+}
+
+/// POV-Ray's interior fade over a distance `d` inside (§9.2).
+pub fn interior_fade(interior: &Interior, d: f64) -> Rgb {
+    let fc = interior.fade_colour;
+    if interior.fade_power >= 1000.0 {
+        let k = d / interior.fade_distance;
+        Rgb::new(
+            (-(1.0 - fc.x) * k).exp(),
+            (-(1.0 - fc.y) * k).exp(),
+            (-(1.0 - fc.z) * k).exp(),
+        )
+    } else {
+        fc + (Rgb::ONE - fc) / (1.0 + (d / interior.fade_distance).powf(interior.fade_power))
+    }
+}
+
+/// Whether the ray may meet a box (slab test); unbounded objects always may.
+fn may_hit(bounds: Option<(DVec3, DVec3)>, ray: &Ray, inv: DVec3) -> bool {
+    let Some((lo, hi)) = bounds else { return true };
+    let t0 = (lo - ray.origin) * inv;
+    let t1 = (hi - ray.origin) * inv;
+    let near = t0.min(t1).max_element().max(ray.tmin);
+    let far = t0.max(t1).min_element().min(ray.tmax);
+    // NaN (origin on a slab plane with a zero direction component) must not reject.
+    near.partial_cmp(&far) != Some(std::cmp::Ordering::Greater)
+}
+
