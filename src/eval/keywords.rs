@@ -704,6 +704,7 @@ const SUPPORTED: &[&str] = &[
     "point_at",
     "poly_wave",
     "pow",
+    "quadric",
     "quick_color",
     "quick_colour",
     "quilted",
@@ -858,7 +859,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "prism" | "sor"
-        | "superellipsoid" | "text" | "polygon" | "bicubic_patch" | "quadric" | "cubic"
+        | "superellipsoid" | "text" | "polygon" | "bicubic_patch" | "cubic"
         | "quartic" | "poly" | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"

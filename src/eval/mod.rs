@@ -11,6 +11,7 @@ pub mod keywords;
 mod material;
 mod object;
 mod sandbox;
+mod shapes;
 mod transform;
 mod value;
 

@@ -88,6 +88,7 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
             | Cone
             | Disc
             | Torus
+            | Shape
             | Triangle
             | SmoothTriangle
             | Mesh
@@ -243,6 +244,7 @@ impl Evaluator<'_> {
                     hole_radius,
                 })
             }
+            NodeKind::Shape => ObjectValue::single(self.shape_table(node)?),
             NodeKind::Torus => {
                 let major = self.float(&node.args[0])?;
                 let minor = self.float(&node.args[1])?;

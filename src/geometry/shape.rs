@@ -11,7 +11,9 @@
 //! and one line in the list below. The scene builder turns the IR's shape into it
 //! (`scene::build`), and the evaluator reads its syntax.
 
-use super::{Cone, Crossings, Cuboid, Disc, Plane, Ray, Sphere, Torus, TriangleMesh, counters};
+use super::{
+    Cone, Crossings, Cuboid, Disc, Plane, Quadric, Ray, Sphere, Torus, TriangleMesh, counters,
+};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -187,4 +189,6 @@ shapes! {
     Torus(Torus),
     /// Triangle mesh, shared between instances.
     Mesh(Arc<TriangleMesh>),
+    /// `quadric`.
+    Quadric(Quadric),
 }

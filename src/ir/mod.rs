@@ -305,6 +305,18 @@ pub enum Shape {
     },
     /// `triangle` / `smooth_triangle`, and every mesh: shared between instances.
     Mesh(Arc<Mesh>),
+    /// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }`: `Ax² + By² + Cz² + Dxy + Exz + Fyz +
+    /// Gx + Hy + Iz + J = 0`.
+    Quadric {
+        /// `<A, B, C>`.
+        square: DVec3,
+        /// `<D, E, F>`.
+        mixed: DVec3,
+        /// `<G, H, I>`.
+        linear: DVec3,
+        /// `J`.
+        constant: f64,
+    },
 }
 
 /// A triangle mesh (`mesh`, `mesh2`, or a single `triangle`/`smooth_triangle`). Vertices and

@@ -3,7 +3,7 @@
 
 use super::query::fades;
 use super::*;
-use crate::geometry::{Cone, Cuboid, Disc, Plane, Sphere, Torus};
+use crate::geometry::{Cone, Cuboid, Disc, Plane, Quadric, Sphere, Torus};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -381,6 +381,20 @@ fn build_shape(
             Shape::Torus(Torus {
                 major: *major,
                 minor: *minor,
+            }),
+            transform,
+        ),
+        ir::Shape::Quadric {
+            square,
+            mixed,
+            linear,
+            constant,
+        } => (
+            Shape::Quadric(Quadric {
+                square: *square,
+                mixed: *mixed,
+                linear: *linear,
+                constant: *constant,
             }),
             transform,
         ),

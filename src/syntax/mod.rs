@@ -63,6 +63,8 @@ pub enum NodeKind {
     Cone,
     Disc,
     Torus,
+    /// A shape of the evaluator's shape table (`quadric { … }`): its keyword is the word.
+    Shape,
     Triangle,
     SmoothTriangle,
     Union,
@@ -793,6 +795,7 @@ impl Lower {
             Rule::cone => NodeKind::Cone,
             Rule::disc => NodeKind::Disc,
             Rule::torus => NodeKind::Torus,
+            Rule::shape => NodeKind::Shape,
             Rule::triangle => NodeKind::Triangle,
             Rule::smooth_triangle => NodeKind::SmoothTriangle,
             Rule::union => NodeKind::Union,
@@ -1325,6 +1328,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_area_illumination
             | kw_sky_sphere
             | pattern_kw
+            | shape_kw
             | modifier_kw
             | kw_color_map
             | kw_colour_map
