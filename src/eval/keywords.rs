@@ -613,6 +613,7 @@ const SUPPORTED: &[&str] = &[
     "file_exists",
     "filter",
     "finish",
+    "fisheye",
     "flip",
     "floor",
     "fog",
@@ -683,6 +684,7 @@ const SUPPORTED: &[&str] = &[
     "off",
     "offset",
     "omega",
+    "omnimax",
     "on",
     "once",
     "onion",
@@ -690,6 +692,7 @@ const SUPPORTED: &[&str] = &[
     "orient",
     "orientation",
     "orthographic",
+    "panoramic",
     "parallel",
     "perspective",
     "phase",
@@ -780,6 +783,7 @@ const SUPPORTED: &[&str] = &[
     "turb_depth",
     "turbulence",
     "u",
+    "ultra_wide_angle",
     "undef",
     "union",
     "up",
@@ -879,8 +883,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by" | "bounded_by"
         | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
-        "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical_camera"
-        | "cylinder_camera" | "focal_point" | "aperture" | "blur_samples" | "confidence"
+        "spherical_camera" | "cylinder_camera" | "focal_point" | "aperture" | "blur_samples" | "confidence"
         | "variance" | "mesh_camera" => "this camera type or item is not supported by trace yet",
         "fopen" | "fclose" | "read" | "write" | "render" | "statistics" => {
             "file input/output is not supported by trace yet"

@@ -90,6 +90,8 @@ pub struct CameraItems {
     right: DVec3,
     sky: DVec3,
     angle: Option<(f64, Span)>,
+    /// The second value of `angle` (`spherical`'s vertical angle).
+    v_angle: Option<f64>,
     up_or_right_given: bool,
     transform: Option<Transform>,
     span: Span,
@@ -107,6 +109,7 @@ impl Default for CameraItems {
             right: d.right,
             sky: DVec3::Y,
             angle: None,
+            v_angle: None,
             up_or_right_given: false,
             transform: None,
             span: Span::default(),
@@ -1012,13 +1015,31 @@ impl<'a> Evaluator<'a> {
                 NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
                 NodeKind::Angle => {
                     let a = ev.float(&item.args[0])?;
-                    if !(a > 0.0 && a < 180.0) {
+                    if c.projection.is_planar() && !(a > 0.0 && a < 180.0) {
                         return Err(Diagnostic::error(
                             "camera angle must be between 0 and 180 degrees",
                             item.args[0].span,
                         ));
                     }
+                    if a < 0.0 {
+                        return Err(Diagnostic::error(
+                            "camera angle must not be negative",
+                            item.args[0].span,
+                        ));
+                    }
                     c.angle = Some((a, item.span));
+                    c.v_angle = match item.args.get(1) {
+                        Some(v) if matches!(c.projection, ir::Projection::Spherical { .. }) => {
+                            Some(ev.float(v)?)
+                        }
+                        Some(v) => {
+                            return Err(Diagnostic::error(
+                                "only a spherical camera takes a second angle",
+                                v.span,
+                            ));
+                        }
+                        None => None,
+                    };
                 }
                 NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Camera(camera) => {
@@ -1031,18 +1052,38 @@ impl<'a> Evaluator<'a> {
                     let t = ev.transform(item)?;
                     c.transform = Some(c.transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
-                NodeKind::Unknown
+                NodeKind::Unknown if item.word == "cylinder" => {
+                    let e = item.args.first().ok_or_else(|| {
+                        Diagnostic::error("`cylinder` needs its type, 1 to 4", item.word_span)
+                    })?;
+                    let n = ev.float(e)?;
+                    if !(1.0..5.0).contains(&n) {
+                        return Err(Diagnostic::error(
+                            "invalid cylinder camera type: valid are types 1 to 4",
+                            e.span,
+                        ));
+                    }
+                    c.projection = ir::Projection::Cylinder {
+                        kind: n as u8,
+                        angle: 90.0,
+                    };
+                }
+                NodeKind::CameraType
                     if matches!(
                         item.word.as_str(),
-                        "cylinder"
-                            | "fisheye"
-                            | "ultra_wide_angle"
-                            | "omnimax"
-                            | "panoramic"
-                            | "spherical"
-                            | "mesh_camera"
-                            | "user_defined"
+                        "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
                     ) =>
+                {
+                    c.projection = match item.word.as_str() {
+                        "fisheye" => ir::Projection::Fisheye { angle: 90.0 },
+                        "ultra_wide_angle" => ir::Projection::UltraWideAngle { angle: 90.0 },
+                        "omnimax" => ir::Projection::Omnimax,
+                        "panoramic" => ir::Projection::Panoramic,
+                        _ => ir::Projection::Spherical { h: 360.0, v: 180.0 },
+                    };
+                }
+                NodeKind::CameraType | NodeKind::Unknown
+                    if matches!(item.word.as_str(), "mesh_camera" | "user_defined") =>
                 {
                     return Err(Diagnostic::error(
                         format!(
@@ -1110,7 +1151,7 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
     let mut right = c.right;
     let mut up = c.up;
     let mut location = c.location;
-    if let Some((angle, _)) = c.angle {
+    if let Some((angle, _)) = c.angle.filter(|_| c.projection.is_planar()) {
         // `angle` is the horizontal field of view across `right`.
         direction = direction.normalize_or_zero() * (right.length() / 2.0)
             / (angle.to_radians() / 2.0).tan();
@@ -1167,8 +1208,19 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
             c.span,
         ));
     }
+    // The other projections keep their angle (POV-Ray's defaults: 90; spherical 360 by 180).
+    let mut projection = c.projection;
+    if let Some((a, _)) = c.angle {
+        match &mut projection {
+            ir::Projection::Fisheye { angle }
+            | ir::Projection::UltraWideAngle { angle }
+            | ir::Projection::Cylinder { angle, .. } => *angle = a,
+            ir::Projection::Spherical { h, v } => (*h, *v) = (a, c.v_angle.unwrap_or(a * 0.5)),
+            _ => {}
+        }
+    }
     Ok(ir::Camera {
-        projection: c.projection,
+        projection,
         location,
         direction,
         right,

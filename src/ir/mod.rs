@@ -143,6 +143,46 @@ pub enum Projection {
     Perspective,
     /// `orthographic`.
     Orthographic,
+    /// `fisheye`: `angle` (degrees, default 90) across the image's circle (pixels outside
+    /// it see nothing).
+    Fisheye {
+        /// Degrees.
+        angle: f64,
+    },
+    /// `ultra_wide_angle`: `angle` (default 90) across the width, bent around both axes.
+    UltraWideAngle {
+        /// Degrees.
+        angle: f64,
+    },
+    /// `omnimax`: POV-Ray's dome projection.
+    Omnimax,
+    /// `panoramic`: 180° across the width, the height along a tangent.
+    Panoramic,
+    /// `cylinder 1`–`4`, `angle` (default 90) around the axis: 1 and 3 curve across the width
+    /// (3 with parallel rays vertically), 2 and 4 across the height (4 with parallel rays
+    /// horizontally).
+    Cylinder {
+        /// 1 to 4.
+        kind: u8,
+        /// Degrees.
+        angle: f64,
+    },
+    /// `spherical`: `angle H, V` (default 360, 180): longitude across the width and
+    /// latitude across the height.
+    Spherical {
+        /// Horizontal angle, degrees.
+        h: f64,
+        /// Vertical angle, degrees.
+        v: f64,
+    },
+}
+
+impl Projection {
+    /// Whether rays start on an image plane (`direction`, `right` and `up` as given), which
+    /// `angle` sets; the others keep their angle.
+    pub fn is_planar(self) -> bool {
+        matches!(self, Projection::Perspective | Projection::Orthographic)
+    }
 }
 
 /// A point light. `.rt`: `light_source { <x, y, z>, color rgb <r, g, b> }`.

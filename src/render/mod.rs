@@ -141,10 +141,10 @@ pub struct Bands<'a> {
 impl<'a> Bands<'a> {
     /// The bands of `scene` rendered with `options`, on the threads of `pool`.
     pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
-        // A perspective camera's rays all start inside the same objects: found once.
+        // The rays of a camera with one eye point all start inside the same objects: found once.
         let camera_interiors = match scene.camera.projection {
-            Projection::Perspective => Some(Interiors::at(scene, scene.camera.location)),
-            Projection::Orthographic => None,
+            Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } => None,
+            _ => Some(Interiors::at(scene, scene.camera.location)),
         };
         Bands {
             scene,
@@ -260,7 +260,7 @@ impl Corners<'_> {
         let ray = camera_ray(self.scene, w, h, gx as f64 / s - 0.5, gy as f64 / s - 0.5);
         tracer.counts.camera += 1;
         self.samples += 1;
-        let value = trace_primary(tracer, self.camera_interiors, &ray);
+        let value = trace_primary(tracer, self.camera_interiors, ray);
         let traced = (value, aa_encoded(value, self.scene.gamma));
         let known = if border {
             &mut self.points
@@ -328,28 +328,127 @@ struct BlockResult {
 }
 
 /// The camera ray through image position (x, y) in pixel units, (i, j) being pixel centres
-/// and y growing downward (POV-Ray §4.3).
-fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Ray {
+/// and y growing downward (POV-Ray §4.3), with POV-Ray's formulas for each projection; `None`
+/// where the projection sees nothing (outside a fisheye's circle).
+fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<Ray> {
+    use std::f64::consts::{FRAC_PI_2, PI};
     let c = &scene.camera;
     let (w, h) = (width as f64, height as f64);
-    let x0 = (x + 0.5) / w - 0.5;
-    let y0 = ((h - 1.0) - (y - 0.5)) / h - 0.5;
+    // POV-Ray's sample position: x + ½, y − ½.
+    let (px, py) = (x + 0.5, y - 0.5);
+    // −½ … ½ across the image, and −1 … 1.
+    let (x0, y0) = (px / w - 0.5, ((h - 1.0) - py) / h - 0.5);
+    let (x1, y1) = (2.0 * px / w - 1.0, 2.0 * ((h - 1.0) - py) / h - 1.0);
+    let (len_right, len_up) = (c.right.length(), c.up.length());
+    // The curved projections take unit vectors.
+    let (r, u, d) = (c.right / len_right, c.up / len_up, c.direction.normalize());
+    let along = |dir: glam::DVec3| Some(Ray::new(c.location, dir.normalize()));
+    // The longitude and the distance from the centre of a point of the unit disc.
+    let polar = |x0: f64, y0: f64| {
+        let rad = (x0 * x0 + y0 * y0).sqrt();
+        let phi = if rad == 0.0 {
+            0.0
+        } else if x0 < 0.0 {
+            PI - (y0 / rad).asin()
+        } else {
+            (y0 / rad).asin()
+        };
+        (rad, phi)
+    };
     match c.projection {
-        Projection::Perspective => Ray::new(
-            c.location,
-            (c.direction + x0 * c.right + y0 * c.up).normalize(),
-        ),
-        Projection::Orthographic => Ray::new(
+        Projection::Perspective => along(c.direction + x0 * c.right + y0 * c.up),
+        Projection::Orthographic => Some(Ray::new(
             c.location + x0 * c.right + y0 * c.up,
             c.direction.normalize(),
-        ),
+        )),
+        Projection::Fisheye { angle } => {
+            let (rad, phi) = polar(x1 * len_right, y1 * len_up);
+            if rad > 1.0 {
+                return None;
+            }
+            let theta = rad * angle.to_radians() / 2.0;
+            let (sx, cx) = phi.sin_cos();
+            let (sy, cy) = theta.sin_cos();
+            along(cx * sy * r + sx * sy * u + cy * d)
+        }
+        Projection::Omnimax => {
+            let aspect = len_right / len_up;
+            let (mut x1, mut y1) = (x1, y1);
+            if aspect > 1.0 {
+                if aspect > 1.283458 {
+                    x1 *= aspect / 1.283458;
+                    y1 = (y1 - 1.0) / 1.283458 + 1.0;
+                } else {
+                    y1 = (y1 - 1.0) / aspect + 1.0;
+                }
+            } else {
+                y1 /= aspect;
+            }
+            let (rad, phi) = polar(x1, y1);
+            if rad > 1.0 {
+                return None;
+            }
+            let theta = 1.411269 * rad - 0.09439 * rad.powi(3) + 0.25674 * rad.powi(5);
+            let (sx, cx) = phi.sin_cos();
+            let (sy, cy) = theta.sin_cos();
+            // Nothing below 45° under the projection axis.
+            if sx * sy < (135.0f64).to_radians().tan() * cy {
+                return None;
+            }
+            along(cx * sy * r + sx * sy * u + cy * d)
+        }
+        Projection::Panoramic => {
+            let lon = (1.0 - px / w) * PI;
+            let lat = FRAC_PI_2 * y1;
+            let ty = if (FRAC_PI_2 - lat.abs()).abs() < 1e-10 {
+                lat.signum() * 1e10
+            } else {
+                lat.tan()
+            };
+            along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction)
+        }
+        Projection::UltraWideAngle { angle } => {
+            let angle = angle.to_radians();
+            let aspect = len_up / len_right;
+            let (sx, cx) = (x0 * angle).sin_cos();
+            let (sy, cy) = (y0 * angle * aspect).sin_cos();
+            along(sx * r + sy * u + cx * cy * d)
+        }
+        Projection::Cylinder { kind, angle } => {
+            let angle = angle.to_radians();
+            // 1 and 3 curve across the width (aspect from up), 2 and 4 across the height.
+            let (sx, cx) = (x0 * angle).sin_cos();
+            let (sy, cy) = (y0 * angle).sin_cos();
+            match kind {
+                1 => along(sx * r + y0 * len_up * u + cx * d),
+                2 => along(x0 * len_right * r + sy * u + cy * d),
+                3 => Some(Ray::new(
+                    c.location + y0 * len_up * u,
+                    (sx * r + cx * d).normalize(),
+                )),
+                _ => Some(Ray::new(
+                    c.location + x0 * len_right * r,
+                    (sy * u + cy * d).normalize(),
+                )),
+            }
+        }
+        Projection::Spherical { h, v } => {
+            let lat = y0 * v.to_radians();
+            let lon = x0 * h.to_radians();
+            let v1 = glam::DQuat::from_axis_angle(r, -lat) * c.direction;
+            along(glam::DQuat::from_axis_angle(u, lon) * v1)
+        }
     }
 }
 
-/// Traces a camera ray, which starts inside the objects that contain its origin.
-fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray: &Ray) -> Rgb {
+/// Traces a camera ray, which starts inside the objects that contain its origin (black where
+/// the projection has no ray, as in POV-Ray).
+fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray: Option<Ray>) -> Rgb {
+    let Some(ray) = ray else {
+        return Rgb::ZERO;
+    };
     let interiors = camera_interiors.unwrap_or_else(|| Interiors::at(tracer.scene, ray.origin));
-    tracer.trace(ray, 1, 1.0, &interiors)
+    tracer.trace(&ray, 1, 1.0, &interiors)
 }
 
 /// A colour as POV-Ray's anti-aliasing compares it: the output value, gamma-2.5 encoded.
@@ -384,7 +483,7 @@ fn render_block(
     let centre = |tracer: &mut Tracer, x: u32, y: u32| {
         tracer.counts.camera += 1;
         let ray = camera_ray(scene, w, h, x as f64, y as f64);
-        trace_primary(tracer, &camera_interiors, &ray)
+        trace_primary(tracer, &camera_interiors, ray)
     };
 
     // The block's pixels in row order, each from `f(x, y)`.
@@ -482,7 +581,7 @@ fn render_block(
                     tracer.counts.camera += 1;
                     traced += 1;
                     let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
-                    sum += trace_primary(tracer, &camera_interiors, &ray);
+                    sum += trace_primary(tracer, &camera_interiors, ray);
                 }
             }
             value[index(x, y)] = sum / (n * n + 1) as f64;

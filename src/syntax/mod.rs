@@ -46,6 +46,8 @@ pub enum NodeKind {
     AmbientLight,
     // Camera items.
     Perspective,
+    /// A camera type other than perspective, orthographic and cylinder: its keyword is the word.
+    CameraType,
     Orthographic,
     Location,
     LookAt,
@@ -779,6 +781,7 @@ impl Lower {
             Rule::adc_bailout => NodeKind::AdcBailout,
             Rule::ambient_light => NodeKind::AmbientLight,
             Rule::perspective => NodeKind::Perspective,
+            Rule::camera_projection => NodeKind::CameraType,
             Rule::orthographic => NodeKind::Orthographic,
             Rule::location => NodeKind::Location,
             Rule::look_at => NodeKind::LookAt,
@@ -1281,6 +1284,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_object
             | kw_orthographic
             | kw_perspective
+            | camera_type
             | kw_phong
             | kw_phong_size
             | kw_pigment
