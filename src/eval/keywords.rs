@@ -576,6 +576,7 @@ const SUPPORTED: &[&str] = &[
     "cosh",
     "crackle",
     "crand",
+    "cubic",
     "cubic_wave",
     "cylinder",
     "cylindrical",
@@ -705,9 +706,11 @@ const SUPPORTED: &[&str] = &[
     "plane",
     "png",
     "point_at",
+    "poly",
     "poly_wave",
     "pow",
     "quadric",
+    "quartic",
     "quick_color",
     "quick_colour",
     "quilted",
@@ -863,8 +866,8 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "prism" | "sor"
-        | "superellipsoid" | "text" | "polygon" | "bicubic_patch" | "cubic"
-        | "quartic" | "poly" | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
+        | "superellipsoid" | "text" | "polygon" | "bicubic_patch"
+        | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",

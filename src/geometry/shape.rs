@@ -12,7 +12,8 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Cone, Crossings, Cuboid, Disc, Plane, Quadric, Ray, Sphere, Torus, TriangleMesh, counters,
+    Cone, Crossings, Cuboid, Disc, Plane, Polynomial, Quadric, Ray, Sphere, Torus, TriangleMesh,
+    counters,
 };
 use glam::DVec3;
 use std::sync::Arc;
@@ -189,6 +190,22 @@ shapes! {
     Torus(Torus),
     /// Triangle mesh, shared between instances.
     Mesh(Arc<TriangleMesh>),
-    /// `quadric`.
-    Quadric(Quadric),
+    /// `quadric` (boxed, as big as three vectors: rare shapes keep every object small).
+    Quadric(Box<Quadric>),
+    /// `cubic`, `quartic`, `poly` (boxed: its terms are a list).
+    Polynomial(Box<Polynomial>),
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every object holds a `Shape`: rare or large shapes are boxed so that a million spheres
+    /// stay small.
+    #[test]
+    fn a_shape_stays_small() {
+        assert!(std::mem::size_of::<Shape>() <= 56, "{}", std::mem::size_of::<Shape>());
+        assert_eq!(KINDS.len(), TRIANGLE + 1);
+        assert_eq!(KINDS[TRIANGLE], "Triangle");
+    }
 }

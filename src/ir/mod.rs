@@ -357,6 +357,42 @@ pub enum Shape {
         /// `J`.
         constant: f64,
     },
+    /// `cubic`, `quartic`, `poly N` (N ≤ 4): a polynomial in x, y, z equal to 0.
+    Polynomial(Box<Polynomial>),
+}
+
+/// A polynomial surface's degree and non-zero terms.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Polynomial {
+    /// 2 to 4.
+    pub degree: u8,
+    /// Coefficient and the powers of x, y and z of each non-zero term.
+    pub terms: Vec<(f64, [u8; 3])>,
+}
+
+impl Polynomial {
+    /// The polynomial of `degree` from POV-Ray's list of coefficients: terms ordered by the
+    /// power of x, then of y, then of z, each descending (`x⁴, x³y, x³z, x³, x²y², …, z, 1`
+    /// for a quartic). `None` if the list's length is not the degree's.
+    pub fn from_povray(degree: u8, coefficients: &[f64]) -> Option<Polynomial> {
+        let mut powers = Vec::new();
+        for i in (0..=degree).rev() {
+            for j in (0..=degree - i).rev() {
+                for k in (0..=degree - i - j).rev() {
+                    powers.push([i, j, k]);
+                }
+            }
+        }
+        (powers.len() == coefficients.len()).then(|| Polynomial {
+            degree,
+            terms: powers
+                .into_iter()
+                .zip(coefficients)
+                .filter(|(_, c)| **c != 0.0)
+                .map(|(p, c)| (*c, p))
+                .collect(),
+        })
+    }
 }
 
 /// A triangle mesh (`mesh`, `mesh2`, or a single `triangle`/`smooth_triangle`). Vertices and

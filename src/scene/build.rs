@@ -3,7 +3,7 @@
 
 use super::query::fades;
 use super::*;
-use crate::geometry::{Cone, Cuboid, Disc, Plane, Quadric, Sphere, Torus};
+use crate::geometry::{Cone, Cuboid, Disc, Plane, Polynomial, Quadric, Sphere, Torus};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -390,12 +390,19 @@ fn build_shape(
             linear,
             constant,
         } => (
-            Shape::Quadric(Quadric {
+            Shape::Quadric(Box::new(Quadric {
                 square: *square,
                 mixed: *mixed,
                 linear: *linear,
                 constant: *constant,
-            }),
+            })),
+            transform,
+        ),
+        ir::Shape::Polynomial(p) => (
+            Shape::Polynomial(Box::new(Polynomial {
+                degree: p.degree,
+                terms: p.terms.clone().into_boxed_slice(),
+            })),
             transform,
         ),
         ir::Shape::Mesh(mesh) => {
