@@ -22,8 +22,26 @@ pub struct Cone {
 }
 
 impl Cone {
-    /// Crossings with the side (`x² + y² = r(z)²`, 0 ≤ z ≤ 1) and the caps, nearest first.
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Normal (not unit length, canonical frame) at `p` on the given part.
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
+        match part {
+            BASE_CAP => -DVec3::Z,
+            TOP_CAP => DVec3::Z,
+            _ => {
+                let k = self.r1 - self.r0;
+                DVec3::new(p.x, p.y, -k * (self.r0 + k * p.z))
+            }
+        }
+    }
+
+}
+
+impl super::shape::Surface for Cone {
+    const NAME: &'static str = "Cone/Cylinder";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         let (o, d) = (ray.origin, ray.direction);
         let k = self.r1 - self.r0;
         let r_o = self.r0 + k * o.z;
@@ -66,34 +84,6 @@ impl Cone {
         out
     }
 
-    /// Normal (not unit length, canonical frame) at `p` on the given part.
-    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
-        match part {
-            BASE_CAP => -DVec3::Z,
-            TOP_CAP => DVec3::Z,
-            _ => {
-                let k = self.r1 - self.r0;
-                DVec3::new(p.x, p.y, -k * (self.r0 + k * p.z))
-            }
-        }
-    }
-
-    /// Whether `p` is inside (between the caps and within the radius).
-    pub fn contains(&self, p: DVec3) -> bool {
-        let r = self.r0 + (self.r1 - self.r0) * p.z;
-        (0.0..=1.0).contains(&p.z) && p.x * p.x + p.y * p.y < r * r
-    }
-}
-
-
-impl super::shape::Surface for Cone {
-    const NAME: &'static str = "Cone/Cylinder";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
-    }
-
     #[inline]
     fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
         let n = self.normal(p, part);
@@ -101,7 +91,8 @@ impl super::shape::Surface for Cone {
     }
 
     fn contains(&self, p: DVec3) -> bool {
-        self.contains(p)
+        let r = self.r0 + (self.r1 - self.r0) * p.z;
+        (0.0..=1.0).contains(&p.z) && p.x * p.x + p.y * p.y < r * r
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -112,6 +103,7 @@ impl super::shape::Surface for Cone {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
 
     fn cylinder(open: bool) -> Cone {
@@ -194,6 +186,7 @@ mod tests {
 
 #[cfg(test)]
 mod properties {
+    use super::super::shape::Surface;
     use super::*;
     use proptest::prelude::*;
 

@@ -13,16 +13,23 @@ pub struct Cuboid {
 }
 
 impl Cuboid {
-    /// Crossings of `ray` with the box surface, nearest first; each crossing's part is the
-    /// axis (0, 1, 2) of the face it lies on.
-    ///
-    /// Slab test. A zero direction component gives ±∞ slab distances, or NaN when the origin
-    /// lies exactly on that slab's plane: then the closed slab holds the ray for every t, so
-    /// that axis does not constrain the interval (as in POV-Ray, which counts a parallel ray
-    /// on a face as inside). The face of each crossing is the slab that set it; on an edge or
-    /// corner (a tie) the earlier axis keeps it, x before y before z, as in POV-Ray, so a ray
-    /// grazing along a face sees the face it enters, not the one it runs along.
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Outward unit normal at `p` on the face of axis `part` (from [`Cuboid::intersect`]).
+    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
+        let axis = (part as usize).min(2);
+        let centre = (self.min[axis] + self.max[axis]) * 0.5;
+        let mut n = DVec3::ZERO;
+        n[axis] = if p[axis] >= centre { 1.0 } else { -1.0 };
+        n
+    }
+
+}
+
+impl super::shape::Surface for Cuboid {
+    const NAME: &'static str = "Box";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         let inv = ray.direction.recip();
         let t0 = (self.min - ray.origin) * inv;
         let t1 = (self.max - ray.origin) * inv;
@@ -57,30 +64,6 @@ impl Cuboid {
         c
     }
 
-    /// Outward unit normal at `p` on the face of axis `part` (from [`Cuboid::intersect`]).
-    pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
-        let axis = (part as usize).min(2);
-        let centre = (self.min[axis] + self.max[axis]) * 0.5;
-        let mut n = DVec3::ZERO;
-        n[axis] = if p[axis] >= centre { 1.0 } else { -1.0 };
-        n
-    }
-
-    /// Whether `p` is inside.
-    pub fn contains(&self, p: DVec3) -> bool {
-        p.cmpgt(self.min).all() && p.cmplt(self.max).all()
-    }
-}
-
-
-impl super::shape::Surface for Cuboid {
-    const NAME: &'static str = "Box";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
-    }
-
     #[inline]
     fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
         let n = self.normal(p, part);
@@ -88,7 +71,7 @@ impl super::shape::Surface for Cuboid {
     }
 
     fn contains(&self, p: DVec3) -> bool {
-        self.contains(p)
+        p.cmpgt(self.min).all() && p.cmplt(self.max).all()
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -98,6 +81,7 @@ impl super::shape::Surface for Cuboid {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
 
     fn unit() -> Cuboid {
@@ -182,6 +166,7 @@ mod tests {
 
 #[cfg(test)]
 mod properties {
+    use super::super::shape::Surface;
     use super::*;
     use crate::geometry::offset_origin;
     use proptest::prelude::*;

@@ -18,8 +18,18 @@ pub struct Disc {
 }
 
 impl Disc {
-    /// The crossing of `ray` with the disc, if any.
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Unit normal.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
+    }
+}
+
+impl super::shape::Surface for Disc {
+    const NAME: &'static str = "Disc";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         let denom = self.normal.dot(ray.direction);
         if denom == 0.0 {
             return Crossings::NONE;
@@ -30,21 +40,6 @@ impl Disc {
             return Crossings::NONE;
         }
         Crossings::within(ray, &[t])
-    }
-
-    /// Unit normal.
-    pub fn normal(&self) -> DVec3 {
-        self.normal
-    }
-}
-
-
-impl super::shape::Surface for Disc {
-    const NAME: &'static str = "Disc";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
     }
 
     #[inline]
@@ -64,6 +59,7 @@ impl super::shape::Surface for Disc {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
 
     fn disc() -> Disc {

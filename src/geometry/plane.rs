@@ -13,8 +13,19 @@ pub struct Plane {
 }
 
 impl Plane {
-    /// The crossing of `ray` with the plane, if any.
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Outward unit normal.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
+    }
+
+}
+
+impl super::shape::Surface for Plane {
+    const NAME: &'static str = "Plane";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         // Solve n·(o + t·d) = distance.
         let denom = self.normal.dot(ray.direction);
         if denom == 0.0 {
@@ -24,33 +35,13 @@ impl Plane {
         Crossings::within(ray, &[t])
     }
 
-    /// Outward unit normal.
-    pub fn normal(&self) -> DVec3 {
-        self.normal
-    }
-
-    /// Whether `p` is inside (below the plane).
-    pub fn contains(&self, p: DVec3) -> bool {
-        self.normal.dot(p) < self.distance
-    }
-}
-
-
-impl super::shape::Surface for Plane {
-    const NAME: &'static str = "Plane";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
-    }
-
     #[inline]
     fn normals(&self, _p: DVec3, _part: u32) -> (DVec3, DVec3) {
         (self.normal, self.normal)
     }
 
     fn contains(&self, p: DVec3) -> bool {
-        self.contains(p)
+        self.normal.dot(p) < self.distance
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -60,6 +51,7 @@ impl super::shape::Surface for Plane {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
 
     fn floor() -> Plane {

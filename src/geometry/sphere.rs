@@ -13,13 +13,19 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// Crossings of `ray` with the sphere, nearest first.
-    ///
-    /// Solves `|f + t·d|² = r²` with `f = o − c` in the numerically stable form of Ray Tracing
-    /// Gems ch. 7: the discriminant from the distance of the centre to the ray's line (no
-    /// cancellation for far or small spheres), the roots via `q` (no cancellation between
-    /// `−b` and `√Δ`).
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Outward unit normal at a point on the sphere.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        (p - self.centre).normalize()
+    }
+
+}
+
+impl super::shape::Surface for Sphere {
+    const NAME: &'static str = "Sphere";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         let f = ray.origin - self.centre;
         let d = ray.direction;
         let a = d.length_squared();
@@ -41,26 +47,6 @@ impl Sphere {
         Crossings::within(ray, &[near, far])
     }
 
-    /// Outward unit normal at a point on the sphere.
-    pub fn normal(&self, p: DVec3) -> DVec3 {
-        (p - self.centre).normalize()
-    }
-
-    /// Whether `p` is inside.
-    pub fn contains(&self, p: DVec3) -> bool {
-        (p - self.centre).length_squared() < self.radius * self.radius
-    }
-}
-
-
-impl super::shape::Surface for Sphere {
-    const NAME: &'static str = "Sphere";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
-    }
-
     #[inline]
     fn normals(&self, p: DVec3, _part: u32) -> (DVec3, DVec3) {
         let n = self.normal(p);
@@ -68,7 +54,7 @@ impl super::shape::Surface for Sphere {
     }
 
     fn contains(&self, p: DVec3) -> bool {
-        self.contains(p)
+        (p - self.centre).length_squared() < self.radius * self.radius
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -78,6 +64,7 @@ impl super::shape::Surface for Sphere {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
     use proptest::prelude::*;
 

@@ -14,12 +14,37 @@ pub struct Torus {
 }
 
 impl Torus {
-    /// Crossings of `ray` with the torus, nearest first.
-    ///
-    /// The quartic is solved for a unit direction with the origin first moved to where the ray
-    /// enters the bounding sphere, so the coefficients stay of the torus's own size however far
-    /// away the ray starts; roots are isolated between critical points (no closed form).
-    pub fn intersect(&self, ray: &Ray) -> Crossings {
+
+    /// Coefficients of the quartic in `s` whose roots are where `o + s·d` (`|d| = 1`) meets the
+    /// torus: with G = |p|² − R² − r², G² + 4R²(y² − r²) = 0. Their size grows with `|o|`, so
+    /// [`Torus::intersect`] forms them near the torus.
+    pub fn quartic(&self, o: DVec3, d: DVec3) -> Poly {
+        let (big, small) = (self.major, self.minor);
+        let e = o.length_squared() - big * big - small * small;
+        let g = o.dot(d);
+        let four_r2 = 4.0 * big * big;
+        [
+            e * e + four_r2 * (o.y * o.y - small * small),
+            4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
+            4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
+            4.0 * g,
+            1.0,
+        ]
+    }
+
+    /// Outward normal (not unit length) at `p`.
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let g = p.length_squared() - self.major * self.major - self.minor * self.minor;
+        g * p + DVec3::new(0.0, 2.0 * self.major * self.major * p.y, 0.0)
+    }
+
+}
+
+impl super::shape::Surface for Torus {
+    const NAME: &'static str = "Torus";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
         let (big, small) = (self.major, self.minor);
         let length = ray.direction.length();
         let d = ray.direction / length;
@@ -50,45 +75,6 @@ impl Torus {
         out
     }
 
-    /// Coefficients of the quartic in `s` whose roots are where `o + s·d` (`|d| = 1`) meets the
-    /// torus: with G = |p|² − R² − r², G² + 4R²(y² − r²) = 0. Their size grows with `|o|`, so
-    /// [`Torus::intersect`] forms them near the torus.
-    pub fn quartic(&self, o: DVec3, d: DVec3) -> Poly {
-        let (big, small) = (self.major, self.minor);
-        let e = o.length_squared() - big * big - small * small;
-        let g = o.dot(d);
-        let four_r2 = 4.0 * big * big;
-        [
-            e * e + four_r2 * (o.y * o.y - small * small),
-            4.0 * g * e + 2.0 * four_r2 * o.y * d.y,
-            4.0 * g * g + 2.0 * e + four_r2 * d.y * d.y,
-            4.0 * g,
-            1.0,
-        ]
-    }
-
-    /// Outward normal (not unit length) at `p`.
-    pub fn normal(&self, p: DVec3) -> DVec3 {
-        let g = p.length_squared() - self.major * self.major - self.minor * self.minor;
-        g * p + DVec3::new(0.0, 2.0 * self.major * self.major * p.y, 0.0)
-    }
-
-    /// Whether `p` is inside the tube.
-    pub fn contains(&self, p: DVec3) -> bool {
-        let ring = (p.x * p.x + p.z * p.z).sqrt() - self.major;
-        ring * ring + p.y * p.y < self.minor * self.minor
-    }
-}
-
-
-impl super::shape::Surface for Torus {
-    const NAME: &'static str = "Torus";
-
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
-        self.intersect(ray)
-    }
-
     #[inline]
     fn normals(&self, p: DVec3, _part: u32) -> (DVec3, DVec3) {
         let n = self.normal(p);
@@ -96,7 +82,8 @@ impl super::shape::Surface for Torus {
     }
 
     fn contains(&self, p: DVec3) -> bool {
-        self.contains(p)
+        let ring = (p.x * p.x + p.z * p.z).sqrt() - self.major;
+        ring * ring + p.y * p.y < self.minor * self.minor
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -107,6 +94,7 @@ impl super::shape::Surface for Torus {
 
 #[cfg(test)]
 mod tests {
+    use super::super::shape::Surface;
     use super::*;
     use proptest::prelude::*;
 

@@ -7,7 +7,7 @@
 
 use glam::{DVec3, Vec3};
 use trace::geometry::triangle::ShearedRay;
-use trace::geometry::{Ray, Sphere, offset_origin};
+use trace::geometry::{Ray, Sphere, Surface, offset_origin};
 
 /// A small deterministic generator (xorshift64) for the experiments' rays.
 pub struct Rng(u64);
