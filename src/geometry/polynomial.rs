@@ -127,16 +127,17 @@ mod tests {
 
     #[test]
     fn a_quartic_sphere_and_a_torus_are_hit_where_they_are() {
-        // (x² + y² + z²)² − 1 = 0: the unit sphere again.
-        let s = quartic(&[
+        // (x² + y² + z²)², whose terms both surfaces start with.
+        let r4 = [
             ([4, 0, 0], 1.0),
             ([0, 4, 0], 1.0),
             ([0, 0, 4], 1.0),
             ([2, 2, 0], 2.0),
             ([2, 0, 2], 2.0),
             ([0, 2, 2], 2.0),
-            ([0, 0, 0], -1.0),
-        ]);
+        ];
+        // (x² + y² + z²)² − 1 = 0: the unit sphere again.
+        let s = quartic(&[&r4[..], &[([0, 0, 0], -1.0)]].concat());
         let r = Ray::new(DVec3::new(0.0, 0.6, -4.0), DVec3::new(0.0, 0.0, 2.0));
         let c = s.intersect(&r);
         assert_eq!(c.as_slice().len(), 2);
@@ -149,18 +150,13 @@ mod tests {
         // The torus R = 1, r = 0.25: (x² + y² + z² + R² − r²)² − 4R²(x² + z²); a ray along x
         // through the centre crosses it four times, at ±0.75 and ±1.25.
         let k = 1.0 - 0.0625;
-        let t = quartic(&[
-            ([4, 0, 0], 1.0),
-            ([0, 4, 0], 1.0),
-            ([0, 0, 4], 1.0),
-            ([2, 2, 0], 2.0),
-            ([2, 0, 2], 2.0),
-            ([0, 2, 2], 2.0),
+        let rest = [
             ([2, 0, 0], 2.0 * k - 4.0),
             ([0, 2, 0], 2.0 * k),
             ([0, 0, 2], 2.0 * k - 4.0),
             ([0, 0, 0], k * k),
-        ]);
+        ];
+        let t = quartic(&[&r4[..], &rest[..]].concat());
         let c = t.intersect(&Ray::new(DVec3::new(-3.0, 0.0, 0.0), DVec3::X));
         let expected = [1.75, 2.25, 3.75, 4.25];
         assert_eq!(c.as_slice().len(), 4);
