@@ -543,6 +543,7 @@ const SUPPORTED: &[&str] = &[
     "bitwise_xor",
     "black_hole",
     "blue",
+    "bounded_by",
     "box",
     "boxed",
     "bozo",
@@ -884,7 +885,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "no_image" | "no_reflection" | "double_illuminate" | "clipped_by" | "bounded_by"
+        "no_image" | "no_reflection" | "double_illuminate" | "clipped_by"
         | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
         "spherical_camera" | "cylinder_camera" | "focal_point" | "aperture" | "blur_samples" | "confidence"
         | "variance" | "mesh_camera" => "this camera type or item is not supported by trace yet",

@@ -33,6 +33,8 @@ struct Part {
     no_shadow: bool,
     /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
     hollow: Option<bool>,
+    /// The `bounded_by` shapes of the member it came from (a union's own are the object's).
+    bounds: Vec<ir::Bound>,
 }
 
 /// An object while it is being built: one shape, or the flattened members of a union.
@@ -52,6 +54,8 @@ pub struct ObjectValue {
     lights: Vec<ir::Light>,
     /// A union (its `hollow` goes only to members without their own).
     is_union: bool,
+    /// `bounded_by`: the object's bounding shapes, in the world.
+    bounds: Vec<ir::Bound>,
 }
 
 /// Whether a node is a directive (run by `each_item` wherever it stands).
@@ -117,6 +121,7 @@ impl ObjectValue {
                 inverse: false,
                 no_shadow: false,
                 hollow: None,
+                bounds: Vec::new(),
             }],
             texture: None,
             interior_texture: None,
@@ -124,6 +129,7 @@ impl ObjectValue {
             own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
+            bounds: Vec::new(),
         }
     }
 
@@ -136,6 +142,7 @@ impl ObjectValue {
             own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
+            bounds: Vec::new(),
         }
     }
 
@@ -157,6 +164,12 @@ impl ObjectValue {
             for tex in [&mut part.texture, &mut part.interior_texture].into_iter().flatten() {
                 tex.transform(t);
             }
+            for b in &mut part.bounds {
+                b.transform = compose(b.transform.take().map(|t| *t), t).map(Box::new);
+            }
+        }
+        for b in &mut self.bounds {
+            b.transform = compose(b.transform.take().map(|t| *t), t).map(Box::new);
         }
         for tex in [&mut self.texture, &mut self.interior_texture].into_iter().flatten() {
             tex.transform(t);
@@ -332,6 +345,7 @@ impl Evaluator<'_> {
                         part.texture = part.texture.or_else(|| m.texture.clone());
                         part.interior_texture =
                             part.interior_texture.or_else(|| m.interior_texture.clone());
+                        part.bounds.extend(m.bounds.iter().cloned());
                         if part.interior.is_some() {
                             part.interior_group += base;
                         } else if m.interior.is_some() {
@@ -421,6 +435,20 @@ impl Evaluator<'_> {
                 }
                 object.texture = Some(texture);
             }
+            NodeKind::BoundedBy => {
+                self.each_item(&m.children, &mut |ev, item| {
+                    if !is_object(item.kind) {
+                        return Err(ev.unknown_item(item, "bounded_by"));
+                    }
+                    for part in ev.object(item)?.parts {
+                        object.bounds.push(ir::Bound {
+                            shape: part.shape,
+                            transform: part.transform.map(Box::new),
+                        });
+                    }
+                    Ok(())
+                })?;
+            }
             NodeKind::Interior => {
                 let base = object.interior.unwrap_or_default();
                 object.interior = Some(self.interior(m, base)?);
@@ -490,7 +518,7 @@ impl Evaluator<'_> {
 
     /// Adds the object's parts (and the lights it holds) to the scene. Transformations that
     /// overflowed together (`scale 1e200 scale 1e200`) are an error at `span`.
-    pub(super) fn place(&mut self, object: ObjectValue, span: Span) -> Result<()> {
+    pub(super) fn place(&mut self, mut object: ObjectValue, span: Span) -> Result<()> {
         let usable = |t: &ir::Transform| t.matrix.is_finite() && t.inverse().matrix.is_finite();
         if !object
             .parts
@@ -503,7 +531,7 @@ impl Evaluator<'_> {
                 span,
             ));
         }
-        self.lights.extend(object.lights);
+        self.lights.append(&mut object.lights);
         // Fresh media for this instance (two `object { U }` of one declared union do not
         // share interiors: POV-Ray copies them with the object).
         let base = self.next_medium;
@@ -535,7 +563,22 @@ impl Evaluator<'_> {
                 Some(interior) => self.shared_interior(interior),
                 None => std::sync::Arc::clone(&self.default_interior),
             };
+            let mut shapes = part.bounds;
+            shapes.extend(object.bounds.iter().cloned());
+            // POV-Ray keeps the bounding shapes of unions, polynomials and quadrics without
+            // bounds of their own; of other shapes only the bound's box stays.
+            let test_rays = object.is_union
+                || match &part.shape {
+                    Shape::Polynomial(_) => true,
+                    Shape::Quadric { square, mixed, .. } => {
+                        *mixed != DVec3::ZERO || square.min_element() <= 0.0
+                    }
+                    _ => false,
+                };
+            let bounds =
+                (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
             self.objects.push(ir::Object {
+                bounds,
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
                 texture,

@@ -271,6 +271,11 @@ pub struct Object {
     pub interior_texture: Option<Box<Texture>>,
     /// What is inside (index of refraction, fade).
     pub interior: Arc<Interior>,
+    /// `bounded_by`: the object's box becomes its bound's (rays that miss it skip the object),
+    /// and on unions, polynomials and unbounded quadrics rays that miss a bounding shape (and
+    /// start outside it) skip the object too; POV-Ray removes the shapes of other bounds and
+    /// keeps their box.
+    pub bounds: Option<Arc<Bounds>>,
     /// `no_shadow`: the object casts no shadow.
     pub no_shadow: bool,
     /// `inverse`: inside and outside swapped.
@@ -284,6 +289,24 @@ pub struct Object {
     /// have no interior of their own): a ray inside one that meets another's surface leaves
     /// the medium. Distinct for every other object.
     pub medium: u32,
+}
+
+/// An object's `bounded_by`.
+#[derive(Clone, Debug)]
+pub struct Bounds {
+    /// The bounding shapes.
+    pub shapes: Vec<Bound>,
+    /// Whether rays are tested against the shapes (else only their box bounds the object).
+    pub test_rays: bool,
+}
+
+/// A bounding shape of `bounded_by`, placed in the world.
+#[derive(Clone, Debug)]
+pub struct Bound {
+    /// The shape.
+    pub shape: Shape,
+    /// World from its object space; `None` is the identity.
+    pub transform: Option<Box<Transform>>,
 }
 
 /// Analytic shapes, in object space.

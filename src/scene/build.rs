@@ -178,6 +178,31 @@ impl Scene {
                     rank: 0,
                     interior,
                     medium: o.medium,
+                    bounds: o.bounds.as_ref().map(|bounds| {
+                        let shapes = bounds
+                            .shapes
+                            .iter()
+                            .map(|b| {
+                                let mesh_of = |m: &ir::Mesh| Arc::new(build_mesh(m));
+                                let meshes: HashMap<usize, Arc<TriangleMesh>> = match &b.shape {
+                                    ir::Shape::Mesh(m) => {
+                                        HashMap::from([(Arc::as_ptr(m) as usize, mesh_of(m))])
+                                    }
+                                    _ => HashMap::new(),
+                                };
+                                let (shape, transform) = build_shape(
+                                    &b.shape,
+                                    b.transform.as_ref().map(|t| t.matrix),
+                                    &meshes,
+                                );
+                                BoundShape {
+                                    shape,
+                                    transform: transform.map(ObjectTransform::new),
+                                }
+                            })
+                            .collect();
+                        Arc::new((shapes, bounds.test_rays))
+                    }),
                 };
                 let bounds = object.world_bounds();
                 object.bounded = bounds.is_some();
@@ -449,6 +474,7 @@ mod tests {
                 transform: Some(Box::new(ir::Transform { matrix: transform })),
                 texture: ir::Texture::default(),
                 interior_texture: None,
+                bounds: None,
                 interior: Default::default(),
                 no_shadow: false,
                 inverse: false,

@@ -174,6 +174,39 @@ pub struct Object {
     pub interior: u32,
     /// Objects with equal media share one interior (see [`ir::Object::medium`]).
     pub medium: u32,
+    /// `bounded_by`: the shapes whose box bounds the object, and whether a ray must also cross
+    /// each of them (or start inside it) to reach the object.
+    pub bounds: Option<Arc<(Box<[BoundShape]>, bool)>>,
+}
+
+/// A `bounded_by` shape in the world.
+#[derive(Clone, Debug)]
+pub struct BoundShape {
+    shape: Shape,
+    transform: Option<ObjectTransform>,
+}
+
+impl BoundShape {
+    /// POV-Ray's `Ray_In_Bound` for one bound: the ray (anywhere ahead) crosses it, or starts
+    /// inside it.
+    fn admits(&self, ray: &Ray) -> bool {
+        let mut ahead = *ray;
+        ahead.tmax = f64::INFINITY;
+        let (local, origin) = match &self.transform {
+            None => (ahead, ray.origin),
+            Some(t) => (
+                ahead.transformed(&t.object_from_world),
+                t.object_from_world.transform_point3(ray.origin),
+            ),
+        };
+        !self.shape.intersect(&local).is_empty() || self.shape.contains(origin)
+    }
+
+    /// The world box around the bound, `None` when unbounded.
+    fn world_bounds(&self) -> Option<(DVec3, DVec3)> {
+        let m = self.transform.as_ref().map(|t| &t.world_from_object);
+        self.shape.bounds().map(|(lo, hi)| world_bounds(lo, hi, m))
+    }
 }
 
 impl Object {
@@ -198,10 +231,25 @@ impl Object {
     /// structure can hold.
     fn world_bounds(&self) -> Option<(DVec3, DVec3)> {
         let m = self.transform.as_ref().map(|t| &t.world_from_object);
-        self.shape
-            .bounds()
-            .map(|(lo, hi)| world_bounds(lo, hi, m))
+        // A bounded object's box is its bound's (the common part of several), as in POV-Ray.
+        let own = self.shape.bounds().map(|(lo, hi)| world_bounds(lo, hi, m));
+        let bound = self
+            .bounds
+            .iter()
+            .flat_map(|b| b.0.iter())
+            .filter_map(BoundShape::world_bounds)
+            .reduce(|(alo, ahi), (blo, bhi)| (alo.max(blo), ahi.min(bhi)));
+        bound
+            .or(own)
             .filter(|(lo, hi)| lo.is_finite() && hi.is_finite())
+    }
+
+    /// Whether a ray may reach the object through its `bounded_by` shapes.
+    #[inline]
+    fn admits(&self, ray: &Ray) -> bool {
+        self.bounds
+            .as_ref()
+            .is_none_or(|b| !b.1 || b.0.iter().all(|b| b.admits(ray)))
     }
 }
 

@@ -18,6 +18,9 @@ impl Scene {
     /// Crossings of a world ray with one object (object space when transformed; `t` is the
     /// same in both spaces because the direction is not renormalised).
     fn crossings(object: &Object, ray: &Ray) -> Crossings {
+        if !object.admits(ray) {
+            return Crossings::NONE;
+        }
         match &object.transform {
             None => object.shape.intersect(ray),
             Some(t) => object
@@ -114,6 +117,7 @@ impl Scene {
             let object = &self.objects[i as usize];
             !object.no_shadow
                 && !self.material(object.material).may_be_transparent()
+                && object.admits(ray)
                 && object.shape.occludes(&Self::local_ray(object, ray))
         };
         let mut through = Rgb::ONE;
@@ -197,10 +201,10 @@ impl Scene {
     /// Multiplies `through` by the filter colour at each crossing of a transparent object
     /// with a shadow ray (the order of crossings does not matter when no interior fades).
     fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
-        if !self.filters_shadows(i) {
+        let object = &self.objects[i as usize];
+        if !self.filters_shadows(i) || !object.admits(ray) {
             return;
         }
-        let object = &self.objects[i as usize];
         object
             .shape
             .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
@@ -225,8 +229,8 @@ impl Scene {
             crossings.clear();
             media.clear();
             candidates(&mut |i| {
-                if self.filters_shadows(i) {
-                    let object = &self.objects[i as usize];
+                let object = &self.objects[i as usize];
+                if self.filters_shadows(i) && object.admits(ray) {
                     object
                         .shape
                         .for_each_crossing(&Self::local_ray(object, ray), |t, part| {

@@ -150,6 +150,8 @@ pub enum NodeKind {
     /// `use_color`, `use_index`, `use_alpha` in an image pattern or bump map.
     ImageUse,
     Interior,
+    /// `bounded_by { objects }`.
+    BoundedBy,
     /// `interior_texture { … }` (a texture's items).
     InteriorTexture,
     Ior,
@@ -874,6 +876,7 @@ impl Lower {
             Rule::once => NodeKind::Once,
             Rule::interpolate => NodeKind::Interpolate,
             Rule::interior => NodeKind::Interior,
+            Rule::bounded_by => NodeKind::BoundedBy,
             Rule::interior_texture => NodeKind::InteriorTexture,
             Rule::ior => NodeKind::Ior,
             Rule::fade_distance => NodeKind::FadeDistance,
@@ -1348,6 +1351,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_once
             | kw_interpolate
             | kw_interior
+            | kw_bounded_by
             | kw_interior_texture
             | kw_ior
             | kw_fade_distance
