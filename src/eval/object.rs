@@ -556,8 +556,7 @@ impl Evaluator<'_> {
                 .unwrap_or_else(|| self.default_texture.clone());
             let interior_texture = part
                 .interior_texture
-                .or_else(|| object.interior_texture.clone())
-                .map(Box::new);
+                .or_else(|| object.interior_texture.clone());
             // (Objects without an interior share one default interior.)
             let interior = match part.interior.or(object.interior) {
                 Some(interior) => self.shared_interior(interior),
@@ -570,19 +569,22 @@ impl Evaluator<'_> {
             let test_rays = object.is_union
                 || match &part.shape {
                     Shape::Polynomial(_) => true,
-                    Shape::Quadric { square, mixed, .. } => {
-                        *mixed != DVec3::ZERO || square.min_element() <= 0.0
-                    }
+                    Shape::Quadric(q) => q.mixed != DVec3::ZERO || q.square.min_element() <= 0.0,
                     _ => false,
                 };
             let bounds =
                 (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
+            let extras = (interior_texture.is_some() || bounds.is_some()).then(|| {
+                Box::new(ir::ObjectExtras {
+                    interior_texture,
+                    bounds,
+                })
+            });
             self.objects.push(ir::Object {
-                bounds,
+                extras,
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
                 texture,
-                interior_texture,
                 interior,
                 no_shadow: part.no_shadow,
                 inverse: part.inverse,

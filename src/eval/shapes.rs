@@ -4,7 +4,7 @@
 
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
-use crate::ir::{Polynomial, Shape};
+use crate::ir::{Polynomial, Quadric, Shape};
 use crate::syntax::Node;
 
 impl Evaluator<'_> {
@@ -25,12 +25,12 @@ impl Evaluator<'_> {
         Ok(match node.word.as_str() {
             "quadric" => {
                 count(4, "quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }")?;
-                Shape::Quadric {
+                Shape::Quadric(Box::new(Quadric {
                     square: self.vec3(&args[0])?,
                     mixed: self.vec3(&args[1])?,
                     linear: self.vec3(&args[2])?,
                     constant: self.float(&args[3])?,
-                }
+                }))
             }
             "cubic" | "quartic" | "poly" => {
                 let form = match node.word.as_str() {

@@ -266,16 +266,12 @@ pub struct Object {
     pub transform: Option<Box<Transform>>,
     /// The resolved surface.
     pub texture: Texture,
-    /// `interior_texture`: the surface seen from inside (where the normal faces away from
-    /// the ray), if it differs.
-    pub interior_texture: Option<Box<Texture>>,
+    /// What few objects have (`interior_texture`, `bounded_by`), boxed to keep the others
+    /// small.
+    pub extras: Option<Box<ObjectExtras>>,
     /// What is inside (index of refraction, fade).
     pub interior: Arc<Interior>,
-    /// `bounded_by`: the object's box becomes its bound's (rays that miss it skip the object),
-    /// and on unions, polynomials and unbounded quadrics rays that miss a bounding shape (and
-    /// start outside it) skip the object too; POV-Ray removes the shapes of other bounds and
-    /// keeps their box.
-    pub bounds: Option<Arc<Bounds>>,
+
     /// `no_shadow`: the object casts no shadow.
     pub no_shadow: bool,
     /// `inverse`: inside and outside swapped.
@@ -289,6 +285,33 @@ pub struct Object {
     /// have no interior of their own): a ray inside one that meets another's surface leaves
     /// the medium. Distinct for every other object.
     pub medium: u32,
+}
+
+/// The parts of an object that few objects have.
+#[derive(Clone, Debug, Default)]
+pub struct ObjectExtras {
+    /// `interior_texture`: the surface seen from inside (where the normal faces away from
+    /// the ray), if it differs.
+    pub interior_texture: Option<Texture>,
+    /// `bounded_by`: the object's box becomes its bound's (rays that miss it skip the object),
+    /// and on unions, polynomials and unbounded quadrics rays that miss a bounding shape (and
+    /// start outside it) skip the object too; POV-Ray removes the shapes of other bounds and
+    /// keeps their box.
+    pub bounds: Option<Arc<Bounds>>,
+}
+
+impl Object {
+    /// `interior_texture`, if any.
+    pub fn interior_texture(&self) -> Option<&Texture> {
+        self.extras
+            .as_ref()
+            .and_then(|e| e.interior_texture.as_ref())
+    }
+
+    /// `bounded_by`, if any.
+    pub fn bounds(&self) -> Option<&Bounds> {
+        self.extras.as_ref().and_then(|e| e.bounds.as_deref())
+    }
 }
 
 /// An object's `bounded_by`.
@@ -368,20 +391,24 @@ pub enum Shape {
     },
     /// `triangle` / `smooth_triangle`, and every mesh: shared between instances.
     Mesh(Arc<Mesh>),
-    /// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }`: `Ax² + By² + Cz² + Dxy + Exz + Fyz +
-    /// Gx + Hy + Iz + J = 0`.
-    Quadric {
-        /// `<A, B, C>`.
-        square: DVec3,
-        /// `<D, E, F>`.
-        mixed: DVec3,
-        /// `<G, H, I>`.
-        linear: DVec3,
-        /// `J`.
-        constant: f64,
-    },
+    /// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }` (boxed: rare, and as big as three
+    /// vectors).
+    Quadric(Box<Quadric>),
     /// `cubic`, `quartic`, `poly N` (N ≤ 4): a polynomial in x, y, z equal to 0.
     Polynomial(Box<Polynomial>),
+}
+
+/// `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quadric {
+    /// `<A, B, C>`.
+    pub square: DVec3,
+    /// `<D, E, F>`.
+    pub mixed: DVec3,
+    /// `<G, H, I>`.
+    pub linear: DVec3,
+    /// `J`.
+    pub constant: f64,
 }
 
 /// A polynomial surface's degree and non-zero terms.

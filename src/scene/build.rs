@@ -89,7 +89,7 @@ fn shared_ids<'a, T: PartialEq + Sync>(
 #[allow(clippy::type_complexity)]
 fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Texture>) {
     let mut textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
-    textures.extend(ir.objects.iter().filter_map(|o| o.interior_texture.as_deref()));
+    textures.extend(ir.objects.iter().filter_map(|o| o.interior_texture()));
     let (ids, textures) = shared_ids(&textures, fingerprint);
     let mut inside = ids[ir.objects.len()..].iter();
     let sides = ir
@@ -97,7 +97,7 @@ fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Text
         .iter()
         .zip(&ids)
         .map(|(o, &id)| {
-            let back = match &o.interior_texture {
+            let back = match o.interior_texture() {
                 Some(_) => *inside.next().expect("one id per interior texture"),
                 None => id,
             };
@@ -171,14 +171,16 @@ impl Scene {
                     bounded: false,
                     transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
                     material,
-                    back_material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
                     hollow: o.hollow,
                     rank: 0,
                     interior,
                     medium: o.medium,
-                    bounds: o.bounds.as_ref().map(|bounds| {
+                    extra: None,
+                };
+                let back_material = (back_material != material).then_some(back_material);
+                let bounds = o.bounds().map(|bounds| {
                         let shapes = bounds
                             .shapes
                             .iter()
@@ -201,9 +203,16 @@ impl Scene {
                                 }
                             })
                             .collect();
-                        Arc::new((shapes, bounds.test_rays))
-                    }),
-                };
+                        (shapes, bounds.test_rays)
+                    });
+                if back_material.is_some() || bounds.is_some() {
+                    let (bounds, test_rays) = bounds.unwrap_or_default();
+                    object.extra = Some(Box::new(ObjectExtra {
+                        back_material,
+                        bounds,
+                        test_rays,
+                    }));
+                }
                 let bounds = object.world_bounds();
                 object.bounded = bounds.is_some();
                 (object, bounds)
@@ -279,7 +288,7 @@ impl Scene {
             start += group.len();
         }
         let see_through = |o: &Object| {
-            [o.material, o.back_material]
+            [o.material, o.back_material()]
                 .iter()
                 .any(|m| scene.materials[m.0 as usize].may_be_transparent())
         };
@@ -409,17 +418,12 @@ fn build_shape(
             }),
             transform,
         ),
-        ir::Shape::Quadric {
-            square,
-            mixed,
-            linear,
-            constant,
-        } => (
+        ir::Shape::Quadric(q) => (
             Shape::Quadric(Box::new(Quadric {
-                square: *square,
-                mixed: *mixed,
-                linear: *linear,
-                constant: *constant,
+                square: q.square,
+                mixed: q.mixed,
+                linear: q.linear,
+                constant: q.constant,
             })),
             transform,
         ),
@@ -473,8 +477,7 @@ mod tests {
                 shape,
                 transform: Some(Box::new(ir::Transform { matrix: transform })),
                 texture: ir::Texture::default(),
-                interior_texture: None,
-                bounds: None,
+                extras: None,
                 interior: Default::default(),
                 no_shadow: false,
                 inverse: false,

@@ -158,8 +158,6 @@ pub struct Object {
     pub transform: Option<Box<ObjectTransform>>,
     /// Its material.
     pub material: MaterialId,
-    /// Its material seen from inside (`interior_texture`; else `material`).
-    pub back_material: MaterialId,
     /// Casts no shadow.
     pub no_shadow: bool,
     /// Inside swapped with outside.
@@ -174,9 +172,21 @@ pub struct Object {
     pub interior: u32,
     /// Objects with equal media share one interior (see [`ir::Object::medium`]).
     pub medium: u32,
-    /// `bounded_by`: the shapes whose box bounds the object, and whether a ray must also cross
-    /// each of them (or start inside it) to reach the object.
-    pub bounds: Option<Arc<(Box<[BoundShape]>, bool)>>,
+    /// What few objects have (an interior texture, `bounded_by`), boxed to keep the others
+    /// small.
+    pub extra: Option<Box<ObjectExtra>>,
+}
+
+/// The parts of an object that few objects have.
+#[derive(Clone, Debug, Default)]
+pub struct ObjectExtra {
+    /// Its material seen from inside (`interior_texture`).
+    pub back_material: Option<MaterialId>,
+    /// `bounded_by`: the shapes whose box bounds the object.
+    pub bounds: Box<[BoundShape]>,
+    /// Whether a ray must also cross each bounding shape (or start inside it) to reach the
+    /// object.
+    pub test_rays: bool,
 }
 
 /// A `bounded_by` shape in the world.
@@ -215,15 +225,23 @@ impl Object {
     /// as POV-Ray picks it.
     #[inline]
     fn side(&self, normal: DVec3, direction: DVec3) -> MaterialId {
-        if self.back_material == self.material {
+        let Some(back) = self.extra.as_ref().and_then(|e| e.back_material) else {
             return self.material;
-        }
+        };
         let outward = if self.inverse { -normal } else { normal };
         if outward.dot(direction) > 0.0 {
-            self.back_material
+            back
         } else {
             self.material
         }
+    }
+
+    /// Its material seen from inside (the outside one if it has no interior texture).
+    pub fn back_material(&self) -> MaterialId {
+        self.extra
+            .as_ref()
+            .and_then(|e| e.back_material)
+            .unwrap_or(self.material)
     }
 
     /// The world-space bounding box, `None` for unbounded shapes. Bounds that overflowed (a
@@ -234,9 +252,9 @@ impl Object {
         // A bounded object's box is its bound's (the common part of several), as in POV-Ray.
         let own = self.shape.bounds().map(|(lo, hi)| world_bounds(lo, hi, m));
         let bound = self
-            .bounds
+            .extra
             .iter()
-            .flat_map(|b| b.0.iter())
+            .flat_map(|e| e.bounds.iter())
             .filter_map(BoundShape::world_bounds)
             .reduce(|(alo, ahi), (blo, bhi)| (alo.max(blo), ahi.min(bhi)));
         bound
@@ -247,9 +265,9 @@ impl Object {
     /// Whether a ray may reach the object through its `bounded_by` shapes.
     #[inline]
     fn admits(&self, ray: &Ray) -> bool {
-        self.bounds
+        self.extra
             .as_ref()
-            .is_none_or(|b| !b.1 || b.0.iter().all(|b| b.admits(ray)))
+            .is_none_or(|e| !e.test_rays || e.bounds.iter().all(|b| b.admits(ray)))
     }
 }
 

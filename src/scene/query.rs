@@ -178,13 +178,13 @@ impl Scene {
         let object = &self.objects[i as usize];
         !object.no_shadow
             && (self.material(object.material).may_be_transparent()
-                || self.material(object.back_material).may_be_transparent())
+                || self.material(object.back_material()).may_be_transparent())
     }
 
     /// The material a ray meets where it crosses `object` at distance `t` on `part`: its
     /// interior texture where the surface faces away from the ray.
     fn crossing_material(&self, object: &Object, ray: &Ray, t: f64, part: u32) -> &Material {
-        if object.back_material == object.material {
+        if object.back_material() == object.material {
             return self.material(object.material);
         }
         let point = ray.at(t);
