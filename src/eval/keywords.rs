@@ -709,6 +709,7 @@ const SUPPORTED: &[&str] = &[
     "point_at",
     "poly",
     "poly_wave",
+    "polygon",
     "pow",
     "quadric",
     "quartic",
@@ -867,7 +868,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "prism" | "sor"
-        | "superellipsoid" | "text" | "polygon" | "bicubic_patch"
+        | "superellipsoid" | "text" | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"

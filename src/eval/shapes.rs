@@ -79,6 +79,50 @@ impl Evaluator<'_> {
                 })?;
                 Shape::Polynomial(Box::new(polynomial))
             }
+            "polygon" => {
+                let n = match args.first() {
+                    Some(e) => self.float(e)?,
+                    None => return Err(count(1, "polygon { N, P1, …, PN }").unwrap_err()),
+                };
+                if n < 3.0 {
+                    return Err(Diagnostic::error("a polygon needs at least three points", args[0].span));
+                }
+                if args.len() - 1 != n as usize {
+                    return Err(Diagnostic::error(
+                        format!("this polygon announces {} points and lists {}", n as usize, args.len() - 1),
+                        args[0].span,
+                    ));
+                }
+                let mut points = args[1..]
+                    .iter()
+                    .map(|e| self.vec3(e))
+                    .collect::<Result<Vec<_>>>()?;
+                // POV-Ray's closing: a point equal (within 1e-10) to its sub-polygon's first
+                // closes it and starts the next; an open last one is closed with a warning.
+                let mut first = points[0];
+                let mut closed = false;
+                let mut i = 1;
+                while i < points.len() {
+                    closed = false;
+                    if (points[i] - first).abs().max_element() < 1e-10 {
+                        points[i] = first;
+                        i += 1;
+                        if i < points.len() {
+                            first = points[i];
+                        }
+                        closed = true;
+                    }
+                    i += 1;
+                }
+                if !closed {
+                    self.warn(Diagnostic::warning(
+                        "polygon not closed: closing it (as POV-Ray does)",
+                        node.word_span,
+                    ));
+                    points.push(first);
+                }
+                Shape::Polygon(Box::new(points))
+            }
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
         })
     }

@@ -12,7 +12,8 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Cone, Crossings, Cuboid, Disc, Plane, Polynomial, Quadric, Ray, Sphere, Torus, TriangleMesh,
+    Cone, Crossings, Cuboid, Disc, Plane, Polygon, Polynomial, Quadric, Ray, Sphere, Torus,
+    TriangleMesh,
     counters,
 };
 use glam::DVec3;
@@ -194,6 +195,8 @@ shapes! {
     Quadric(Box<Quadric>),
     /// `cubic`, `quartic`, `poly` (boxed: its terms are a list).
     Polynomial(Box<Polynomial>),
+    /// `polygon` (boxed: its points are a list).
+    Polygon(Box<Polygon>),
 }
 
 #[cfg(test)]

@@ -396,6 +396,9 @@ pub enum Shape {
     Quadric(Box<Quadric>),
     /// `cubic`, `quartic`, `poly N` (N ≤ 4): a polynomial in x, y, z equal to 0.
     Polynomial(Box<Polynomial>),
+    /// `polygon { N, P1, … }`: the points, sub-polygons closed by repeating their first
+    /// point (the last one closed by trace if the scene left it open, as POV-Ray does).
+    Polygon(Box<Vec<DVec3>>),
 }
 
 /// `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.

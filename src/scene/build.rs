@@ -3,7 +3,7 @@
 
 use super::query::fades;
 use super::*;
-use crate::geometry::{Cone, Cuboid, Disc, Plane, Polynomial, Quadric, Sphere, Torus};
+use crate::geometry::{Cone, Cuboid, Disc, Plane, Polygon, Polynomial, Quadric, Sphere, Torus};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -434,6 +434,7 @@ fn build_shape(
             })),
             transform,
         ),
+        ir::Shape::Polygon(points) => (Shape::Polygon(Box::new(Polygon::new(points))), transform),
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
             (Shape::Mesh(Arc::clone(built)), transform)
