@@ -280,30 +280,13 @@ impl<'a> Tracer<'a> {
         let Some(map) = &material.map else {
             return self.shade_layers(material, ray, t, hit, level, weight, interiors);
         };
-        if map.averages() {
-            // POV-Ray's average of textures: each lit, weighted by its entry's value.
+        map.blend(hit.texture_point, |entry, texture_point| {
             let hit = &SurfaceHit {
-                texture_point: map.entry_point(hit.texture_point),
+                texture_point,
                 ..*hit
             };
-            let total: f64 = map.entries.iter().map(|(w, _)| w).sum();
-            let mut sum = Rgb::ZERO;
-            for (w, e) in map.entries.iter() {
-                sum += self.shade_mapped(e, ray, t, hit, level, weight, interiors) * *w;
-            }
-            return sum / total;
-        }
-        let (prev, cur, f, texture_point) = map.at(hit.texture_point);
-        let hit = &SurfaceHit {
-            texture_point,
-            ..*hit
-        };
-        let c = self.shade_mapped(&map.entries[cur].1, ray, t, hit, level, weight, interiors);
-        if prev == cur {
-            return c;
-        }
-        let p = self.shade_mapped(&map.entries[prev].1, ray, t, hit, level, weight, interiors);
-        p * (1.0 - f) + c * f
+            self.shade_mapped(entry, ray, t, hit, level, weight, interiors)
+        })
     }
 
     /// The light leaving the surface hit, of `material` (not a pattern of materials): its

@@ -75,23 +75,7 @@ impl Material {
     /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {
         if let Some(m) = &self.map {
-            if m.averages() {
-                let p = m.entry_point(p);
-                let total: f64 = m.entries.iter().map(|(w, _)| w).sum();
-                return m
-                    .entries
-                    .iter()
-                    .map(|(w, e)| e.filter_at(p) * *w)
-                    .fold(Rgb::ZERO, |a, b| a + b)
-                    / total;
-            }
-            let (prev, cur, t, p) = m.at(p);
-            let f = m.entries[cur].1.filter_at(p);
-            return if prev == cur {
-                f
-            } else {
-                m.entries[prev].1.filter_at(p) * (1.0 - t) + f * t
-            };
+            return m.blend(p, |e, at| e.filter_at(at));
         }
         self.layers()
             .map(|l| filter_colour(&l.pigment.colour_at(p)))
@@ -110,26 +94,29 @@ pub struct MaterialMap {
 }
 
 impl MaterialMap {
-    /// Whether the map averages its materials (`average`) instead of picking by value.
-    pub fn averages(&self) -> bool {
-        self.pattern.kind == crate::pattern::PatternKind::Average
-    }
-
-    /// The entries around the pattern's value at world point `p`, the fraction of the way
-    /// from the first to the second (the same entry twice: that one alone), and the point
-    /// where the entries are evaluated.
-    pub fn at(&self, p: DVec3) -> (usize, usize, f64, DVec3) {
+    /// The blend of `f` over the entries at world point `p`, as POV-Ray blends a pattern of
+    /// textures: the entry the pattern's value picks, or the two around it weighted by the
+    /// fraction between them, or for `average` every entry weighted by its value. `f` gets
+    /// each entry and the point it is evaluated at (the pattern's warped point).
+    pub fn blend<'m>(&'m self, p: DVec3, mut f: impl FnMut(&'m Material, DVec3) -> Rgb) -> Rgb {
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         let warped = self.pattern.warp(q);
+        let at = self.world_point(q, warped, p);
+        if self.pattern.kind == crate::pattern::PatternKind::Average {
+            let total: f64 = self.entries.iter().map(|(w, _)| w).sum();
+            let mut sum = Rgb::ZERO;
+            for (w, e) in self.entries.iter() {
+                sum += f(e, at) * *w;
+            }
+            return sum / total;
+        }
         let v = self.pattern.wave.apply(self.pattern.raw(warped));
         let (prev, cur, t) = pigment::search(&self.entries, v);
-        (prev, cur, t, self.world_point(q, warped, p))
-    }
-
-    /// Where the entries are evaluated for world point `p` (`average` has no value to look up).
-    pub fn entry_point(&self, p: DVec3) -> DVec3 {
-        let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
-        self.world_point(q, self.pattern.warp(q), p)
+        let c = f(&self.entries[cur].1, at);
+        if prev == cur {
+            return c;
+        }
+        f(&self.entries[prev].1, at) * (1.0 - t) + c * t
     }
 
     /// The entries see the pattern's warped point: placed in the world as they are, that is
