@@ -257,9 +257,8 @@ impl Evaluator<'_> {
         declared: impl Fn(Value) -> std::result::Result<Vec<(f64, T)>, Box<Value>>,
         mut entry: impl FnMut(&mut Self, &Node) -> Result<T>,
     ) -> Result<Vec<(f64, T)>> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return declared(self.lookup(ident)?)
-                .map_err(|other| type_error(&format!("a {what}"), &other, ident.span));
+        if let Some(found) = self.declared_map(node, what, declared) {
+            return found;
         }
         let mut entries = Vec::new();
         for e in &node.children {
@@ -1009,13 +1008,29 @@ impl Evaluator<'_> {
         )
     }
 
+    /// A map given by name (`color_map { Name }`): its value if `take` accepts it, a type
+    /// error naming `what` if not, `None` when the map lists its entries.
+    fn declared_map<T>(
+        &mut self,
+        node: &Node,
+        what: &str,
+        take: impl FnOnce(Value) -> std::result::Result<T, Box<Value>>,
+    ) -> Option<Result<T>> {
+        let ident = node.children.iter().find(|c| c.kind == NodeKind::IdentRef)?;
+        Some(match self.lookup(ident) {
+            Ok(v) => take(v).map_err(|other| type_error(&format!("a {what}"), &other, ident.span)),
+            Err(e) => Err(e),
+        })
+    }
+
     /// `slope_map { [v <height, slope>] … }` or `slope_map { Name }`.
     pub(super) fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return match self.lookup(ident)? {
-                Value::SlopeMap(m) => Ok(m),
-                other => Err(type_error("a slope_map", &other, ident.span)),
-            };
+        let take = |v| match v {
+            Value::SlopeMap(m) => Ok(m),
+            other => Err(Box::new(other)),
+        };
+        if let Some(found) = self.declared_map(node, "slope_map", take) {
+            return found;
         }
         let mut entries = Vec::new();
         for e in &node.children {
@@ -1036,11 +1051,12 @@ impl Evaluator<'_> {
 
     /// `color_map { [v C] … }` or `color_map { Name }`.
     pub(super) fn colour_map(&mut self, node: &Node) -> Result<ColourMap> {
-        if let Some(ident) = node.children.iter().find(|c| c.kind == NodeKind::IdentRef) {
-            return match self.lookup(ident)? {
-                Value::ColourMap(m) => Ok(m),
-                other => Err(type_error("a color_map", &other, ident.span)),
-            };
+        let take = |v| match v {
+            Value::ColourMap(m) => Ok(m),
+            other => Err(Box::new(other)),
+        };
+        if let Some(found) = self.declared_map(node, "color_map", take) {
+            return found;
         }
         let mut entries = Vec::new();
         for entry in &node.children {
