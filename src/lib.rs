@@ -30,6 +30,7 @@
 
 pub mod diag;
 pub mod film;
+pub mod font;
 pub mod ir;
 pub mod memory;
 pub mod meshfile;

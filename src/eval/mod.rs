@@ -296,6 +296,8 @@ pub(crate) struct Evaluator<'a> {
     deprecated: HashMap<String, String>,
     /// Mesh files read so far: a file used twice is read and stored once.
     mesh_files: HashMap<std::path::PathBuf, std::sync::Arc<ir::Mesh>>,
+    /// Font files read, by path (`text`).
+    fonts: HashMap<std::path::PathBuf, std::sync::Arc<Vec<u8>>>,
 }
 
 impl<'a> Evaluator<'a> {
@@ -333,6 +335,7 @@ impl<'a> Evaluator<'a> {
             rand_streams: Vec::new(),
             deprecated: HashMap::new(),
             mesh_files: HashMap::new(),
+            fonts: HashMap::new(),
         }
     }
 

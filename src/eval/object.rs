@@ -257,7 +257,22 @@ impl Evaluator<'_> {
                     hole_radius,
                 })
             }
-            NodeKind::Shape => ObjectValue::single(self.shape_table(node)?),
+            NodeKind::Shape => {
+                let shape = self.shape_table(node)?;
+                let text = matches!(shape, Shape::Text(_));
+                let mut object = ObjectValue::single(shape);
+                if text {
+                    // POV-Ray turns every text by 0.001° about each axis before the scene's
+                    // own transformations ("to fix cracks"); the faces' slight tilt shows.
+                    object.transform(
+                        Transform {
+                            matrix: super::transform::rotation(DVec3::splat(0.001)),
+                        },
+                        false,
+                    );
+                }
+                object
+            }
             NodeKind::Torus => {
                 let major = self.float(&node.args[0])?;
                 let minor = self.float(&node.args[1])?;
@@ -333,7 +348,7 @@ impl Evaluator<'_> {
                         return Ok(());
                     }
                     if !is_object(item.kind) {
-                        return ev.object_modifier(&mut group, item, false);
+                        return ev.object_modifier(&mut group, item, node);
                     }
                     let m = ev.object(item)?;
                     group.lights.extend(m.lights);
@@ -378,10 +393,7 @@ impl Evaluator<'_> {
             }
             _ => unreachable!("{:?} is not an object", node.kind),
         };
-        let is_cone = matches!(node.kind, NodeKind::Cylinder | NodeKind::Cone);
-        self.each_item(modifiers, &mut |ev, m| {
-            ev.object_modifier(&mut object, m, is_cone)
-        })?;
+        self.each_item(modifiers, &mut |ev, m| ev.object_modifier(&mut object, m, node))?;
         Ok(object)
     }
 
@@ -396,7 +408,9 @@ impl Evaluator<'_> {
         Ok(v)
     }
 
-    fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, is_cone: bool) -> Result<()> {
+    /// One modifier `m` of object statement `owner`.
+    fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, owner: &Node) -> Result<()> {
+        let is_cone = matches!(owner.kind, NodeKind::Cylinder | NodeKind::Cone);
         match m.kind {
             NodeKind::Material => {
                 let v = self.material(m)?;
@@ -473,6 +487,10 @@ impl Evaluator<'_> {
                 if m.args
                     .first()
                     .is_some_and(|e| matches!(e.kind, ExprKind::Number(v) if v == 0.0)) => {}
+            // A shape's own words (`ttf`, `conic_sweep`, `open` of a prism…): read by the
+            // shape table.
+            NodeKind::Flag
+                if owner.kind == NodeKind::Shape && super::shapes::takes(&owner.word, &m.word) => {}
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
                 "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),

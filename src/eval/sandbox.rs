@@ -4,7 +4,9 @@
 //! up in the scene's folder, then in the `-L` folders, in that order. The file found is
 //! resolved to its canonical path (`..` and symbolic links followed) and must lie inside one
 //! of those folders, so a scene cannot read `/etc/passwd`, `../secret` or a symbolic link
-//! pointing out of its folder, and an error never shows a line of such a file. This is the
+//! pointing out of its folder, and an error never shows a line of such a file (a plain name
+//! found in a `-L` folder, which the user chose, may be a link: Debian links POV-Ray's fonts
+//! into its include folder). This is the
 //! policy of POV-Ray's `povray.conf` with reading restricted to the scene and library paths;
 //! users widen it by giving more folders with `-L DIR`.
 
@@ -49,14 +51,21 @@ impl Sandbox {
 
     /// The canonical path of the file `name` names: the first folder that has it decides.
     pub(crate) fn find(&self, name: &str) -> Result<PathBuf, Refusal> {
-        let found = self
+        let (folder, found) = self
             .search
             .iter()
             .map(|dir| dir.join(name))
-            .find(|p| p.is_file())
+            .enumerate()
+            .find(|(_, p)| p.is_file())
             .ok_or(Refusal::NotFound)?;
         let canonical = found.canonicalize().map_err(|_| Refusal::NotFound)?;
-        if self.roots.iter().any(|root| canonical.starts_with(root)) {
+        // A plain name found in a folder the user gave (not the scene's own) may be a link
+        // placed there by whoever set the folder up (Debian links POV-Ray's fonts into its
+        // include folder): the user chose that folder, links and all.
+        let plain = Path::new(name)
+            .components()
+            .all(|c| matches!(c, std::path::Component::Normal(_)));
+        if self.roots.iter().any(|root| canonical.starts_with(root)) || (folder > 0 && plain) {
             Ok(canonical)
         } else {
             Err(Refusal::Outside)
@@ -144,6 +153,22 @@ mod tests {
         assert!(widened.find("secret.inc").is_ok());
         #[cfg(unix)]
         assert!(widened.find("link.inc").is_ok());
+        let _ = std::fs::remove_dir_all(root);
+    }
+
+    /// A link in a `-L` folder is the user's (Debian's include folder links its fonts); a link
+    /// in the scene's folder, or a name climbing out of the `-L` folder, is not.
+    #[cfg(unix)]
+    #[test]
+    fn links_in_include_folders_are_followed() {
+        let root = layout("links");
+        std::fs::create_dir_all(root.join("lib")).unwrap();
+        std::os::unix::fs::symlink(root.join("outside/secret.inc"), root.join("lib/font.ttf"))
+            .unwrap();
+        let sandbox = Sandbox::new(&root.join("scene"), &[root.join("lib")]);
+        assert!(sandbox.find("font.ttf").is_ok());
+        assert_eq!(sandbox.find("link.inc"), Err(Refusal::Outside));
+        assert_eq!(sandbox.find("../outside/secret.inc"), Err(Refusal::Outside));
         let _ = std::fs::remove_dir_all(root);
     }
 }

@@ -3,9 +3,45 @@
 //! its IR variant and its geometry (`geometry/`, one file and one line in `shape.rs`).
 
 use super::{Evaluator, Result, Value, expr::type_error};
-use crate::diag::Diagnostic;
-use crate::ir::{Polynomial, Quadric, Shape};
-use crate::syntax::Node;
+use crate::diag::{Diagnostic, Span};
+use crate::ir::{Polynomial, Prism, Quadric, Shape, Spline, Sweep};
+use crate::syntax::{Expr, Node, NodeKind};
+use glam::DVec2;
+use std::sync::Arc;
+
+/// Whether `word` (a flag among a shape's items) is the shape's own, read by the shape table.
+pub(super) fn takes(shape: &str, word: &str) -> bool {
+    match shape {
+        "text" => matches!(word, "ttf" | "internal"),
+        "prism" => matches!(
+            word,
+            "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "linear_sweep"
+                | "conic_sweep" | "open" | "sturm"
+        ),
+        _ => false,
+    }
+}
+
+/// A shape's values and own words in source order.
+enum Item<'n> {
+    Word(&'n Node),
+    Value(&'n Expr),
+}
+
+fn items(node: &Node) -> Vec<Item<'_>> {
+    let mut items: Vec<(u32, Item)> = node.args.iter().map(|e| (e.span.start, Item::Value(e))).collect();
+    items.extend(
+        node.children
+            .iter()
+            .filter(|c| c.kind == NodeKind::Flag && takes(&node.word, &c.word))
+            .map(|c| (c.span.start, Item::Word(c))),
+    );
+    items.sort_by_key(|(at, _)| *at);
+    items.into_iter().map(|(_, i)| i).collect()
+}
+
+/// The largest font file trace reads (POV-Ray's own fonts are below 100 kB).
+const MAX_FONT_BYTES: u64 = 64 << 20;
 
 impl Evaluator<'_> {
     /// The IR shape of a `shape` node (`quadric { … }` …).
@@ -45,9 +81,9 @@ impl Evaluator<'_> {
                     "quartic" => 4,
                     _ => {
                         let n = self.float(&args[0])?;
-                        if !(2.0..=4.0).contains(&n) {
+                        if !(2.0..=6.0).contains(&n) {
                             return Err(Diagnostic::error(
-                                "unsupported: a poly of degree other than 2 to 4 (trace's root solver goes to 4)",
+                                "unsupported: a poly of degree other than 2 to 6 (trace's root solver goes to 6)",
                                 args[0].span,
                             ));
                         }
@@ -123,9 +159,243 @@ impl Evaluator<'_> {
                 }
                 Shape::Polygon(Box::new(points))
             }
+            "text" => self.text(node)?,
+            "prism" => self.prism(node)?,
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
         })
     }
+
+    /// `text { ttf "font" "string" thickness [,] offset }` or `internal N` for the font.
+    fn text(&mut self, node: &Node) -> Result<Shape> {
+        let form = "text { ttf \"font.ttf\" \"string\" thickness, offset }";
+        let items = items(node);
+        let (font, values) = match items.split_first() {
+            Some((Item::Word(w), rest)) => (*w, rest),
+            _ => {
+                return Err(Diagnostic::error(
+                    format!("`text` starts with the font: {form}"),
+                    node.word_span,
+                ));
+            }
+        };
+        let values: Vec<&Expr> = values
+            .iter()
+            .map(|i| match i {
+                Item::Value(e) => Ok(*e),
+                Item::Word(w) => Err(Diagnostic::error(format!("unexpected `{}` in {form}", w.word), w.span)),
+            })
+            .collect::<Result<_>>()?;
+        if values.len() != 4 {
+            let at = values.get(4).map_or(node.word_span, |e| e.span);
+            return Err(Diagnostic::error(format!("`text` takes a font and three values: {form}"), at));
+        }
+        let (path, name) = if font.word == "ttf" {
+            let name = self.string(values[0])?;
+            (self.find_font(&name, values[0].span)?, name)
+        } else {
+            // POV-Ray's built-in fonts are its bundled files, read from the include folders.
+            let name = match self.float(values[0])? as i64 {
+                1 => "timrom.ttf",
+                2 => "cyrvetic.ttf",
+                3 => "crystal.ttf",
+                _ => "povlogo.ttf",
+            };
+            let path = self.find_font(name, values[0].span).map_err(|e| {
+                Diagnostic::error(
+                    format!("{} (`internal` fonts are POV-Ray's bundled fonts: give -L with POV-Ray's include folder)", e.message),
+                    values[0].span,
+                )
+            })?;
+            (path, name.to_string())
+        };
+        let string = self.string(values[1])?;
+        let thickness = self.float(values[2])?;
+        let offset = self.vec3(values[3])?;
+        let data = self.font_data(&path, &name, values[0].span)?;
+        // POV-Ray's default `charset ascii` reads the string's bytes: each byte beyond ASCII is
+        // a space.
+        let codes: Vec<u32> = string
+            .chars()
+            .flat_map(|c| {
+                let n = if c.is_ascii() { 1 } else { c.len_utf8() };
+                std::iter::repeat_n(if c.is_ascii() { u32::from(c) } else { 0x20 }, n)
+            })
+            .collect();
+        let text = crate::font::layout(&data, &codes, thickness, offset.truncate(), crate::font::Charset::Ascii)
+            .map_err(|e| Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span))?;
+        Ok(Shape::Text(Box::new(text)))
+    }
+
+    /// The font file `name` names, as POV-Ray looks for it: the name as given when it ends in
+    /// `.ttf`, then with `.ttf` or `.TTF` added, then as given.
+    fn find_font(&mut self, name: &str, span: Span) -> Result<std::path::PathBuf> {
+        let lower = name.to_ascii_lowercase();
+        let mut candidates = Vec::new();
+        if lower.ends_with(".ttf") {
+            candidates.push(name.to_string());
+        }
+        candidates.push(format!("{name}.ttf"));
+        candidates.push(format!("{name}.TTF"));
+        if !lower.ends_with(".ttf") {
+            candidates.push(name.to_string());
+        }
+        for c in &candidates {
+            if let Ok(path) = self.sandbox.find(c) {
+                return Ok(path);
+            }
+        }
+        self.find_file(name, "font", span)
+    }
+
+    /// A font file's bytes, read once per scene.
+    fn font_data(&mut self, path: &std::path::Path, name: &str, span: Span) -> Result<Arc<Vec<u8>>> {
+        if let Some(data) = self.fonts.get(path) {
+            return Ok(Arc::clone(data));
+        }
+        let cannot = |e: String| Diagnostic::error(format!("cannot read font {name}: {e}"), span);
+        let size = std::fs::metadata(path).map_err(|e| cannot(e.to_string()))?.len();
+        if size > MAX_FONT_BYTES {
+            return Err(cannot(format!("{size} bytes; trace reads fonts up to {MAX_FONT_BYTES}")));
+        }
+        let data = Arc::new(std::fs::read(path).map_err(|e| cannot(e.to_string()))?);
+        self.fonts.insert(path.to_path_buf(), Arc::clone(&data));
+        Ok(data)
+    }
+
+    /// `prism { [spline] [sweep] h1, h2, N, <x, z>… [open] }`.
+    fn prism(&mut self, node: &Node) -> Result<Shape> {
+        let form = "prism { [linear_spline|quadratic_spline|cubic_spline|bezier_spline] [linear_sweep|conic_sweep] height1, height2, N, <x, z>… }";
+        let (mut spline, mut sweep, mut open, mut sturm) = (Spline::Linear, Sweep::Linear, false, false);
+        let mut values = Vec::new();
+        for item in items(node) {
+            match item {
+                Item::Value(e) => values.push(e),
+                Item::Word(w) => match w.word.as_str() {
+                    "linear_spline" => spline = Spline::Linear,
+                    "quadratic_spline" => spline = Spline::Quadratic,
+                    "cubic_spline" => spline = Spline::Cubic,
+                    "bezier_spline" => spline = Spline::Bezier,
+                    "linear_sweep" => sweep = Sweep::Linear,
+                    "conic_sweep" => sweep = Sweep::Conic,
+                    "open" => open = true,
+                    _ => sturm = true,
+                },
+            }
+        }
+        if values.len() < 3 {
+            return Err(Diagnostic::error(format!("`prism` takes {form}"), node.word_span));
+        }
+        let (mut h1, mut h2) = (self.float(values[0])?, self.float(values[1])?);
+        if h1 > h2 {
+            std::mem::swap(&mut h1, &mut h2);
+        }
+        let n = self.float(values[2])?.max(0.0) as usize;
+        let (minimum, message) = match spline {
+            Spline::Linear => (3, "a prism with linear splines needs at least three points"),
+            Spline::Quadratic => (5, "a prism with quadratic splines needs at least five points"),
+            Spline::Cubic => (6, "a prism with cubic splines needs at least six points"),
+            Spline::Bezier => (4, "a prism with Bézier splines needs four points per segment"),
+        };
+        if n < minimum || (spline == Spline::Bezier && n % 4 != 0) {
+            return Err(Diagnostic::error(message, values[2].span));
+        }
+        if values.len() - 3 != n {
+            return Err(Diagnostic::error(
+                format!("this prism announces {n} points and lists {}", values.len() - 3),
+                values[2].span,
+            ));
+        }
+        let mut points = Vec::with_capacity(n);
+        for e in &values[3..] {
+            points.push(self.uv(e)?);
+        }
+        let same = |a: DVec2, b: DVec2| (a - b).abs().max_element() < 1e-10;
+        // POV-Ray's closing check: the last point scanned must close its sub-curve.
+        let closed = match spline {
+            Spline::Bezier => {
+                let mut start = points[0];
+                let mut ok = true;
+                for s in (4..n).step_by(4) {
+                    if !same(points[s], points[s - 1]) {
+                        ok &= same(points[s - 1], start);
+                        start = points[s];
+                    }
+                }
+                ok && same(points[n - 1], start)
+            }
+            _ => {
+                let (mut first, mut i, lead) = match spline {
+                    Spline::Linear => (points[0], 1, 0),
+                    Spline::Quadratic => (points[1], 2, 1),
+                    _ => (points[1], 2, 2),
+                };
+                let mut closed = false;
+                while i < n {
+                    closed = false;
+                    if same(points[i], first) {
+                        closed = true;
+                        // The next sub-curve: its leading control points, then its start.
+                        i += lead + 1;
+                        if i < n {
+                            first = points[i];
+                        }
+                    }
+                    i += 1;
+                }
+                closed
+            }
+        };
+        if !closed {
+            if spline == Spline::Linear {
+                self.warn(Diagnostic::warning("linear prism not closed: closing it (as POV-Ray does)", node.word_span));
+                let start = last_start(&points, same);
+                points.push(start);
+            } else if spline == Spline::Bezier {
+                // POV-Ray warns and draws nothing.
+                self.warn(Diagnostic::warning("prism not closed: ignoring it (as POV-Ray does)", node.word_span));
+                points.clear();
+            } else {
+                return Err(Diagnostic::error(
+                    "this prism's last sub-curve is not closed (its last point must repeat its first, then the control points follow)",
+                    node.word_span,
+                ));
+            }
+        }
+        let segments = Prism::segments(spline, &points).map_err(|m| Diagnostic::error(m, values[2].span))?;
+        Ok(Shape::Prism(Box::new(Prism {
+            sweep,
+            degree: spline.degree(),
+            heights: (h1, h2),
+            closed: !open,
+            segments,
+            sturm,
+        })))
+    }
+
+    /// A 2-D point `<a, b>` (a float is `<f, f>`).
+    fn uv(&mut self, e: &Expr) -> Result<DVec2> {
+        match self.eval(e)? {
+            Value::Float(f) => Ok(DVec2::splat(f)),
+            Value::Vector(v) if v.len == 2 => Ok(DVec2::new(v.c[0], v.c[1])),
+            other => Err(type_error("a 2-D vector <u, v>", &other, e.span)),
+        }
+    }
+}
+
+/// The first point of the last linear sub-polygon (where an unclosed prism closes).
+fn last_start(points: &[DVec2], same: impl Fn(DVec2, DVec2) -> bool) -> DVec2 {
+    let mut first = points[0];
+    let mut i = 1;
+    while i < points.len() {
+        if same(points[i], first) {
+            i += 1;
+            if i < points.len() {
+                first = points[i];
+            }
+        }
+        i += 1;
+    }
+    first
 }
 
 #[cfg(test)]

@@ -15,8 +15,10 @@ mod plane;
 pub mod poly;
 mod polygon;
 mod polynomial;
+mod prism;
 mod quadric;
 pub mod shape;
+mod text;
 mod sphere;
 mod torus;
 pub mod triangle;
@@ -28,9 +30,11 @@ pub use mesh::TriangleMesh;
 pub use plane::Plane;
 pub use polygon::Polygon;
 pub use polynomial::Polynomial;
+pub use prism::{Prism, PrismSegment};
 pub use quadric::Quadric;
 pub use sphere::Sphere;
 pub use shape::{Shape, Surface};
+pub use text::{Edge, Text};
 pub use torus::Torus;
 
 use glam::{DMat4, DVec3};
@@ -122,6 +126,26 @@ impl Crossings {
             self.parts[self.len] = part;
             self.len += 1;
         }
+    }
+
+    /// Adds a crossing given in any order, keeping the nearest four sorted.
+    pub fn keep_nearest(&mut self, t: f64, part: u32) {
+        let mut i = self.len;
+        if i == 4 {
+            if t >= self.ts[3] {
+                return;
+            }
+            i = 3;
+        } else {
+            self.len += 1;
+        }
+        while i > 0 && self.ts[i - 1] > t {
+            self.ts[i] = self.ts[i - 1];
+            self.parts[i] = self.parts[i - 1];
+            i -= 1;
+        }
+        self.ts[i] = t;
+        self.parts[i] = part;
     }
 
     /// Sorts the crossings by distance.

@@ -1,10 +1,13 @@
-//! Real roots of polynomials of degree ≤ 4 in an interval, by isolation: between consecutive
+//! Real roots of polynomials of degree ≤ 6 in an interval, by isolation: between consecutive
 //! roots of the derivative a polynomial is monotonic, so each such interval holds at most one
 //! root, found by safeguarded Newton iteration. No closed-form cancellation, so grazing rays
 //! and far origins keep their accuracy.
 
 /// Coefficients, lowest degree first: `c[0] + c[1]·t + … + c[n]·tⁿ`.
-pub type Poly = [f64; 5];
+pub type Poly = [f64; 7];
+
+/// The highest degree [`roots_in`] solves.
+pub const MAX_DEGREE: usize = 6;
 
 fn eval(c: &Poly, degree: usize, t: f64) -> f64 {
     let mut v = 0.0;
@@ -15,25 +18,25 @@ fn eval(c: &Poly, degree: usize, t: f64) -> f64 {
 }
 
 fn derivative(c: &Poly, degree: usize) -> Poly {
-    let mut d = [0.0; 5];
+    let mut d = [0.0; 7];
     for i in 1..=degree {
         d[i - 1] = c[i] * i as f64;
     }
     d
 }
 
-/// Up to four roots in increasing order.
+/// Up to six roots in increasing order.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Roots {
     /// The roots; the first `len` are valid.
-    pub t: [f64; 4],
+    pub t: [f64; 6],
     /// How many.
     pub len: usize,
 }
 
 impl Roots {
     fn push(&mut self, t: f64) {
-        if self.len < 4 {
+        if self.len < 6 {
             self.t[self.len] = t;
             self.len += 1;
         }
@@ -125,7 +128,7 @@ mod tests {
     #[test]
     fn quartic_with_four_roots() {
         // (t-1)(t-2)(t-3)(t-4) = t⁴ − 10t³ + 35t² − 50t + 24
-        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0], 4, 0.0, 10.0);
+        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0, 0.0, 0.0], 4, 0.0, 10.0);
         let expected = [1.0, 2.0, 3.0, 4.0];
         assert_eq!(r.len, 4);
         for (a, b) in r.as_slice().iter().zip(expected) {
@@ -135,7 +138,7 @@ mod tests {
 
     #[test]
     fn roots_outside_interval_are_ignored() {
-        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0], 4, 1.5, 3.5);
+        let r = roots_in(&[24.0, -50.0, 35.0, -10.0, 1.0, 0.0, 0.0], 4, 1.5, 3.5);
         assert_eq!(r.as_slice().len(), 2);
     }
 
@@ -143,15 +146,34 @@ mod tests {
     fn close_roots_are_separated() {
         // (t − 1)(t − 1.000001)(t² + 1)
         let (a, b) = (1.0, 1.000001);
-        let c = [a * b, -(a + b), 1.0 + a * b, -(a + b), 1.0];
+        let c = [a * b, -(a + b), 1.0 + a * b, -(a + b), 1.0, 0.0, 0.0];
         let r = roots_in(&c, 4, 0.0, 2.0);
         assert_eq!(r.len, 2, "{:?}", r.as_slice());
         assert!((r.t[0] - a).abs() < 1e-9 && (r.t[1] - b).abs() < 1e-9);
     }
 
     #[test]
+    fn sextic_with_six_roots() {
+        // (t−1)(t−2)…(t−6), coefficients lowest first.
+        let mut c = [1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        for r in 1..=6 {
+            let mut next = [0.0; 7];
+            for i in 0..6 {
+                next[i + 1] += c[i];
+                next[i] -= r as f64 * c[i];
+            }
+            c = next;
+        }
+        let roots = roots_in(&c, 6, 0.0, 10.0);
+        assert_eq!(roots.len, 6);
+        for (i, t) in roots.as_slice().iter().enumerate() {
+            assert!((t - (i + 1) as f64).abs() < 1e-9, "{:?}", roots.as_slice());
+        }
+    }
+
+    #[test]
     fn no_real_roots() {
-        let r = roots_in(&[1.0, 0.0, 2.0, 0.0, 1.0], 4, -10.0, 10.0);
+        let r = roots_in(&[1.0, 0.0, 2.0, 0.0, 1.0, 0.0, 0.0], 4, -10.0, 10.0);
         assert_eq!(r.len, 0);
     }
 }

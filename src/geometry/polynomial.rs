@@ -1,4 +1,4 @@
-//! `cubic`, `quartic` and `poly` (degree ≤ 4): the points where a polynomial in x, y, z is 0,
+//! `cubic`, `quartic` and `poly` (degree ≤ 6): the points where a polynomial in x, y, z is 0,
 //! inside where it is negative (POV-Ray's Poly). Along a ray the polynomial is one in t, whose
 //! roots come from the same isolating solver as the torus's.
 
@@ -18,7 +18,7 @@ const INSIDE_TOLERANCE: f64 = 1e-4;
 /// A polynomial surface.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polynomial {
-    /// The degree (2 to 4).
+    /// The degree (2 to 6).
     pub degree: u8,
     /// Its non-zero terms: coefficient and the powers of x, y and z.
     pub terms: Box<[(f64, [u8; 3])]>,
@@ -35,12 +35,12 @@ impl Polynomial {
 
     /// The coefficients in s of the polynomial along `o + s·d`.
     fn along(&self, o: DVec3, d: DVec3) -> Poly {
-        // Powers of each coordinate's linear polynomial a + b·s, up to the fourth.
+        // Powers of each coordinate's linear polynomial a + b·s, up to the sixth.
         let powers = |a: f64, b: f64| {
-            let mut p = [[0.0; 5]; 5];
+            let mut p = [[0.0; 7]; 7];
             p[0][0] = 1.0;
-            for n in 1..5 {
-                for m in 0..5 {
+            for n in 1..7 {
+                for m in 0..7 {
                     let lower = if m > 0 { p[n - 1][m - 1] * b } else { 0.0 };
                     p[n][m] = p[n - 1][m] * a + lower;
                 }
@@ -48,12 +48,12 @@ impl Polynomial {
             p
         };
         let (px, py, pz) = (powers(o.x, d.x), powers(o.y, d.y), powers(o.z, d.z));
-        let mut out = [0.0; 5];
+        let mut out = [0.0; 7];
         for (c, [i, j, k]) in self.terms.iter() {
             let (a, b, e) = (&px[*i as usize], &py[*j as usize], &pz[*k as usize]);
             for (u, au) in a.iter().enumerate().filter(|(_, v)| **v != 0.0) {
-                for (v, bv) in b.iter().enumerate().take(5 - u).filter(|(_, v)| **v != 0.0) {
-                    for (w, ew) in e.iter().enumerate().take(5 - u - v) {
+                for (v, bv) in b.iter().enumerate().take(7 - u).filter(|(_, v)| **v != 0.0) {
+                    for (w, ew) in e.iter().enumerate().take(7 - u - v) {
                         out[u + v + w] += c * au * bv * ew;
                     }
                 }

@@ -12,7 +12,8 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Cone, Crossings, Cuboid, Disc, Plane, Polygon, Polynomial, Quadric, Ray, Sphere, Torus,
+    Cone, Crossings, Cuboid, Disc, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sphere, Text,
+    Torus,
     TriangleMesh,
     counters,
 };
@@ -197,6 +198,10 @@ shapes! {
     Polynomial(Box<Polynomial>),
     /// `polygon` (boxed: its points are a list).
     Polygon(Box<Polygon>),
+    /// `text` (boxed: its outlines are a list).
+    Text(Box<Text>),
+    /// `prism` (boxed: its segments are a list).
+    Prism(Box<Prism>),
 }
 
 #[cfg(test)]

@@ -9,6 +9,9 @@ use std::sync::Arc;
 
 pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
+mod outline;
+pub use outline::{Curve, Glyph, Prism, Segment, Spline, Sweep, Text};
+
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;
 
@@ -394,11 +397,15 @@ pub enum Shape {
     /// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }` (boxed: rare, and as big as three
     /// vectors).
     Quadric(Box<Quadric>),
-    /// `cubic`, `quartic`, `poly N` (N ≤ 4): a polynomial in x, y, z equal to 0.
+    /// `cubic`, `quartic`, `poly N` (N ≤ 6): a polynomial in x, y, z equal to 0.
     Polynomial(Box<Polynomial>),
     /// `polygon { N, P1, … }`: the points, sub-polygons closed by repeating their first
     /// point (the last one closed by trace if the scene left it open, as POV-Ray does).
     Polygon(Box<Vec<DVec3>>),
+    /// `text { ttf … }`: laid-out glyph outlines extruded along z.
+    Text(Box<Text>),
+    /// `prism { … }`: spline segments swept along y.
+    Prism(Box<Prism>),
 }
 
 /// `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.
@@ -417,7 +424,7 @@ pub struct Quadric {
 /// A polynomial surface's degree and non-zero terms.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polynomial {
-    /// 2 to 4.
+    /// 2 to 6.
     pub degree: u8,
     /// Coefficient and the powers of x, y and z of each non-zero term.
     pub terms: Vec<(f64, [u8; 3])>,

@@ -3,7 +3,10 @@
 
 use super::query::fades;
 use super::*;
-use crate::geometry::{Cone, Cuboid, Disc, Plane, Polygon, Polynomial, Quadric, Sphere, Torus};
+use crate::geometry::{
+    Cone, Cuboid, Disc, Edge, Plane, Polygon, Polynomial, Prism, PrismSegment, Quadric, Sphere, Text,
+    Torus,
+};
 use rayon::prelude::*;
 use std::collections::HashMap;
 
@@ -435,6 +438,12 @@ fn build_shape(
             transform,
         ),
         ir::Shape::Polygon(points) => (Shape::Polygon(Box::new(Polygon::new(points))), transform),
+        ir::Shape::Text(text) => (Shape::Text(Box::new(build_text(text))), transform),
+        ir::Shape::Prism(p) => {
+            let segments = p.segments.iter().map(|s| PrismSegment::new(s.u, s.v)).collect();
+            let prism = Prism::new(p.sweep == ir::Sweep::Conic, p.degree, p.heights, p.closed, segments);
+            (Shape::Prism(Box::new(prism)), transform)
+        }
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
             (Shape::Mesh(Arc::clone(built)), transform)
@@ -570,4 +579,16 @@ mod tests {
         };
         assert_eq!((sphere.centre, sphere.radius), (DVec3::X, 2.0));
     }
+}
+
+/// The geometry of laid-out text: each glyph's curves as edges.
+fn build_text(text: &ir::Text) -> Text {
+    let edge = |c: &ir::Curve| match *c {
+        ir::Curve::Line(start, end) => Edge { start, control: start, end, curved: false },
+        ir::Curve::Quad(start, control, end) => Edge { start, control, end, curved: true },
+    };
+    Text::new(
+        text.thickness,
+        text.glyphs.iter().map(|g| g.curves.iter().map(edge).collect()),
+    )
 }

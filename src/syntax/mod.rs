@@ -801,6 +801,7 @@ impl Lower {
             Rule::disc => NodeKind::Disc,
             Rule::torus => NodeKind::Torus,
             Rule::shape => NodeKind::Shape,
+            Rule::shape_word => NodeKind::Flag,
             Rule::triangle => NodeKind::Triangle,
             Rule::smooth_triangle => NodeKind::SmoothTriangle,
             Rule::union => NodeKind::Union,
@@ -925,7 +926,7 @@ impl Lower {
         };
         if matches!(
             rule,
-            Rule::ident | Rule::name_ref | Rule::macro_body | Rule::unparsed_value
+            Rule::ident | Rule::name_ref | Rule::macro_body | Rule::unparsed_value | Rule::shape_word
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();

@@ -10,7 +10,11 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("diag", &[]),
     ("syntax", &["diag"]),
     // meshfile: `mesh_file { }` reads OBJ and PLY files while evaluating.
-    ("eval", &["syntax", "ir", "diag", "meshfile", "pattern"]),
+    // font: `text { ttf … }` lays glyphs out while evaluating.
+    (
+        "eval",
+        &["syntax", "ir", "diag", "meshfile", "pattern", "font"],
+    ),
     ("ir", &["diag", "pattern"]),
     ("geometry", &[]),
     // pattern: functions of a point (what a pigment or normal looks up), used by the IR's
@@ -21,6 +25,8 @@ const ALLOWED: &[(&str, &[&str])] = &[
     // output: temporary files removed on interrupt or when memory runs out.
     ("film", &["output"]),
     ("meshfile", &["output"]),
+    // font: TrueType outlines laid out into the IR's text.
+    ("font", &["ir"]),
     ("memory", &["output"]),
     ("output", &[]),
 ];
