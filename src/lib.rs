@@ -66,7 +66,7 @@ stages! {
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;
 
-pub use eval::{DEFAULT_MAX_STEPS, LoadOptions};
+pub use eval::{DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
 pub use render::{Antialias, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed};

@@ -64,8 +64,9 @@ struct RenderArgs {
     /// Print render statistics (rays by kind, samples, time per phase).
     #[arg(long)]
     stats: bool,
-    /// A folder to search for `#include` files, after the scene's own folder (repeatable).
-    /// POV-Ray's standard includes: -L /usr/share/povray-3.7/include
+    /// A folder to search for `#include` files, fonts and images, after the scene's own folder
+    /// (repeatable). POV-Ray's standard include folder comes last by itself when installed
+    /// (/usr/share/povray-3.7/include, or the folder POVRAY_INCLUDE names).
     #[arg(short = 'L', long = "include-path", value_name = "DIR")]
     include_path: Vec<PathBuf>,
     /// Most evaluation steps the scene may take (statements, loop passes, macro calls), all
@@ -215,7 +216,13 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
     let load_options = LoadOptions {
         width: args.width,
         height: args.height,
-        include_paths: args.include_path.clone(),
+        // POV-Ray's standard include folder last, as POV-Ray's configuration has it.
+        include_paths: args
+            .include_path
+            .iter()
+            .cloned()
+            .chain(trace::standard_include_folder())
+            .collect(),
         threads: args.threads.map(|t| t as usize),
         max_steps: args.max_steps,
     };

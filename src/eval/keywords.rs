@@ -538,6 +538,7 @@ const SUPPORTED: &[&str] = &[
     "atanh",
     "average",
     "background",
+    "bezier_spline",
     "bitwise_and",
     "bitwise_or",
     "bitwise_xor",
@@ -569,6 +570,7 @@ const SUPPORTED: &[&str] = &[
     "colour_map",
     "concat",
     "cone",
+    "conic_sweep",
     "conserve_energy",
     "control0",
     "control1",
@@ -578,6 +580,7 @@ const SUPPORTED: &[&str] = &[
     "crackle",
     "crand",
     "cubic",
+    "cubic_spline",
     "cubic_wave",
     "cylinder",
     "cylindrical",
@@ -643,6 +646,7 @@ const SUPPORTED: &[&str] = &[
     "int",
     "interior",
     "interior_texture",
+    "internal",
     "interpolate",
     "inverse",
     "ior",
@@ -652,6 +656,8 @@ const SUPPORTED: &[&str] = &[
     "lambda",
     "leopard",
     "light_source",
+    "linear_spline",
+    "linear_sweep",
     "ln",
     "local",
     "location",
@@ -711,6 +717,8 @@ const SUPPORTED: &[&str] = &[
     "poly_wave",
     "polygon",
     "pow",
+    "prism",
+    "quadratic_spline",
     "quadric",
     "quartic",
     "quick_color",
@@ -772,6 +780,7 @@ const SUPPORTED: &[&str] = &[
     "t",
     "tan",
     "tanh",
+    "text",
     "texture",
     "texture_map",
     "thickness",
@@ -785,6 +794,7 @@ const SUPPORTED: &[&str] = &[
     "triangle_wave",
     "triangular",
     "true",
+    "ttf",
     "turb_depth",
     "turbulence",
     "u",
@@ -867,8 +877,8 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "prism" | "sor"
-        | "superellipsoid" | "text" | "bicubic_patch"
+        "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "sor"
+        | "superellipsoid" | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
@@ -908,11 +918,11 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "all_intersections" | "b_spline" | "bezier_spline" | "component"
-        | "conic_sweep" | "contained_by" | "cubic_spline" | "evaluate" | "flatness"
-        | "hypercomplex" | "linear_spline" | "linear_sweep" | "max_gradient" | "max_trace"
-        | "precision" | "pwr" | "quadratic_spline" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
-        | "threshold" | "tolerance" | "ttf" | "u_steps" | "v_steps"
+        "all_intersections" | "b_spline" | "component"
+        | "contained_by" | "evaluate" | "flatness"
+        | "hypercomplex" | "max_gradient" | "max_trace"
+        | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
+        | "threshold" | "tolerance" | "u_steps" | "v_steps"
         | "water_level" => {
             "this shape or shape item is not supported by trace yet"
         }
@@ -922,7 +932,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "internal" | "pattern" | "precompute" | "prod" | "sum" | "vturbulence" => {
+        "pattern" | "precompute" | "prod" | "sum" | "vturbulence" => {
             "user functions are not supported by trace yet"
         }
         "append" | "sint16be" | "sint16le" | "sint32be" | "sint32le" | "sint8" | "uint16be"

@@ -46,6 +46,20 @@ pub struct LoadOptions {
 /// a loop; README, "Limits on work and memory").
 pub const DEFAULT_MAX_STEPS: u64 = 50_000_000;
 
+/// POV-Ray's standard include folder where it is installed (Debian's and a source build's
+/// places, or the folder `POVRAY_INCLUDE` names): `trace` searches it after the `-L` folders,
+/// as POV-Ray searches the `Library_Path` of its configuration.
+pub fn standard_include_folder() -> Option<std::path::PathBuf> {
+    let named = std::env::var_os("POVRAY_INCLUDE").map(std::path::PathBuf::from);
+    named
+        .into_iter()
+        .chain(
+            ["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"]
+                .map(std::path::PathBuf::from),
+        )
+        .find(|p| p.is_dir())
+}
+
 impl LoadOptions {
     /// Threads that may parse ahead of evaluation: at most one a core when there are several
     /// (the parser takes one fewer when the file's statements take its fast lane, see

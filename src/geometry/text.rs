@@ -219,17 +219,15 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
     [unit((-b + root) / (2.0 * a)), unit((-b - root) / (2.0 * a))]
 }
 
-/// Whether the ray meets the box within its interval.
+/// Whether the ray meets the box (widened a little, so that edges on its sides count) within
+/// its interval.
 fn slab_hit(ray: &Ray, lo: DVec3, hi: DVec3) -> bool {
-    let inv = ray.direction.recip();
-    let a = (lo - ray.origin) * inv;
-    let b = (hi - ray.origin) * inv;
-    let near = a.min(b);
-    let far = a.max(b);
-    // NaN (a zero direction component with the origin on the slab's edge) keeps the box.
-    let enter = near.max_element().max(ray.tmin);
-    let exit = far.min_element().min(ray.tmax);
-    !(enter > exit + 1e-9 * exit.abs().max(1.0))
+    let pad = 1e-9 * (hi - lo).max_element().max(1.0);
+    let bound = super::Cuboid {
+        min: lo - pad,
+        max: hi + pad,
+    };
+    !super::shape::Surface::intersect(&bound, ray).is_empty()
 }
 
 impl super::shape::Surface for Text {

@@ -462,6 +462,18 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
     built
 }
 
+/// The geometry of laid-out text: each glyph's curves as edges.
+fn build_text(text: &ir::Text) -> Text {
+    let edge = |c: &ir::Curve| match *c {
+        ir::Curve::Line(start, end) => Edge { start, control: start, end, curved: false },
+        ir::Curve::Quad(start, control, end) => Edge { start, control, end, curved: true },
+    };
+    Text::new(
+        text.thickness,
+        text.glyphs.iter().map(|g| g.curves.iter().map(edge).collect()),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -579,16 +591,4 @@ mod tests {
         };
         assert_eq!((sphere.centre, sphere.radius), (DVec3::X, 2.0));
     }
-}
-
-/// The geometry of laid-out text: each glyph's curves as edges.
-fn build_text(text: &ir::Text) -> Text {
-    let edge = |c: &ir::Curve| match *c {
-        ir::Curve::Line(start, end) => Edge { start, control: start, end, curved: false },
-        ir::Curve::Quad(start, control, end) => Edge { start, control, end, curved: true },
-    };
-    Text::new(
-        text.thickness,
-        text.glyphs.iter().map(|g| g.curves.iter().map(edge).collect()),
-    )
 }

@@ -3,6 +3,13 @@
 use std::path::Path;
 
 fn snapshot_ir(path: &Path) {
+    // Scenes that need POV-Ray's include files (its fonts) are checked by the golden tests
+    // only: their IR would depend on what is installed.
+    if std::fs::read_to_string(path)
+        .is_ok_and(|t| t.contains("Needs POV-Ray's include files installed."))
+    {
+        return;
+    }
     let options = trace::LoadOptions {
         width: 320,
         height: 240,
