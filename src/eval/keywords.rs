@@ -654,6 +654,7 @@ const SUPPORTED: &[&str] = &[
     "irid_wavelength",
     "jitter",
     "lambda",
+    "lathe",
     "leopard",
     "light_source",
     "linear_spline",
@@ -755,6 +756,7 @@ const SUPPORTED: &[&str] = &[
     "slope_map",
     "smooth_triangle",
     "solid",
+    "sor",
     "specular",
     "sphere",
     "spherical",
@@ -877,7 +879,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "blob" | "height_field" | "isosurface" | "julia_fractal" | "lathe" | "sor"
+        "blob" | "height_field" | "isosurface" | "julia_fractal"
         | "superellipsoid" | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",

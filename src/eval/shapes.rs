@@ -4,7 +4,7 @@
 
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
-use crate::ir::{Polynomial, Prism, Quadric, Shape, Spline, Sweep};
+use crate::ir::{Lathe, Polynomial, Prism, Quadric, Shape, Sor, Spline, Sweep};
 use crate::syntax::{Expr, Node, NodeKind};
 use glam::DVec2;
 use std::sync::Arc;
@@ -18,6 +18,11 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
             "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "linear_sweep"
                 | "conic_sweep" | "open" | "sturm"
         ),
+        "lathe" => matches!(
+            word,
+            "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "sturm"
+        ),
+        "sor" => matches!(word, "open" | "sturm"),
         _ => false,
     }
 }
@@ -161,6 +166,8 @@ impl Evaluator<'_> {
             }
             "text" => self.text(node)?,
             "prism" => self.prism(node)?,
+            "lathe" => self.lathe(node)?,
+            "sor" => self.sor(node)?,
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
         })
     }
@@ -368,6 +375,96 @@ impl Evaluator<'_> {
             heights: (h1, h2),
             closed: !open,
             segments,
+            sturm,
+        })))
+    }
+
+    /// The values and words of a `lathe` or `sor`: its count N, the N points, the last spline
+    /// word and whether `open` and `sturm` were given.
+    #[allow(clippy::type_complexity)]
+    fn profile(&mut self, node: &Node, form: &str) -> Result<(Vec<DVec2>, Vec<Span>, Spline, bool, bool, Span)> {
+        let (mut spline, mut open, mut sturm) = (Spline::Linear, false, false);
+        let mut values = Vec::new();
+        for item in items(node) {
+            match item {
+                Item::Value(e) => values.push(e),
+                Item::Word(w) => match w.word.as_str() {
+                    "linear_spline" => spline = Spline::Linear,
+                    "quadratic_spline" => spline = Spline::Quadratic,
+                    "cubic_spline" => spline = Spline::Cubic,
+                    "bezier_spline" => spline = Spline::Bezier,
+                    "open" => open = true,
+                    _ => sturm = true,
+                },
+            }
+        }
+        let Some((count, points)) = values.split_first() else {
+            return Err(Diagnostic::error(format!("`{}` takes {form}", node.word), node.word_span));
+        };
+        let n = self.float(count)?.max(0.0) as usize;
+        if points.len() != n {
+            return Err(Diagnostic::error(
+                format!("this {} announces {n} points and lists {}", node.word, points.len()),
+                count.span,
+            ));
+        }
+        let spans = points.iter().map(|e| e.span).collect();
+        let points = points.iter().map(|e| self.uv(e)).collect::<Result<Vec<_>>>()?;
+        Ok((points, spans, spline, open, sturm, count.span))
+    }
+
+    /// `lathe { [spline] N, <r, y>… }`.
+    fn lathe(&mut self, node: &Node) -> Result<Shape> {
+        let form = "lathe { [linear_spline|quadratic_spline|cubic_spline|bezier_spline] N, <radius, height>… }";
+        let (points, spans, spline, _, sturm, at) = self.profile(node, form)?;
+        let n = points.len();
+        let (minimum, message) = match spline {
+            Spline::Linear => (2, "a lathe with linear splines needs at least two points"),
+            Spline::Quadratic => (3, "a lathe with quadratic splines needs at least three points"),
+            Spline::Cubic => (4, "a lathe with cubic splines needs at least four points"),
+            Spline::Bezier => (4, "a lathe with Bézier splines needs four points per segment"),
+        };
+        if n < minimum || (spline == Spline::Bezier && n % 4 != 0) {
+            return Err(Diagnostic::error(message, at));
+        }
+        // Only the end points may have a negative radius (POV-Ray's check).
+        if let Some(i) = (1..n - 1).find(|&i| points[i].x < 0.0) {
+            return Err(Diagnostic::error(
+                format!("point {} of this lathe has a negative radius (only the first and last may)", i + 1),
+                spans[i],
+            ));
+        }
+        Ok(Shape::Lathe(Box::new(Lathe {
+            degree: spline.degree(),
+            segments: Lathe::segments(spline, &points),
+            sturm,
+        })))
+    }
+
+    /// `sor { N, <r, y>… [open] }`.
+    fn sor(&mut self, node: &Node) -> Result<Shape> {
+        let (points, spans, _, open, sturm, at) = self.profile(node, "sor { N, <radius, height>… [open] }")?;
+        let n = points.len();
+        if n < 4 {
+            return Err(Diagnostic::error("a surface of revolution needs at least four points", at));
+        }
+        // POV-Ray's checks: no negative radius, heights rising from the second point to the
+        // last but one.
+        for i in 0..n {
+            if points[i].x < 0.0 || (i > 1 && i < n - 1 && points[i].y <= points[i - 1].y) {
+                return Err(Diagnostic::error(
+                    format!(
+                        "point {} of this surface of revolution has a negative radius or is not above the one before",
+                        i + 1
+                    ),
+                    spans[i],
+                ));
+            }
+        }
+        let segments = Sor::segments(&points).map_err(|m| Diagnostic::error(m, at))?;
+        Ok(Shape::Sor(Box::new(Sor {
+            segments,
+            closed: !open,
             sturm,
         })))
     }

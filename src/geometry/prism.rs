@@ -3,56 +3,12 @@
 //! scaled by y), filled by the even-odd rule, with end faces unless `open` (POV-Ray's Prism).
 
 use super::poly::roots_in;
+use super::spline::{CurveSegment, at, poly, slope};
 use super::{Crossings, Ray};
 use glam::{DVec2, DVec3};
 
 /// POV-Ray's tolerance for parallel rays and zero heights.
 const EPSILON: f64 = 1e-10;
-
-/// One spline segment: `u(t)` (x) and `v(t)` (z), coefficients `[A, B, C, D]` of
-/// `A t³ + B t² + C t + D`, and its box in the plane.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PrismSegment {
-    /// x(t).
-    pub u: [f64; 4],
-    /// z(t).
-    pub v: [f64; 4],
-    lo: DVec2,
-    hi: DVec2,
-}
-
-fn at(c: &[f64; 4], t: f64) -> f64 {
-    ((c[0] * t + c[1]) * t + c[2]) * t + c[3]
-}
-
-fn slope(c: &[f64; 4], t: f64) -> f64 {
-    (3.0 * c[0] * t + 2.0 * c[1]) * t + c[2]
-}
-
-/// The coefficients lowest first, as the root finder takes them.
-fn poly(c: [f64; 4]) -> [f64; 7] {
-    [c[3], c[2], c[1], c[0], 0.0, 0.0, 0.0]
-}
-
-impl PrismSegment {
-    /// A segment from its coefficients (its box from its ends and turning points).
-    pub fn new(u: [f64; 4], v: [f64; 4]) -> PrismSegment {
-        let point = |t: f64| DVec2::new(at(&u, t), at(&v, t));
-        let (mut lo, mut hi) = (point(0.0).min(point(1.0)), point(0.0).max(point(1.0)));
-        for c in [&u, &v] {
-            let d = [c[2], 2.0 * c[1], 3.0 * c[0], 0.0, 0.0, 0.0, 0.0];
-            for &t in roots_in(&d, 2, 0.0, 1.0).as_slice() {
-                lo = lo.min(point(t));
-                hi = hi.max(point(t));
-            }
-        }
-        PrismSegment { u, v, lo, hi }
-    }
-
-    fn point(&self, t: f64) -> DVec2 {
-        DVec2::new(at(&self.u, t), at(&self.v, t))
-    }
-}
 
 /// A prism in object space.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,7 +18,7 @@ pub struct Prism {
     h1: f64,
     h2: f64,
     closed: bool,
-    segments: Box<[PrismSegment]>,
+    segments: Box<[CurveSegment]>,
     /// The curve's box in the plane (for conic sweeps, the curve at y = 1).
     lo: DVec2,
     hi: DVec2,
@@ -75,7 +31,7 @@ const SIDE: u32 = 2;
 
 impl Prism {
     /// A prism of `degree` (1 to 3) segments between heights `h1 ≤ h2`.
-    pub fn new(conic: bool, degree: u8, (h1, h2): (f64, f64), closed: bool, segments: Vec<PrismSegment>) -> Prism {
+    pub fn new(conic: bool, degree: u8, (h1, h2): (f64, f64), closed: bool, segments: Vec<CurveSegment>) -> Prism {
         let (lo, hi) = segments.iter().fold(
             (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
             |(lo, hi), s| (lo.min(s.lo), hi.max(s.hi)),
@@ -185,31 +141,6 @@ impl Prism {
             }
         }
     }
-
-    /// The parameter of segment `s`'s point nearest plane point `q`.
-    fn nearest(&self, s: &PrismSegment, q: DVec2) -> f64 {
-        // d/dt |P(t) − q|² / 2 = (P(t) − q)·P'(t), of degree 2·degree − 1.
-        let mut c = [0.0; 7];
-        for (coef, target) in [(&s.u, q.x), (&s.v, q.y)] {
-            let mut p = poly(*coef);
-            p[0] -= target;
-            let d = [coef[2], 2.0 * coef[1], 3.0 * coef[0]];
-            for (i, pi) in p.iter().take(4).enumerate() {
-                for (j, dj) in d.iter().enumerate() {
-                    c[i + j] += pi * dj;
-                }
-            }
-        }
-        let degree = 2 * self.degree - 1;
-        let mut best = (f64::INFINITY, 0.0);
-        for t in roots_in(&c, degree, 0.0, 1.0).as_slice().iter().copied().chain([0.0, 1.0]) {
-            let dist = (s.point(t) - q).length_squared();
-            if dist < best.0 {
-                best = (dist, t);
-            }
-        }
-        best.1
-    }
 }
 
 impl super::shape::Surface for Prism {
@@ -236,7 +167,7 @@ impl super::shape::Surface for Prism {
         } else {
             DVec2::new(p.x, p.z)
         };
-        let t = self.nearest(s, q);
+        let t = s.nearest(q, self.degree);
         let (du, dv) = (slope(&s.u, t), slope(&s.v, t));
         let n = if self.conic {
             DVec3::new(dv, -(p.x * dv - p.z * du) / p.y, -du)
@@ -290,7 +221,7 @@ mod tests {
             .windows(2)
             .map(|w| {
                 let (a, b) = (w[0], w[1]);
-                PrismSegment::new([0.0, 0.0, b.0 - a.0, a.0], [0.0, 0.0, b.1 - a.1, a.1])
+                CurveSegment::new([0.0, 0.0, b.0 - a.0, a.0], [0.0, 0.0, b.1 - a.1, a.1])
             })
             .collect();
         Prism::new(conic, 1, heights, true, segments)
@@ -359,7 +290,7 @@ mod tests {
                         p1,
                     ]
                 };
-                PrismSegment::new(c(|p| p.x), c(|p| p.y))
+                CurveSegment::new(c(|p| p.x), c(|p| p.y))
             })
             .collect();
         let p = Prism::new(false, 3, (0.0, 1.0), true, segments);

@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Cone, Crossings, Cuboid, Disc, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sphere, Text,
+    Cone, Crossings, Cuboid, Disc, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -202,6 +202,10 @@ shapes! {
     Text(Box<Text>),
     /// `prism` (boxed: its segments are a list).
     Prism(Box<Prism>),
+    /// `lathe` (boxed: its segments are a list).
+    Lathe(Box<Lathe>),
+    /// `sor` (boxed: its pieces are a list).
+    Sor(Box<Sor>),
 }
 
 #[cfg(test)]

@@ -10,7 +10,7 @@ use std::sync::Arc;
 pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
 mod outline;
-pub use outline::{Curve, Glyph, Prism, Segment, Spline, Sweep, Text};
+pub use outline::{Curve, Glyph, Lathe, Prism, Segment, Sor, SorSegment, Spline, Sweep, Text};
 
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;
@@ -406,6 +406,10 @@ pub enum Shape {
     Text(Box<Text>),
     /// `prism { … }`: spline segments swept along y.
     Prism(Box<Prism>),
+    /// `lathe { … }`: a spline profile turned about y.
+    Lathe(Box<Lathe>),
+    /// `sor { … }`: a surface of revolution, r² a cubic in y piece by piece.
+    Sor(Box<Sor>),
 }
 
 /// `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.

@@ -1,6 +1,7 @@
-//! Shapes drawn from 2-D curves: `text` (glyph outlines extruded along z) and `prism` (spline
-//! segments swept along y). The IR holds the curves resolved (glyphs laid out, spline segments
-//! as polynomial coefficients), not the points or the font the scene named.
+//! Shapes drawn from 2-D curves: `text` (glyph outlines extruded along z), `prism` (spline
+//! segments swept along y), `lathe` and `sor` (profiles turned about y). The IR holds the
+//! curves resolved (glyphs laid out, spline segments as polynomial coefficients), not the
+//! points or the font the scene named.
 
 use glam::DVec2;
 
@@ -65,8 +66,9 @@ impl Spline {
     }
 }
 
-/// One spline segment in the plane: `x(t)` and `z(t)` for t in [0, 1], each as the
-/// coefficients `[A, B, C, D]` of `A t³ + B t² + C t + D`.
+/// One spline segment in the plane: `u(t)` and `v(t)` for t in [0, 1] (a prism's x and z, a
+/// lathe's radius and height), each as the coefficients `[A, B, C, D]` of
+/// `A t³ + B t² + C t + D`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
     /// First coordinate.
@@ -184,6 +186,136 @@ impl Prism {
     }
 }
 
+/// `lathe { [spline] N, <r, y>… }`: a profile in the (radius, height) plane turned about y.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Lathe {
+    /// The degree of the segments (1 to 3).
+    pub degree: u8,
+    /// The profile's segments (radius, height).
+    pub segments: Vec<Segment>,
+    /// `sturm`: accepted; trace's root finder is the same either way.
+    pub sturm: bool,
+}
+
+impl Lathe {
+    /// The segments POV-Ray builds from a lathe's points: linear and quadratic curves pass
+    /// through every point but a quadratic's first (a control point), cubic ones (Catmull-Rom)
+    /// through all but the first and last, Bézier segments take four points each (from their
+    /// first point at t = 0).
+    pub fn segments(spline: Spline, p: &[DVec2]) -> Vec<Segment> {
+        let seg = |f: &dyn Fn(f64, f64, f64, f64) -> [f64; 4], q: [DVec2; 4]| Segment {
+            u: f(q[0].x, q[1].x, q[2].x, q[3].x),
+            v: f(q[0].y, q[1].y, q[2].y, q[3].y),
+        };
+        let four = |i: usize| std::array::from_fn(|k| p.get(i + k).copied().unwrap_or_default());
+        match spline {
+            Spline::Linear => (0..p.len().saturating_sub(1))
+                .map(|i| seg(&|a, b, _, _| [0.0, 0.0, b - a, a], four(i)))
+                .collect(),
+            Spline::Quadratic => (0..p.len().saturating_sub(2))
+                .map(|i| {
+                    seg(
+                        &|a, b, c, _| [0.0, 0.5 * a - b + 0.5 * c, 0.5 * (c - a), b],
+                        four(i),
+                    )
+                })
+                .collect(),
+            Spline::Cubic => (0..p.len().saturating_sub(3))
+                .map(|i| {
+                    seg(
+                        &|a, b, c, d| {
+                            [
+                                -0.5 * a + 1.5 * b - 1.5 * c + 0.5 * d,
+                                a - 2.5 * b + 2.0 * c - 0.5 * d,
+                                0.5 * (c - a),
+                                b,
+                            ]
+                        },
+                        four(i),
+                    )
+                })
+                .collect(),
+            Spline::Bezier => (0..p.len() / 4)
+                .map(|s| {
+                    seg(
+                        &|a, b, c, d| {
+                            [
+                                d - 3.0 * c + 3.0 * b - a,
+                                3.0 * c - 6.0 * b + 3.0 * a,
+                                3.0 * b - 3.0 * a,
+                                a,
+                            ]
+                        },
+                        four(4 * s),
+                    )
+                })
+                .collect(),
+        }
+    }
+}
+
+/// One piece of a surface of revolution: `r² = A y³ + B y² + C y + D` for y in `heights`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SorSegment {
+    /// `[A, B, C, D]`.
+    pub coefficients: [f64; 4],
+    /// The heights it covers (increasing).
+    pub heights: (f64, f64),
+}
+
+/// `sor { N, <r, y>… [open] }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sor {
+    /// The pieces, by increasing height.
+    pub segments: Vec<SorSegment>,
+    /// Whether the end discs are there (not `open`).
+    pub closed: bool,
+    /// `sturm`: accepted; trace's root finder is the same either way.
+    pub sturm: bool,
+}
+
+impl Sor {
+    /// POV-Ray's pieces through points `p` (radius, height): piece i joins points i + 1 and
+    /// i + 2 by the cubic in y whose value is the squared radius at both ends and whose slope
+    /// there comes from the neighbouring points; coefficients below 1e-10 are zero. `Err`
+    /// when two heights a piece divides by are equal.
+    pub fn segments(p: &[DVec2]) -> Result<Vec<SorSegment>, &'static str> {
+        let mut out = Vec::new();
+        for i in 0..p.len().saturating_sub(3) {
+            let (a, b, c, d) = (p[i], p[i + 1], p[i + 2], p[i + 3]);
+            if (c.y - a.y).abs() < 1e-10 || (d.y - b.y).abs() < 1e-10 {
+                return Err("two points of this surface of revolution are at the same height");
+            }
+            let (y1, y2) = (b.y, c.y);
+            let (f1, f2) = (b.x * b.x, c.x * c.x);
+            let k1 = 2.0 * b.x * (c.x - a.x) / (c.y - a.y);
+            let k2 = 2.0 * c.x * (d.x - b.x) / (d.y - b.y);
+            // Hermite form in s = (y − y1) / h, then expanded in powers of y.
+            let h = y2 - y1;
+            let s3 = 2.0 * (f1 - f2) + h * (k1 + k2);
+            let s2 = 3.0 * (f2 - f1) - h * (2.0 * k1 + k2);
+            let s1 = h * k1;
+            let (a3, a2, a1) = (s3 / (h * h * h), s2 / (h * h), s1 / h);
+            let mut coefficients = [
+                a3,
+                a2 - 3.0 * a3 * y1,
+                a1 - 2.0 * a2 * y1 + 3.0 * a3 * y1 * y1,
+                f1 - a1 * y1 + a2 * y1 * y1 - a3 * y1 * y1 * y1,
+            ];
+            for c in &mut coefficients {
+                if c.abs() < 1e-10 {
+                    *c = 0.0;
+                }
+            }
+            out.push(SorSegment {
+                coefficients,
+                heights: (y1, y2),
+            });
+        }
+        Ok(out)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -230,6 +362,39 @@ mod tests {
         let at = |c: [f64; 4], t: f64| ((c[0] * t + c[1]) * t + c[2]) * t + c[3];
         assert_eq!((at(s.u, 0.0), at(s.v, 0.0)), (0.0, 1.0));
         assert!((at(s.u, 1.0) - 1.0).abs() < 1e-12 && at(s.v, 1.0).abs() < 1e-12);
+    }
+
+    /// A sor piece takes the squared radii at its ends and the neighbours' slopes.
+    #[test]
+    fn sor_pieces_interpolate_squared_radii() {
+        let p = [
+            v(0.5, -1.0),
+            v(1.0, 0.0),
+            v(2.0, 1.0),
+            v(1.0, 2.0),
+            v(0.5, 3.0),
+        ];
+        let s = Sor::segments(&p).unwrap();
+        assert_eq!(s.len(), 2);
+        let f = |c: [f64; 4], y: f64| ((c[0] * y + c[1]) * y + c[2]) * y + c[3];
+        assert!((f(s[0].coefficients, 0.0) - 1.0).abs() < 1e-12);
+        assert!((f(s[0].coefficients, 1.0) - 4.0).abs() < 1e-12);
+        assert!((f(s[1].coefficients, 2.0) - 1.0).abs() < 1e-12);
+        // Slope at y = 1 on piece 0: 2·r·(r₂ − r₀)/(y₂ − y₀) = 2·2·(1 − 1)/2 = 0.
+        let c = s[0].coefficients;
+        assert!((3.0 * c[0] + 2.0 * c[1] + c[2]).abs() < 1e-12);
+        assert!(Sor::segments(&[v(1.0, 0.0), v(1.0, 1.0), v(1.0, 0.0), v(1.0, 3.0)]).is_err());
+    }
+
+    /// Lathe Bézier segments run forwards; cubic ones skip the first and last point.
+    #[test]
+    fn lathe_segments() {
+        let p = [v(0.0, 0.0), v(1.0, 2.0), v(2.0, 2.0), v(3.0, 0.0)];
+        let b = Lathe::segments(Spline::Bezier, &p);
+        assert_eq!((b.len(), b[0].u[3]), (1, 0.0));
+        assert_eq!(Lathe::segments(Spline::Cubic, &p).len(), 1);
+        assert_eq!(Lathe::segments(Spline::Quadratic, &p).len(), 2);
+        assert_eq!(Lathe::segments(Spline::Linear, &p).len(), 3);
     }
 
     /// A Bézier segment runs from its fourth point (t = 0) to its first (t = 1).

@@ -4,7 +4,7 @@
 use super::query::fades;
 use super::*;
 use crate::geometry::{
-    Cone, Cuboid, Disc, Edge, Plane, Polygon, Polynomial, Prism, PrismSegment, Quadric, Sphere, Text,
+    Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Text,
     Torus,
 };
 use rayon::prelude::*;
@@ -440,9 +440,21 @@ fn build_shape(
         ir::Shape::Polygon(points) => (Shape::Polygon(Box::new(Polygon::new(points))), transform),
         ir::Shape::Text(text) => (Shape::Text(Box::new(build_text(text))), transform),
         ir::Shape::Prism(p) => {
-            let segments = p.segments.iter().map(|s| PrismSegment::new(s.u, s.v)).collect();
+            let segments = p.segments.iter().map(|s| CurveSegment::new(s.u, s.v)).collect();
             let prism = Prism::new(p.sweep == ir::Sweep::Conic, p.degree, p.heights, p.closed, segments);
             (Shape::Prism(Box::new(prism)), transform)
+        }
+        ir::Shape::Lathe(l) => {
+            let segments = l.segments.iter().map(|s| CurveSegment::new(s.u, s.v)).collect();
+            (Shape::Lathe(Box::new(Lathe::new(l.degree, segments))), transform)
+        }
+        ir::Shape::Sor(s) => {
+            let pieces = s
+                .segments
+                .iter()
+                .map(|p| SorPiece::new(p.coefficients, p.heights.0, p.heights.1))
+                .collect();
+            (Shape::Sor(Box::new(Sor::new(pieces, s.closed))), transform)
         }
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
