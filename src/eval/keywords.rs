@@ -778,6 +778,7 @@ const SUPPORTED: &[&str] = &[
     "strupr",
     "sturm",
     "substr",
+    "superellipsoid",
     "switch",
     "t",
     "tan",
@@ -880,7 +881,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "blob" | "height_field" | "isosurface" | "julia_fractal"
-        | "superellipsoid" | "bicubic_patch"
+        | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"

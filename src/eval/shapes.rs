@@ -168,6 +168,11 @@ impl Evaluator<'_> {
             "prism" => self.prism(node)?,
             "lathe" => self.lathe(node)?,
             "sor" => self.sor(node)?,
+            "superellipsoid" => {
+                count(1, "superellipsoid { <e, n> }")?;
+                let v = self.uv(&args[0])?;
+                Shape::Superellipsoid { e: v.x, n: v.y }
+            }
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
         })
     }

@@ -23,6 +23,7 @@ pub mod shape;
 mod spline;
 mod text;
 mod sphere;
+mod superellipsoid;
 mod torus;
 pub mod triangle;
 
@@ -39,6 +40,7 @@ pub use spline::CurveSegment;
 pub use quadric::Quadric;
 pub use sor::{Sor, SorPiece};
 pub use sphere::Sphere;
+pub use superellipsoid::Superellipsoid;
 pub use shape::{Shape, Surface};
 pub use text::{Edge, Text};
 pub use torus::Torus;

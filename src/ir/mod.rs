@@ -410,6 +410,13 @@ pub enum Shape {
     Lathe(Box<Lathe>),
     /// `sor { … }`: a surface of revolution, r² a cubic in y piece by piece.
     Sor(Box<Sor>),
+    /// `superellipsoid { <e, n> }`: e shapes the x-y sections, n the profile along z.
+    Superellipsoid {
+        /// East-west exponent.
+        e: f64,
+        /// North-south exponent.
+        n: f64,
+    },
 }
 
 /// `Ax² + By² + Cz² + Dxy + Exz + Fyz + Gx + Hy + Iz + J = 0`.

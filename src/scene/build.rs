@@ -4,7 +4,7 @@
 use super::query::fades;
 use super::*;
 use crate::geometry::{
-    Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Text,
+    Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
     Torus,
 };
 use rayon::prelude::*;
@@ -456,6 +456,7 @@ fn build_shape(
                 .collect();
             (Shape::Sor(Box::new(Sor::new(pieces, s.closed))), transform)
         }
+        ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
             (Shape::Mesh(Arc::clone(built)), transform)
