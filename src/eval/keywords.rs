@@ -543,6 +543,7 @@ const SUPPORTED: &[&str] = &[
     "bitwise_or",
     "bitwise_xor",
     "black_hole",
+    "blob",
     "blue",
     "bounded_by",
     "box",
@@ -568,6 +569,7 @@ const SUPPORTED: &[&str] = &[
     "color_map",
     "colour",
     "colour_map",
+    "component",
     "concat",
     "cone",
     "conic_sweep",
@@ -787,6 +789,7 @@ const SUPPORTED: &[&str] = &[
     "texture",
     "texture_map",
     "thickness",
+    "threshold",
     "tightness",
     "toroidal",
     "torus",
@@ -880,7 +883,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "blob" | "height_field" | "isosurface" | "julia_fractal"
+        "height_field" | "isosurface" | "julia_fractal"
         | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
@@ -921,11 +924,11 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "all_intersections" | "b_spline" | "component"
+        "all_intersections" | "b_spline"
         | "contained_by" | "evaluate" | "flatness"
         | "hypercomplex" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
-        | "threshold" | "tolerance" | "u_steps" | "v_steps"
+        | "tolerance" | "u_steps" | "v_steps"
         | "water_level" => {
             "this shape or shape item is not supported by trace yet"
         }

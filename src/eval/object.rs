@@ -99,8 +99,20 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
             | Mesh2
             | MeshFile
             | Union
+            | Blob
             | ObjectRef
     )
+}
+
+/// A sphere or cylinder outside a blob takes no strength (its value after the first `n`).
+fn no_strength(node: &Node, n: usize) -> Result<()> {
+    match node.args.get(n) {
+        Some(e) => Err(Diagnostic::error(
+            format!("a strength belongs to a blob's components: this {} takes {n} values", node.word),
+            e.span,
+        )),
+        None => Ok(()),
+    }
 }
 
 fn compose(t: Option<Transform>, next: Transform) -> Option<Transform> {
@@ -186,9 +198,14 @@ impl Evaluator<'_> {
         let mut modifiers = &node.children[..];
         let mut object = match node.kind {
             NodeKind::Sphere => {
+                no_strength(node, 2)?;
                 let centre = self.vec3(&node.args[0])?;
                 let radius = self.float(&node.args[1])?;
                 ObjectValue::single(Shape::Sphere { centre, radius })
+            }
+            NodeKind::Blob => {
+                modifiers = &[];
+                self.blob(node)?
             }
             NodeKind::Plane => {
                 let normal = self.nonzero(&node.args[0], "plane normal")?;
@@ -209,6 +226,9 @@ impl Evaluator<'_> {
             }
             NodeKind::Cylinder | NodeKind::Cone => {
                 let is_cone = node.kind == NodeKind::Cone;
+                if !is_cone {
+                    no_strength(node, 3)?;
+                }
                 let a = &node.args;
                 let (base, base_radius, cap, cap_radius) = if is_cone {
                     (
@@ -394,6 +414,100 @@ impl Evaluator<'_> {
             _ => unreachable!("{:?} is not an object", node.kind),
         };
         self.each_item(modifiers, &mut |ev, m| ev.object_modifier(&mut object, m, node))?;
+        Ok(object)
+    }
+
+    /// `blob { … }`: its threshold and components (which come before its modifiers, as in
+    /// POV-Ray), then the modifiers.
+    fn blob(&mut self, node: &Node) -> Result<ObjectValue> {
+        let mut blob = ir::Blob { threshold: 1.0, components: Vec::new() };
+        let mut modifiers: Vec<Node> = Vec::new();
+        self.each_item(&node.children, &mut |ev, item| {
+            let component = matches!(
+                item.kind,
+                NodeKind::Sphere | NodeKind::Cylinder | NodeKind::BlobComponent | NodeKind::BlobThreshold
+            );
+            if component && !modifiers.is_empty() {
+                return Err(Diagnostic::error(
+                    "a blob's components and threshold come before its modifiers",
+                    item.word_span,
+                ));
+            }
+            match item.kind {
+                NodeKind::BlobThreshold => blob.threshold = ev.float(&item.args[0])?,
+                NodeKind::BlobComponent => {
+                    let strength = ev.float(&item.args[0])?;
+                    let radius = ev.float(&item.args[1])?;
+                    let centre = ev.vec3(&item.args[2])?;
+                    blob.components.push(ir::BlobComponent {
+                        reach: ir::BlobReach::Sphere(centre),
+                        radius,
+                        strength,
+                        transform: None,
+                    });
+                }
+                NodeKind::Sphere | NodeKind::Cylinder => {
+                    let sphere = item.kind == NodeKind::Sphere;
+                    let n = if sphere { 2 } else { 3 };
+                    let Some(strength) = item.args.get(n) else {
+                        return Err(Diagnostic::error(
+                            format!("a blob's {} takes a strength after its radius", item.word),
+                            item.span,
+                        ));
+                    };
+                    let strength = ev.float(strength)?;
+                    let reach = if sphere {
+                        ir::BlobReach::Sphere(ev.vec3(&item.args[0])?)
+                    } else {
+                        let (a, b) = (ev.vec3(&item.args[0])?, ev.vec3(&item.args[1])?);
+                        if (b - a).length() < 1e-10 {
+                            return Err(Diagnostic::error(
+                                "this blob cylinder's two ends are the same point",
+                                item.word_span,
+                            ));
+                        }
+                        ir::BlobReach::Cylinder(a, b)
+                    };
+                    let radius = ev.float(&item.args[n - 1])?;
+                    let mut transform: Option<Transform> = None;
+                    ev.each_item(&item.children, &mut |ev, m| {
+                        if Self::is_transform(m) {
+                            let t = ev.transform(m)?;
+                            transform = compose(transform, t);
+                            return Ok(());
+                        }
+                        Err(Diagnostic::error(
+                            format!(
+                                "unsupported: `{}` on a blob component (trace gives blob components transformations only, not textures of their own)",
+                                m.word
+                            ),
+                            m.word_span,
+                        ))
+                    })?;
+                    blob.components.push(ir::BlobComponent {
+                        reach,
+                        radius,
+                        strength,
+                        transform: transform.map(|t| t.matrix),
+                    });
+                }
+                _ if is_object(item.kind) => {
+                    return Err(Diagnostic::error(
+                        format!("a blob's components are spheres and cylinders, not `{}`", item.word),
+                        item.word_span,
+                    ));
+                }
+                _ => modifiers.push(item.clone()),
+            }
+            Ok(())
+        })?;
+        if blob.components.is_empty() {
+            return Err(Diagnostic::error("a blob needs at least one component", node.word_span));
+        }
+        let mut object = ObjectValue::single(Shape::Blob(Box::new(blob)));
+        for m in &modifiers {
+            self.object_modifier(&mut object, m, node)?;
+        }
         Ok(object)
     }
 

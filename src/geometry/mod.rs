@@ -6,6 +6,7 @@
 //! Each shape has two phases: `intersect` computes only the distances; `normal` runs once, for
 //! the winning hit.
 
+mod blob;
 mod cone;
 pub mod counters;
 mod cuboid;
@@ -27,6 +28,7 @@ mod superellipsoid;
 mod torus;
 pub mod triangle;
 
+pub use blob::{Blob, BlobElement};
 pub use cone::Cone;
 pub use cuboid::Cuboid;
 pub use disc::Disc;

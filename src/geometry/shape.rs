@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Cone, Crossings, Cuboid, Disc, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -206,6 +206,8 @@ shapes! {
     Lathe(Box<Lathe>),
     /// `sor` (boxed: its pieces are a list).
     Sor(Box<Sor>),
+    /// `blob` (boxed: its components are a list).
+    Blob(Box<Blob>),
     /// `superellipsoid`.
     Superellipsoid(Superellipsoid),
 }

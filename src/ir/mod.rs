@@ -10,7 +10,10 @@ use std::sync::Arc;
 pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
 mod outline;
-pub use outline::{Curve, Glyph, Lathe, Prism, Segment, Sor, SorSegment, Spline, Sweep, Text};
+pub use outline::{
+    Blob, BlobComponent, BlobReach, Curve, Glyph, Lathe, Prism, Segment, Sor, SorSegment, Spline,
+    Sweep, Text,
+};
 
 /// An RGB colour (linear working space, unclamped).
 pub type Rgb = DVec3;
@@ -410,6 +413,8 @@ pub enum Shape {
     Lathe(Box<Lathe>),
     /// `sor { … }`: a surface of revolution, r² a cubic in y piece by piece.
     Sor(Box<Sor>),
+    /// `blob { … }`: where the components' fields reach the threshold.
+    Blob(Box<Blob>),
     /// `superellipsoid { <e, n> }`: e shapes the x-y sections, n the profile along z.
     Superellipsoid {
         /// East-west exponent.

@@ -3,7 +3,7 @@
 //! curves resolved (glyphs laid out, spline segments as polynomial coefficients), not the
 //! points or the font the scene named.
 
-use glam::DVec2;
+use glam::{DMat4, DVec2, DVec3};
 
 /// One piece of a glyph outline, in the text's plane (em units).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -314,6 +314,37 @@ impl Sor {
         }
         Ok(out)
     }
+}
+
+/// Where a blob component's field acts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BlobReach {
+    /// Around a point.
+    Sphere(DVec3),
+    /// Around the segment between two points (with half-sphere ends).
+    Cylinder(DVec3, DVec3),
+}
+
+/// One component of a blob: `strength (1 − r²/radius²)²` within `radius` of its centre.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlobComponent {
+    /// Its centre point or segment.
+    pub reach: BlobReach,
+    /// Radius of influence.
+    pub radius: f64,
+    /// Strength (negative: it takes away).
+    pub strength: f64,
+    /// The component's own transformations (a stretched sphere is an ellipsoid).
+    pub transform: Option<DMat4>,
+}
+
+/// `blob { threshold T components… }`: where the components' fields add up to the threshold.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blob {
+    /// The field's value on the surface.
+    pub threshold: f64,
+    /// The components, in the scene's order.
+    pub components: Vec<BlobComponent>,
 }
 
 #[cfg(test)]

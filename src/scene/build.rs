@@ -4,7 +4,7 @@
 use super::query::fades;
 use super::*;
 use crate::geometry::{
-    Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
+    Blob, BlobElement, Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
     Torus,
 };
 use rayon::prelude::*;
@@ -455,6 +455,20 @@ fn build_shape(
                 .map(|p| SorPiece::new(p.coefficients, p.heights.0, p.heights.1))
                 .collect();
             (Shape::Sor(Box::new(Sor::new(pieces, s.closed))), transform)
+        }
+        ir::Shape::Blob(b) => {
+            let mut elements = Vec::new();
+            for c in &b.components {
+                match c.reach {
+                    ir::BlobReach::Sphere(centre) => {
+                        elements.push(BlobElement::sphere(centre, c.radius, c.strength, c.transform))
+                    }
+                    ir::BlobReach::Cylinder(a, e) => {
+                        elements.extend(BlobElement::cylinder(a, e, c.radius, c.strength, c.transform))
+                    }
+                }
+            }
+            (Shape::Blob(Box::new(Blob::new(b.threshold, elements))), transform)
         }
         ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
         ir::Shape::Mesh(mesh) => {

@@ -67,6 +67,12 @@ pub enum NodeKind {
     Torus,
     /// A shape of the evaluator's shape table (`quadric { … }`): its keyword is the word.
     Shape,
+    /// `blob { … }`.
+    Blob,
+    /// `threshold T` in a blob.
+    BlobThreshold,
+    /// `component S, R, C` in a blob.
+    BlobComponent,
     Triangle,
     SmoothTriangle,
     Union,
@@ -802,6 +808,9 @@ impl Lower {
             Rule::torus => NodeKind::Torus,
             Rule::shape => NodeKind::Shape,
             Rule::shape_word => NodeKind::Flag,
+            Rule::blob => NodeKind::Blob,
+            Rule::blob_threshold => NodeKind::BlobThreshold,
+            Rule::blob_component => NodeKind::BlobComponent,
             Rule::triangle => NodeKind::Triangle,
             Rule::smooth_triangle => NodeKind::SmoothTriangle,
             Rule::union => NodeKind::Union,
@@ -1228,6 +1237,10 @@ fn is_word(rule: Rule) -> bool {
         rule,
         word | keyword
             | kw_adc_bailout
+            | kw_blob
+            | kw_threshold
+            | kw_component
+            | kw_strength
             | kw_fog
             | kw_fog_type
             | kw_fog_alt

@@ -1,0 +1,399 @@
+//! `blob`: the surface where a sum of fields reaches the threshold (POV-Ray's Blob). Each
+//! component adds `S (1 − r²/R²)²` within its radius R of a point (a sphere, or an ellipsoid
+//! when the component is transformed) or of a segment (a cylinder with two half-sphere ends).
+//!
+//! Along a ray each field is a quartic in the distance wherever it acts; between the
+//! distances where components start or stop acting the sum is one quartic, solved there.
+
+use super::poly::roots_in;
+use super::{Crossings, Ray};
+use glam::{DMat3, DMat4, DVec3};
+use std::cell::RefCell;
+
+/// POV-Ray's shortest hit distance for blobs.
+const DEPTH_TOLERANCE: f64 = 0.01;
+/// POV-Ray's margin of the inside test.
+const INSIDE_TOLERANCE: f64 = 1e-6;
+
+/// Where a component's field acts, in the component's own space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Reach {
+    /// Within the radius of `centre`.
+    Sphere(DVec3),
+    /// Within the radius of the z axis, for 0 ≤ z ≤ length.
+    Cylinder(f64),
+    /// Within the radius of the origin, for z ≤ 0 (a cylinder's base end).
+    Base,
+    /// Within the radius of (0, 0, length), for z ≥ length (a cylinder's far end).
+    Apex(f64),
+}
+
+/// One field of the sum.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlobElement {
+    reach: Reach,
+    /// Squared radius.
+    r2: f64,
+    /// Strength.
+    strength: f64,
+    /// Blob space to the element's space (`None`: the same).
+    to_local: Option<DMat4>,
+    /// The element's normals back to blob space.
+    normal_to_blob: DMat3,
+}
+
+impl BlobElement {
+    /// A sphere component (`transform`: the component's own transformations).
+    pub fn sphere(centre: DVec3, radius: f64, strength: f64, transform: Option<DMat4>) -> BlobElement {
+        BlobElement::new(Reach::Sphere(centre), radius, strength, transform)
+    }
+
+    /// The three elements of a cylinder component from `a` to `b`: body and both ends.
+    pub fn cylinder(a: DVec3, b: DVec3, radius: f64, strength: f64, transform: Option<DMat4>) -> [BlobElement; 3] {
+        let axis = b - a;
+        let length = axis.length();
+        let w = axis / length;
+        let u = w.any_orthonormal_vector();
+        let v = w.cross(u);
+        let frame = DMat4::from_cols(u.extend(0.0), v.extend(0.0), w.extend(0.0), a.extend(1.0));
+        let m = Some(transform.unwrap_or(DMat4::IDENTITY) * frame);
+        [
+            BlobElement::new(Reach::Cylinder(length), radius, strength, m),
+            BlobElement::new(Reach::Base, radius, strength, m),
+            BlobElement::new(Reach::Apex(length), radius, strength, m),
+        ]
+    }
+
+    fn new(reach: Reach, radius: f64, strength: f64, transform: Option<DMat4>) -> BlobElement {
+        BlobElement {
+            reach,
+            r2: radius * radius,
+            strength,
+            to_local: transform.map(|m| m.inverse()),
+            normal_to_blob: transform.map_or(DMat3::IDENTITY, |m| DMat3::from_mat4(m).inverse().transpose()),
+        }
+    }
+
+    fn local(&self, p: DVec3) -> DVec3 {
+        self.to_local.map_or(p, |m| m.transform_point3(p))
+    }
+
+    /// The vector from the field's centre (point or axis) to local point `p`, if the field
+    /// acts there.
+    fn offset(&self, p: DVec3) -> Option<DVec3> {
+        let v = match self.reach {
+            Reach::Sphere(c) => p - c,
+            Reach::Cylinder(len) => {
+                if p.z < 0.0 || p.z > len {
+                    return None;
+                }
+                DVec3::new(p.x, p.y, 0.0)
+            }
+            Reach::Base => {
+                if p.z > 0.0 {
+                    return None;
+                }
+                p
+            }
+            Reach::Apex(len) => {
+                if p.z < len {
+                    return None;
+                }
+                p - DVec3::new(0.0, 0.0, len)
+            }
+        };
+        (v.length_squared() <= self.r2).then_some(v)
+    }
+
+    /// The field at blob-space point `p`.
+    fn density(&self, p: DVec3) -> f64 {
+        match self.offset(self.local(p)) {
+            Some(v) if v.length_squared() < self.r2 => {
+                let k = 1.0 - v.length_squared() / self.r2;
+                self.strength * k * k
+            }
+            _ => 0.0,
+        }
+    }
+
+    /// Along `o + t·d` (blob space): the interval of t where the field acts and the field
+    /// there as a quartic in t (lowest power first).
+    fn along(&self, o: DVec3, d: DVec3) -> Option<(f64, f64, [f64; 5])> {
+        let (a, b) = match self.to_local {
+            Some(m) => (m.transform_point3(o), m.transform_vector3(d)),
+            None => (o, d),
+        };
+        // r²(t) = q2 t² + q1 t + q0 and the interval where r² < R².
+        let (centre, flat) = match self.reach {
+            Reach::Sphere(c) => (c, false),
+            Reach::Cylinder(_) => (DVec3::ZERO, true),
+            Reach::Base => (DVec3::ZERO, false),
+            Reach::Apex(len) => (DVec3::new(0.0, 0.0, len), false),
+        };
+        let (mut v, mut w) = (a - centre, b);
+        if flat {
+            v.z = 0.0;
+            w.z = 0.0;
+        }
+        let (q2, q1, q0) = (w.dot(w), 2.0 * v.dot(w), v.dot(v));
+        if q2 <= 0.0 {
+            return None;
+        }
+        let disc = q1 * q1 - 4.0 * q2 * (q0 - self.r2);
+        if disc <= 0.0 {
+            return None;
+        }
+        let root = disc.sqrt();
+        let (mut lo, mut hi) = ((-q1 - root) / (2.0 * q2), (-q1 + root) / (2.0 * q2));
+        // The z range where this part of a cylinder acts.
+        let (zlo, zhi) = match self.reach {
+            Reach::Sphere(_) => (f64::NEG_INFINITY, f64::INFINITY),
+            Reach::Cylinder(len) => (0.0, len),
+            Reach::Base => (f64::NEG_INFINITY, 0.0),
+            Reach::Apex(len) => (len, f64::INFINITY),
+        };
+        if b.z != 0.0 {
+            let (t0, t1) = ((zlo - a.z) / b.z, (zhi - a.z) / b.z);
+            lo = lo.max(t0.min(t1));
+            hi = hi.min(t0.max(t1));
+        } else if a.z < zlo || a.z > zhi {
+            return None;
+        }
+        if lo >= hi {
+            return None;
+        }
+        let c0 = self.strength / (self.r2 * self.r2);
+        let c1 = -2.0 * self.strength / self.r2;
+        let c2 = self.strength;
+        Some((
+            lo,
+            hi,
+            [
+                c0 * q0 * q0 + c1 * q0 + c2,
+                c0 * 2.0 * q0 * q1 + c1 * q1,
+                c0 * (q1 * q1 + 2.0 * q0 * q2) + c1 * q2,
+                c0 * 2.0 * q1 * q2,
+                c0 * q2 * q2,
+            ],
+        ))
+    }
+
+    /// The element's box in blob space (its reach).
+    fn bounds(&self) -> (DVec3, DVec3) {
+        let r = self.r2.sqrt();
+        let (lo, hi) = match self.reach {
+            Reach::Sphere(c) => (c - r, c + r),
+            Reach::Cylinder(len) => (DVec3::new(-r, -r, 0.0), DVec3::new(r, r, len)),
+            Reach::Base => (DVec3::splat(-r), DVec3::new(r, r, 0.0)),
+            Reach::Apex(len) => (DVec3::new(-r, -r, len), DVec3::new(r, r, len + r)),
+        };
+        let Some(to_local) = self.to_local else { return (lo, hi) };
+        let m = to_local.inverse();
+        (0..8).fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), i| {
+            let corner = DVec3::new(
+                if i & 1 == 0 { lo.x } else { hi.x },
+                if i & 2 == 0 { lo.y } else { hi.y },
+                if i & 4 == 0 { lo.z } else { hi.z },
+            );
+            let p = m.transform_point3(corner);
+            (a.min(p), b.max(p))
+        })
+    }
+}
+
+/// A blob in object space.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blob {
+    threshold: f64,
+    elements: Box<[BlobElement]>,
+    bounds: (DVec3, DVec3),
+}
+
+thread_local! {
+    /// Per-thread room for a ray's events, so that no ray allocates.
+    static EVENTS: RefCell<Vec<(f64, u32)>> = const { RefCell::new(Vec::new()) };
+    static POLYS: RefCell<Vec<[f64; 5]>> = const { RefCell::new(Vec::new()) };
+}
+
+impl Blob {
+    /// A blob of `elements` whose surface is where their sum equals `threshold`.
+    pub fn new(threshold: f64, elements: Vec<BlobElement>) -> Blob {
+        // POV-Ray's box counts only the components that add to the field.
+        let bounds = elements
+            .iter()
+            .filter(|e| e.strength > 0.0)
+            .map(BlobElement::bounds)
+            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), (lo, hi)| (a.min(lo), b.max(hi)));
+        let bounds = if bounds.0.x > bounds.1.x { (DVec3::ZERO, DVec3::ZERO) } else { bounds };
+        Blob {
+            threshold,
+            elements: elements.into_boxed_slice(),
+            bounds,
+        }
+    }
+
+    fn field(&self, p: DVec3) -> f64 {
+        self.elements.iter().map(|e| e.density(p)).sum()
+    }
+
+    /// Calls `f` with the crossings in increasing distance until it returns false.
+    fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) {
+        EVENTS.with_borrow_mut(|events| {
+            POLYS.with_borrow_mut(|polys| {
+                events.clear();
+                polys.clear();
+                for e in self.elements.iter() {
+                    if let Some((lo, hi, poly)) = e.along(ray.origin, ray.direction) {
+                        if hi <= DEPTH_TOLERANCE.min(ray.tmin) || lo >= ray.tmax {
+                            continue;
+                        }
+                        let i = polys.len() as u32;
+                        polys.push(poly);
+                        // Entries as 2i, exits as 2i + 1: at equal distances exits go first.
+                        events.push((lo, 2 * i));
+                        events.push((hi, 2 * i + 1));
+                    }
+                }
+                if events.is_empty() {
+                    return;
+                }
+                events.sort_by(|a, b| a.0.total_cmp(&b.0).then((b.1 & 1).cmp(&(a.1 & 1))));
+                let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
+                let mut active = 0usize;
+                let lowest = ray.tmin.max(DEPTH_TOLERANCE);
+                for k in 0..events.len() {
+                    let (t, id) = events[k];
+                    let poly = &polys[(id / 2) as usize];
+                    let sign = if id & 1 == 0 { 1.0 } else { -1.0 };
+                    for (s, c) in sum.iter_mut().zip(poly) {
+                        *s += sign * c;
+                    }
+                    if id & 1 == 0 {
+                        active += 1;
+                    } else {
+                        active -= 1;
+                    }
+                    let Some(&(next, _)) = events.get(k + 1) else { break };
+                    if active == 0 || next - t < 1e-10 {
+                        continue;
+                    }
+                    let (lo, hi) = (t.max(lowest), next.min(ray.tmax));
+                    if lo > hi {
+                        continue;
+                    }
+                    let c = [sum[0], sum[1], sum[2], sum[3], sum[4], 0.0, 0.0];
+                    for &root in roots_in(&c, 4, lo, hi).as_slice() {
+                        if root > lowest && ray.contains(root) && !f(root) {
+                            return;
+                        }
+                    }
+                }
+            })
+        });
+    }
+}
+
+impl super::shape::Surface for Blob {
+    const NAME: &'static str = "Blob";
+
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        let mut out = Crossings::NONE;
+        self.crossings(ray, |t| {
+            out.push(t, 0);
+            false
+        });
+        out
+    }
+
+    /// −½ of the field's gradient: outward where the fields add.
+    fn normals(&self, p: DVec3, _: u32) -> (DVec3, DVec3) {
+        let mut g = DVec3::ZERO;
+        for e in self.elements.iter() {
+            if let Some(v) = e.offset(e.local(p)) {
+                let k = 2.0 * e.strength / e.r2 * (1.0 - v.length_squared() / e.r2);
+                g += e.normal_to_blob * (k * v);
+            }
+        }
+        let n = if g == DVec3::ZERO { DVec3::X } else { g };
+        (n, n)
+    }
+
+    fn contains(&self, p: DVec3) -> bool {
+        self.field(p) > self.threshold - INSIDE_TOLERANCE
+    }
+
+    fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        Some(self.bounds)
+    }
+
+    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+        self.crossings(ray, |t| {
+            f(t, 0);
+            true
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::shape::Surface;
+    use super::*;
+
+    /// One sphere component of radius 1 and strength 1 with threshold 0.25: the surface is
+    /// where (1 − r²)² = 0.25, r = √0.5.
+    #[test]
+    fn single_sphere() {
+        let b = Blob::new(0.25, vec![BlobElement::sphere(DVec3::ZERO, 1.0, 1.0, None)]);
+        let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
+        let r = 0.5f64.sqrt();
+        assert!((c.first().unwrap() - (5.0 - r)).abs() < 1e-9, "{:?}", c.as_slice());
+        let mut all = Vec::new();
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        assert_eq!(all.len(), 2);
+        assert!(b.contains(DVec3::new(0.5, 0.0, 0.0)));
+        assert!(!b.contains(DVec3::new(0.8, 0.0, 0.0)));
+        let (n, _) = b.normals(DVec3::new(-r, 0.0, 0.0), 0);
+        assert!(n.normalize().dot(DVec3::NEG_X) > 0.9999);
+        assert!(b.intersect(&Ray::new(DVec3::new(-5.0, 0.9, 0.0), DVec3::X)).is_empty());
+    }
+
+    /// Two spheres that merge: a ray along their axis crosses the joined surface twice.
+    #[test]
+    fn merging_spheres_and_a_negative_one() {
+        let two = vec![
+            BlobElement::sphere(DVec3::new(-0.5, 0.0, 0.0), 1.0, 1.0, None),
+            BlobElement::sphere(DVec3::new(0.5, 0.0, 0.0), 1.0, 1.0, None),
+        ];
+        let b = Blob::new(0.5, two.clone());
+        let mut all = Vec::new();
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        assert_eq!(all.len(), 2, "{all:?}");
+        assert!(b.contains(DVec3::ZERO));
+        // A negative component at the middle cuts them apart.
+        let mut cut = two;
+        cut.push(BlobElement::sphere(DVec3::ZERO, 0.6, -2.0, None));
+        let b = Blob::new(0.5, cut);
+        let mut all = Vec::new();
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        assert_eq!(all.len(), 4, "{all:?}");
+        assert!(!b.contains(DVec3::ZERO));
+    }
+
+    /// A cylinder component: the surface is a capsule around its segment.
+    #[test]
+    fn cylinder_component() {
+        let parts = BlobElement::cylinder(DVec3::ZERO, DVec3::new(0.0, 2.0, 0.0), 1.0, 1.0, None);
+        let b = Blob::new(0.25, parts.into_iter().collect());
+        let r = 0.5f64.sqrt();
+        let c = b.intersect(&Ray::new(DVec3::new(-5.0, 1.0, 0.0), DVec3::X));
+        assert!((c.first().unwrap() - (5.0 - r)).abs() < 1e-9);
+        // Down the axis: the far end's half sphere.
+        let c = b.intersect(&Ray::new(DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y));
+        assert!((c.first().unwrap() - (3.0 - r)).abs() < 1e-9, "{:?}", c.as_slice());
+        // A transformed (stretched) sphere component is an ellipsoid.
+        let m = DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0));
+        let b = Blob::new(0.25, vec![BlobElement::sphere(DVec3::ZERO, 1.0, 1.0, Some(m))]);
+        let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
+        assert!((c.first().unwrap() - (5.0 - 2.0 * r)).abs() < 1e-9);
+    }
+}
