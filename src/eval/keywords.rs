@@ -636,6 +636,7 @@ const SUPPORTED: &[&str] = &[
     "granite",
     "gray",
     "green",
+    "height_field",
     "hexagon",
     "hollow",
     "if",
@@ -756,6 +757,7 @@ const SUPPORTED: &[&str] = &[
     "sky",
     "sky_sphere",
     "slope_map",
+    "smooth",
     "smooth_triangle",
     "solid",
     "sor",
@@ -825,6 +827,7 @@ const SUPPORTED: &[&str] = &[
     "vstr",
     "warning",
     "warp",
+    "water_level",
     "waves",
     "while",
     "wood",
@@ -883,7 +886,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "height_field" | "isosurface" | "julia_fractal"
+        "isosurface" | "julia_fractal"
         | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
@@ -927,9 +930,9 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "all_intersections" | "b_spline"
         | "contained_by" | "evaluate" | "flatness"
         | "hypercomplex" | "max_gradient" | "max_trace"
-        | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "smooth" | "sqr"
+        | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "sqr"
         | "tolerance" | "u_steps" | "v_steps"
-        | "water_level" => {
+        => {
             "this shape or shape item is not supported by trace yet"
         }
         "altitude" | "cube"

@@ -7,6 +7,7 @@
 mod array;
 mod expr;
 mod flow;
+mod heightfield;
 pub mod keywords;
 mod material;
 mod object;

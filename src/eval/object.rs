@@ -279,17 +279,21 @@ impl Evaluator<'_> {
             }
             NodeKind::Shape => {
                 let shape = self.shape_table(node)?;
-                let text = matches!(shape, Shape::Text(_));
-                let mut object = ObjectValue::single(shape);
-                if text {
+                let first = match &shape {
                     // POV-Ray turns every text by 0.001° about each axis before the scene's
                     // own transformations ("to fix cracks"); the faces' slight tilt shows.
-                    object.transform(
-                        Transform {
-                            matrix: super::transform::rotation(DVec3::splat(0.001)),
-                        },
-                        false,
-                    );
+                    Shape::Text(_) => Some(super::transform::rotation(DVec3::splat(0.001))),
+                    // A height field's grid (points, 16-bit heights) scaled to the unit box.
+                    Shape::HeightField(h) => Some(glam::DMat4::from_scale(DVec3::new(
+                        1.0 / f64::from(h.width - 1),
+                        1.0 / 65536.0,
+                        1.0 / f64::from(h.depth - 1),
+                    ))),
+                    _ => None,
+                };
+                let mut object = ObjectValue::single(shape);
+                if let Some(matrix) = first {
+                    object.transform(Transform { matrix }, false);
                 }
                 object
             }

@@ -23,6 +23,11 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
             "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "sturm"
         ),
         "sor" => matches!(word, "open" | "sturm"),
+        "height_field" => matches!(
+            word,
+            "water_level" | "hierarchy" | "smooth" | "png" | "pgm" | "ppm" | "gif" | "tga" | "pot" | "jpeg"
+                | "tiff" | "sys" | "exr" | "hdr" | "bmp" | "iff"
+        ),
         _ => false,
     }
 }
@@ -167,6 +172,7 @@ impl Evaluator<'_> {
             "text" => self.text(node)?,
             "prism" => self.prism(node)?,
             "lathe" => self.lathe(node)?,
+            "height_field" => self.height_field(node)?,
             "sor" => self.sor(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;
@@ -471,6 +477,79 @@ impl Evaluator<'_> {
             segments,
             closed: !open,
             sturm,
+        })))
+    }
+
+    /// `height_field { [png] "file" [smooth] [water_level W] [hierarchy on|off] }`.
+    fn height_field(&mut self, node: &Node) -> Result<Shape> {
+        if let Some(f) = node.children.iter().find(|c| c.word == "function") {
+            return Err(Diagnostic::error(
+                "unsupported: a height_field made by a function (trace has no user functions yet)",
+                f.word_span,
+            ));
+        }
+        let items = items(node);
+        let mut i = 0;
+        let mut kind = None;
+        if let Some(Item::Word(w)) = items.first() {
+            if !matches!(w.word.as_str(), "smooth" | "water_level" | "hierarchy") {
+                kind = Some(*w);
+                i = 1;
+            }
+        }
+        let Some(Item::Value(file)) = items.get(i) else {
+            return Err(Diagnostic::error(
+                "`height_field` starts with its image: height_field { png \"file.png\" … }",
+                node.word_span,
+            ));
+        };
+        i += 1;
+        let name = self.string(file)?;
+        let png = match kind {
+            Some(w) => w.word == "png",
+            None => name.to_ascii_lowercase().ends_with(".png"),
+        };
+        if !png {
+            let at = kind.map_or(file.span, |w| w.span);
+            return Err(Diagnostic::error(
+                "unsupported: only png height fields are read by trace yet",
+                at,
+            ));
+        }
+        let (mut smooth, mut water_level) = (false, 0.0);
+        while let Some(item) = items.get(i) {
+            i += 1;
+            match item {
+                Item::Word(w) if w.word == "smooth" => smooth = true,
+                Item::Word(w) if w.word == "water_level" => match items.get(i) {
+                    Some(Item::Value(e)) => {
+                        water_level = self.float(e)?;
+                        i += 1;
+                    }
+                    _ => return Err(Diagnostic::error("`water_level` needs a value", w.span)),
+                },
+                // `hierarchy` is how POV-Ray speeds the search up: nothing to draw.
+                Item::Word(w) if w.word == "hierarchy" => {
+                    if let Some(Item::Value(e)) = items.get(i) {
+                        self.float(e)?;
+                        i += 1;
+                    }
+                }
+                Item::Word(w) => return Err(Diagnostic::error(format!("unexpected `{}` here", w.word), w.span)),
+                Item::Value(e) => {
+                    return Err(Diagnostic::error("unexpected value in this height_field", e.span));
+                }
+            }
+        }
+        let path = self.find_file(&name, "image", file.span)?;
+        let (width, depth, heights) = super::heightfield::read_png(&path)
+            .map_err(|e| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span))?;
+        Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
+            width,
+            depth,
+            heights: Arc::new(heights),
+            smooth,
+            water_level: 65536.0 * water_level,
         })))
     }
 

@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -208,6 +208,8 @@ shapes! {
     Sor(Box<Sor>),
     /// `blob` (boxed: its components are a list).
     Blob(Box<Blob>),
+    /// `height_field` (boxed: its grid is shared and its smooth normals a list).
+    HeightField(Box<HeightField>),
     /// `superellipsoid`.
     Superellipsoid(Superellipsoid),
 }

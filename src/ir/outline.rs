@@ -347,6 +347,45 @@ pub struct Blob {
     pub components: Vec<BlobComponent>,
 }
 
+/// `height_field { png "file" [smooth] [water_level W] }`: heights on a grid, in POV-Ray's
+/// raw units (the object's transformation takes the grid to the unit box).
+#[derive(Clone, PartialEq)]
+pub struct HeightField {
+    /// Grid points across (x).
+    pub width: u32,
+    /// Grid points deep (z).
+    pub depth: u32,
+    /// The 16-bit heights, row z = 0 (the image's bottom row) first.
+    pub heights: std::sync::Arc<Vec<u16>>,
+    /// Normals blended between grid points.
+    pub smooth: bool,
+    /// The water level in raw units (0 to 65536): nothing below it is drawn.
+    pub water_level: f64,
+}
+
+/// The grid in short: its size, range and a checksum of the heights (FNV-1a), so that IR
+/// snapshots show a change of any height without listing them all.
+impl std::fmt::Debug for HeightField {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (lo, hi) = self
+            .heights
+            .iter()
+            .fold((u16::MAX, 0), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+        let sum = self.heights.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &v| {
+            (h ^ u64::from(v)).wrapping_mul(0x0100_0000_01b3)
+        });
+        f.debug_struct("HeightField")
+            .field("width", &self.width)
+            .field("depth", &self.depth)
+            .field("lowest", &lo)
+            .field("highest", &hi)
+            .field("checksum", &format_args!("{sum:016x}"))
+            .field("smooth", &self.smooth)
+            .field("water_level", &self.water_level)
+            .finish()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,7 +4,7 @@
 use super::query::fades;
 use super::*;
 use crate::geometry::{
-    Blob, BlobElement, Cone, Cuboid, Disc, Edge, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
+    Blob, BlobElement, Cone, Cuboid, Disc, Edge, HeightField, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
     Torus,
 };
 use rayon::prelude::*;
@@ -469,6 +469,17 @@ fn build_shape(
                 }
             }
             (Shape::Blob(Box::new(Blob::new(b.threshold, elements))), transform)
+        }
+        ir::Shape::HeightField(h) => {
+            let smooth = h.smooth.then(|| transform.unwrap_or(DMat4::IDENTITY));
+            let hf = HeightField::new(
+                h.width as usize,
+                h.depth as usize,
+                Arc::clone(&h.heights),
+                h.water_level,
+                smooth,
+            );
+            (Shape::HeightField(Box::new(hf)), transform)
         }
         ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
         ir::Shape::Mesh(mesh) => {
