@@ -116,8 +116,8 @@ impl BlobElement {
         }
     }
 
-    /// Along `o + t·d` (blob space): the interval of t where the field acts and the field
-    /// there as a quartic in t (lowest power first).
+    /// Along `o + s·d` (blob space): the interval of s where the field acts and the field
+    /// there as a quartic in s (lowest power first).
     fn along(&self, o: DVec3, d: DVec3) -> Option<(f64, f64, [f64; 5])> {
         let (a, b) = match self.to_local {
             Some(m) => (m.transform_point3(o), m.transform_vector3(d)),
@@ -242,9 +242,18 @@ impl Blob {
             POLYS.with_borrow_mut(|polys| {
                 events.clear();
                 polys.clear();
+                // The polynomials are formed about the point of the ray nearest the blob's
+                // centre (distances s = t − shift), so that a far ray origin costs no
+                // precision.
+                let d = ray.direction;
+                let centre = 0.5 * (self.bounds.0 + self.bounds.1);
+                let shift = (centre - ray.origin).dot(d) / d.length_squared();
+                let origin = ray.origin + shift * d;
+                let lowest = ray.tmin.max(DEPTH_TOLERANCE);
                 for e in self.elements.iter() {
-                    if let Some((lo, hi, poly)) = e.along(ray.origin, ray.direction) {
-                        if hi <= DEPTH_TOLERANCE.min(ray.tmin) || lo >= ray.tmax {
+                    if let Some((lo, hi, poly)) = e.along(origin, d) {
+                        let (lo, hi) = (lo + shift, hi + shift);
+                        if hi <= lowest || lo >= ray.tmax {
                             continue;
                         }
                         let i = polys.len() as u32;
@@ -260,7 +269,6 @@ impl Blob {
                 events.sort_by(|a, b| a.0.total_cmp(&b.0).then((b.1 & 1).cmp(&(a.1 & 1))));
                 let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
                 let mut active = 0usize;
-                let lowest = ray.tmin.max(DEPTH_TOLERANCE);
                 for k in 0..events.len() {
                     let (t, id) = events[k];
                     let poly = &polys[(id / 2) as usize];
@@ -282,8 +290,9 @@ impl Blob {
                         continue;
                     }
                     let c = [sum[0], sum[1], sum[2], sum[3], sum[4], 0.0, 0.0];
-                    for &root in roots_in(&c, 4, lo, hi).as_slice() {
-                        if root > lowest && ray.contains(root) && !f(root) {
+                    for &root in roots_in(&c, 4, lo - shift, hi - shift).as_slice() {
+                        let t = root + shift;
+                        if t > lowest && ray.contains(t) && !f(t) {
                             return;
                         }
                     }

@@ -47,8 +47,14 @@ impl Lathe {
             return;
         }
         let len = ray.direction.length();
-        let (p, d) = (ray.origin, ray.direction / len);
+        let d = ray.direction / len;
+        // Distances k are measured from the ray's point nearest the profile's middle on the
+        // axis (a far origin costs no precision); `shift` takes them back to the origin.
+        let middle = DVec3::new(0.0, 0.5 * (self.lo.y + self.hi.y), 0.0);
+        let shift = (middle - ray.origin).dot(d);
+        let p = ray.origin + shift * d;
         let mut hit = |k: f64, part: u32| {
+            let k = k + shift;
             let t = k / len;
             if k > 1e-4 * len && ray.contains(t) {
                 f(t, part);

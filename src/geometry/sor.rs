@@ -90,14 +90,20 @@ impl Sor {
             return;
         }
         let len = ray.direction.length();
-        let (p, d) = (ray.origin, ray.direction / len);
+        let d = ray.direction / len;
+        // Distances k are measured from the ray's point nearest the axis's middle (a far
+        // origin costs no precision); `shift` takes them back to the ray's origin.
+        let (h1, h2) = self.heights();
+        let middle = DVec3::new(0.0, 0.5 * (h1 + h2), 0.0);
+        let shift = (middle - ray.origin).dot(d);
+        let p = ray.origin + shift * d;
         let mut hit = |k: f64, part: u32| {
+            let k = k + shift;
             let t = k / len;
             if k > 1e-4 * len && ray.contains(t) {
                 f(t, part);
             }
         };
-        let (h1, h2) = self.heights();
         if self.closed && d.y.abs() > EPSILON {
             // Discs only when their radius exceeds 0.01 (POV-Ray's test on the square).
             for (h, r2, part) in [(h1, self.base2, BASE), (h2, self.cap2, CAP)] {
@@ -115,7 +121,7 @@ impl Sor {
         let rho2 = p.x * p.x + p.z * p.z;
         for (j, s) in self.pieces.iter().enumerate() {
             // The distances where the ray is inside the piece's cylinder and height range.
-            let Some((lo, hi)) = span(p, d, s.radius, s.y1, s.y2) else { continue };
+            let Some((lo, hi)) = span(p, d, s.radius, s.y1, s.y2, -shift) else { continue };
             let [ca, cb, cc, _] = s.c;
             let (py, dy) = (p.y, d.y);
             // x² + z² = f(y) along the ray, as a cubic in the distance k.
@@ -139,8 +145,8 @@ impl Sor {
 }
 
 /// The distances along the ray (unit direction) within the box of radius `r` about the axis
-/// between heights `y1` and `y2`, widened a little.
-fn span(p: DVec3, d: DVec3, r: f64, y1: f64, y2: f64) -> Option<(f64, f64)> {
+/// between heights `y1` and `y2`, widened a little, from `start` on.
+fn span(p: DVec3, d: DVec3, r: f64, y1: f64, y2: f64, start: f64) -> Option<(f64, f64)> {
     let pad = 1e-9 * (r + y2.abs() + y1.abs() + 1.0);
     let (lo, hi) = (DVec3::new(-r, y1, -r) - pad, DVec3::new(r, y2, r) + pad);
     let (mut enter, mut exit) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -155,7 +161,7 @@ fn span(p: DVec3, d: DVec3, r: f64, y1: f64, y2: f64) -> Option<(f64, f64)> {
         enter = enter.max(a.min(b));
         exit = exit.min(a.max(b));
     }
-    (enter <= exit && exit > 0.0).then_some((enter.max(0.0), exit))
+    (enter <= exit && exit > start).then_some((enter.max(start), exit))
 }
 
 impl super::shape::Surface for Sor {

@@ -495,6 +495,107 @@ fn textbook_torus_hit(torus: &trace::geometry::Torus, ray: &Ray) -> Option<f64> 
 }
 
 // ---------------------------------------------------------------------------------------------
+// S11: the shapes of issue 16 far away.
+
+/// The shapes S11 measures, each fitting in a ball of radius 1.5 about the origin: a cubic
+/// prism, a quadratic lathe, a sor, a blob of two spheres and a cylinder, and a nearly boxy
+/// superellipsoid.
+pub fn s11_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
+    use trace::geometry::{
+        Blob, BlobElement, CurveSegment, Lathe, Prism, Shape, Sor, SorPiece, Superellipsoid,
+    };
+    let ring: Vec<(f64, f64)> = (0..7)
+        .map(|i| {
+            let a = (i % 4) as f64 * std::f64::consts::FRAC_PI_2;
+            (a.cos(), a.sin())
+        })
+        .collect();
+    let prism = (0..4)
+        .map(|i| {
+            let c = |f: fn((f64, f64)) -> f64| {
+                let (p0, p1, p2, p3) = (f(ring[i]), f(ring[i + 1]), f(ring[i + 2]), f(ring[i + 3]));
+                [
+                    -0.5 * p0 + 1.5 * p1 - 1.5 * p2 + 0.5 * p3,
+                    p0 - 2.5 * p1 + 2.0 * p2 - 0.5 * p3,
+                    0.5 * (p2 - p0),
+                    p1,
+                ]
+            };
+            CurveSegment::new(c(|p| p.0), c(|p| p.1))
+        })
+        .collect();
+    let lathe = vec![
+        CurveSegment::new([0.0, -1.0, 1.5, 0.2], [0.0, 0.0, 1.0, -0.5]),
+        CurveSegment::new([0.0, 0.8, -1.2, 0.7], [0.0, 0.0, 1.0, 0.5]),
+    ];
+    let sor = vec![
+        SorPiece::new([0.0, 0.0, -0.3, 0.8], -0.6, 0.0),
+        SorPiece::new([0.2, 0.3, -0.3, 0.8], 0.0, 0.6),
+    ];
+    let mut blob = vec![
+        BlobElement::sphere(DVec3::new(-0.4, 0.0, 0.0), 0.8, 1.0, None),
+        BlobElement::sphere(DVec3::new(0.4, 0.1, 0.0), 0.7, 1.0, None),
+    ];
+    blob.extend(BlobElement::cylinder(
+        DVec3::new(0.0, -0.5, 0.0),
+        DVec3::new(0.0, 0.6, 0.3),
+        0.4,
+        1.0,
+        None,
+    ));
+    vec![
+        (
+            "prism (cubic)",
+            Shape::Prism(Box::new(Prism::new(false, 3, (-0.5, 0.5), true, prism))),
+        ),
+        (
+            "lathe (quadratic)",
+            Shape::Lathe(Box::new(Lathe::new(2, lathe))),
+        ),
+        ("sor", Shape::Sor(Box::new(Sor::new(sor, true)))),
+        ("blob", Shape::Blob(Box::new(Blob::new(0.5, blob)))),
+        (
+            "superellipsoid <0.2, 0.2>",
+            Shape::Superellipsoid(Superellipsoid::new(0.2, 0.2)),
+        ),
+    ]
+}
+
+/// S11: as S6 for `shape` (within a ball of radius 1.5): the line's hit from 4.5 away is the
+/// reference; from `distance` away the same line must give the same hit or miss and the same
+/// point within 1e-6 (lines within 1e-3 of tangency are skipped).
+pub fn far_shape(shape: &trace::geometry::Shape, distance: f64, rays: u64) -> Count {
+    let bound = 1.5;
+    let mut rng = Rng::new(0x5EED_0011);
+    let mut count = Count::default();
+    let mut attempts = 0;
+    while count.rays < rays && attempts < 20 * rays {
+        attempts += 1;
+        let q = rng.unit() * (bound * rng.uniform().cbrt());
+        let u = rng.unit();
+        let near = Ray::new(q - 3.0 * bound * u, u);
+        let far = Ray::new(q - distance * u, u);
+        let reference = shape.intersect(&near).first_part();
+        if let Some((t, part)) = reference {
+            let p = near.at(t);
+            let n = shape.normals(p, part).1.normalize();
+            if !(n.dot(u).abs() >= 1e-3) {
+                continue;
+            }
+        }
+        let answer = shape.intersect(&far).first();
+        count.rays += 1;
+        let right = match (reference, answer) {
+            (None, None) => true,
+            (Some((a, _)), Some(b)) => (near.at(a) - far.at(b)).length() <= 1e-6,
+            _ => false,
+        };
+        count.failures += u64::from(!right);
+    }
+    count
+}
+
+// ---------------------------------------------------------------------------------------------
 // S7: the same scene at every scale and place.
 
 /// The S7 scene at scale `k`, moved by `shift` along (1, 1, 1): spheres, a box, a torus, a

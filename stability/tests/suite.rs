@@ -137,3 +137,15 @@ fn glass_has_no_nan_and_stacks_go_black_exactly_where_povray_does() {
     assert!(cut > 0);
     assert_eq!(pane_stack(8, Some(20), 40, 30).0.failures, 0);
 }
+
+/// S11: the spline, blob and superellipsoid shapes give the same hits from 4500 away as from
+/// nearby (their equations are formed about the ray's point nearest the shape; formed at the
+/// ray's origin, the blob lost a quarter of its lines already from 450 away).
+#[test]
+fn s11_new_shapes_far_away() {
+    for (label, shape) in trace_stability::s11_shapes() {
+        let c = trace_stability::far_shape(&shape, 4.5e3, 2000);
+        assert_eq!(c.failures, 0, "{label}: {c:?}");
+        assert!(c.rays >= 2000, "{label}: {c:?}");
+    }
+}
