@@ -539,6 +539,7 @@ const SUPPORTED: &[&str] = &[
     "average",
     "background",
     "bezier_spline",
+    "bicubic_patch",
     "bitwise_and",
     "bitwise_or",
     "bitwise_xor",
@@ -621,6 +622,7 @@ const SUPPORTED: &[&str] = &[
     "filter",
     "finish",
     "fisheye",
+    "flatness",
     "flip",
     "floor",
     "fog",
@@ -805,7 +807,9 @@ const SUPPORTED: &[&str] = &[
     "ttf",
     "turb_depth",
     "turbulence",
+    "type",
     "u",
+    "u_steps",
     "ultra_wide_angle",
     "undef",
     "union",
@@ -815,6 +819,7 @@ const SUPPORTED: &[&str] = &[
     "use_colour",
     "use_index",
     "v",
+    "v_steps",
     "val",
     "vaxis_rotate",
     "vcross",
@@ -887,7 +892,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "isosurface" | "julia_fractal"
-        | "bicubic_patch"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
@@ -928,10 +932,10 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
         "all_intersections" | "b_spline"
-        | "contained_by" | "evaluate" | "flatness"
+        | "contained_by" | "evaluate"
         | "hypercomplex" | "max_gradient" | "max_trace"
         | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "sqr"
-        | "tolerance" | "u_steps" | "v_steps"
+        | "tolerance"
         => {
             "this shape or shape item is not supported by trace yet"
         }
@@ -960,7 +964,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "area_illumination" | "global_lights" => {
             "this light_source item is not supported by trace yet"
         }
-        "bokeh" | "type" => "this camera item is not supported by trace yet",
+        "bokeh" => "this camera item is not supported by trace yet",
         "ascii" | "utf8" => "this global setting is outside trace's subset",
         "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" | "now" => {
             "not supported by trace yet"

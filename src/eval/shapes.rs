@@ -23,6 +23,7 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
             "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "sturm"
         ),
         "sor" => matches!(word, "open" | "sturm"),
+        "bicubic_patch" => matches!(word, "type" | "flatness" | "u_steps" | "v_steps" | "accuracy" | "uv_vectors"),
         "height_field" => matches!(
             word,
             "water_level" | "hierarchy" | "smooth" | "png" | "pgm" | "ppm" | "gif" | "tga" | "pot" | "jpeg"
@@ -173,6 +174,7 @@ impl Evaluator<'_> {
             "prism" => self.prism(node)?,
             "lathe" => self.lathe(node)?,
             "height_field" => self.height_field(node)?,
+            "bicubic_patch" => self.bicubic_patch(node)?,
             "sor" => self.sor(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;
@@ -550,6 +552,59 @@ impl Evaluator<'_> {
             heights: Arc::new(heights),
             smooth,
             water_level: 65536.0 * water_level,
+        })))
+    }
+
+    /// `bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] P00, P01, … P33 }`.
+    fn bicubic_patch(&mut self, node: &Node) -> Result<Shape> {
+        let (mut kind, mut flatness, mut steps) = (None, 0.0, [0u32, 0]);
+        let mut points = Vec::new();
+        let items = items(node);
+        let mut i = 0;
+        while let Some(item) = items.get(i) {
+            i += 1;
+            match item {
+                Item::Value(e) => points.push(self.vec3(e)?),
+                Item::Word(w) => {
+                    if w.word == "uv_vectors" {
+                        return Err(Diagnostic::error(
+                            "unsupported: `uv_vectors` (UV mapping is not supported by trace yet)",
+                            w.span,
+                        ));
+                    }
+                    let Some(Item::Value(e)) = items.get(i) else {
+                        return Err(Diagnostic::error(format!("`{}` needs a value", w.word), w.span));
+                    };
+                    i += 1;
+                    let v = self.float(e)?;
+                    match w.word.as_str() {
+                        "type" => kind = Some((v as i64, e.span)),
+                        "flatness" => flatness = v,
+                        "u_steps" => steps[0] = v.max(0.0) as u32,
+                        "v_steps" => steps[1] = v.max(0.0) as u32,
+                        _ => {} // `accuracy`: read and unused, as in POV-Ray.
+                    }
+                }
+            }
+        }
+        match kind {
+            None => return Err(Diagnostic::error("a bicubic_patch needs its `type` (0 or 1)", node.word_span)),
+            Some((t, span)) if t > 1 => {
+                self.warn(Diagnostic::warning("bicubic_patch type above 1: type 1 is used (as POV-Ray does)", span));
+            }
+            _ => {}
+        }
+        if points.len() != 16 {
+            return Err(Diagnostic::error(
+                format!("a bicubic_patch takes 16 control points, this one has {}", points.len()),
+                node.word_span,
+            ));
+        }
+        Ok(Shape::BicubicPatch(Box::new(crate::ir::BicubicPatch {
+            points: std::array::from_fn(|i| std::array::from_fn(|j| points[4 * i + j])),
+            u_steps: steps[0],
+            v_steps: steps[1],
+            flatness,
         })))
     }
 

@@ -6,6 +6,7 @@
 //! Each shape has two phases: `intersect` computes only the distances; `normal` runs once, for
 //! the winning hit.
 
+pub mod bezier;
 mod blob;
 mod cone;
 pub mod counters;

@@ -363,6 +363,20 @@ pub struct HeightField {
     pub water_level: f64,
 }
 
+/// `bicubic_patch { type T flatness F u_steps U v_steps V P00 … P33 }`: POV-Ray draws the
+/// triangles of its subdivision, made after the object's transformation (scene building).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BicubicPatch {
+    /// The 16 control points, u index first.
+    pub points: [[DVec3; 4]; 4],
+    /// Halvings in u.
+    pub u_steps: u32,
+    /// Halvings in v.
+    pub v_steps: u32,
+    /// A piece whose control points lie this close to a plane is not halved further.
+    pub flatness: f64,
+}
+
 /// The grid in short: its size, range and a checksum of the heights (FNV-1a), so that IR
 /// snapshots show a change of any height without listing them all.
 impl std::fmt::Debug for HeightField {

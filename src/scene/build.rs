@@ -481,6 +481,14 @@ fn build_shape(
             );
             (Shape::HeightField(Box::new(hf)), transform)
         }
+        ir::Shape::BicubicPatch(b) => {
+            // Subdivided in the world, as POV-Ray subdivides it (its flatness is a world
+            // distance, and its corner normals are world normals).
+            let m = transform.unwrap_or(DMat4::IDENTITY);
+            let points = b.points.map(|row| row.map(|p| m.transform_point3(p)));
+            let mesh = crate::geometry::bezier::patch_mesh(&points, b.u_steps, b.v_steps, b.flatness);
+            (Shape::Mesh(Arc::new(mesh)), None)
+        }
         ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];

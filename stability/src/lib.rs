@@ -579,7 +579,8 @@ pub fn far_shape(shape: &trace::geometry::Shape, distance: f64, rays: u64) -> Co
         if let Some((t, part)) = reference {
             let p = near.at(t);
             let n = shape.normals(p, part).1.normalize();
-            if !(n.dot(u).abs() >= 1e-3) {
+            let c = n.dot(u).abs();
+            if c.is_nan() || c < 1e-3 {
                 continue;
             }
         }
