@@ -582,6 +582,7 @@ const SUPPORTED: &[&str] = &[
     "cosh",
     "crackle",
     "crand",
+    "cube",
     "cubic",
     "cubic_spline",
     "cubic_wave",
@@ -641,6 +642,7 @@ const SUPPORTED: &[&str] = &[
     "height_field",
     "hexagon",
     "hollow",
+    "hypercomplex",
     "if",
     "ifdef",
     "ifndef",
@@ -658,6 +660,7 @@ const SUPPORTED: &[&str] = &[
     "irid",
     "irid_wavelength",
     "jitter",
+    "julia_fractal",
     "lambda",
     "lathe",
     "leopard",
@@ -676,6 +679,7 @@ const SUPPORTED: &[&str] = &[
     "material",
     "matrix",
     "max",
+    "max_iteration",
     "max_trace_level",
     "mesh",
     "mesh2",
@@ -723,10 +727,12 @@ const SUPPORTED: &[&str] = &[
     "poly_wave",
     "polygon",
     "pow",
+    "precision",
     "prism",
     "quadratic_spline",
     "quadric",
     "quartic",
+    "quaternion",
     "quick_color",
     "quick_colour",
     "quilted",
@@ -758,6 +764,7 @@ const SUPPORTED: &[&str] = &[
     "size",
     "sky",
     "sky_sphere",
+    "slice",
     "slope_map",
     "smooth",
     "smooth_triangle",
@@ -770,6 +777,7 @@ const SUPPORTED: &[&str] = &[
     "spiral2",
     "spotlight",
     "spotted",
+    "sqr",
     "sqrt",
     "square",
     "srgb",
@@ -891,7 +899,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "isosurface" | "julia_fractal"
+        "isosurface"
         | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
@@ -932,15 +940,12 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
         "all_intersections" | "b_spline"
-        | "contained_by" | "evaluate"
-        | "hypercomplex" | "max_gradient" | "max_trace"
-        | "precision" | "pwr" | "quaternion" | "reciprocal" | "slice" | "sqr"
+        | "contained_by" | "evaluate" | "max_gradient" | "max_trace" | "pwr" | "reciprocal"
         | "tolerance"
         => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude" | "cube"
-        | "max_iteration" | "number_of_sides" | "number_of_tiles"
+        "altitude" | "number_of_sides" | "number_of_tiles"
         | "pigment_pattern" | "ratio"
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"

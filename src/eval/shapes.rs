@@ -24,6 +24,10 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
         ),
         "sor" => matches!(word, "open" | "sturm"),
         "bicubic_patch" => matches!(word, "type" | "flatness" | "u_steps" | "v_steps" | "accuracy" | "uv_vectors"),
+        "julia_fractal" => matches!(
+            word,
+            "quaternion" | "hypercomplex" | "sqr" | "cube" | "max_iteration" | "precision" | "slice"
+        ),
         "height_field" => matches!(
             word,
             "water_level" | "hierarchy" | "smooth" | "png" | "pgm" | "ppm" | "gif" | "tga" | "pot" | "jpeg"
@@ -175,6 +179,7 @@ impl Evaluator<'_> {
             "lathe" => self.lathe(node)?,
             "height_field" => self.height_field(node)?,
             "bicubic_patch" => self.bicubic_patch(node)?,
+            "julia_fractal" => self.julia_fractal(node)?,
             "sor" => self.sor(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;
@@ -606,6 +611,91 @@ impl Evaluator<'_> {
             v_steps: steps[1],
             flatness,
         })))
+    }
+
+    /// `julia_fractal { <c> [quaternion|hypercomplex] [sqr|cube] [max_iteration N]
+    /// [precision P] [slice <s>, d] }`.
+    fn julia_fractal(&mut self, node: &Node) -> Result<Shape> {
+        let items = items(node);
+        let vec4 = |ev: &mut Self, e: &Expr| -> Result<glam::DVec4> {
+            match ev.eval(e)? {
+                Value::Vector(v) if v.len == 4 => Ok(glam::DVec4::new(v.c[0], v.c[1], v.c[2], v.c[3])),
+                other => Err(type_error("a 4-D vector", &other, e.span)),
+            }
+        };
+        let Some(Item::Value(first)) = items.first() else {
+            return Err(Diagnostic::error("`julia_fractal` starts with its 4-D parameter <a, b, c, d>", node.word_span));
+        };
+        let mut j = crate::ir::JuliaFractal {
+            c: vec4(self, first)?,
+            hypercomplex: false,
+            cube: false,
+            iterations: 20,
+            precision: 20.0,
+            slice: (glam::DVec4::W, 0.0),
+        };
+        let mut i = 1;
+        while let Some(item) = items.get(i) {
+            i += 1;
+            let Item::Word(w) = item else {
+                let Item::Value(e) = item else { unreachable!() };
+                let text = match &e.kind {
+                    crate::syntax::ExprKind::Ident(name) => name.as_str(),
+                    _ => "",
+                };
+                if matches!(
+                    text,
+                    "exp" | "ln" | "sin" | "asin" | "cos" | "acos" | "tan" | "atan" | "sinh" | "asinh" | "cosh"
+                        | "acosh" | "tanh" | "atanh"
+                ) {
+                    return Err(Diagnostic::error(
+                        format!("unsupported: the julia_fractal function `{text}` (trace draws sqr and cube)"),
+                        e.span,
+                    ));
+                }
+                return Err(Diagnostic::error("unexpected value in this julia_fractal", e.span));
+            };
+            let mut value = |ev: &mut Self| -> Result<&Expr> {
+                match items.get(i) {
+                    Some(Item::Value(e)) => {
+                        i += 1;
+                        let _ = ev;
+                        Ok(*e)
+                    }
+                    _ => Err(Diagnostic::error(format!("`{}` needs a value", w.word), w.span)),
+                }
+            };
+            match w.word.as_str() {
+                "quaternion" => j.hypercomplex = false,
+                "hypercomplex" => j.hypercomplex = true,
+                "sqr" => j.cube = false,
+                "cube" => j.cube = true,
+                "max_iteration" => {
+                    let e = value(self)?;
+                    j.iterations = self.float(e)?.floor().max(1.0) as u32;
+                }
+                "precision" => {
+                    let e = value(self)?;
+                    j.precision = self.float(e)?.max(1.0);
+                }
+                _ => {
+                    let e = value(self)?;
+                    let s = vec4(self, e)?;
+                    let d = value(self)?;
+                    let d = self.float(d)?;
+                    if s.length_squared() < 1e-10 || (s.w / s.length()).abs() < 1e-10 {
+                        return Err(Diagnostic::error(
+                            "a julia_fractal's slice needs a normal with a non-zero fourth component",
+                            e.span,
+                        ));
+                    }
+                    j.slice = (s, d);
+                }
+            }
+        }
+        // Bounded: POV-Ray sets no limit, but a million iterations a point is no picture.
+        j.iterations = j.iterations.min(10_000);
+        Ok(Shape::JuliaFractal(Box::new(j)))
     }
 
     /// A 2-D point `<a, b>` (a float is `<f, f>`).

@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -210,6 +210,8 @@ shapes! {
     Blob(Box<Blob>),
     /// `height_field` (boxed: its grid is shared and its smooth normals a list).
     HeightField(Box<HeightField>),
+    /// `julia_fractal` (boxed: rare and as big as three vectors).
+    JuliaFractal(Box<JuliaFractal>),
     /// `superellipsoid`.
     Superellipsoid(Superellipsoid),
 }

@@ -11,8 +11,8 @@ pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
 mod outline;
 pub use outline::{
-    BicubicPatch, Blob, BlobComponent, BlobReach, Curve, Glyph, HeightField, Lathe, Prism, Segment,
-    Sor, SorSegment, Spline, Sweep, Text,
+    BicubicPatch, Blob, BlobComponent, BlobReach, Curve, Glyph, HeightField, JuliaFractal, Lathe,
+    Prism, Segment, Sor, SorSegment, Spline, Sweep, Text,
 };
 
 /// An RGB colour (linear working space, unclamped).
@@ -413,6 +413,8 @@ pub enum Shape {
     Lathe(Box<Lathe>),
     /// `sor { … }`: a surface of revolution, r² a cubic in y piece by piece.
     Sor(Box<Sor>),
+    /// `julia_fractal { … }`.
+    JuliaFractal(Box<JuliaFractal>),
     /// `bicubic_patch { … }`: a Bézier patch.
     BicubicPatch(Box<BicubicPatch>),
     /// `height_field { … }`: a grid of heights.

@@ -377,6 +377,24 @@ pub struct BicubicPatch {
     pub flatness: f64,
 }
 
+/// `julia_fractal { <c> [quaternion|hypercomplex] [sqr|cube] [max_iteration N] [precision P]
+/// [slice <s>, d] }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JuliaFractal {
+    /// The 4-D parameter.
+    pub c: glam::DVec4,
+    /// Hypercomplex rather than quaternion algebra.
+    pub hypercomplex: bool,
+    /// `cube` rather than `sqr`.
+    pub cube: bool,
+    /// Iterations.
+    pub iterations: u32,
+    /// Marching steps per unit.
+    pub precision: f64,
+    /// The 3-D slice's normal in 4-D and its distance.
+    pub slice: (glam::DVec4, f64),
+}
+
 /// The grid in short: its size, range and a checksum of the heights (FNV-1a), so that IR
 /// snapshots show a change of any height without listing them all.
 impl std::fmt::Debug for HeightField {

@@ -481,6 +481,18 @@ fn build_shape(
             );
             (Shape::HeightField(Box::new(hf)), transform)
         }
+        ir::Shape::JuliaFractal(j) => {
+            let fractal = crate::geometry::JuliaFractal::new(
+                j.c,
+                j.hypercomplex,
+                j.cube,
+                j.iterations,
+                j.precision,
+                j.slice.0,
+                j.slice.1,
+            );
+            (Shape::JuliaFractal(Box::new(fractal)), transform)
+        }
         ir::Shape::BicubicPatch(b) => {
             // Subdivided in the world, as POV-Ray subdivides it (its flatness is a world
             // distance, and its corner normals are world normals).
