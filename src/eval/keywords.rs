@@ -527,6 +527,7 @@ const SUPPORTED: &[&str] = &[
     "ambient",
     "ambient_light",
     "angle",
+    "aperture",
     "area_light",
     "array",
     "asc",
@@ -546,6 +547,7 @@ const SUPPORTED: &[&str] = &[
     "black_hole",
     "blob",
     "blue",
+    "blur_samples",
     "bounded_by",
     "box",
     "boxed",
@@ -573,6 +575,7 @@ const SUPPORTED: &[&str] = &[
     "component",
     "concat",
     "cone",
+    "confidence",
     "conic_sweep",
     "conserve_energy",
     "control0",
@@ -626,6 +629,7 @@ const SUPPORTED: &[&str] = &[
     "flatness",
     "flip",
     "floor",
+    "focal_point",
     "fog",
     "fog_alt",
     "fog_offset",
@@ -829,6 +833,7 @@ const SUPPORTED: &[&str] = &[
     "v",
     "v_steps",
     "val",
+    "variance",
     "vaxis_rotate",
     "vcross",
     "vdot",
@@ -919,8 +924,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by"
         | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
-        "spherical_camera" | "cylinder_camera" | "focal_point" | "aperture" | "blur_samples" | "confidence"
-        | "variance" | "mesh_camera" => "this camera type or item is not supported by trace yet",
+        "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
         "fopen" | "fclose" | "read" | "write" | "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }

@@ -110,6 +110,12 @@ pub struct CameraItems {
     up_or_right_given: bool,
     transform: Option<Transform>,
     span: Span,
+    /// Focal blur: aperture, (min, max) samples, focal point, confidence, variance.
+    aperture: f64,
+    blur_samples: (u32, u32),
+    focal_point: Option<DVec3>,
+    confidence: f64,
+    variance: f64,
 }
 
 impl Default for CameraItems {
@@ -127,6 +133,11 @@ impl Default for CameraItems {
             v_angle: None,
             up_or_right_given: false,
             transform: None,
+            aperture: 0.0,
+            blur_samples: (0, 0),
+            focal_point: None,
+            confidence: 0.9,
+            variance: 1.0 / 10000.0,
             span: Span::default(),
         }
     }
@@ -1031,6 +1042,7 @@ impl<'a> Evaluator<'a> {
                     c.up_or_right_given = true;
                 }
                 NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
+                NodeKind::CameraBlur => ev.camera_blur(item, &mut c)?,
                 NodeKind::Angle => {
                     let a = ev.float(&item.args[0])?;
                     if c.projection.is_planar() && !(a > 0.0 && a < 180.0) {
@@ -1164,6 +1176,60 @@ impl<'a> Evaluator<'a> {
 
 /// Resolves the camera items in POV-Ray's fixed order (§4.2): angle → look_at (with sky) →
 /// orthographic rescale → transformations.
+impl Evaluator<'_> {
+    /// One focal blur item of a camera, with POV-Ray's checks.
+    fn camera_blur(&mut self, item: &Node, c: &mut CameraItems) -> Result<()> {
+        let first = &item.args[0];
+        match item.word.as_str() {
+            "aperture" => c.aperture = self.float(first)?,
+            "focal_point" => c.focal_point = Some(self.vec3(first)?),
+            "blur_samples" => {
+                let a = self.float(first)?;
+                if a <= 0.0 {
+                    return Err(Diagnostic::error("blur_samples must be greater than 0", first.span));
+                }
+                c.blur_samples = match item.args.get(1) {
+                    Some(e) => {
+                        let b = self.float(e)?;
+                        if a > b {
+                            return Err(Diagnostic::error(
+                                "blur_samples: the least number of samples is above the most",
+                                e.span,
+                            ));
+                        }
+                        (a as u32, (b as u32).min(MAX_BLUR_SAMPLES))
+                    }
+                    None => (0, (a as u32).min(MAX_BLUR_SAMPLES)),
+                };
+            }
+            word => {
+                let v = self.float(first)?;
+                let (ok, slot) = if word == "confidence" {
+                    (v > 0.0 && v < 1.0, &mut c.confidence)
+                } else {
+                    ((0.0..=1.0).contains(&v), &mut c.variance)
+                };
+                if ok {
+                    *slot = v;
+                } else {
+                    self.warn(Diagnostic::warning(
+                        format!("`{word}` out of range: ignored (as POV-Ray ignores it)"),
+                        first.span,
+                    ));
+                }
+            }
+        }
+        if item.args.len() > 1 && item.word != "blur_samples" {
+            return Err(Diagnostic::error(format!("`{}` takes one value", item.word), item.args[1].span));
+        }
+        Ok(())
+    }
+}
+
+/// The most focal blur samples a pixel may take (POV-Ray has no limit; 4096 is far beyond the
+/// 10 to 400 scenes use).
+const MAX_BLUR_SAMPLES: u32 = 4096;
+
 fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir::Camera> {
     let mut direction = c.direction;
     let mut right = c.right;
@@ -1237,11 +1303,32 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
             _ => {}
         }
     }
+    // Focal blur: the sharp plane at the focal point's distance from the eye (before the
+    // camera's transformations), or at the image plane's.
+    let blur = (c.aperture != 0.0 && c.blur_samples.1 > 0).then(|| {
+        let before = c.transform.map_or(direction, |t| t.matrix.inverse().transform_vector3(direction));
+        let mut focal_distance = match c.focal_point {
+            Some(p) => (p - c.location).length(),
+            None => before.length(),
+        };
+        if focal_distance == 0.0 {
+            focal_distance = 1.0;
+        }
+        ir::FocalBlur {
+            aperture: c.aperture,
+            min_samples: c.blur_samples.0,
+            max_samples: c.blur_samples.1,
+            focal_distance,
+            confidence: c.confidence,
+            variance: c.variance,
+        }
+    });
     Ok(ir::Camera {
         projection,
         location,
         direction,
         right,
         up,
+        blur,
     })
 }

@@ -140,6 +140,26 @@ pub struct Camera {
     pub right: DVec3,
     /// Image-plane vector spanning the full height.
     pub up: DVec3,
+    /// Focal blur (`aperture` with `blur_samples`), if any.
+    pub blur: Option<FocalBlur>,
+}
+
+/// A camera's focal blur, as POV-Ray samples it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FocalBlur {
+    /// Lens size (`aperture`).
+    pub aperture: f64,
+    /// Fewest samples a pixel takes before it may stop (`blur_samples MIN, MAX`; 0 for one
+    /// number).
+    pub min_samples: u32,
+    /// Most samples a pixel takes.
+    pub max_samples: u32,
+    /// Distance from the eye to the sharp plane.
+    pub focal_distance: f64,
+    /// `confidence` (default 0.9).
+    pub confidence: f64,
+    /// `variance` (default 1/10000).
+    pub variance: f64,
 }
 
 /// Camera projection.
@@ -895,6 +915,7 @@ impl Default for Camera {
             direction: DVec3::Z,
             right: DVec3::new(1.33, 0.0, 0.0),
             up: DVec3::Y,
+            blur: None,
         }
     }
 }

@@ -376,6 +376,12 @@ fn tables() -> &'static Tables {
     })
 }
 
+/// POV-Ray's `PseudoRandom`: entry `v & 0xFFF` of the lattice hash (focal blur draws its
+/// sub-pixel positions and lens jitter from it).
+pub fn pseudo_random(v: i32) -> i32 {
+    i32::from(tables().hash[(v & 0xFFF) as usize])
+}
+
 /// `Hash3d`: the lattice hash of a cell (cells, crackle).
 pub fn hash3d(a: i32, b: i32, c: i32) -> usize {
     let h = &tables().hash;

@@ -257,10 +257,8 @@ impl Corners<'_> {
         }
         let s = self.steps as f64;
         let (w, h) = (self.options.width, self.options.height);
-        let ray = camera_ray(self.scene, w, h, gx as f64 / s - 0.5, gy as f64 / s - 0.5);
-        tracer.counts.camera += 1;
         self.samples += 1;
-        let value = trace_primary(tracer, self.camera_interiors, ray);
+        let value = sample(tracer, self.camera_interiors, w, h, gx as f64 / s - 0.5, gy as f64 / s - 0.5);
         let traced = (value, aa_encoded(value, self.scene.gamma));
         let known = if border {
             &mut self.points
@@ -441,6 +439,59 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
     }
 }
 
+/// The colour seen through image position (x, y): one camera ray, or with focal blur
+/// POV-Ray's adaptive batches of rays through the lens (counted as camera rays).
+fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: u32, x: f64, y: f64) -> Rgb {
+    let scene = tracer.scene;
+    let Some(blur) = &scene.blur else {
+        tracer.counts.camera += 1;
+        return trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));
+    };
+    let c = &scene.camera;
+    let seed = (313.0 * x + 11.0) as i32 + (311.0 * y + 17.0) as i32;
+    let (mut n, mut level) = (0usize, 0usize);
+    let (mut s1, mut s2) = ([0.0f64; 4], [0.0f64; 4]);
+    let mut sum = Rgb::ZERO;
+    let max = blur.max as usize;
+    loop {
+        let batch = blur.batches.get(level).copied().unwrap_or(4) as usize;
+        level += 1;
+        for _ in 0..batch.min(max - n) {
+            let (dx, dy) = crate::scene::blur::Blur::subpixel(seed, n as i32);
+            let ray = camera_ray(scene, w, h, x + dx, y + dy).map(|ray| {
+                // The direction to the image plane (POV-Ray's unnormalised one for the
+                // perspective camera), carried to the sharp plane; the ray leaves the lens.
+                let to_plane = match c.projection {
+                    Projection::Perspective => {
+                        let axis = c.direction.normalize();
+                        ray.direction * (c.direction.length() / ray.direction.dot(axis))
+                    }
+                    _ => ray.direction,
+                };
+                let defl = blur.lens(n, x + dx + 0.5, y + dy - 0.5);
+                Ray::new(c.location + defl, (to_plane * blur.focal_ratio - defl).normalize())
+            });
+            tracer.counts.camera += 1;
+            let (colour, t) = match ray {
+                Some(_) => (trace_primary(tracer, camera_interiors, ray), 0.0),
+                None => (Rgb::ZERO, 1.0),
+            };
+            sum += colour;
+            for (k, v) in [colour.x, colour.y, colour.z, t].into_iter().enumerate() {
+                s1[k] += v;
+                s2[k] += v * v;
+            }
+            n += 1;
+        }
+        let m = n as f64;
+        let settled = (0..4).all(|k| (s2[k] / m - (s1[k] / m).powi(2)) / m < blur.thresholds[n - 1]);
+        if (n as u32 >= blur.min && settled) || n >= max {
+            break;
+        }
+    }
+    sum / n as f64
+}
+
 /// Traces a camera ray, which starts inside the objects that contain its origin (black where
 /// the projection has no ray, as in POV-Ray).
 fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray: Option<Ray>) -> Rgb {
@@ -480,11 +531,8 @@ fn render_block(
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
     counters::take(); // (this block's counts start from zero)
-    let centre = |tracer: &mut Tracer, x: u32, y: u32| {
-        tracer.counts.camera += 1;
-        let ray = camera_ray(scene, w, h, x as f64, y as f64);
-        trace_primary(tracer, &camera_interiors, ray)
-    };
+    let centre =
+        |tracer: &mut Tracer, x: u32, y: u32| sample(tracer, &camera_interiors, w, h, x as f64, y as f64);
 
     // The block's pixels in row order, each from `f(x, y)`.
     let block_pixels = |f: &mut dyn FnMut(u32, u32) -> Rgb| -> Vec<Rgb> {
@@ -578,10 +626,8 @@ fn render_block(
                         sum += centre_value;
                         continue;
                     }
-                    tracer.counts.camera += 1;
                     traced += 1;
-                    let ray = camera_ray(scene, w, h, x as f64 + ox, y as f64 + oy);
-                    sum += trace_primary(tracer, &camera_interiors, ray);
+                    sum += sample(tracer, &camera_interiors, w, h, x as f64 + ox, y as f64 + oy);
                 }
             }
             value[index(x, y)] = sum / (n * n + 1) as f64;

@@ -230,6 +230,7 @@ impl Scene {
                 right: c.right,
                 up: c.up,
             },
+            blur: c.blur.as_ref().map(|b| super::blur::Blur::new(b, c.direction, c.up)),
             lights: ir
                 .lights
                 .iter()

@@ -12,6 +12,7 @@ use glam::{DMat3, DMat4, DVec3};
 use std::sync::Arc;
 
 mod accel;
+pub mod blur;
 mod build;
 mod material;
 mod normal;
@@ -40,6 +41,8 @@ pub struct ObjectId(pub u32);
 pub struct Scene {
     /// The camera.
     pub camera: Camera,
+    /// The camera's focal blur, if any.
+    pub blur: Option<blur::Blur>,
     /// Point lights.
     pub lights: Vec<Light>,
     /// Objects.

@@ -67,6 +67,8 @@ pub enum NodeKind {
     Torus,
     /// A shape of the evaluator's shape table (`quadric { … }`): its keyword is the word.
     Shape,
+    /// A focal blur item of a camera (`aperture 0.5`): its word and values.
+    CameraBlur,
     /// `blob { … }`.
     Blob,
     /// `threshold T` in a blob.
@@ -809,6 +811,7 @@ impl Lower {
             Rule::shape => NodeKind::Shape,
             Rule::shape_word => NodeKind::Flag,
             Rule::blob => NodeKind::Blob,
+            Rule::camera_blur => NodeKind::CameraBlur,
             Rule::blob_threshold => NodeKind::BlobThreshold,
             Rule::blob_component => NodeKind::BlobComponent,
             Rule::triangle => NodeKind::Triangle,
@@ -1238,6 +1241,7 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_blob
+            | camera_blur_kw
             | kw_threshold
             | kw_component
             | kw_strength
