@@ -116,6 +116,7 @@ pub struct CameraItems {
     focal_point: Option<DVec3>,
     confidence: f64,
     variance: f64,
+    normal: Option<Box<ir::Normal>>,
 }
 
 impl Default for CameraItems {
@@ -138,6 +139,7 @@ impl Default for CameraItems {
             focal_point: None,
             confidence: 0.9,
             variance: 1.0 / 10000.0,
+            normal: None,
             span: Span::default(),
         }
     }
@@ -1043,6 +1045,19 @@ impl<'a> Evaluator<'a> {
                 }
                 NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
                 NodeKind::CameraBlur => ev.camera_blur(item, &mut c)?,
+                NodeKind::Normal => {
+                    if !matches!(
+                        c.projection,
+                        ir::Projection::Perspective | ir::Projection::Orthographic
+                    ) {
+                        return Err(Diagnostic::error(
+                            "unsupported: a camera normal with this projection (trace bends perspective and orthographic cameras' rays only)",
+                            item.word_span,
+                        ));
+                    }
+                    let base = c.normal.take();
+                    c.normal = Some(Box::new(ev.normal(item, base)?));
+                }
                 NodeKind::Angle => {
                     let a = ev.float(&item.args[0])?;
                     if c.projection.is_planar() && !(a > 0.0 && a < 180.0) {
@@ -1330,5 +1345,6 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
         right,
         up,
         blur,
+        normal: c.normal.clone(),
     })
 }

@@ -142,6 +142,8 @@ pub struct Camera {
     pub up: DVec3,
     /// Focal blur (`aperture` with `blur_samples`), if any.
     pub blur: Option<FocalBlur>,
+    /// `normal { … }`: a pattern that bends the camera's rays, if any.
+    pub normal: Option<Box<Normal>>,
 }
 
 /// A camera's focal blur, as POV-Ray samples it.
@@ -916,6 +918,7 @@ impl Default for Camera {
             right: DVec3::new(1.33, 0.0, 0.0),
             up: DVec3::Y,
             blur: None,
+            normal: None,
         }
     }
 }

@@ -353,11 +353,16 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
         };
         (rad, phi)
     };
+    // The camera's normal bends the unit direction by its pattern at (x0, y0, 0).
+    let bent = |dir: glam::DVec3| match &scene.camera_normal {
+        Some(n) => n.perturb(glam::DVec3::new(x0, y0, 0.0), dir.normalize()).normalize(),
+        None => dir.normalize(),
+    };
     match c.projection {
-        Projection::Perspective => along(c.direction + x0 * c.right + y0 * c.up),
+        Projection::Perspective => along(bent(c.direction + x0 * c.right + y0 * c.up)),
         Projection::Orthographic => Some(Ray::new(
             c.location + x0 * c.right + y0 * c.up,
-            c.direction.normalize(),
+            bent(c.direction),
         )),
         Projection::Fisheye { angle } => {
             let (rad, phi) = polar(x1 * len_right, y1 * len_up);

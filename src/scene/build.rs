@@ -231,6 +231,7 @@ impl Scene {
                 up: c.up,
             },
             blur: c.blur.as_ref().map(|b| super::blur::Blur::new(b, c.direction, c.up)),
+            camera_normal: c.normal.as_deref().map(|n| Normal::new(n, pattern_defaults(ir))),
             lights: ir
                 .lights
                 .iter()

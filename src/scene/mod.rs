@@ -43,6 +43,8 @@ pub struct Scene {
     pub camera: Camera,
     /// The camera's focal blur, if any.
     pub blur: Option<blur::Blur>,
+    /// The camera's `normal`, bending its rays, if any.
+    pub camera_normal: Option<Normal>,
     /// Point lights.
     pub lights: Vec<Light>,
     /// Objects.
