@@ -55,6 +55,17 @@ fn items(node: &Node) -> Vec<Item<'_>> {
     items.into_iter().map(|(_, i)| i).collect()
 }
 
+/// The spline a word names (`linear_spline` …).
+fn spline_word(word: &str) -> Option<Spline> {
+    Some(match word {
+        "linear_spline" => Spline::Linear,
+        "quadratic_spline" => Spline::Quadratic,
+        "cubic_spline" => Spline::Cubic,
+        "bezier_spline" => Spline::Bezier,
+        _ => return None,
+    })
+}
+
 /// The largest font file trace reads (POV-Ray's own fonts are below 100 kB).
 const MAX_FONT_BYTES: u64 = 64 << 20;
 
@@ -295,11 +306,10 @@ impl Evaluator<'_> {
         for item in items(node) {
             match item {
                 Item::Value(e) => values.push(e),
+                Item::Word(w) if spline_word(&w.word).is_some() => {
+                    spline = spline_word(&w.word).unwrap_or(spline);
+                }
                 Item::Word(w) => match w.word.as_str() {
-                    "linear_spline" => spline = Spline::Linear,
-                    "quadratic_spline" => spline = Spline::Quadratic,
-                    "cubic_spline" => spline = Spline::Cubic,
-                    "bezier_spline" => spline = Spline::Bezier,
                     "linear_sweep" => sweep = Sweep::Linear,
                     "conic_sweep" => sweep = Sweep::Conic,
                     "open" => open = true,
@@ -406,11 +416,10 @@ impl Evaluator<'_> {
         for item in items(node) {
             match item {
                 Item::Value(e) => values.push(e),
+                Item::Word(w) if spline_word(&w.word).is_some() => {
+                    spline = spline_word(&w.word).unwrap_or(spline);
+                }
                 Item::Word(w) => match w.word.as_str() {
-                    "linear_spline" => spline = Spline::Linear,
-                    "quadratic_spline" => spline = Spline::Quadratic,
-                    "cubic_spline" => spline = Spline::Cubic,
-                    "bezier_spline" => spline = Spline::Bezier,
                     "open" => open = true,
                     _ => sturm = true,
                 },

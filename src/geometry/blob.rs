@@ -306,12 +306,7 @@ impl super::shape::Surface for Blob {
     const NAME: &'static str = "Blob";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t| {
-            out.push(t, 0);
-            false
-        });
-        out
+        Crossings::first_of(|f| self.crossings(ray, f))
     }
 
     /// −½ of the field's gradient: outward where the fields add.

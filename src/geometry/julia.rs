@@ -248,12 +248,7 @@ impl super::shape::Surface for JuliaFractal {
     const NAME: &'static str = "JuliaFractal";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t| {
-            out.push(t, 0);
-            false
-        });
-        out
+        Crossings::first_of(|f| self.crossings(ray, f))
     }
 
     fn normals(&self, p: DVec3, _: u32) -> (DVec3, DVec3) {

@@ -113,9 +113,7 @@ impl super::shape::Surface for Lathe {
     const NAME: &'static str = "Lathe";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t, part| out.keep_nearest(t, part));
-        out
+        Crossings::nearest_of(|f| self.crossings(ray, f))
     }
 
     /// POV-Ray's raw normal `(h'·x, −r'·ρ, h'·z)` from the profile's tangent (r', h') at the

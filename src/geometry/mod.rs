@@ -163,6 +163,25 @@ impl Crossings {
         self.parts[i] = part;
     }
 
+    /// The nearest crossing of a shape that reports its crossings in increasing distance to
+    /// `walk`'s callback (which stops the walk by returning false).
+    pub fn first_of(walk: impl FnOnce(&mut dyn FnMut(f64) -> bool)) -> Crossings {
+        let mut out = Crossings::NONE;
+        walk(&mut |t| {
+            out.push(t, 0);
+            false
+        });
+        out
+    }
+
+    /// The nearest four crossings of a shape that reports them in any order to `walk`'s
+    /// callback.
+    pub fn nearest_of(walk: impl FnOnce(&mut dyn FnMut(f64, u32))) -> Crossings {
+        let mut out = Crossings::NONE;
+        walk(&mut |t, part| out.keep_nearest(t, part));
+        out
+    }
+
     /// Sorts the crossings by distance.
     pub fn sort(&mut self) {
         for i in 1..self.len {

@@ -147,9 +147,7 @@ impl super::shape::Surface for Prism {
     const NAME: &'static str = "Prism";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t, part| out.keep_nearest(t, part));
-        out
+        Crossings::nearest_of(|f| self.crossings(ray, f))
     }
 
     /// POV-Ray's raw normals: +y on both faces; on the sides the tangent turned to the

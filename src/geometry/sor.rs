@@ -168,9 +168,7 @@ impl super::shape::Surface for Sor {
     const NAME: &'static str = "Sor";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t, part| out.keep_nearest(t, part));
-        out
+        Crossings::nearest_of(|f| self.crossings(ray, f))
     }
 
     /// The outward gradient of `x² + z² − f(y)`; the discs face down and up.

@@ -208,12 +208,7 @@ impl super::shape::Surface for Superellipsoid {
     const NAME: &'static str = "Superellipsoid";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t| {
-            out.push(t, 0);
-            false
-        });
-        out
+        Crossings::first_of(|f| self.crossings(ray, f))
     }
 
     /// POV-Ray's gradient, scaled for a point on the surface.

@@ -234,9 +234,7 @@ impl super::shape::Surface for Text {
     const NAME: &'static str = "Text";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let mut out = Crossings::NONE;
-        self.crossings(ray, |t, part| out.keep_nearest(t, part));
-        out
+        Crossings::nearest_of(|f| self.crossings(ray, f))
     }
 
     fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
