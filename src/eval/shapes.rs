@@ -66,6 +66,9 @@ fn spline_word(word: &str) -> Option<Spline> {
     })
 }
 
+/// The finest julia_fractal marching trace does (POV-Ray's scenes use 15 to 400).
+const MAX_JULIA_PRECISION: f64 = 10_000.0;
+
 /// The largest font file trace reads (POV-Ray's own fonts are below 100 kB).
 const MAX_FONT_BYTES: u64 = 64 << 20;
 
@@ -685,7 +688,15 @@ impl Evaluator<'_> {
                 }
                 "precision" => {
                     let e = value(self)?;
-                    j.precision = self.float(e)?.max(1.0);
+                    let p = self.float(e)?.max(1.0);
+                    // Bounded: every unit of precision is a marching step a unit of ray.
+                    if p > MAX_JULIA_PRECISION {
+                        self.warn(Diagnostic::warning(
+                            format!("julia_fractal precision above {MAX_JULIA_PRECISION}: {MAX_JULIA_PRECISION} is used"),
+                            e.span,
+                        ));
+                    }
+                    j.precision = p.min(MAX_JULIA_PRECISION);
                 }
                 _ => {
                     let e = value(self)?;
