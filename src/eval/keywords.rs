@@ -531,6 +531,7 @@ const SUPPORTED: &[&str] = &[
     "area_light",
     "array",
     "asc",
+    "ascii",
     "asin",
     "asinh",
     "assumed_gamma",
@@ -563,6 +564,7 @@ const SUPPORTED: &[&str] = &[
     "case",
     "ceil",
     "cells",
+    "charset",
     "checker",
     "chr",
     "circular",
@@ -830,6 +832,7 @@ const SUPPORTED: &[&str] = &[
     "use_color",
     "use_colour",
     "use_index",
+    "utf8",
     "v",
     "v_steps",
     "val",
@@ -929,7 +932,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "file input/output is not supported by trace yet"
         }
         "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" | "spline" => LATER,
-        "charset" | "hf_gray_16" | "max_intersections"
+        "hf_gray_16" | "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }
@@ -974,7 +977,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this light_source item is not supported by trace yet"
         }
         "bokeh" => "this camera item is not supported by trace yet",
-        "ascii" | "utf8" => "this global setting is outside trace's subset",
         "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" | "now" => {
             "not supported by trace yet"
         }

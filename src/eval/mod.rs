@@ -324,6 +324,8 @@ pub(crate) struct Evaluator<'a> {
     deprecated: HashMap<String, String>,
     /// Mesh files read so far: a file used twice is read and stored once.
     mesh_files: HashMap<std::path::PathBuf, std::sync::Arc<ir::Mesh>>,
+    /// How `text` reads its strings (`global_settings { charset … }`).
+    charset: crate::font::Charset,
     /// Font files read, by path (`text`).
     fonts: HashMap<std::path::PathBuf, std::sync::Arc<Vec<u8>>>,
 }
@@ -364,6 +366,7 @@ impl<'a> Evaluator<'a> {
             deprecated: HashMap::new(),
             mesh_files: HashMap::new(),
             fonts: HashMap::new(),
+            charset: crate::font::Charset::Ascii,
         }
     }
 
@@ -628,6 +631,13 @@ impl<'a> Evaluator<'a> {
     fn global_settings(&mut self, node: &Node) -> Result<()> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
+                NodeKind::Charset => {
+                    ev.charset = if item.word.ends_with("ascii") {
+                        crate::font::Charset::Ascii
+                    } else {
+                        crate::font::Charset::Utf8
+                    };
+                }
                 NodeKind::AssumedGamma => {
                     let g = ev.float(&item.args[0])?;
                     if ev.assumed_gamma.is_some() {

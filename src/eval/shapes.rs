@@ -251,16 +251,24 @@ impl Evaluator<'_> {
         let thickness = self.float(values[2])?;
         let offset = self.vec3(values[3])?;
         let data = self.font_data(&path, &name, values[0].span)?;
-        // POV-Ray's default `charset ascii` reads the string's bytes: each byte beyond ASCII is
-        // a space.
-        let codes: Vec<u32> = string
-            .chars()
-            .flat_map(|c| {
-                let n = if c.is_ascii() { 1 } else { c.len_utf8() };
-                std::iter::repeat_n(if c.is_ascii() { u32::from(c) } else { 0x20 }, n)
-            })
-            .collect();
-        let text = crate::font::layout(&data, &codes, thickness, offset.truncate(), crate::font::Charset::Ascii)
+        let codes: Vec<u32> = match self.charset {
+            // POV-Ray's default `charset ascii` reads the string's bytes: each byte beyond
+            // ASCII is a space.
+            crate::font::Charset::Ascii => string
+                .chars()
+                .flat_map(|c| {
+                    let n = if c.is_ascii() { 1 } else { c.len_utf8() };
+                    std::iter::repeat_n(if c.is_ascii() { u32::from(c) } else { 0x20 }, n)
+                })
+                .collect(),
+            // `utf8` (and `sys`): characters, those beyond 16 bits as U+FFFD, as POV-Ray
+            // keeps them.
+            crate::font::Charset::Utf8 => string
+                .chars()
+                .map(|c| if u32::from(c) > 0xFFFF { 0xFFFD } else { u32::from(c) })
+                .collect(),
+        };
+        let text = crate::font::layout(&data, &codes, thickness, offset.truncate(), self.charset)
             .map_err(|e| Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span))?;
         Ok(Shape::Text(Box::new(text)))
     }

@@ -69,6 +69,8 @@ pub enum NodeKind {
     Shape,
     /// A focal blur item of a camera (`aperture 0.5`): its word and values.
     CameraBlur,
+    /// `charset ascii|utf8|sys` in global_settings: the word is the whole item.
+    Charset,
     /// `blob { … }`.
     Blob,
     /// `threshold T` in a blob.
@@ -811,6 +813,7 @@ impl Lower {
             Rule::shape => NodeKind::Shape,
             Rule::shape_word => NodeKind::Flag,
             Rule::blob => NodeKind::Blob,
+            Rule::charset => NodeKind::Charset,
             Rule::camera_blur => NodeKind::CameraBlur,
             Rule::blob_threshold => NodeKind::BlobThreshold,
             Rule::blob_component => NodeKind::BlobComponent,
@@ -938,7 +941,12 @@ impl Lower {
         };
         if matches!(
             rule,
-            Rule::ident | Rule::name_ref | Rule::macro_body | Rule::unparsed_value | Rule::shape_word
+            Rule::ident
+                | Rule::name_ref
+                | Rule::macro_body
+                | Rule::unparsed_value
+                | Rule::shape_word
+                | Rule::charset
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
