@@ -716,6 +716,7 @@ const SUPPORTED: &[&str] = &[
     "orient",
     "orientation",
     "orthographic",
+    "ovus",
     "panoramic",
     "parallel",
     "perspective",
@@ -908,7 +909,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "isosurface"
-        | "polynomial" | "sphere_sweep" | "ovus" | "parametric"
+        | "polynomial" | "sphere_sweep" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",

@@ -194,6 +194,26 @@ impl Evaluator<'_> {
             "height_field" => self.height_field(node)?,
             "bicubic_patch" => self.bicubic_patch(node)?,
             "julia_fractal" => self.julia_fractal(node)?,
+            "ovus" => {
+                count(2, "ovus { bottom_radius, top_radius }")?;
+                let (bottom, top) = (self.float(&args[0])?, self.float(&args[1])?);
+                if bottom < 0.0 || top < 0.0 {
+                    return Err(Diagnostic::error("both ovus radii must be positive", node.word_span));
+                }
+                if top >= 2.0 * bottom {
+                    // POV-Ray draws the sphere such an ovus would be.
+                    self.warn(Diagnostic::warning(
+                        "ovus top radius not below twice the bottom one: a sphere is drawn (as POV-Ray draws it)",
+                        node.word_span,
+                    ));
+                    Shape::Sphere {
+                        centre: glam::DVec3::new(0.0, bottom, 0.0),
+                        radius: top,
+                    }
+                } else {
+                    Shape::Ovus { bottom, top }
+                }
+            }
             "sor" => self.sor(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;

@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -212,6 +212,8 @@ shapes! {
     HeightField(Box<HeightField>),
     /// `julia_fractal` (boxed: rare and as big as three vectors).
     JuliaFractal(Box<JuliaFractal>),
+    /// `ovus` (boxed: rare, and seven numbers).
+    Ovus(Box<Ovus>),
     /// `superellipsoid`.
     Superellipsoid(Superellipsoid),
 }

@@ -437,6 +437,13 @@ pub enum Shape {
     Sor(Box<Sor>),
     /// `julia_fractal { … }`.
     JuliaFractal(Box<JuliaFractal>),
+    /// `ovus { bottom_radius, top_radius }` (top below twice bottom).
+    Ovus {
+        /// Radius of the sphere at the origin.
+        bottom: f64,
+        /// Radius of the sphere one bottom radius above it.
+        top: f64,
+    },
     /// `bicubic_patch { … }`: a Bézier patch.
     BicubicPatch(Box<BicubicPatch>),
     /// `height_field { … }`: a grid of heights.

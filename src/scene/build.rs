@@ -483,6 +483,10 @@ fn build_shape(
             );
             (Shape::HeightField(Box::new(hf)), transform)
         }
+        ir::Shape::Ovus { bottom, top } => (
+            Shape::Ovus(Box::new(crate::geometry::Ovus::new(*bottom, *top))),
+            transform,
+        ),
         ir::Shape::JuliaFractal(j) => {
             let fractal = crate::geometry::JuliaFractal::new(
                 j.c,
