@@ -24,9 +24,13 @@ pub struct HeightField {
     floor: f64,
     top: f64,
     /// Smooth normals: per grid point, the unit normal × 32767 truncated (POV-Ray's storage),
-    /// and the object's linear map to the world (they are blended in world orientation).
-    smooth: Option<(Box<[[i16; 3]]>, DMat3)>,
+    /// the object's linear map to the world and its normal matrix (they are blended in world
+    /// orientation).
+    smooth: Option<Smooth>,
 }
+
+/// Quantised vertex normals, the object's linear map and its normal matrix.
+type Smooth = (Box<[[i16; 3]]>, DMat3, DMat3);
 
 impl HeightField {
     /// A height field of `w × d` points (row z = 0 first); `water`: the water level in raw
@@ -45,7 +49,8 @@ impl HeightField {
         };
         if let Some(m) = smooth {
             let normals = (0..w * d).map(|i| hf.vertex_normal(i % w, i / w)).collect();
-            hf.smooth = Some((normals, DMat3::from_mat4(m)));
+            let linear = DMat3::from_mat4(m);
+            hf.smooth = Some((normals, linear, linear.inverse().transpose()));
         }
         hf
     }
@@ -207,10 +212,9 @@ impl super::shape::Surface for HeightField {
             let y4 = self.h(px + 1, pz + 1);
             DVec3::new(self.h(px, pz + 1) - y4, 1.0, self.h(px + 1, pz) - y4)
         };
-        let Some((normals, m)) = &self.smooth else { return (flat, flat) };
+        let Some((normals, m, to_world)) = &self.smooth else { return (flat, flat) };
         // POV-Ray blends the corner normals after carrying each into the world; the renderer
         // carries the result there again, so it is handed back in object terms.
-        let to_world = m.inverse().transpose();
         let corner = |x: usize, z: usize| {
             let [a, b, c] = normals[z * self.w + x];
             (to_world * DVec3::new(a.into(), b.into(), c.into())).normalize_or_zero()

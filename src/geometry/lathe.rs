@@ -46,17 +46,12 @@ impl Lathe {
         if self.segments.is_empty() {
             return;
         }
-        let len = ray.direction.length();
-        let d = ray.direction / len;
-        // Distances k are measured from the ray's point nearest the profile's middle on the
-        // axis (a far origin costs no precision); `shift` takes them back to the origin.
-        let middle = DVec3::new(0.0, 0.5 * (self.lo.y + self.hi.y), 0.0);
-        let shift = (middle - ray.origin).dot(d);
-        let p = ray.origin + shift * d;
+        // Distances k from the ray's point nearest the profile's middle on the axis.
+        let line = ray.about(DVec3::new(0.0, 0.5 * (self.lo.y + self.hi.y), 0.0));
+        let (p, d) = (line.origin, line.direction);
         let mut hit = |k: f64, part: u32| {
-            let k = k + shift;
-            let t = k / len;
-            if k > 1e-4 * len && ray.contains(t) {
+            let t = line.t(k);
+            if t > 1e-4 && ray.contains(t) {
                 f(t, part);
             }
         };

@@ -227,6 +227,42 @@ impl Crossings {
     }
 }
 
+/// A ray as a line of unit speed measured from the point nearest a shape's centre, so that a
+/// far origin costs the shape's equations no precision (the stability suite's S11).
+#[derive(Clone, Copy, Debug)]
+pub struct UnitLine {
+    /// The line's point nearest the centre.
+    pub origin: DVec3,
+    /// Unit direction.
+    pub direction: DVec3,
+    /// That point's distance from the ray's origin, along the unit direction.
+    pub shift: f64,
+    /// The ray direction's length.
+    pub length: f64,
+}
+
+impl UnitLine {
+    /// The ray parameter of the point `k` along the line from its origin.
+    pub fn t(&self, k: f64) -> f64 {
+        (k + self.shift) / self.length
+    }
+}
+
+impl Ray {
+    /// This ray as a [`UnitLine`] about `centre`.
+    pub fn about(&self, centre: DVec3) -> UnitLine {
+        let length = self.direction.length();
+        let direction = self.direction / length;
+        let shift = (centre - self.origin).dot(direction);
+        UnitLine {
+            origin: self.origin + shift * direction,
+            direction,
+            shift,
+            length,
+        }
+    }
+}
+
 /// Secondary-ray origin for a ray leaving the surface at `p` (geometric normal `ng`, either
 /// side) in direction `dir`: `p` pushed off the surface, to the side `dir` goes, by a distance
 /// proportional to the magnitude of the coordinates involved.

@@ -113,8 +113,8 @@ impl Ovus {
         }
         // The spindle torus, formed about the ray's point nearest its centre.
         let centre = DVec3::new(0.0, self.vertical, 0.0);
-        let shift = (centre - o).dot(d);
-        let p = o + shift * d - centre;
+        let line = ray.about(centre);
+        let (shift, p) = (line.shift, line.origin - centre);
         let (big2, small2) = (self.horizontal * self.horizontal, self.connecting * self.connecting);
         let k1 = p.length_squared() - big2 - small2;
         let k2 = p.dot(d);

@@ -89,18 +89,13 @@ impl Sor {
         if self.pieces.is_empty() {
             return;
         }
-        let len = ray.direction.length();
-        let d = ray.direction / len;
-        // Distances k are measured from the ray's point nearest the axis's middle (a far
-        // origin costs no precision); `shift` takes them back to the ray's origin.
+        // Distances k from the ray's point nearest the axis's middle.
         let (h1, h2) = self.heights();
-        let middle = DVec3::new(0.0, 0.5 * (h1 + h2), 0.0);
-        let shift = (middle - ray.origin).dot(d);
-        let p = ray.origin + shift * d;
+        let line = ray.about(DVec3::new(0.0, 0.5 * (h1 + h2), 0.0));
+        let (p, d, shift) = (line.origin, line.direction, line.shift);
         let mut hit = |k: f64, part: u32| {
-            let k = k + shift;
-            let t = k / len;
-            if k > 1e-4 * len && ray.contains(t) {
+            let t = line.t(k);
+            if t > 1e-4 && ray.contains(t) {
                 f(t, part);
             }
         };
