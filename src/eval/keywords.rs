@@ -539,6 +539,7 @@ const SUPPORTED: &[&str] = &[
     "atan2",
     "atanh",
     "average",
+    "b_spline",
     "background",
     "bezier_spline",
     "bicubic_patch",
@@ -779,6 +780,7 @@ const SUPPORTED: &[&str] = &[
     "sor",
     "specular",
     "sphere",
+    "sphere_sweep",
     "spherical",
     "spiral1",
     "spiral2",
@@ -810,6 +812,7 @@ const SUPPORTED: &[&str] = &[
     "thickness",
     "threshold",
     "tightness",
+    "tolerance",
     "toroidal",
     "torus",
     "transform",
@@ -909,7 +912,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "isosurface"
-        | "polynomial" | "sphere_sweep" | "parametric"
+        | "polynomial" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
@@ -947,9 +950,8 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "all_intersections" | "b_spline"
+        "all_intersections"
         | "contained_by" | "evaluate" | "max_gradient" | "max_trace" | "pwr" | "reciprocal"
-        | "tolerance"
         => {
             "this shape or shape item is not supported by trace yet"
         }

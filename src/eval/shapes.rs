@@ -4,7 +4,7 @@
 
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
-use crate::ir::{Lathe, Polynomial, Prism, Quadric, Shape, Sor, Spline, Sweep};
+use crate::ir::{Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline};
 use crate::syntax::{Expr, Node, NodeKind};
 use glam::DVec2;
 use std::sync::Arc;
@@ -23,6 +23,7 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
             "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "sturm"
         ),
         "sor" => matches!(word, "open" | "sturm"),
+        "sphere_sweep" => matches!(word, "linear_spline" | "cubic_spline" | "b_spline" | "tolerance"),
         "bicubic_patch" => matches!(word, "type" | "flatness" | "u_steps" | "v_steps" | "accuracy" | "uv_vectors"),
         "julia_fractal" => matches!(
             word,
@@ -215,6 +216,7 @@ impl Evaluator<'_> {
                 }
             }
             "sor" => self.sor(node)?,
+            "sphere_sweep" => self.sphere_sweep(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;
                 let v = self.uv(&args[0])?;
@@ -744,6 +746,67 @@ impl Evaluator<'_> {
         // Bounded: POV-Ray sets no limit, but a million iterations a point is no picture.
         j.iterations = j.iterations.min(10_000);
         Ok(Shape::JuliaFractal(Box::new(j)))
+    }
+
+    /// `sphere_sweep { linear_spline|cubic_spline|b_spline N, <centre>, radius… [tolerance T] }`.
+    fn sphere_sweep(&mut self, node: &Node) -> Result<Shape> {
+        let form = "sphere_sweep { linear_spline|cubic_spline|b_spline N, <centre>, radius… [tolerance T] }";
+        let items = items(node);
+        let spline = match items.first() {
+            Some(Item::Word(w)) if w.word == "linear_spline" => SweepSpline::Linear,
+            Some(Item::Word(w)) if w.word == "cubic_spline" => SweepSpline::CatmullRom,
+            Some(Item::Word(w)) if w.word == "b_spline" => SweepSpline::BSpline,
+            _ => {
+                return Err(Diagnostic::error(
+                    format!("a sphere_sweep starts with its kind of spline: {form}"),
+                    node.word_span,
+                ));
+            }
+        };
+        let mut values = Vec::new();
+        let mut tolerance = 1e-6;
+        let mut i = 1;
+        while let Some(item) = items.get(i) {
+            i += 1;
+            match item {
+                Item::Value(e) => values.push(*e),
+                Item::Word(w) if w.word == "tolerance" && i == items.len() - 1 => {
+                    if let Some(Item::Value(e)) = items.get(i) {
+                        tolerance = self.float(e)?;
+                        i += 1;
+                    }
+                }
+                Item::Word(w) => {
+                    return Err(Diagnostic::error(
+                        format!("`{}` is out of place here: {form}", w.word),
+                        w.span,
+                    ));
+                }
+            }
+        }
+        let Some((count, rest)) = values.split_first() else {
+            return Err(Diagnostic::error(format!("`sphere_sweep` takes {form}"), node.word_span));
+        };
+        let n = self.float(count)?;
+        let least = if spline == SweepSpline::Linear { 2.0 } else { 4.0 };
+        if n < least {
+            return Err(Diagnostic::error(
+                "too few spheres for this sphere_sweep's spline (linear needs 2, the cubic ones 4)",
+                count.span,
+            ));
+        }
+        let n = n as usize;
+        if rest.len() != 2 * n {
+            return Err(Diagnostic::error(
+                format!("this sphere_sweep announces {n} spheres and gives {} values (a centre and a radius each)", rest.len()),
+                count.span,
+            ));
+        }
+        let mut spheres = Vec::with_capacity(n);
+        for pair in rest.chunks(2) {
+            spheres.push((self.vec3(pair[0])?, self.float(pair[1])?));
+        }
+        Ok(Shape::SphereSweep(Box::new(SphereSweep { spline, spheres, tolerance })))
     }
 
     /// A 2-D point `<a, b>` (a float is `<f, f>`).

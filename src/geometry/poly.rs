@@ -1,15 +1,16 @@
-//! Real roots of polynomials of degree ≤ 6 in an interval, by isolation: between consecutive
+//! Real roots of polynomials of degree ≤ 10 in an interval, by isolation: between consecutive
 //! roots of the derivative a polynomial is monotonic, so each such interval holds at most one
 //! root, found by safeguarded Newton iteration. No closed-form cancellation, so grazing rays
 //! and far origins keep their accuracy.
 
-/// Coefficients, lowest degree first: `c[0] + c[1]·t + … + c[n]·tⁿ`.
+/// Coefficients, lowest degree first: `c[0] + c[1]·t + … + c[n]·tⁿ` (degree ≤ 6; [`roots_in`]
+/// takes any array length, up to degree [`MAX_DEGREE`]).
 pub type Poly = [f64; 7];
 
 /// The highest degree [`roots_in`] solves.
-pub const MAX_DEGREE: usize = 6;
+pub const MAX_DEGREE: usize = 10;
 
-fn eval(c: &Poly, degree: usize, t: f64) -> f64 {
+fn eval<const N: usize>(c: &[f64; N], degree: usize, t: f64) -> f64 {
     let mut v = 0.0;
     for i in (0..=degree).rev() {
         v = v * t + c[i];
@@ -17,26 +18,26 @@ fn eval(c: &Poly, degree: usize, t: f64) -> f64 {
     v
 }
 
-fn derivative(c: &Poly, degree: usize) -> Poly {
-    let mut d = [0.0; 7];
+fn derivative<const N: usize>(c: &[f64; N], degree: usize) -> [f64; N] {
+    let mut d = [0.0; N];
     for i in 1..=degree {
         d[i - 1] = c[i] * i as f64;
     }
     d
 }
 
-/// Up to six roots in increasing order.
+/// Up to ten roots in increasing order.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Roots {
     /// The roots; the first `len` are valid.
-    pub t: [f64; 6],
+    pub t: [f64; MAX_DEGREE],
     /// How many.
     pub len: usize,
 }
 
 impl Roots {
     fn push(&mut self, t: f64) {
-        if self.len < 6 {
+        if self.len < MAX_DEGREE {
             self.t[self.len] = t;
             self.len += 1;
         }
@@ -49,7 +50,8 @@ impl Roots {
 }
 
 /// Real roots of the polynomial `c` (of the given degree) in `[lo, hi]`, increasing.
-pub fn roots_in(c: &Poly, degree: usize, lo: f64, hi: f64) -> Roots {
+pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -> Roots {
+    debug_assert!(degree < N && degree <= MAX_DEGREE);
     let mut out = Roots::default();
     if degree == 0 || lo > hi {
         return out;
@@ -91,7 +93,7 @@ pub fn roots_in(c: &Poly, degree: usize, lo: f64, hi: f64) -> Roots {
 
 /// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to
 /// bisection whenever a step leaves the bracket.
-fn refine(c: &Poly, d: &Poly, degree: usize, mut a: f64, mut b: f64, fa: f64) -> f64 {
+fn refine<const N: usize>(c: &[f64; N], d: &[f64; N], degree: usize, mut a: f64, mut b: f64, fa: f64) -> f64 {
     let rising = fa < 0.0;
     let mut t = 0.5 * (a + b);
     for _ in 0..100 {
@@ -168,6 +170,26 @@ mod tests {
         assert_eq!(roots.len, 6);
         for (i, t) in roots.as_slice().iter().enumerate() {
             assert!((t - (i + 1) as f64).abs() < 1e-9, "{:?}", roots.as_slice());
+        }
+    }
+
+    /// Degree 10 (the sphere sweep's tube equation): ten roots in [0, 1].
+    #[test]
+    fn degree_ten() {
+        let mut c = [0.0; 11];
+        c[0] = 1.0;
+        for r in 1..=10 {
+            let mut next = [0.0; 11];
+            for i in 0..10 {
+                next[i + 1] += c[i];
+                next[i] -= r as f64 * 0.09 * c[i];
+            }
+            c = next;
+        }
+        let roots = roots_in(&c, 10, 0.0, 1.0);
+        assert_eq!(roots.len, 10, "{:?}", roots.as_slice());
+        for (i, t) in roots.as_slice().iter().enumerate() {
+            assert!((t - (i + 1) as f64 * 0.09).abs() < 1e-9, "{:?}", roots.as_slice());
         }
     }
 

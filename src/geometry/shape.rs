@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -216,6 +216,8 @@ shapes! {
     Ovus(Box<Ovus>),
     /// `superellipsoid`.
     Superellipsoid(Superellipsoid),
+    /// `sphere_sweep` (boxed: its segments are a list).
+    SphereSweep(Box<SphereSweep>),
 }
 
 #[cfg(test)]

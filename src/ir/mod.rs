@@ -12,7 +12,7 @@ pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 mod outline;
 pub use outline::{
     BicubicPatch, Blob, BlobComponent, BlobReach, Curve, Glyph, HeightField, JuliaFractal, Lathe,
-    Prism, Segment, Sor, SorSegment, Spline, Sweep, Text,
+    Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep, SweepSpline, Text,
 };
 
 /// An RGB colour (linear working space, unclamped).
@@ -444,6 +444,8 @@ pub enum Shape {
         /// Radius of the sphere one bottom radius above it.
         top: f64,
     },
+    /// `sphere_sweep { … }`: a sphere swept along a spline.
+    SphereSweep(Box<SphereSweep>),
     /// `bicubic_patch { … }`: a Bézier patch.
     BicubicPatch(Box<BicubicPatch>),
     /// `height_field { … }`: a grid of heights.

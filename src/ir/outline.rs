@@ -347,6 +347,29 @@ pub struct Blob {
     pub components: Vec<BlobComponent>,
 }
 
+/// How a `sphere_sweep` passes from one sphere to the next.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SweepSpline {
+    /// `linear_spline`: straight between consecutive spheres.
+    Linear,
+    /// `cubic_spline`: a Catmull-Rom curve through all but the first and last spheres.
+    CatmullRom,
+    /// `b_spline`: a uniform cubic B-spline the spheres control (it need not pass through them).
+    BSpline,
+}
+
+/// `sphere_sweep { spline N, <centre>, radius … [tolerance T] }`: the volume a sphere sweeps
+/// along a spline of centres and radii.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SphereSweep {
+    /// The spline.
+    pub spline: SweepSpline,
+    /// The modelling spheres (centre, radius), in order.
+    pub spheres: Vec<(DVec3, f64)>,
+    /// Hits at or below this distance are ignored (POV-Ray's depth tolerance, default 1e-6).
+    pub tolerance: f64,
+}
+
 /// `height_field { png "file" [smooth] [water_level W] }`: heights on a grid, in POV-Ray's
 /// raw units (the object's transformation takes the grid to the unit box).
 #[derive(Clone, PartialEq)]

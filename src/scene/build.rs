@@ -483,6 +483,15 @@ fn build_shape(
             );
             (Shape::HeightField(Box::new(hf)), transform)
         }
+        ir::Shape::SphereSweep(s) => {
+            let curve = match s.spline {
+                ir::SweepSpline::Linear => crate::geometry::SweepCurve::Linear,
+                ir::SweepSpline::CatmullRom => crate::geometry::SweepCurve::CatmullRom,
+                ir::SweepSpline::BSpline => crate::geometry::SweepCurve::BSpline,
+            };
+            let sweep = crate::geometry::SphereSweep::new(curve, &s.spheres, s.tolerance);
+            (Shape::SphereSweep(Box::new(sweep)), transform)
+        }
         ir::Shape::Ovus { bottom, top } => (
             Shape::Ovus(Box::new(crate::geometry::Ovus::new(*bottom, *top))),
             transform,

@@ -498,11 +498,12 @@ fn textbook_torus_hit(torus: &trace::geometry::Torus, ray: &Ray) -> Option<f64> 
 // S11: the shapes of issue 16 far away.
 
 /// The shapes S11 measures, each fitting in a ball of radius 1.5 about the origin: a cubic
-/// prism, a quadratic lathe, a sor, a blob of two spheres and a cylinder, and a nearly boxy
-/// superellipsoid.
+/// prism, a quadratic lathe, a sor, a blob of two spheres and a cylinder, a nearly boxy
+/// superellipsoid and a B-spline sphere sweep.
 pub fn s11_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
     use trace::geometry::{
-        Blob, BlobElement, CurveSegment, Lathe, Prism, Shape, Sor, SorPiece, Superellipsoid,
+        Blob, BlobElement, CurveSegment, Lathe, Prism, Shape, Sor, SorPiece, SphereSweep,
+        Superellipsoid, SweepCurve,
     };
     let ring: Vec<(f64, f64)> = (0..7)
         .map(|i| {
@@ -557,6 +558,20 @@ pub fn s11_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
         (
             "superellipsoid <0.2, 0.2>",
             Shape::Superellipsoid(Superellipsoid::new(0.2, 0.2)),
+        ),
+        (
+            "sphere_sweep (b_spline)",
+            Shape::SphereSweep(Box::new(SphereSweep::new(
+                SweepCurve::BSpline,
+                &[
+                    (DVec3::new(-1.0, -0.6, 0.0), 0.2),
+                    (DVec3::new(-0.6, 0.6, 0.3), 0.3),
+                    (DVec3::new(0.0, -0.3, -0.2), 0.25),
+                    (DVec3::new(0.6, 0.6, 0.0), 0.2),
+                    (DVec3::new(1.0, -0.5, 0.3), 0.15),
+                ],
+                1e-6,
+            ))),
         ),
     ]
 }

@@ -517,11 +517,12 @@ fn report(rows: &[Row], rays: u64) -> String {
         s,
         "\n## S11: the spline, blob and superellipsoid shapes far away (within radius B = 1.5)\n\n\
          As S6, for a cubic prism, a quadratic lathe, a sor, a blob of two spheres and a cylinder,\n\
-         and a superellipsoid <0.2, 0.2>: the same line seen from 4.5 and from D away must give\n\
+         a superellipsoid <0.2, 0.2> and a B-spline sphere sweep: the same line seen from 4.5 and from D away must give\n\
          the same hit or miss and the same point within 1e-6. Their equations are formed about\n\
          the ray's point nearest the shape: formed at the ray's origin, as POV-Ray forms them,\n\
          the blob got 25 % of the lines wrong from 450 away, the sor 4 % from 4500 and the lathe\n\
-         3 % from 45000 (this experiment found it).\n"
+         3 % from 45000 (this experiment found it). The sphere sweep's equation is formed about\n\
+         each segment's middle.\n"
     );
     s += &table(rows, "S11", "wrong", "B", "D", &SHAPE_DISTANCES);
     let _ = writeln!(
