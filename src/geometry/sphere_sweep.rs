@@ -100,11 +100,8 @@ impl Segment {
 
     /// `G(u) = |p − C(u)|² − r(u)²`, negative where `p` is inside the sphere at `u`.
     fn gap(&self, p: DVec3) -> [f64; 11] {
-        let mut a = [DVec3::ZERO; 4];
+        let mut a = self.centre.map(|c| -c);
         a[0] = p - self.centre[0];
-        for k in 1..=self.degree {
-            a[k] = -self.centre[k];
-        }
         let mut g = [0.0; 11];
         for i in 0..=self.degree {
             for j in 0..=self.degree {
@@ -331,10 +328,10 @@ impl SphereSweep {
         let n = s.degree;
         let g = s.gap(o);
         let mut l = [0.0; 11];
-        l[0] = 2.0 * d.dot(o - s.centre[0]);
-        for k in 1..=n {
-            l[k] = -2.0 * d.dot(s.centre[k]);
+        for (l, c) in l.iter_mut().zip(&s.centre).take(n + 1) {
+            *l = -2.0 * d.dot(*c);
         }
+        l[0] = 2.0 * d.dot(o - s.centre[0]);
         let (dg, dl) = (derivative(&g, 2 * n), derivative(&l, n));
         let a = product(&dg, 2 * n - 1, &dg, 2 * n - 1);
         let b = product(&product(&l, n, &dl, n - 1), 2 * n - 1, &dg, 2 * n - 1);
