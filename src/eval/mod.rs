@@ -1056,15 +1056,6 @@ impl<'a> Evaluator<'a> {
                 NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
                 NodeKind::CameraBlur => ev.camera_blur(item, &mut c)?,
                 NodeKind::Normal => {
-                    if !matches!(
-                        c.projection,
-                        ir::Projection::Perspective | ir::Projection::Orthographic
-                    ) {
-                        return Err(Diagnostic::error(
-                            "unsupported: a camera normal with this projection (trace bends perspective and orthographic cameras' rays only)",
-                            item.word_span,
-                        ));
-                    }
                     let base = c.normal.take();
                     c.normal = Some(Box::new(ev.normal(item, base)?));
                 }

@@ -353,17 +353,17 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
         };
         (rad, phi)
     };
-    // The camera's normal bends the unit direction by its pattern at (x0, y0, 0).
-    let bent = |dir: glam::DVec3| match &scene.camera_normal {
-        Some(n) => n.perturb(glam::DVec3::new(x0, y0, 0.0), dir.normalize()).normalize(),
-        None => dir.normalize(),
-    };
-    match c.projection {
-        Projection::Perspective => along(bent(c.direction + x0 * c.right + y0 * c.up)),
-        Projection::Orthographic => Some(Ray::new(
-            c.location + x0 * c.right + y0 * c.up,
-            bent(c.direction),
-        )),
+    // Each projection gives its ray and its screen point (x, y, 0) in its own measure, where
+    // the camera's normal samples its pattern (POV-Ray's coordinates of each camera type).
+    let (ray, screen) = match c.projection {
+        Projection::Perspective => (along(c.direction + x0 * c.right + y0 * c.up), (x0, y0)),
+        Projection::Orthographic => (
+            Some(Ray::new(
+                c.location + x0 * c.right + y0 * c.up,
+                c.direction.normalize(),
+            )),
+            (x0, y0),
+        ),
         Projection::Fisheye { angle } => {
             let (rad, phi) = polar(x1 * len_right, y1 * len_up);
             if rad > 1.0 {
@@ -372,7 +372,7 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             let theta = rad * angle.to_radians() / 2.0;
             let (sx, cx) = phi.sin_cos();
             let (sy, cy) = theta.sin_cos();
-            along(cx * sy * r + sx * sy * u + cy * d)
+            (along(cx * sy * r + sx * sy * u + cy * d), (phi, theta))
         }
         Projection::Omnimax => {
             let aspect = len_right / len_up;
@@ -398,7 +398,7 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             if sx * sy < (135.0f64).to_radians().tan() * cy {
                 return None;
             }
-            along(cx * sy * r + sx * sy * u + cy * d)
+            (along(cx * sy * r + sx * sy * u + cy * d), (phi, theta))
         }
         Projection::Panoramic => {
             let lon = (1.0 - px / w) * PI;
@@ -408,39 +408,55 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             } else {
                 lat.tan()
             };
-            along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction)
+            (along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction), (lon, lat))
         }
         Projection::UltraWideAngle { angle } => {
             let angle = angle.to_radians();
             let aspect = len_up / len_right;
-            let (sx, cx) = (x0 * angle).sin_cos();
-            let (sy, cy) = (y0 * angle * aspect).sin_cos();
-            along(sx * r + sy * u + cx * cy * d)
+            let (ax, ay) = (x0 * angle, y0 * angle * aspect);
+            let (sx, cx) = ax.sin_cos();
+            let (sy, cy) = ay.sin_cos();
+            (along(sx * r + sy * u + cx * cy * d), (ax, ay))
         }
         Projection::Cylinder { kind, angle } => {
             let angle = angle.to_radians();
             // 1 and 3 curve across the width (aspect from up), 2 and 4 across the height.
             let (sx, cx) = (x0 * angle).sin_cos();
             let (sy, cy) = (y0 * angle).sin_cos();
+            let (across, up) = ((x0 * angle, y0 * len_up), (x0 * len_right, y0 * angle));
             match kind {
-                1 => along(sx * r + y0 * len_up * u + cx * d),
-                2 => along(x0 * len_right * r + sy * u + cy * d),
-                3 => Some(Ray::new(
-                    c.location + y0 * len_up * u,
-                    (sx * r + cx * d).normalize(),
-                )),
-                _ => Some(Ray::new(
-                    c.location + x0 * len_right * r,
-                    (sy * u + cy * d).normalize(),
-                )),
+                1 => (along(sx * r + y0 * len_up * u + cx * d), across),
+                2 => (along(x0 * len_right * r + sy * u + cy * d), up),
+                3 => (
+                    Some(Ray::new(
+                        c.location + y0 * len_up * u,
+                        (sx * r + cx * d).normalize(),
+                    )),
+                    across,
+                ),
+                _ => (
+                    Some(Ray::new(
+                        c.location + x0 * len_right * r,
+                        (sy * u + cy * d).normalize(),
+                    )),
+                    up,
+                ),
             }
         }
         Projection::Spherical { h, v } => {
             let lat = y0 * v.to_radians();
             let lon = x0 * h.to_radians();
             let v1 = glam::DQuat::from_axis_angle(r, -lat) * c.direction;
-            along(glam::DQuat::from_axis_angle(u, lon) * v1)
+            (along(glam::DQuat::from_axis_angle(u, lon) * v1), (lon, lat))
         }
+    };
+    // The camera's normal bends the unit direction by its pattern at the screen point.
+    match (&scene.camera_normal, ray) {
+        (Some(n), Some(ray)) => {
+            let bent = n.perturb(glam::DVec3::new(screen.0, screen.1, 0.0), ray.direction);
+            Some(Ray::new(ray.origin, bent.normalize()))
+        }
+        (_, ray) => ray,
     }
 }
 
