@@ -448,6 +448,7 @@ impl Evaluator<'_> {
                         radius,
                         strength,
                         transform: None,
+                        texture: None,
                     });
                 }
                 NodeKind::Sphere | NodeKind::Cylinder => {
@@ -474,25 +475,52 @@ impl Evaluator<'_> {
                     };
                     let radius = ev.float(&item.args[n - 1])?;
                     let mut transform: Option<Transform> = None;
+                    let mut texture: Option<Texture> = None;
                     ev.each_item(&item.children, &mut |ev, m| {
                         if Self::is_transform(m) {
                             let t = ev.transform(m)?;
                             transform = compose(transform, t);
+                            // (A component's texture moves with the component.)
+                            if let Some(texture) = &mut texture {
+                                texture.transform(t);
+                            }
                             return Ok(());
                         }
-                        Err(Diagnostic::error(
-                            format!(
-                                "unsupported: `{}` on a blob component (trace gives blob components transformations only, not textures of their own)",
-                                m.word
-                            ),
-                            m.word_span,
-                        ))
+                        match m.kind {
+                            NodeKind::Texture => {
+                                let t = ev.texture(m)?;
+                                texture = Some(match texture.take() {
+                                    // A second texture is a layer on top, as on objects.
+                                    Some(below) => super::material::layer(t, below),
+                                    None => t,
+                                });
+                                Ok(())
+                            }
+                            NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
+                                let mut t = texture.take().unwrap_or_else(|| ev.default_texture.clone());
+                                match m.kind {
+                                    NodeKind::Pigment => t.pigment = ev.pigment(m, t.pigment.clone())?,
+                                    NodeKind::Normal => t.normal = Some(Box::new(ev.normal(m, t.normal.take())?)),
+                                    _ => t.finish = ev.shared_finish_block(m, &t.finish)?,
+                                }
+                                texture = Some(t);
+                                Ok(())
+                            }
+                            _ => Err(Diagnostic::error(
+                                format!(
+                                    "`{}` does not belong on a blob component (it takes transformations and a texture)",
+                                    m.word
+                                ),
+                                m.word_span,
+                            )),
+                        }
                     })?;
                     blob.components.push(ir::BlobComponent {
                         reach,
                         radius,
                         strength,
                         transform: transform.map(|t| t.matrix),
+                        texture: texture.map(Box::new),
                     });
                 }
                 _ if is_object(item.kind) => {

@@ -106,7 +106,7 @@ impl BlobElement {
     }
 
     /// The field at blob-space point `p`.
-    fn density(&self, p: DVec3) -> f64 {
+    pub fn density(&self, p: DVec3) -> f64 {
         match self.offset(self.local(p)) {
             Some(v) if v.length_squared() < self.r2 => {
                 let k = 1.0 - v.length_squared() / self.r2;

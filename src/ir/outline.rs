@@ -336,6 +336,10 @@ pub struct BlobComponent {
     pub strength: f64,
     /// The component's own transformations (a stretched sphere is an ellipsoid).
     pub transform: Option<DMat4>,
+    /// The component's own texture, in blob space (moved by the component's transformations
+    /// that follow it); where components with textures act, the surface blends them by
+    /// their fields, as POV-Ray does.
+    pub texture: Option<Box<super::Texture>>,
 }
 
 /// `blob { threshold T components… }`: where the components' fields add up to the threshold.

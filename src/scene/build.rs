@@ -110,6 +110,42 @@ fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Text
     (sides, textures)
 }
 
+/// The material of a blob whose components have textures of their own: entry 0 is the
+/// blob's texture, then one entry per textured component (placed in the world by the
+/// object's transformation); each element brings its component's entry.
+fn blob_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Option<Material> {
+    let ir::Shape::Blob(b) = &o.shape else { return None };
+    if b.components.iter().all(|c| c.texture.is_none()) {
+        return None;
+    }
+    let world = o.transform.as_ref().map(|t| **t);
+    let mut entries = vec![Material::new(&o.texture, defaults)];
+    let mut elements = Vec::new();
+    for c in &b.components {
+        let entry = match &c.texture {
+            Some(t) => {
+                let mut t = (**t).clone();
+                if let Some(w) = world {
+                    t.transform(w);
+                }
+                entries.push(Material::new(&t, defaults));
+                entries.len() as u32 - 1
+            }
+            None => 0,
+        };
+        match c.reach {
+            ir::BlobReach::Sphere(centre) => {
+                elements.push((BlobElement::sphere(centre, c.radius, c.strength, c.transform), entry))
+            }
+            ir::BlobReach::Cylinder(a, e) => elements.extend(
+                BlobElement::cylinder(a, e, c.radius, c.strength, c.transform).map(|el| (el, entry)),
+            ),
+        }
+    }
+    let blob_from_world = world.map(|w| w.matrix.inverse());
+    Some(Material::blob_blend(entries, elements, blob_from_world))
+}
+
 /// What the scene's settings give patterns that name nothing themselves.
 fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
     crate::pattern::SceneDefaults {
@@ -144,14 +180,23 @@ impl Scene {
 
     /// Everything but the acceleration structure, and the world bounds of each object.
     fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
-        let (ids, textures) = material_ids(ir);
+        let (mut ids, textures) = material_ids(ir);
         let (interior_ids, interiors) =
             shared_ids(&ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(), interior_key);
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
-        let materials = textures
+        let mut materials: Vec<Material> = textures
             .into_iter()
             .map(|t| Material::new(t, pattern_defaults(ir)))
             .collect();
+        // A blob whose components have textures gets a material of its own that blends them
+        // (both sides: POV-Ray ignores an interior texture there).
+        for (o, id) in ir.objects.iter().zip(&mut ids) {
+            if let Some(m) = blob_material(o, pattern_defaults(ir)) {
+                let own = MaterialId(materials.len() as u32);
+                materials.push(m);
+                *id = (own, own);
+            }
+        }
         // Each distinct mesh is built once, for all its instances (keyed by address).
         let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
         for o in &ir.objects {

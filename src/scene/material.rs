@@ -33,6 +33,7 @@ impl Material {
             under: t.under.iter().map(|l| Material::new(l, scene)).collect(),
             map: t.map.as_deref().map(|m| {
                 Box::new(MaterialMap {
+                    blob: None,
                     pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
                     world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
@@ -57,6 +58,27 @@ impl Material {
             Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
             None => m.layers().all(|l| l.pigment.may_be_transparent()),
         };
+        m
+    }
+
+    /// The surface of a blob whose components have textures: `entries` blended at each point
+    /// by the fields of the `elements` acting there (each with its entry), in blob space
+    /// (`blob_from_world` takes the world there).
+    pub fn blob_blend(entries: Vec<Material>, mut elements: Vec<(BlobElement, u32)>, blob_from_world: Option<DMat4>) -> Material {
+        // Elements of one entry side by side, so that each entry is lit once.
+        elements.sort_by_key(|(_, entry)| *entry);
+        let see_through = entries.iter().any(Material::may_be_transparent);
+        let map = MaterialMap {
+            blob: Some(elements.into_boxed_slice()),
+            pattern: crate::pattern::Pattern::new(crate::pattern::PatternKind::Average),
+            pattern_from_world: blob_from_world,
+            world_from_pattern: blob_from_world.map(|m| m.inverse()),
+            entries: entries.into_iter().map(|m| (0.0, m)).collect(),
+        };
+        let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
+        let mut m = Material::new(&ir::Texture::default(), defaults);
+        m.map = Some(Box::new(map));
+        m.see_through = see_through;
         m
     }
 
@@ -86,6 +108,9 @@ impl Material {
 /// A pattern of materials (`texture_map`, `checker texture {…} texture {…}`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct MaterialMap {
+    /// For a blob's textures: its elements (blob space) and the entry each one brings; the
+    /// pattern is then unused.
+    blob: Option<Box<[(BlobElement, u32)]>>,
     pattern: crate::pattern::Pattern,
     pattern_from_world: Option<DMat4>,
     world_from_pattern: Option<DMat4>,
@@ -100,6 +125,9 @@ impl MaterialMap {
     /// each entry and the point it is evaluated at (the pattern's warped point).
     pub fn blend<'m>(&'m self, p: DVec3, mut f: impl FnMut(&'m Material, DVec3) -> Rgb) -> Rgb {
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
+        if let Some(elements) = &self.blob {
+            return self.blob_blend(elements, q, p, f);
+        }
         let warped = self.pattern.warp(q);
         let at = self.world_point(q, warped, p);
         if self.pattern.kind == crate::pattern::PatternKind::Average {
@@ -117,6 +145,42 @@ impl MaterialMap {
             return c;
         }
         f(&self.entries[prev].1, at) * (1.0 - t) + c * t
+    }
+
+    /// POV-Ray's blob textures: each element acting at blob-space point `q` brings its entry
+    /// with weight |field|, the weights normalised to sum 1; entries whose share is below
+    /// POV-Ray's default `adc_bailout` (1/255) are skipped, each lit at world point `p`.
+    fn blob_blend<'m>(
+        &'m self,
+        elements: &[(BlobElement, u32)],
+        q: DVec3,
+        p: DVec3,
+        mut f: impl FnMut(&'m Material, DVec3) -> Rgb,
+    ) -> Rgb {
+        const BAILOUT: f64 = 1.0 / 255.0;
+        let total: f64 = elements.iter().map(|(e, _)| e.density(q).abs()).sum();
+        if total <= 0.0 {
+            return Rgb::ZERO;
+        }
+        let mut sum = Rgb::ZERO;
+        let mut run = (u32::MAX, 0.0);
+        let mut flush = |(entry, weight): (u32, f64), sum: &mut Rgb| {
+            if weight > 0.0 {
+                *sum += f(&self.entries[entry as usize].1, p) * weight;
+            }
+        };
+        for (e, entry) in elements {
+            let w = e.density(q).abs() / total;
+            if *entry != run.0 {
+                flush(run, &mut sum);
+                run = (*entry, 0.0);
+            }
+            if w >= BAILOUT {
+                run.1 += w;
+            }
+        }
+        flush(run, &mut sum);
+        sum
     }
 
     /// The entries see the pattern's warped point: placed in the world as they are, that is

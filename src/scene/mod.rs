@@ -6,7 +6,7 @@
 //! ray queries (through `accel`, the one place that knows the BVH), `material`, `pigment` and
 //! `normal` evaluate surfaces. Shapes themselves are `geometry::Shape`.
 
-use crate::geometry::{Crossings, Ray, Shape, TriangleMesh, offset_origin};
+use crate::geometry::{BlobElement, Crossings, Ray, Shape, TriangleMesh, offset_origin};
 use crate::ir;
 use glam::{DMat3, DMat4, DVec3};
 use std::sync::Arc;
