@@ -612,6 +612,71 @@ pub fn far_shape(shape: &trace::geometry::Shape, distance: f64, rays: u64) -> Co
 }
 
 // ---------------------------------------------------------------------------------------------
+// S12: grazing lines on the closed shapes of issue 16.
+
+/// The closed shapes S12 grazes (within a ball of radius 1.5): S11's prism, sor, blob and
+/// sphere sweep, a closed lathe (a quadratic profile from the axis to the axis), and
+/// superellipsoids with thin (sharp-edged) and round exponents.
+pub fn s12_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
+    use trace::geometry::{CurveSegment, Lathe, Shape, Superellipsoid};
+    let mut shapes: Vec<_> = s11_shapes()
+        .into_iter()
+        .filter(|(name, _)| !name.starts_with("lathe") && !name.starts_with("superellipsoid"))
+        .collect();
+    let spindle = vec![
+        CurveSegment::new([0.0, -1.0, 2.0, 0.0], [0.0, 0.0, 1.0, -1.0]),
+        CurveSegment::new([0.0, -1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0]),
+    ];
+    shapes.push(("lathe (quadratic, closed)", Shape::Lathe(Box::new(Lathe::new(2, spindle)))));
+    shapes.push((
+        "superellipsoid <0.02, 0.02>",
+        Shape::Superellipsoid(Superellipsoid::new(0.02, 0.02)),
+    ));
+    shapes.push((
+        "superellipsoid <1.8, 0.5>",
+        Shape::Superellipsoid(Superellipsoid::new(1.8, 0.5)),
+    ));
+    shapes
+}
+
+/// S12: lines that meet `shape`'s surface at a random point at `angle` (radians) to it, from
+/// outside its ball to infinity. A line from outside to outside crosses a closed surface an
+/// even number of times: an odd count (one crossing of a close pair found, the other lost)
+/// or a NaN is a failure. Losing both crossings is not counted (the sliver is missed, which
+/// no interior bookkeeping notices).
+pub fn grazing_shape(shape: &trace::geometry::Shape, angle: f64, rays: u64) -> Count {
+    let bound = 1.5;
+    let mut rng = Rng::new(0x5EED_0012);
+    let mut count = Count::default();
+    let mut attempts = 0;
+    while count.rays < rays && attempts < 20 * rays {
+        attempts += 1;
+        let q = rng.unit() * (bound * rng.uniform().cbrt());
+        let u = rng.unit();
+        let probe = Ray::new(q - 3.0 * bound * u, u);
+        let Some((t, part)) = shape.intersect(&probe).first_part() else {
+            continue;
+        };
+        let p = probe.at(t);
+        let n = shape.normals(p, part).1.normalize();
+        if !n.is_finite() {
+            continue;
+        }
+        let tangent = n.cross(rng.unit()).normalize();
+        let d = (tangent * angle.cos() - n * angle.sin()).normalize();
+        let line = Ray::new(p - 3.0 * bound * d, d);
+        let (mut crossings, mut nan) = (0u32, false);
+        shape.for_each_crossing(&line, |t, _| {
+            crossings += 1;
+            nan |= !t.is_finite();
+        });
+        count.rays += 1;
+        count.failures += u64::from(nan || crossings % 2 == 1);
+    }
+    count
+}
+
+// ---------------------------------------------------------------------------------------------
 // S7: the same scene at every scale and place.
 
 /// The S7 scene at scale `k`, moved by `shift` along (1, 1, 1): spheres, a box, a torus, a
