@@ -31,6 +31,7 @@
 pub mod diag;
 pub mod film;
 pub mod font;
+pub mod func;
 pub mod ir;
 pub mod memory;
 pub mod meshfile;

@@ -120,7 +120,7 @@ impl Evaluator<'_> {
         }
     }
 
-    fn ident(&mut self, name: &str, span: Span) -> Result<Value> {
+    pub(super) fn ident(&mut self, name: &str, span: Span) -> Result<Value> {
         if let Some(v) = self.env.get(name) {
             return self.usable(name, v.clone(), span);
         }
@@ -307,6 +307,10 @@ impl Evaluator<'_> {
     }
 
     fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Value> {
+        if let Some(Value::Function(f)) = self.env.get(name) {
+            let f = std::sync::Arc::clone(f);
+            return self.call_function(&f, name, args, span);
+        }
         if let Some(v) = self.call_special(name, args, span)? {
             return Ok(v);
         }

@@ -185,6 +185,9 @@ impl<'a> Evaluator<'a> {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
             Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
+            Some(item) if item.kind == NodeKind::Function => {
+                self.function(item).map(Value::Function).or_else(unsupported_later)?
+            }
             Some(item) if item.kind == NodeKind::IdentRef => {
                 self.lookup(item).or_else(unsupported_later)?
             }

@@ -524,6 +524,7 @@ const SUPPORTED: &[&str] = &[
     "adc_bailout",
     "agate",
     "agate_turb",
+    "all_intersections",
     "ambient",
     "ambient_light",
     "angle",
@@ -581,6 +582,7 @@ const SUPPORTED: &[&str] = &[
     "confidence",
     "conic_sweep",
     "conserve_energy",
+    "contained_by",
     "control0",
     "control1",
     "coords",
@@ -641,6 +643,7 @@ const SUPPORTED: &[&str] = &[
     "form",
     "frequency",
     "fresnel",
+    "function",
     "global_settings",
     "gradient",
     "granite",
@@ -666,6 +669,7 @@ const SUPPORTED: &[&str] = &[
     "ior",
     "irid",
     "irid_wavelength",
+    "isosurface",
     "jitter",
     "julia_fractal",
     "lambda",
@@ -686,7 +690,9 @@ const SUPPORTED: &[&str] = &[
     "material",
     "matrix",
     "max",
+    "max_gradient",
     "max_iteration",
+    "max_trace",
     "max_trace_level",
     "mesh",
     "mesh2",
@@ -911,8 +917,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "isosurface"
-        | "polynomial" | "parametric"
+        "polynomial" | "parametric"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
@@ -925,7 +930,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
             "only png image files are read by trace"
         }
-        "density_file" | "function" | "julia" | "magnet" | "mandel"
+        "density_file" | "julia" | "magnet" | "mandel"
         | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
@@ -950,8 +955,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "all_intersections"
-        | "contained_by" | "evaluate" | "max_gradient" | "max_trace" | "pwr" | "reciprocal"
+        "evaluate" | "pwr" | "reciprocal"
         => {
             "this shape or shape item is not supported by trace yet"
         }

@@ -7,6 +7,7 @@
 mod array;
 mod expr;
 mod flow;
+mod function;
 mod heightfield;
 pub mod keywords;
 mod material;
@@ -443,6 +444,12 @@ impl<'a> Evaluator<'a> {
                     "unsupported: an entry of this `{}` that trace cannot read yet (a function pattern or another construct outside the subset)",
                     node.word
                 ),
+                node.word_span,
+            );
+        }
+        if node.word == "function" && matches!(context, "pigment" | "normal" | "texture") {
+            return Diagnostic::error(
+                format!("unsupported: a function pattern in a {context} (trace has functions in declarations and isosurfaces only yet)"),
                 node.word_span,
             );
         }

@@ -100,6 +100,7 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
             | MeshFile
             | Union
             | Blob
+            | Isosurface
             | ObjectRef
     )
 }
@@ -206,6 +207,10 @@ impl Evaluator<'_> {
             NodeKind::Blob => {
                 modifiers = &[];
                 self.blob(node)?
+            }
+            NodeKind::Isosurface => {
+                modifiers = &[];
+                self.isosurface(node)?
             }
             NodeKind::Plane => {
                 let normal = self.nonzero(&node.args[0], "plane normal")?;
@@ -418,6 +423,80 @@ impl Evaluator<'_> {
             _ => unreachable!("{:?} is not an object", node.kind),
         };
         self.each_item(modifiers, &mut |ev, m| ev.object_modifier(&mut object, m, node))?;
+        Ok(object)
+    }
+
+    /// `isosurface { function {…} [contained_by {…}] settings… modifiers }`.
+    fn isosurface(&mut self, node: &Node) -> Result<ObjectValue> {
+        let mut iso = ir::Isosurface {
+            function: std::sync::Arc::new(crate::func::Function::internal(crate::func::Internal::R)),
+            container: ir::Container::Box(DVec3::splat(-1.0), DVec3::splat(1.0)),
+            threshold: 0.0,
+            accuracy: 0.001,
+            max_gradient: 1.1,
+            closed: true,
+            max_trace: 1,
+        };
+        let mut function = None;
+        let mut modifiers: Vec<Node> = Vec::new();
+        self.each_item(&node.children, &mut |ev, item| {
+            match item.kind {
+                NodeKind::Function => function = Some(ev.function(item)?),
+                NodeKind::ContainedBy => {
+                    let shape = &item.children[0];
+                    iso.container = if shape.kind == NodeKind::Sphere {
+                        ir::Container::Sphere(ev.vec3(&shape.args[0])?, ev.float(&shape.args[1])?)
+                    } else {
+                        let (a, b) = (ev.vec3(&shape.args[0])?, ev.vec3(&shape.args[1])?);
+                        ir::Container::Box(a.min(b), a.max(b))
+                    };
+                }
+                NodeKind::IsoSetting => {
+                    let value = |ev: &mut Self, i: usize| -> Result<f64> {
+                        match item.args.get(i) {
+                            Some(e) => ev.float(e),
+                            None => Err(Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)),
+                        }
+                    };
+                    match item.word.as_str() {
+                        "threshold" => iso.threshold = value(ev, 0)?,
+                        "accuracy" => iso.accuracy = value(ev, 0)?,
+                        "max_gradient" => iso.max_gradient = value(ev, 0)?,
+                        "max_trace" => iso.max_trace = value(ev, 0)?.max(1.0) as u32,
+                        "all_intersections" => iso.max_trace = 10,
+                        "open" => iso.closed = false,
+                        _ => {
+                            return Err(Diagnostic::error(
+                                "unsupported: `evaluate` on an isosurface (trace keeps max_gradient fixed)",
+                                item.word_span,
+                            ));
+                        }
+                    }
+                }
+                _ => modifiers.push(item.clone()),
+            }
+            Ok(())
+        })?;
+        let Some(function) = function else {
+            return Err(Diagnostic::error("an isosurface needs its function { … }", node.word_span));
+        };
+        if function.params < 3 {
+            return Err(Diagnostic::error(
+                "an isosurface's function takes x, y and z (three parameters)",
+                node.word_span,
+            ));
+        }
+        if iso.accuracy <= 0.0 || iso.max_gradient <= 0.0 {
+            return Err(Diagnostic::error(
+                "an isosurface's accuracy and max_gradient must be above 0",
+                node.word_span,
+            ));
+        }
+        iso.function = function;
+        let mut object = ObjectValue::single(Shape::Isosurface(Box::new(iso)));
+        for m in &modifiers {
+            self.object_modifier(&mut object, m, node)?;
+        }
         Ok(object)
     }
 

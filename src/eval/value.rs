@@ -64,6 +64,8 @@ pub enum Value {
     Str(String),
     /// `array[…]`: its elements row-major, `None` where none was assigned yet.
     Array(Box<Array>),
+    /// `function { … }`, compiled.
+    Function(std::sync::Arc<crate::func::Function>),
     /// A declaration trace could not evaluate: the reason, reported when the name is used.
     Unsupported(Box<crate::diag::Diagnostic>),
 }
@@ -110,6 +112,7 @@ impl Value {
             Value::SlopeMap(_) => "a slope_map",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
+            Value::Function(_) => "a function",
             Value::Unsupported(_) => "an unsupported value",
         }
     }

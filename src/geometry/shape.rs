@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Isosurface, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -218,6 +218,8 @@ shapes! {
     Superellipsoid(Superellipsoid),
     /// `sphere_sweep` (boxed: its segments are a list).
     SphereSweep(Box<SphereSweep>),
+    /// `isosurface` (boxed: a function and its settings).
+    Isosurface(Box<Isosurface>),
 }
 
 #[cfg(test)]

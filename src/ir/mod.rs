@@ -11,8 +11,9 @@ pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 
 mod outline;
 pub use outline::{
-    BicubicPatch, Blob, BlobComponent, BlobReach, Curve, Glyph, HeightField, JuliaFractal, Lathe,
-    Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep, SweepSpline, Text,
+    BicubicPatch, Blob, BlobComponent, BlobReach, Container, Curve, Glyph, HeightField, Isosurface,
+    JuliaFractal, Lathe, Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep, SweepSpline,
+    Text,
 };
 
 /// An RGB colour (linear working space, unclamped).
@@ -444,6 +445,8 @@ pub enum Shape {
         /// Radius of the sphere one bottom radius above it.
         top: f64,
     },
+    /// `isosurface { … }`: where a function reaches its threshold.
+    Isosurface(Box<Isosurface>),
     /// `sphere_sweep { … }`: a sphere swept along a spline.
     SphereSweep(Box<SphereSweep>),
     /// `bicubic_patch { … }`: a Bézier patch.

@@ -351,6 +351,35 @@ pub struct Blob {
     pub components: Vec<BlobComponent>,
 }
 
+/// What holds an isosurface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Container {
+    /// A box between its least and greatest corners.
+    Box(DVec3, DVec3),
+    /// A sphere: centre and radius.
+    Sphere(DVec3, f64),
+}
+
+/// `isosurface { function {…} … }`: where the function reaches its threshold within the
+/// container.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Isosurface {
+    /// The function of x, y, z.
+    pub function: std::sync::Arc<crate::func::Function>,
+    /// `contained_by { box {…} | sphere {…} }` (default the box from <-1,-1,-1> to <1,1,1>).
+    pub container: Container,
+    /// `threshold` (default 0).
+    pub threshold: f64,
+    /// `accuracy` (default 0.001).
+    pub accuracy: f64,
+    /// `max_gradient` (default 1.1).
+    pub max_gradient: f64,
+    /// Not `open`: the container closes the surface.
+    pub closed: bool,
+    /// `max_trace` (default 1; `all_intersections` 10).
+    pub max_trace: u32,
+}
+
 /// How a `sphere_sweep` passes from one sphere to the next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SweepSpline {

@@ -181,6 +181,7 @@ impl Scene {
     /// Everything but the acceleration structure, and the world bounds of each object.
     fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
         let (mut ids, textures) = material_ids(ir);
+        let generator = ir.settings.noise_generator;
         let (interior_ids, interiors) =
             shared_ids(&ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(), interior_key);
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
@@ -213,7 +214,7 @@ impl Scene {
             .zip(interior_ids)
             .map(|((o, (material, back_material)), interior)| {
                 let (shape, transform) =
-                    build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes);
+                    build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes, generator);
                 let mut object = Object {
                     shape,
                     bounded: false,
@@ -244,6 +245,7 @@ impl Scene {
                                     &b.shape,
                                     b.transform.as_ref().map(|t| t.matrix),
                                     &meshes,
+                                    generator,
                                 );
                                 BoundShape {
                                     shape,
@@ -392,6 +394,7 @@ fn build_shape(
     shape: &ir::Shape,
     transform: Option<DMat4>,
     meshes: &HashMap<usize, Arc<TriangleMesh>>,
+    generator: u8,
 ) -> (Shape, Option<DMat4>) {
     match shape {
         ir::Shape::Sphere { centre, radius } => {
@@ -527,6 +530,22 @@ fn build_shape(
                 smooth,
             );
             (Shape::HeightField(Box::new(hf)), transform)
+        }
+        ir::Shape::Isosurface(i) => {
+            let iso = crate::geometry::Isosurface::new(
+                std::sync::Arc::clone(&i.function),
+                generator,
+                match i.container {
+                    ir::Container::Box(a, b) => crate::geometry::Container::Box(a, b),
+                    ir::Container::Sphere(c, r) => crate::geometry::Container::Sphere(c, r),
+                },
+                i.threshold,
+                i.accuracy,
+                i.max_gradient,
+                i.closed,
+                i.max_trace,
+            );
+            (Shape::Isosurface(Box::new(iso)), transform)
         }
         ir::Shape::SphereSweep(s) => {
             let curve = match s.spline {

@@ -73,6 +73,17 @@ pub enum NodeKind {
     Charset,
     /// `blob { … }`.
     Blob,
+    /// `function [(params)] { expression }`: the parameters (`FunctionParams`, its text in
+    /// `word`) and the body in `args`.
+    Function,
+    /// `(a, b, …)` of a function: the text, in `word`.
+    FunctionParams,
+    /// `isosurface { … }`.
+    Isosurface,
+    /// `contained_by { box {…} | sphere {…} }`.
+    ContainedBy,
+    /// An isosurface setting: its word and values.
+    IsoSetting,
     /// `threshold T` in a blob.
     BlobThreshold,
     /// `component S, R, C` in a blob.
@@ -813,6 +824,11 @@ impl Lower {
             Rule::shape => NodeKind::Shape,
             Rule::shape_word => NodeKind::Flag,
             Rule::blob => NodeKind::Blob,
+            Rule::function_value => NodeKind::Function,
+            Rule::function_params => NodeKind::FunctionParams,
+            Rule::isosurface => NodeKind::Isosurface,
+            Rule::contained_by => NodeKind::ContainedBy,
+            Rule::iso_setting => NodeKind::IsoSetting,
             Rule::charset => NodeKind::Charset,
             Rule::camera_blur => NodeKind::CameraBlur,
             Rule::blob_threshold => NodeKind::BlobThreshold,
@@ -947,6 +963,7 @@ impl Lower {
                 | Rule::unparsed_value
                 | Rule::shape_word
                 | Rule::charset
+                | Rule::function_params
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
@@ -1249,6 +1266,10 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_blob
+            | kw_function
+            | kw_isosurface
+            | kw_contained_by
+            | iso_word
             | camera_blur_kw
             | kw_threshold
             | kw_component

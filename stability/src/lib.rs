@@ -627,7 +627,10 @@ pub fn s12_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
         CurveSegment::new([0.0, -1.0, 2.0, 0.0], [0.0, 0.0, 1.0, -1.0]),
         CurveSegment::new([0.0, -1.0, 0.0, 1.0], [0.0, 0.0, 1.0, 0.0]),
     ];
-    shapes.push(("lathe (quadratic, closed)", Shape::Lathe(Box::new(Lathe::new(2, spindle)))));
+    shapes.push((
+        "lathe (quadratic, closed)",
+        Shape::Lathe(Box::new(Lathe::new(2, spindle))),
+    ));
     shapes.push((
         "superellipsoid <0.02, 0.02>",
         Shape::Superellipsoid(Superellipsoid::new(0.02, 0.02)),

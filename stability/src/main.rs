@@ -8,9 +8,9 @@ use std::fmt::Write as _;
 use std::time::Instant;
 use trace_stability::{
     Count, OffsetMethod, SphereMethod, TriangleMethod, black_pixels, box_grid_failures,
-    contact_shadow, ellipsoid_normals, far_shape, far_sphere, far_torus, glass_sphere_nan, grazing, grazing_shape,
-    grid_leaks, mesh_leaks, pane_scene, pane_stack, s11_shapes, s12_shapes, scale_invariance, sphere_acne,
-    thin_wall, thread_determinism,
+    contact_shadow, ellipsoid_normals, far_shape, far_sphere, far_torus, glass_sphere_nan, grazing,
+    grazing_shape, grid_leaks, mesh_leaks, pane_scene, pane_stack, s11_shapes, s12_shapes,
+    scale_invariance, sphere_acne, thin_wall, thread_determinism,
 };
 
 const RADII: [f64; 3] = [1e-3, 1.0, 1e3];

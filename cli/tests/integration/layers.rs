@@ -11,16 +11,22 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("syntax", &["diag"]),
     // meshfile: `mesh_file { }` reads OBJ and PLY files while evaluating.
     // font: `text { ttf … }` lays glyphs out while evaluating.
+    // func: user functions compiled while evaluating.
     (
         "eval",
-        &["syntax", "ir", "diag", "meshfile", "pattern", "font"],
+        &[
+            "syntax", "ir", "diag", "meshfile", "pattern", "font", "func",
+        ],
     ),
-    ("ir", &["diag", "pattern"]),
-    ("geometry", &[]),
+    ("ir", &["diag", "pattern", "func"]),
+    // func: the isosurface's function (a function of a point, like a pattern).
+    ("geometry", &["func"]),
+    // func: compiled user functions; their noise is the patterns' noise.
+    ("func", &["pattern"]),
     // pattern: functions of a point (what a pigment or normal looks up), used by the IR's
     // materials and by the render-ready ones.
     ("pattern", &[]),
-    ("scene", &["ir", "geometry", "pattern"]),
+    ("scene", &["ir", "geometry", "pattern", "func"]),
     ("render", &["scene", "geometry", "film"]),
     // output: temporary files removed on interrupt or when memory runs out.
     ("film", &["output"]),

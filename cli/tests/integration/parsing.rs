@@ -235,3 +235,25 @@ fn equal_finishes_and_interiors_are_stored_once() {
     assert_eq!(o[2].texture.finish.phong, 0.6);
     assert_eq!(o[2].interior.ior, 1.33);
 }
+
+/// User functions and functions.inc's internal functions print what POV-Ray 3.7 prints
+/// (tests/scenes/ok/functions.povray.txt, captured from `povray` on the same scene).
+#[test]
+fn functions_give_povrays_values() {
+    let Some(include) = trace::standard_include_folder() else {
+        eprintln!("skipped: POV-Ray's include folder is not installed");
+        return;
+    };
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let scene = root.join("tests/scenes/ok/functions.rt");
+    let options = trace::LoadOptions {
+        width: 8,
+        height: 8,
+        include_paths: vec![include],
+        ..Default::default()
+    };
+    let loaded = trace::load(&scene, &options).unwrap_or_else(|e| panic!("{e}"));
+    let expected =
+        std::fs::read_to_string(root.join("tests/scenes/ok/functions.povray.txt")).unwrap();
+    assert_eq!(loaded.debug_output.trim(), expected.trim());
+}

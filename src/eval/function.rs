@@ -1,0 +1,227 @@
+//! `function [(a, b, …)] { … }`: compiled into a [`Function`] when declared, as POV-Ray
+//! compiles it: parameters by position, declared floats folded in as constants, other
+//! declared functions called, POV-Ray's maths and `internal(N)`. The operators are POV-Ray's
+//! function syntax (`+ - * /`, comparisons, `&`, `|`, unary `-`); `!` and `? :` are not in it.
+
+use super::expr::check_arity;
+use super::{Evaluator, Result, Value};
+use crate::diag::{Diagnostic, Span};
+use crate::func::{Function, Internal, Math1, Math2, Op};
+use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, UnOp};
+use std::sync::Arc;
+
+/// The functions.inc name of POV-Ray's internal function `n`, for messages.
+fn internal_name(n: i64) -> &'static str {
+    const NAMES: [&str; 79] = [
+        "f_algbr_cyl1", "f_algbr_cyl2", "f_algbr_cyl3", "f_algbr_cyl4", "f_bicorn", "f_bifolia", "f_blob",
+        "f_blob2", "f_boy_surface", "f_comma", "f_cross_ellipsoids", "f_crossed_trough", "f_cubic_saddle",
+        "f_cushion", "f_devils_curve", "f_devils_curve_2d", "f_dupin_cyclid", "f_ellipsoid", "f_enneper",
+        "f_flange_cover", "f_folium_surface", "f_folium_surface_2d", "f_glob", "f_heart", "f_helical_torus",
+        "f_helix1", "f_helix2", "f_hex_x", "f_hex_y", "f_hetero_mf", "f_hunt_surface", "f_hyperbolic_torus",
+        "f_isect_ellipsoids", "f_kampyle_of_eudoxus", "f_kampyle_of_eudoxus_2d", "f_klein_bottle",
+        "f_kummer_surface_v1", "f_kummer_surface_v2", "f_lemniscate_of_gerono", "f_lemniscate_of_gerono_2d",
+        "f_mesh1", "f_mitre", "f_nodal_cubic", "f_odd", "f_ovals_of_cassini", "f_paraboloid",
+        "f_parabolic_torus", "f_ph", "f_pillow", "f_piriform", "f_piriform_2d", "f_poly4", "f_polytubes",
+        "f_quantum", "f_quartic_paraboloid", "f_quartic_saddle", "f_quartic_cylinder", "f_r", "f_ridge",
+        "f_ridged_mf", "f_rounded_box", "f_sphere", "f_spikes", "f_spikes_2d", "f_spiral", "f_steiners_roman",
+        "f_strophoid", "f_strophoid_2d", "f_superellipsoid", "f_th", "f_torus", "f_torus2", "f_torus_gumdrop",
+        "f_umbrella", "f_witch_of_agnesi", "f_witch_of_agnesi_2d", "f_noise3d", "f_pattern",
+        "f_noise_generator",
+    ];
+    usize::try_from(n).ok().and_then(|i| NAMES.get(i)).copied().unwrap_or("an unknown one")
+}
+
+impl Evaluator<'_> {
+    /// A `function { … }` node, compiled.
+    pub(super) fn function(&mut self, node: &Node) -> Result<Arc<Function>> {
+        let params: Vec<String> = match node.children.iter().find(|c| c.kind == NodeKind::FunctionParams) {
+            Some(p) => p
+                .word
+                .trim_matches(|c| c == '(' || c == ')')
+                .split(',')
+                .map(|s| s.trim().to_string())
+                .filter(|s| !s.is_empty())
+                .collect(),
+            None => vec!["x".into(), "y".into(), "z".into()],
+        };
+        let body = &node.args[0];
+        // `function { internal(N) }`: one of POV-Ray's built-in functions.
+        if let ExprKind::Call(name, _, args) = &body.kind {
+            if name == "internal" {
+                check_arity("internal", 1, args.len(), body.span)?;
+                let n = self.float(&args[0])? as i64;
+                return match Internal::numbered(n) {
+                    Some(f) => Ok(Arc::new(Function::internal(f))),
+                    None => Err(Diagnostic::error(
+                        format!(
+                            "unsupported: POV-Ray's internal function {n} ({}) is not in trace yet",
+                            internal_name(n)
+                        ),
+                        body.span,
+                    )),
+                };
+            }
+        }
+        let mut code = Vec::new();
+        self.compile(body, &params, &mut code)?;
+        Function::new(params.len(), code).map(Arc::new).ok_or_else(|| {
+            Diagnostic::error(
+                format!("this function nests too deeply (more than {} values at once)", crate::func::MAX_STACK),
+                body.span,
+            )
+        })
+    }
+
+    /// Appends the program of `e` to `code`.
+    fn compile(&mut self, e: &Expr, params: &[String], code: &mut Vec<Op>) -> Result<()> {
+        let not_here = |what: &str, span: Span| {
+            Err(Diagnostic::error(format!("{what} cannot stand in a function (POV-Ray's function syntax)"), span))
+        };
+        match &e.kind {
+            ExprKind::Number(n) => code.push(Op::Const(*n)),
+            ExprKind::Ident(name) => {
+                if let Some(i) = params.iter().position(|p| p == name) {
+                    code.push(Op::Arg(i as u8));
+                    return Ok(());
+                }
+                match self.ident(name, e.span)? {
+                    Value::Float(f) => code.push(Op::Const(f)),
+                    Value::Function(_) => {
+                        return Err(Diagnostic::error(
+                            format!("the function `{name}` is called with its arguments: {name}(x, y, z)"),
+                            e.span,
+                        ));
+                    }
+                    other => {
+                        return Err(Diagnostic::error(
+                            format!(
+                                "`{name}` is {} here: a function uses numbers, its parameters and other functions",
+                                other.kind_name()
+                            ),
+                            e.span,
+                        ));
+                    }
+                }
+            }
+            ExprKind::Unary(op, a) => match op {
+                UnOp::Plus => self.compile(a, params, code)?,
+                UnOp::Neg => {
+                    self.compile(a, params, code)?;
+                    code.push(Op::Neg);
+                }
+                UnOp::Not => return not_here("`!`", e.span),
+            },
+            ExprKind::Binary(op, a, b) => {
+                self.compile(a, params, code)?;
+                self.compile(b, params, code)?;
+                code.push(match op {
+                    BinOp::Add => Op::Add,
+                    BinOp::Sub => Op::Sub,
+                    BinOp::Mul => Op::Mul,
+                    BinOp::Div => Op::Div,
+                    BinOp::Lt => Op::Lt,
+                    BinOp::Le => Op::Le,
+                    BinOp::Gt => Op::Gt,
+                    BinOp::Ge => Op::Ge,
+                    BinOp::Eq => Op::Eq,
+                    BinOp::Ne => Op::Ne,
+                    BinOp::And => Op::And,
+                    BinOp::Or => Op::Or,
+                });
+            }
+            ExprKind::Call(name, name_span, args) => self.compile_call(name, *name_span, args, e.span, params, code)?,
+            ExprKind::Ternary(..) => return not_here("`? :` (use select(a, b, c))", e.span),
+            ExprKind::Member(..) => return not_here("unsupported: a member (`.x`, `.red` …) of a value", e.span),
+            ExprKind::Vector(_) | ExprKind::PlainVector(..) => return not_here("a vector", e.span),
+            ExprKind::Str(_) => return not_here("a string", e.span),
+            ExprKind::Index(..) => {
+                // An array element holding a float is a constant.
+                match self.eval(e)? {
+                    Value::Float(f) => code.push(Op::Const(f)),
+                    other => {
+                        return Err(Diagnostic::error(
+                            format!("this element is {}: a function uses numbers", other.kind_name()),
+                            e.span,
+                        ));
+                    }
+                }
+            }
+            _ => return not_here("this", e.span),
+        }
+        Ok(())
+    }
+
+    fn compile_call(
+        &mut self,
+        name: &str,
+        name_span: Span,
+        args: &[Expr],
+        span: Span,
+        params: &[String],
+        code: &mut Vec<Op>,
+    ) -> Result<()> {
+        let operands = |ev: &mut Self, code: &mut Vec<Op>| -> Result<()> {
+            for a in args {
+                ev.compile(a, params, code)?;
+            }
+            Ok(())
+        };
+        if let Some(m) = Math1::named(name) {
+            check_arity(name, 1, args.len(), span)?;
+            operands(self, code)?;
+            code.push(Op::Math1(m));
+        } else if let Some(m) = Math2::named(name) {
+            check_arity(name, 2, args.len(), span)?;
+            operands(self, code)?;
+            code.push(Op::Math2(m));
+        } else if name == "min" || name == "max" {
+            if args.len() < 2 {
+                return Err(Diagnostic::error(format!("`{name}` takes at least 2 arguments"), span));
+            }
+            if args.len() > 255 {
+                return Err(Diagnostic::error(format!("`{name}` takes at most 255 arguments here"), span));
+            }
+            operands(self, code)?;
+            let n = args.len() as u8;
+            code.push(if name == "min" { Op::Min(n) } else { Op::Max(n) });
+        } else if name == "select" {
+            if !(3..=4).contains(&args.len()) {
+                return Err(Diagnostic::error("`select` takes 3 or 4 arguments", span));
+            }
+            operands(self, code)?;
+            code.push(if args.len() == 3 { Op::Select3 } else { Op::Select4 });
+        } else {
+            match self.ident(name, name_span)? {
+                Value::Function(f) => {
+                    check_arity(name, f.params, args.len(), span)?;
+                    operands(self, code)?;
+                    code.push(Op::Call(f));
+                }
+                other => {
+                    return Err(Diagnostic::error(
+                        format!("`{name}` is {}, not a function this function can call", other.kind_name()),
+                        name_span,
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The noise generator functions use while the scene is read (global_settings' so far,
+    /// else POV-Ray's default for the version).
+    pub(super) fn noise_generator(&self) -> u8 {
+        self.noise_generator
+            .unwrap_or(if self.version.is_some_and(|v| v < 3.5 - 1e-9) { 1 } else { 2 })
+    }
+
+    /// `F(a, b, …)` in an expression: the declared function's value.
+    pub(super) fn call_function(&mut self, f: &Function, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+        check_arity(name, f.params, args.len(), span)?;
+        let mut values = Vec::with_capacity(args.len());
+        for a in args {
+            values.push(self.float(a)?);
+        }
+        Ok(Value::Float(f.eval(&values, self.noise_generator())))
+    }
+}

@@ -1,0 +1,500 @@
+//! User functions (`function { … }`), compiled once to a small stack machine and run millions
+//! of times (isosurfaces): no allocation and no tree walking per evaluation.
+//!
+//! A function is a program of [`Op`]s over its parameters (x, y, z by default). Declared
+//! floats are folded in as constants when the function is compiled, as POV-Ray does; calls to
+//! other declared functions run their programs; `internal(N)` is one of POV-Ray's built-in
+//! functions (functions.inc names them `f_sphere`, `f_torus` …), written here from their
+//! published formulas.
+
+use glam::DVec3;
+use std::sync::Arc;
+
+/// The deepest stack a function may need (deeper expressions are refused when compiled).
+pub const MAX_STACK: usize = 64;
+
+/// One-argument maths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum Math1 {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Sinh,
+    Cosh,
+    Tanh,
+    Asinh,
+    Acosh,
+    Atanh,
+    Abs,
+    Radians,
+    Degrees,
+    Int,
+    Floor,
+    Ceil,
+    Sqrt,
+    Exp,
+    Ln,
+    Log,
+    Sqr,
+}
+
+impl Math1 {
+    fn apply(self, a: f64) -> f64 {
+        use Math1::*;
+        match self {
+            Sin => a.sin(),
+            Cos => a.cos(),
+            Tan => a.tan(),
+            Asin => a.asin(),
+            Acos => a.acos(),
+            Atan => a.atan(),
+            Sinh => a.sinh(),
+            Cosh => a.cosh(),
+            Tanh => a.tanh(),
+            Asinh => a.asinh(),
+            Acosh => a.acosh(),
+            Atanh => a.atanh(),
+            Abs => a.abs(),
+            Radians => a * std::f64::consts::PI / 180.0,
+            Degrees => a * 180.0 / std::f64::consts::PI,
+            Int => a.trunc(),
+            Floor => a.floor(),
+            Ceil => a.ceil(),
+            Sqrt => a.sqrt(),
+            Exp => a.exp(),
+            Ln => a.ln(),
+            Log => a.log10(),
+            Sqr => a * a,
+        }
+    }
+
+    /// The function a name calls, if it is one of these.
+    pub fn named(name: &str) -> Option<Math1> {
+        use Math1::*;
+        Some(match name {
+            "sin" => Sin,
+            "cos" => Cos,
+            "tan" => Tan,
+            "asin" => Asin,
+            "acos" => Acos,
+            "atan" => Atan,
+            "sinh" => Sinh,
+            "cosh" => Cosh,
+            "tanh" => Tanh,
+            "asinh" => Asinh,
+            "acosh" => Acosh,
+            "atanh" => Atanh,
+            "abs" => Abs,
+            "radians" => Radians,
+            "degrees" => Degrees,
+            "int" => Int,
+            "floor" => Floor,
+            "ceil" => Ceil,
+            "sqrt" => Sqrt,
+            "exp" => Exp,
+            "ln" => Ln,
+            "log" => Log,
+            "sqr" => Sqr,
+            _ => return None,
+        })
+    }
+}
+
+/// Two-argument maths.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum Math2 {
+    Atan2,
+    Pow,
+    /// `mod(a, b)`: C's fmod.
+    Mod,
+    /// `div(a, b)`: the truncated quotient.
+    Div,
+}
+
+impl Math2 {
+    fn apply(self, a: f64, b: f64) -> f64 {
+        match self {
+            Math2::Atan2 => a.atan2(b),
+            Math2::Pow => a.powf(b),
+            Math2::Mod => a % b,
+            Math2::Div => (a / b).trunc(),
+        }
+    }
+
+    /// The function a name calls, if it is one of these.
+    pub fn named(name: &str) -> Option<Math2> {
+        Some(match name {
+            "atan2" => Math2::Atan2,
+            "pow" => Math2::Pow,
+            "mod" => Math2::Mod,
+            "div" => Math2::Div,
+            _ => return None,
+        })
+    }
+}
+
+/// One step of a function's program.
+#[derive(Clone, Debug)]
+#[allow(missing_docs)]
+pub enum Op {
+    Const(f64),
+    /// The function's parameter i.
+    Arg(u8),
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Neg,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+    Math1(Math1),
+    Math2(Math2),
+    /// `min`/`max` of the top n values.
+    Min(u8),
+    Max(u8),
+    /// `select(a, b, c)`: b where a < 0, else c.
+    Select3,
+    /// `select(a, b, c, d)`: b where a < 0, c where a = 0, else d.
+    Select4,
+    /// Another function, called with the top n values.
+    Call(Arc<Function>),
+    /// A built-in function, called with the top n values (x, y, z first).
+    Internal(Internal, u8),
+}
+
+/// POV-Ray's built-in functions that trace has (`internal(N)`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[allow(missing_docs)]
+pub enum Internal {
+    Ellipsoid,
+    Heart,
+    Paraboloid,
+    Ph,
+    R,
+    RoundedBox,
+    Sphere,
+    Superellipsoid,
+    Th,
+    Torus,
+    Torus2,
+    TorusGumdrop,
+    Umbrella,
+    WitchOfAgnesi,
+    Noise3d,
+}
+
+impl Internal {
+    /// POV-Ray's number `n` (functions.inc's `internal(n)`), if trace has it.
+    pub fn numbered(n: i64) -> Option<Internal> {
+        use Internal::*;
+        Some(match n {
+            17 => Ellipsoid,
+            23 => Heart,
+            45 => Paraboloid,
+            47 => Ph,
+            57 => R,
+            60 => RoundedBox,
+            61 => Sphere,
+            68 => Superellipsoid,
+            69 => Th,
+            70 => Torus,
+            71 => Torus2,
+            72 => TorusGumdrop,
+            73 => Umbrella,
+            74 => WitchOfAgnesi,
+            76 => Noise3d,
+            _ => return None,
+        })
+    }
+
+    /// How many values it takes (x, y, z and its parameters).
+    pub fn arity(self) -> usize {
+        use Internal::*;
+        3 + match self {
+            Ph | R | Th | Noise3d => 0,
+            Heart | Paraboloid | Sphere | TorusGumdrop | Umbrella => 1,
+            Superellipsoid | Torus | WitchOfAgnesi => 2,
+            Ellipsoid | Torus2 => 3,
+            RoundedBox => 4,
+        }
+    }
+
+    fn apply(self, a: &[f64], generator: u8) -> f64 {
+        use Internal::*;
+        let (x, y, z) = (a[0], a[1], a[2]);
+        let p = |i: usize| a[3 + i];
+        let clamp = |r: f64| (p(0) * r).clamp(-10.0, 10.0);
+        let (x2, y2, z2) = (x * x, y * y, z * z);
+        match self {
+            Ellipsoid => (x2 * p(0) * p(0) + y2 * p(1) * p(1) + z2 * p(2) * p(2)).sqrt(),
+            Heart => {
+                let s = 2.0 * x2 + y2 + z2 - 1.0;
+                clamp(-(s * s * s - 0.1 * x2 * z2 * z - y2 * z2 * z))
+            }
+            Paraboloid => clamp(-(x2 - y + z2)),
+            Ph => (x2 + z2).sqrt().atan2(y),
+            R => (x2 + y2 + z2).sqrt(),
+            RoundedBox => {
+                let r = p(0);
+                let far = DVec3::new(p(1), p(2), p(3)) - DVec3::splat(r);
+                let q = DVec3::new(x, y, z);
+                let above = (q - far).max(DVec3::ZERO);
+                let below = (-far - q).max(DVec3::ZERO);
+                -r + above.max(below).length() - 1e-6
+            }
+            Sphere => -p(0) + (x2 + y2 + z2).sqrt(),
+            Superellipsoid => {
+                let (e, n) = (p(0), p(1));
+                let (pe, pn) = (2.0 / e, 1.0 / n);
+                1.0 - ((x.abs().powf(pe) + y.abs().powf(pe)).powf(e * pn) + z.abs().powf(2.0 * pn))
+                    .powf(n * 0.5)
+            }
+            Th => x.atan2(z),
+            Torus => {
+                let h = (x2 + z2).sqrt() - p(0);
+                -p(1) + (h * h + y2).sqrt()
+            }
+            Torus2 => {
+                let (a2, b2) = (p(1) * p(1), p(2) * p(2));
+                clamp(
+                    -(x2 * x2 + y2 * y2 + z2 * z2 + 2.0 * x2 * y2 + 2.0 * x2 * z2 + 2.0 * y2 * z2
+                        - 2.0 * (a2 + b2) * x2
+                        + 2.0 * (a2 - b2) * y2
+                        - 2.0 * (a2 + b2) * z2
+                        + (a2 - b2) * (a2 - b2)),
+                )
+            }
+            TorusGumdrop => clamp(
+                -(4.0 * (x2 * x2 + (y2 + z2) * (y2 + z2)) + 17.0 * x2 * (y2 + z2)
+                    - 20.0 * (x2 + y2 + z2)
+                    + 17.0),
+            ),
+            Umbrella => clamp(-(x2 - y * z2)),
+            WitchOfAgnesi => clamp(-(p(1) * (y - 1.0) + (x2 + z2) * y)),
+            Noise3d => crate::pattern::noise::noise(DVec3::new(x, y, z), generator),
+        }
+    }
+}
+
+/// A compiled function.
+#[derive(Clone, Debug)]
+pub struct Function {
+    /// How many values it takes.
+    pub params: usize,
+    code: Box<[Op]>,
+}
+
+impl PartialEq for Function {
+    fn eq(&self, other: &Function) -> bool {
+        std::ptr::eq(self, other)
+    }
+}
+
+impl Function {
+    /// A function of `params` values running `code`; `None` if the program is not well formed
+    /// or needs more than [`MAX_STACK`] values at once.
+    pub fn new(params: usize, code: Vec<Op>) -> Option<Function> {
+        let mut depth: usize = 0;
+        let mut deepest = 0;
+        for op in &code {
+            let (pops, pushes) = match op {
+                Op::Const(_) | Op::Arg(_) => (0, 1),
+                Op::Neg | Op::Math1(_) => (1, 1),
+                Op::Select3 => (3, 1),
+                Op::Select4 => (4, 1),
+                Op::Min(n) | Op::Max(n) | Op::Internal(_, n) => (*n as usize, 1),
+                Op::Call(f) => (f.params, 1),
+                _ => (2, 1),
+            };
+            if let Op::Arg(i) = op {
+                if *i as usize >= params {
+                    return None;
+                }
+            }
+            depth = depth.checked_sub(pops)? + pushes;
+            deepest = deepest.max(depth);
+        }
+        (depth == 1 && deepest <= MAX_STACK).then(|| Function {
+            params,
+            code: code.into_boxed_slice(),
+        })
+    }
+
+    /// The function of `internal` (x, y, z and its parameters).
+    pub fn internal(internal: Internal) -> Function {
+        let n = internal.arity();
+        let mut code: Vec<Op> = (0..n as u8).map(Op::Arg).collect();
+        code.push(Op::Internal(internal, n as u8));
+        Function {
+            params: n,
+            code: code.into_boxed_slice(),
+        }
+    }
+
+    /// Its value for `args` (as many as it takes), noise from `generator`.
+    pub fn eval(&self, args: &[f64], generator: u8) -> f64 {
+        let mut stack = [0.0f64; MAX_STACK];
+        let mut top = 0usize;
+        macro_rules! pop {
+            () => {{
+                top -= 1;
+                stack[top]
+            }};
+        }
+        for op in self.code.iter() {
+            let v = match op {
+                Op::Const(c) => *c,
+                Op::Arg(i) => args[*i as usize],
+                Op::Neg => -pop!(),
+                Op::Math1(m) => m.apply(pop!()),
+                Op::Math2(m) => {
+                    let b = pop!();
+                    let a = pop!();
+                    m.apply(a, b)
+                }
+                Op::Min(n) | Op::Max(n) => {
+                    let n = *n as usize;
+                    top -= n;
+                    let values = &stack[top..top + n];
+                    if matches!(op, Op::Min(_)) {
+                        values.iter().copied().fold(f64::INFINITY, f64::min)
+                    } else {
+                        values.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                    }
+                }
+                Op::Select3 => {
+                    let c = pop!();
+                    let b = pop!();
+                    let a = pop!();
+                    if a < 0.0 { b } else { c }
+                }
+                Op::Select4 => {
+                    let d = pop!();
+                    let c = pop!();
+                    let b = pop!();
+                    let a = pop!();
+                    if a < 0.0 {
+                        b
+                    } else if a == 0.0 {
+                        c
+                    } else {
+                        d
+                    }
+                }
+                Op::Call(f) => {
+                    top -= f.params;
+                    let mut a = [0.0; MAX_STACK];
+                    a[..f.params].copy_from_slice(&stack[top..top + f.params]);
+                    f.eval(&a[..f.params], generator)
+                }
+                Op::Internal(f, n) => {
+                    let n = *n as usize;
+                    top -= n;
+                    let mut a = [0.0; 16];
+                    a[..n].copy_from_slice(&stack[top..top + n]);
+                    f.apply(&a[..n], generator)
+                }
+                binary => {
+                    let b = pop!();
+                    let a = pop!();
+                    let truth = |t: bool| if t { 1.0 } else { 0.0 };
+                    match binary {
+                        Op::Add => a + b,
+                        Op::Sub => a - b,
+                        Op::Mul => a * b,
+                        Op::Div => a / b,
+                        Op::Lt => truth(a < b),
+                        Op::Le => truth(a <= b),
+                        Op::Gt => truth(a > b),
+                        Op::Ge => truth(a >= b),
+                        Op::Eq => truth(a == b),
+                        Op::Ne => truth(a != b),
+                        Op::And => truth(a != 0.0 && b != 0.0),
+                        _ => truth(a != 0.0 || b != 0.0),
+                    }
+                }
+            };
+            stack[top] = v;
+            top += 1;
+        }
+        stack[0]
+    }
+
+    /// Its value at a point (a function of x, y, z; further parameters 0).
+    pub fn at(&self, p: DVec3, generator: u8) -> f64 {
+        let mut a = [0.0; MAX_STACK];
+        a[..3].copy_from_slice(&p.to_array());
+        self.eval(&a[..self.params.max(3)], generator)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arithmetic_and_calls() {
+        // x*x + y*y + z*z − 1
+        let f = Function::new(
+            3,
+            vec![
+                Op::Arg(0),
+                Op::Arg(0),
+                Op::Mul,
+                Op::Arg(1),
+                Op::Arg(1),
+                Op::Mul,
+                Op::Add,
+                Op::Arg(2),
+                Op::Arg(2),
+                Op::Mul,
+                Op::Add,
+                Op::Const(1.0),
+                Op::Sub,
+            ],
+        )
+        .unwrap();
+        assert_eq!(f.eval(&[1.0, 2.0, 2.0], 2), 8.0);
+        let g = Arc::new(f);
+        // g(x, 0, 0) * 2, selected
+        let h = Function::new(
+            1,
+            vec![
+                Op::Arg(0),
+                Op::Arg(0),
+                Op::Const(0.0),
+                Op::Const(0.0),
+                Op::Call(g),
+                Op::Const(5.0),
+                Op::Select3,
+            ],
+        )
+        .unwrap();
+        assert_eq!(h.eval(&[-1.0], 2), 0.0);
+        assert_eq!(h.eval(&[2.0], 2), 5.0);
+        assert!(Function::new(1, vec![Op::Add]).is_none());
+        assert!(Function::new(1, vec![Op::Arg(1)]).is_none());
+    }
+
+    #[test]
+    fn internals() {
+        let sphere = Function::internal(Internal::Sphere);
+        assert_eq!(sphere.eval(&[0.0, 3.0, 4.0, 2.0], 2), 3.0);
+        let torus = Function::internal(Internal::Torus);
+        assert!((torus.eval(&[1.0, 0.0, 0.0, 1.0, 0.25], 2) + 0.25).abs() < 1e-12);
+        let b = Function::internal(Internal::RoundedBox);
+        // A unit box with corners rounded 0.1: 0 on its face.
+        assert!(b.eval(&[1.0, 0.0, 0.0, 0.1, 1.0, 1.0, 1.0], 2).abs() < 1e-5);
+    }
+}
