@@ -391,6 +391,15 @@ impl<'a> Evaluator<'a> {
 
     /// The error for an unknown item inside a block.
     fn unknown_item(&self, node: &Node, context: &str) -> Diagnostic {
+        if node.kind == NodeKind::Value {
+            return Diagnostic::error(
+                format!(
+                    "the value `{}` cannot stand here in {context} (a bare value stands only among a shape's values)",
+                    node.word
+                ),
+                node.span,
+            );
+        }
         if node.kind == NodeKind::ColourItem {
             return Diagnostic::error(
                 format!("a colour cannot stand here in {context} (only in a pigment)"),

@@ -59,7 +59,7 @@ pub struct ObjectValue {
 }
 
 /// Whether a node is a directive (run by `each_item` wherever it stands).
-fn is_directive(kind: NodeKind) -> bool {
+pub(super) fn is_directive(kind: NodeKind) -> bool {
     use NodeKind::*;
     matches!(
         kind,
@@ -196,6 +196,10 @@ impl ObjectValue {
 impl Evaluator<'_> {
     /// Evaluates an object statement with its modifiers.
     pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
+        // A shape whose values come partly from directives (points made in a loop): its
+        // values and words laid out as if written in place.
+        let flat = if node.kind == NodeKind::Shape { self.shape_values(node)? } else { None };
+        let node = flat.as_ref().unwrap_or(node);
         let mut modifiers = &node.children[..];
         let mut object = match node.kind {
             NodeKind::Sphere => {

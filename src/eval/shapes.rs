@@ -5,7 +5,7 @@
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline};
-use crate::syntax::{Expr, Node, NodeKind};
+use crate::syntax::{Expr, ExprKind, Node, NodeKind};
 use glam::DVec2;
 use std::sync::Arc;
 
@@ -73,7 +73,73 @@ const MAX_JULIA_PRECISION: f64 = 10_000.0;
 /// The largest font file trace reads (POV-Ray's own fonts are below 100 kB).
 const MAX_FONT_BYTES: u64 = 64 << 20;
 
+/// A value produced by a directive among a shape's values, as an expression standing at
+/// `at` (the directive's place, so that the values keep their order among the others).
+fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
+    let span = Span { start: at, ..span };
+    let kind = match value {
+        Value::Float(f) => ExprKind::Number(f),
+        Value::Vector(v) => ExprKind::PlainVector(v.c, v.len as u8),
+        Value::Colour(c) => ExprKind::PlainVector(c, 5),
+        Value::Str(s) => ExprKind::Str(s),
+        other => {
+            return Err(Diagnostic::error(
+                format!("{} cannot stand among a shape's values", other.kind_name()),
+                span,
+            ));
+        }
+    };
+    Ok(Expr { kind, span })
+}
+
 impl Evaluator<'_> {
+    /// A shape node whose values include directives (`#while` loops making points), with the
+    /// directives run: their values take their place among the shape's values and anything
+    /// else they give joins the modifiers. `None` when there is no such directive.
+    pub(super) fn shape_values(&mut self, node: &Node) -> Result<Option<Node>> {
+        let is_word = |c: &Node| c.kind == NodeKind::Flag && takes(&node.word, &c.word);
+        let end = node
+            .children
+            .iter()
+            .position(|c| !is_word(c) && !super::object::is_directive(c.kind))
+            .unwrap_or(node.children.len());
+        if !node.children[..end].iter().any(|c| super::object::is_directive(c.kind)) {
+            return Ok(None);
+        }
+        let mut values: Vec<Expr> = node.args.clone();
+        let (mut children, mut extra) = (Vec::new(), Vec::new());
+        for c in &node.children[..end] {
+            if !super::object::is_directive(c.kind) {
+                children.push(c.clone());
+                continue;
+            }
+            let at = c.span.start;
+            self.each_item(std::slice::from_ref(c), &mut |ev, item| {
+                match item.kind {
+                    NodeKind::Value => {
+                        let v = ev.eval(&item.args[0])?;
+                        values.push(value_expr(v, item.args[0].span, at)?);
+                    }
+                    NodeKind::Flag if takes(&node.word, &item.word) => {
+                        let mut word = item.clone();
+                        word.span.start = at;
+                        children.push(word);
+                    }
+                    _ => extra.push(item.clone()),
+                }
+                Ok(())
+            })?;
+        }
+        values.sort_by_key(|e| e.span.start);
+        children.extend(extra);
+        children.extend(node.children[end..].iter().cloned());
+        Ok(Some(Node {
+            args: values,
+            children,
+            ..node.clone()
+        }))
+    }
+
     /// The IR shape of a `shape` node (`quadric { … }` …).
     pub(super) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
         let args = node.args.as_slice();

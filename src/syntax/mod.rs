@@ -78,6 +78,9 @@ pub enum NodeKind {
     Function,
     /// `(a, b, …)` of a function: the text, in `word`.
     FunctionParams,
+    /// A value standing in a directive's body (a shape's values made in a loop): the
+    /// expression in `args`, its text in `word`.
+    Value,
     /// `isosurface { … }`.
     Isosurface,
     /// `contained_by { box {…} | sphere {…} }`.
@@ -825,6 +828,7 @@ impl Lower {
             Rule::shape_word => NodeKind::Flag,
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
+            Rule::value_item => NodeKind::Value,
             Rule::function_params => NodeKind::FunctionParams,
             Rule::isosurface => NodeKind::Isosurface,
             Rule::contained_by => NodeKind::ContainedBy,
@@ -967,6 +971,12 @@ impl Lower {
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
+            return node;
+        }
+        if rule == Rule::value_item {
+            node.word = pair.as_str().trim().trim_end_matches(',').trim_end().to_string();
+            node.word_span = span;
+            node.args = pair.into_inner().filter(|p| is_expr(p.as_rule())).map(|p| self.expr(p)).collect();
             return node;
         }
         if rule == Rule::item_ref {

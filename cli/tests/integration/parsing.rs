@@ -257,3 +257,28 @@ fn functions_give_povrays_values() {
         std::fs::read_to_string(root.join("tests/scenes/ok/functions.povray.txt")).unwrap();
     assert_eq!(loaded.debug_output.trim(), expected.trim());
 }
+
+/// A shape's values made by directives (points in a `#while` or `#for` loop, a word in an
+/// `#if`) give the shape their literal values give, as in POV-Ray.
+#[test]
+fn shape_values_made_in_loops_equal_literal_ones() {
+    let looped = load_text(
+        "#declare P = array[4] { <0, 0>, <1, 0>, <1, 1>, <0, 0> }\n\
+         prism { linear_sweep 0, 1, 4, #declare I = 0; #while (I < 4) P[I] #declare I = I + 1; #end }\n\
+         sphere_sweep { b_spline #if (1) 4, #end #for (J, 0, 3) <J, sin(J), 0>, 0.1 + J / 10 #end tolerance 0.01 }\n\
+         polygon { 4, #for (J, 0, 3) P[J], #end pigment { rgb 1 } }",
+        32,
+        24,
+    );
+    let literal = load_text(
+        "prism { linear_sweep 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }\n\
+         sphere_sweep { b_spline 4, <0, 0, 0>, 0.1, <1, sin(1), 0>, 0.2, <2, sin(2), 0>, 0.1 + 2 / 10, <3, sin(3), 0>, 0.4 tolerance 0.01 }\n\
+         polygon { 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> pigment { rgb 1 } }",
+        32,
+        24,
+    );
+    assert_eq!(
+        format!("{:?}", looped.objects),
+        format!("{:?}", literal.objects)
+    );
+}
