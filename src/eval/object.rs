@@ -462,6 +462,14 @@ impl Evaluator<'_> {
                             None => Err(Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)),
                         }
                     };
+                    let takes = usize::from(!matches!(item.word.as_str(), "open" | "all_intersections"));
+                    let takes = if item.word == "evaluate" { 3 } else { takes };
+                    if let Some(extra) = item.args.get(takes) {
+                        return Err(Diagnostic::error(
+                            format!("`{}` takes {takes} value{}", item.word, if takes == 1 { "" } else { "s" }),
+                            extra.span,
+                        ));
+                    }
                     match item.word.as_str() {
                         "threshold" => iso.threshold = value(ev, 0)?,
                         "accuracy" => iso.accuracy = value(ev, 0)?,
