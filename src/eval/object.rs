@@ -728,6 +728,8 @@ impl Evaluator<'_> {
             // shape table.
             NodeKind::Flag
                 if owner.kind == NodeKind::Shape && super::shapes::takes(&owner.word, &m.word) => {}
+            // A height field's function image: read by the shape table.
+            NodeKind::FunctionImage if owner.word == "height_field" => {}
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
                 "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),

@@ -597,13 +597,18 @@ impl Evaluator<'_> {
 
     /// `height_field { [png] "file" [smooth] [water_level W] [hierarchy on|off] }`.
     fn height_field(&mut self, node: &Node) -> Result<Shape> {
-        if let Some(f) = node.children.iter().find(|c| c.word == "function") {
-            return Err(Diagnostic::error(
-                "unsupported: a height_field made by a function (trace has no user functions yet)",
-                f.word_span,
-            ));
-        }
         let items = items(node);
+        if let Some(f) = node.children.iter().find(|c| c.kind == NodeKind::FunctionImage) {
+            let (width, depth, heights) = self.function_heights(f)?;
+            let (smooth, water_level) = self.height_field_options(&items, 0)?;
+            return Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
+                width,
+                depth,
+                heights: Arc::new(heights),
+                smooth,
+                water_level: 65536.0 * water_level,
+            })));
+        }
         let mut i = 0;
         let mut kind = None;
         if let Some(Item::Word(w)) = items.first() {
@@ -631,6 +636,21 @@ impl Evaluator<'_> {
                 at,
             ));
         }
+        let (smooth, water_level) = self.height_field_options(&items, i)?;
+        let path = self.find_file(&name, "image", file.span)?;
+        let (width, depth, heights) = super::heightfield::read_png(&path)
+            .map_err(|e| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span))?;
+        Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
+            width,
+            depth,
+            heights: Arc::new(heights),
+            smooth,
+            water_level: 65536.0 * water_level,
+        })))
+    }
+
+    /// A height field's `smooth`, `water_level W` and `hierarchy` from item `i` on.
+    fn height_field_options(&mut self, items: &[Item], mut i: usize) -> Result<(bool, f64)> {
         let (mut smooth, mut water_level) = (false, 0.0);
         while let Some(item) = items.get(i) {
             i += 1;
@@ -656,16 +676,40 @@ impl Evaluator<'_> {
                 }
             }
         }
-        let path = self.find_file(&name, "image", file.span)?;
-        let (width, depth, heights) = super::heightfield::read_png(&path)
-            .map_err(|e| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span))?;
-        Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
-            width,
-            depth,
-            heights: Arc::new(heights),
-            smooth,
-            water_level: 65536.0 * water_level,
-        })))
+        Ok((smooth, water_level))
+    }
+
+    /// `function W, H { … }`: POV-Ray's W×H image of the function at x = column/(W − 1),
+    /// y = row/(H − 1), z = 0, each value kept as POV-Ray keeps it in its 16-bit grey image
+    /// (single precision times 65535, cut to an integer, wrapping outside 0..1); the field's
+    /// row z is the image's row H − 1 − z, as for image files.
+    fn function_heights(&mut self, f: &Node) -> Result<(u32, u32, Vec<u16>)> {
+        let size = |ev: &mut Self, e: &Expr| -> Result<u32> {
+            let v = (ev.float(e)? + 0.5).floor();
+            if !(2.0..=8192.0).contains(&v) {
+                return Err(Diagnostic::error("a function height field is 2 to 8192 points a side", e.span));
+            }
+            Ok(v as u32)
+        };
+        let (width, depth) = (size(self, &f.args[0])?, size(self, &f.args[1])?);
+        let body = Node {
+            kind: NodeKind::Function,
+            args: vec![f.args[2].clone()],
+            children: Vec::new(),
+            ..f.clone()
+        };
+        let function = self.function(&body)?;
+        let generator = self.noise_generator();
+        let mut heights = Vec::with_capacity((width * depth) as usize);
+        for z in 0..depth {
+            let y = f64::from(depth - 1 - z) / f64::from(depth - 1);
+            for x in 0..width {
+                let p = glam::DVec3::new(f64::from(x) / f64::from(width - 1), y, 0.0);
+                let v = function.at(p, generator) as f32;
+                heights.push((v * 65535.0) as i32 as u16);
+            }
+        }
+        Ok((width, depth, heights))
     }
 
     /// `bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] P00, P01, … P33 }`.

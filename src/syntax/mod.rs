@@ -81,6 +81,8 @@ pub enum NodeKind {
     /// A value standing in a directive's body (a shape's values made in a loop): the
     /// expression in `args`, its text in `word`.
     Value,
+    /// `function W, H { … }` as a height field's image: W, H and the body in `args`.
+    FunctionImage,
     /// `isosurface { … }`.
     Isosurface,
     /// `contained_by { box {…} | sphere {…} }`.
@@ -829,6 +831,7 @@ impl Lower {
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
             Rule::value_item => NodeKind::Value,
+            Rule::function_image => NodeKind::FunctionImage,
             Rule::function_params => NodeKind::FunctionParams,
             Rule::isosurface => NodeKind::Isosurface,
             Rule::contained_by => NodeKind::ContainedBy,
