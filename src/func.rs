@@ -293,6 +293,8 @@ pub struct Function {
     /// How many values it takes.
     pub params: usize,
     code: Box<[Op]>,
+    /// The most values its program holds at once.
+    depth: usize,
 }
 
 impl PartialEq for Function {
@@ -328,6 +330,7 @@ impl Function {
         (depth == 1 && deepest <= MAX_STACK).then(|| Function {
             params,
             code: code.into_boxed_slice(),
+            depth: deepest,
         })
     }
 
@@ -339,12 +342,23 @@ impl Function {
         Function {
             params: n,
             code: code.into_boxed_slice(),
+            depth: n,
         }
     }
 
     /// Its value for `args` (as many as it takes), noise from `generator`.
     pub fn eval(&self, args: &[f64], generator: u8) -> f64 {
-        let mut stack = [0.0f64; MAX_STACK];
+        // (A small stack for the usual small function: clearing 64 values costs as much as
+        // running one.)
+        if self.depth <= 16 {
+            self.run::<16>(args, generator)
+        } else {
+            self.run::<MAX_STACK>(args, generator)
+        }
+    }
+
+    fn run<const N: usize>(&self, args: &[f64], generator: u8) -> f64 {
+        let mut stack = [0.0f64; N];
         let mut top = 0usize;
         macro_rules! pop {
             () => {{
@@ -394,9 +408,7 @@ impl Function {
                 }
                 Op::Call(f) => {
                     top -= f.params;
-                    let mut a = [0.0; MAX_STACK];
-                    a[..f.params].copy_from_slice(&stack[top..top + f.params]);
-                    f.eval(&a[..f.params], generator)
+                    f.eval(&stack[top..top + f.params], generator)
                 }
                 Op::Internal(f, n) => {
                     let n = *n as usize;
@@ -433,6 +445,11 @@ impl Function {
 
     /// Its value at a point (a function of x, y, z; further parameters 0).
     pub fn at(&self, p: DVec3, generator: u8) -> f64 {
+        if self.params <= 8 {
+            let mut a = [0.0; 8];
+            a[..3].copy_from_slice(&p.to_array());
+            return self.eval(&a[..self.params.max(3)], generator);
+        }
         let mut a = [0.0; MAX_STACK];
         a[..3].copy_from_slice(&p.to_array());
         self.eval(&a[..self.params.max(3)], generator)

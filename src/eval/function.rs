@@ -80,7 +80,14 @@ impl Evaluator<'_> {
         match &e.kind {
             ExprKind::Number(n) => code.push(Op::Const(*n)),
             ExprKind::Ident(name) => {
-                if let Some(i) = params.iter().position(|p| p == name) {
+                // As in POV-Ray, u is the parameter x and v the parameter y.
+                let alias = |a: &str, b: &str| params.iter().position(|p| p == a || p == b);
+                let register = match name.as_str() {
+                    "x" | "u" => alias("x", "u"),
+                    "y" | "v" => alias("y", "v"),
+                    _ => None,
+                };
+                if let Some(i) = register.or_else(|| params.iter().position(|p| p == name)) {
                     code.push(Op::Arg(i as u8));
                     return Ok(());
                 }

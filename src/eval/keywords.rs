@@ -726,6 +726,7 @@ const SUPPORTED: &[&str] = &[
     "ovus",
     "panoramic",
     "parallel",
+    "parametric",
     "perspective",
     "phase",
     "phong",
@@ -742,6 +743,7 @@ const SUPPORTED: &[&str] = &[
     "polygon",
     "pow",
     "precision",
+    "precompute",
     "prism",
     "quadratic_spline",
     "quadric",
@@ -917,7 +919,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "polynomial" | "parametric"
+        "polynomial"
         | "light_group" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
@@ -964,7 +966,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "pattern" | "precompute" | "prod" | "sum" | "vturbulence" => {
+        "pattern" | "prod" | "sum" | "vturbulence" => {
             "user functions are not supported by trace yet"
         }
         "append" | "sint16be" | "sint16le" | "sint32be" | "sint32le" | "sint8" | "uint16be"

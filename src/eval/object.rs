@@ -101,6 +101,7 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
             | Union
             | Blob
             | Isosurface
+            | Parametric
             | ObjectRef
     )
 }
@@ -215,6 +216,10 @@ impl Evaluator<'_> {
             NodeKind::Isosurface => {
                 modifiers = &[];
                 self.isosurface(node)?
+            }
+            NodeKind::Parametric => {
+                modifiers = &[];
+                self.parametric(node)?
             }
             NodeKind::Plane => {
                 let normal = self.nonzero(&node.args[0], "plane normal")?;
@@ -506,6 +511,95 @@ impl Evaluator<'_> {
         }
         iso.function = function;
         let mut object = ObjectValue::single(Shape::Isosurface(Box::new(iso)));
+        for m in &modifiers {
+            self.object_modifier(&mut object, m, node)?;
+        }
+        Ok(object)
+    }
+
+    /// `parametric { function {…} ×3 <u1, v1>, <u2, v2> [contained_by {…}] settings… modifiers }`.
+    fn parametric(&mut self, node: &Node) -> Result<ObjectValue> {
+        let mut functions = Vec::new();
+        let mut container = ir::Container::Box(DVec3::splat(-1.0), DVec3::splat(1.0));
+        let (mut accuracy, mut max_gradient, mut precompute) = (0.001, 1.0, None);
+        let mut modifiers: Vec<Node> = Vec::new();
+        let uv = |ev: &mut Self, e: &crate::syntax::Expr| -> Result<glam::DVec2> {
+            match ev.eval(e)? {
+                Value::Float(f) => Ok(glam::DVec2::splat(f)),
+                Value::Vector(v) if v.len == 2 => Ok(glam::DVec2::new(v.c[0], v.c[1])),
+                other => Err(super::expr::type_error("a 2-D vector <u, v>", &other, e.span)),
+            }
+        };
+        let (a, b) = (uv(self, &node.args[0])?, uv(self, &node.args[1])?);
+        self.each_item(&node.children, &mut |ev, item| {
+            match item.kind {
+                NodeKind::Function => functions.push(ev.function(item)?),
+                NodeKind::ContainedBy => {
+                    let shape = &item.children[0];
+                    container = if shape.kind == NodeKind::Sphere {
+                        ir::Container::Sphere(ev.vec3(&shape.args[0])?, ev.float(&shape.args[1])?)
+                    } else {
+                        let (a, b) = (ev.vec3(&shape.args[0])?, ev.vec3(&shape.args[1])?);
+                        ir::Container::Box(a.min(b), a.max(b))
+                    };
+                }
+                NodeKind::IsoSetting => match item.word.as_str() {
+                    "accuracy" | "max_gradient" if item.args.len() == 1 => {
+                        let v = ev.float(&item.args[0])?;
+                        if item.word == "accuracy" {
+                            accuracy = v;
+                        } else {
+                            max_gradient = v;
+                        }
+                    }
+                    "precompute" if !item.args.is_empty() && item.args.len() <= 4 => {
+                        let depth = ev.float(&item.args[0])?;
+                        if !(1.0..=20.0).contains(&depth) {
+                            return Err(Diagnostic::error("precompute's depth is 1 to 20", item.args[0].span));
+                        }
+                        let mut axes = [false; 3];
+                        for e in &item.args[1..] {
+                            match &e.kind {
+                                crate::syntax::ExprKind::Ident(w) if w == "x" => axes[0] = true,
+                                crate::syntax::ExprKind::Ident(w) if w == "y" => axes[1] = true,
+                                crate::syntax::ExprKind::Ident(w) if w == "z" => axes[2] = true,
+                                _ => return Err(Diagnostic::error("precompute names x, y and z", e.span)),
+                            }
+                        }
+                        precompute = Some((depth as u32, axes));
+                    }
+                    _ => {
+                        return Err(Diagnostic::error(
+                            format!(
+                                "`{}` does not belong in a parametric, or has the wrong number of values",
+                                item.word
+                            ),
+                            item.word_span,
+                        ));
+                    }
+                },
+                _ => modifiers.push(item.clone()),
+            }
+            Ok(())
+        })?;
+        let [fx, fy, fz]: [std::sync::Arc<crate::func::Function>; 3] = functions
+            .try_into()
+            .map_err(|_| Diagnostic::error("a parametric takes three functions", node.word_span))?;
+        if accuracy <= 0.0 || max_gradient <= 0.0 {
+            return Err(Diagnostic::error(
+                "a parametric's accuracy and max_gradient must be above 0",
+                node.word_span,
+            ));
+        }
+        let surface = ir::Parametric {
+            functions: [fx, fy, fz],
+            uv: (a.min(b), a.max(b)),
+            container,
+            accuracy,
+            max_gradient,
+            precompute,
+        };
+        let mut object = ObjectValue::single(Shape::Parametric(Box::new(surface)));
         for m in &modifiers {
             self.object_modifier(&mut object, m, node)?;
         }

@@ -12,7 +12,7 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Isosurface, JuliaFractal, Lathe, Ovus, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Isosurface, JuliaFractal, Lathe, Ovus, Parametric, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
     Torus,
     TriangleMesh,
     counters,
@@ -220,6 +220,8 @@ shapes! {
     SphereSweep(Box<SphereSweep>),
     /// `isosurface` (boxed: a function and its settings).
     Isosurface(Box<Isosurface>),
+    /// `parametric` (boxed: three functions and their settings).
+    Parametric(Box<Parametric>),
 }
 
 #[cfg(test)]

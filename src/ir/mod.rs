@@ -12,8 +12,8 @@ pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
 mod outline;
 pub use outline::{
     BicubicPatch, Blob, BlobComponent, BlobReach, Container, Curve, Glyph, HeightField, Isosurface,
-    JuliaFractal, Lathe, Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep, SweepSpline,
-    Text,
+    JuliaFractal, Lathe, Parametric, Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep,
+    SweepSpline, Text,
 };
 
 /// An RGB colour (linear working space, unclamped).
@@ -447,6 +447,8 @@ pub enum Shape {
     },
     /// `isosurface { … }`: where a function reaches its threshold.
     Isosurface(Box<Isosurface>),
+    /// `parametric { … }`: a surface of two parameters.
+    Parametric(Box<Parametric>),
     /// `sphere_sweep { … }`: a sphere swept along a spline.
     SphereSweep(Box<SphereSweep>),
     /// `bicubic_patch { … }`: a Bézier patch.

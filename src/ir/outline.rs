@@ -380,6 +380,23 @@ pub struct Isosurface {
     pub max_trace: u32,
 }
 
+/// `parametric { … }`: the surface (fx(u, v), fy(u, v), fz(u, v)) over a (u, v) rectangle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Parametric {
+    /// fx, fy, fz, each a function of u and v.
+    pub functions: [std::sync::Arc<crate::func::Function>; 3],
+    /// The (u, v) rectangle's corners.
+    pub uv: (glam::DVec2, glam::DVec2),
+    /// `contained_by` (default the box ±1).
+    pub container: Container,
+    /// `accuracy` (default 0.001).
+    pub accuracy: f64,
+    /// `max_gradient` (default 1).
+    pub max_gradient: f64,
+    /// `precompute D, x, y, z`: the depth and which functions.
+    pub precompute: Option<(u32, [bool; 3])>,
+}
+
 /// How a `sphere_sweep` passes from one sphere to the next.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SweepSpline {

@@ -547,6 +547,22 @@ fn build_shape(
             );
             (Shape::Isosurface(Box::new(iso)), transform)
         }
+        ir::Shape::Parametric(p) => {
+            let surface = crate::geometry::Parametric::new(
+                p.functions.clone(),
+                generator,
+                match p.container {
+                    ir::Container::Box(a, b) => crate::geometry::Container::Box(a, b),
+                    ir::Container::Sphere(c, r) => crate::geometry::Container::Sphere(c, r),
+                },
+                p.uv.0,
+                p.uv.1,
+                p.accuracy,
+                p.max_gradient,
+                p.precompute,
+            );
+            (Shape::Parametric(Box::new(surface)), transform)
+        }
         ir::Shape::SphereSweep(s) => {
             let curve = match s.spline {
                 ir::SweepSpline::Linear => crate::geometry::SweepCurve::Linear,

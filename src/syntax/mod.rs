@@ -85,6 +85,8 @@ pub enum NodeKind {
     FunctionImage,
     /// `isosurface { … }`.
     Isosurface,
+    /// `parametric { … }`: its three functions (children), the (u, v) corners in `args`.
+    Parametric,
     /// `contained_by { box {…} | sphere {…} }`.
     ContainedBy,
     /// An isosurface setting: its word and values.
@@ -834,6 +836,7 @@ impl Lower {
             Rule::function_image => NodeKind::FunctionImage,
             Rule::function_params => NodeKind::FunctionParams,
             Rule::isosurface => NodeKind::Isosurface,
+            Rule::parametric => NodeKind::Parametric,
             Rule::contained_by => NodeKind::ContainedBy,
             Rule::iso_setting => NodeKind::IsoSetting,
             Rule::charset => NodeKind::Charset,
@@ -1281,6 +1284,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_blob
             | kw_function
             | kw_isosurface
+            | kw_parametric
             | kw_contained_by
             | iso_word
             | camera_blur_kw
