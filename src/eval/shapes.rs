@@ -692,6 +692,12 @@ impl Evaluator<'_> {
             Ok(v as u32)
         };
         let (width, depth) = (size(self, &f.args[0])?, size(self, &f.args[1])?);
+        if let Some(p) = f.children.iter().find(|c| c.kind == NodeKind::Pigment) {
+            return Err(Diagnostic::error(
+                "unsupported: a height field from a pigment function (trace's functions have no pigment bodies yet)",
+                p.word_span,
+            ));
+        }
         let body = Node {
             kind: NodeKind::Function,
             args: vec![f.args[2].clone()],
