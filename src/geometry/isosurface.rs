@@ -24,6 +24,70 @@ pub enum Container {
     Sphere(DVec3, f64),
 }
 
+impl Container {
+    /// The ray's span in the container (distances and the box sides they cross, or
+    /// [`SURFACE`] for a sphere or no side), as POV-Ray's box and sphere tests give it: the
+    /// box's span starts at 0 at the earliest, the sphere's may start behind the origin.
+    pub(super) fn span(&self, ray: &Ray) -> Option<(f64, f64, u32, u32)> {
+        match *self {
+            Container::Box(lo, hi) => {
+                let (p, d) = (ray.origin, ray.direction);
+                let (mut tmin, mut tmax) = (0.0f64, BOUND_HUGE);
+                let (mut smin, mut smax) = (SURFACE, SURFACE);
+                for axis in 0..3 {
+                    let side = |high: bool| 1 + 2 * axis as u32 + u32::from(high);
+                    if d[axis].abs() > EPSILON {
+                        let negative = d[axis] < 0.0;
+                        let (far, near) = if negative { (lo[axis], hi[axis]) } else { (hi[axis], lo[axis]) };
+                        let t = (far - p[axis]) / d[axis];
+                        if t < tmin {
+                            return None;
+                        }
+                        if t <= tmax {
+                            smax = side(!negative);
+                            tmax = t;
+                        }
+                        let t = (near - p[axis]) / d[axis];
+                        if t >= tmin {
+                            if t > tmax {
+                                return None;
+                            }
+                            smin = side(negative);
+                            tmin = t;
+                        }
+                    } else if p[axis] < lo[axis] || p[axis] > hi[axis] {
+                        return None;
+                    }
+                }
+                (tmax >= BOX_DEPTH_TOLERANCE).then_some((tmin, tmax, smin, smax))
+            }
+            Container::Sphere(c, r) => {
+                let length = ray.direction.length();
+                let d = ray.direction / length;
+                let oc = c - ray.origin;
+                let (oc2, closest) = (oc.length_squared(), oc.dot(d));
+                if oc2 >= r * r && closest < EPSILON {
+                    return None;
+                }
+                let half2 = r * r - oc2 + closest * closest;
+                if half2 <= EPSILON {
+                    return None;
+                }
+                let half = half2.sqrt();
+                Some(((closest - half) / length, (closest + half) / length, SURFACE, SURFACE))
+            }
+        }
+    }
+
+    /// Its box.
+    pub(super) fn bounds(&self) -> (DVec3, DVec3) {
+        match *self {
+            Container::Box(lo, hi) => (lo, hi),
+            Container::Sphere(c, r) => (c - DVec3::splat(r), c + DVec3::splat(r)),
+        }
+    }
+}
+
 /// An isosurface in object space.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Isosurface {
@@ -75,62 +139,9 @@ impl Isosurface {
         self.function.at(p, self.generator) - self.threshold
     }
 
-    /// The ray's span in the container (distances and parts), as POV-Ray's box and sphere
-    /// tests give it.
-    fn span(&self, ray: &Ray) -> Option<(f64, f64, u32, u32)> {
-        match self.container {
-            Container::Box(lo, hi) => {
-                let (p, d) = (ray.origin, ray.direction);
-                let (mut tmin, mut tmax) = (0.0f64, BOUND_HUGE);
-                let (mut smin, mut smax) = (SURFACE, SURFACE);
-                for axis in 0..3 {
-                    let side = |high: bool| 1 + 2 * axis as u32 + u32::from(high);
-                    if d[axis].abs() > EPSILON {
-                        let negative = d[axis] < 0.0;
-                        let (far, near) = if negative { (lo[axis], hi[axis]) } else { (hi[axis], lo[axis]) };
-                        let t = (far - p[axis]) / d[axis];
-                        if t < tmin {
-                            return None;
-                        }
-                        if t <= tmax {
-                            smax = side(!negative);
-                            tmax = t;
-                        }
-                        let t = (near - p[axis]) / d[axis];
-                        if t >= tmin {
-                            if t > tmax {
-                                return None;
-                            }
-                            smin = side(negative);
-                            tmin = t;
-                        }
-                    } else if p[axis] < lo[axis] || p[axis] > hi[axis] {
-                        return None;
-                    }
-                }
-                (tmax >= BOX_DEPTH_TOLERANCE).then_some((tmin, tmax, smin, smax))
-            }
-            Container::Sphere(c, r) => {
-                let length = ray.direction.length();
-                let d = ray.direction / length;
-                let oc = c - ray.origin;
-                let (oc2, closest) = (oc.length_squared(), oc.dot(d));
-                if oc2 >= r * r && closest < EPSILON {
-                    return None;
-                }
-                let half2 = r * r - oc2 + closest * closest;
-                if half2 <= EPSILON {
-                    return None;
-                }
-                let half = half2.sqrt();
-                Some(((closest - half) / length, (closest + half) / length, SURFACE, SURFACE))
-            }
-        }
-    }
-
     /// Calls `f` with each crossing in increasing distance (POV-Ray's All_Intersections).
     fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
-        let Some((mut depth1, mut depth2, side1, side2)) = self.span(ray) else {
+        let Some((mut depth1, mut depth2, side1, side2)) = self.container.span(ray) else {
             return;
         };
         depth1 = depth1.max(0.0);
@@ -285,10 +296,7 @@ impl super::shape::Surface for Isosurface {
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        Some(match self.container {
-            Container::Box(lo, hi) => (lo, hi),
-            Container::Sphere(c, r) => (c - DVec3::splat(r), c + DVec3::splat(r)),
-        })
+        Some(self.container.bounds())
     }
 
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
@@ -313,20 +321,17 @@ mod tests {
         )
     }
 
+    /// The function sphere of radius 1 in the box ±`half`, closed or `open`.
+    fn unit_sphere_in_box(half: f64, closed: bool) -> Isosurface {
+        let container = Container::Box(DVec3::splat(-half), DVec3::splat(half));
+        Isosurface::new(sphere_of(1.0), 2, container, 0.0, 0.001, 1.1, closed, 1)
+    }
+
     /// A function sphere of radius 1 in the default box: hit within the accuracy, its
     /// normal outward, the inside test right.
     #[test]
     fn function_sphere() {
-        let iso = Isosurface::new(
-            sphere_of(1.0),
-            2,
-            Container::Box(DVec3::splat(-2.0), DVec3::splat(2.0)),
-            0.0,
-            0.001,
-            1.1,
-            true,
-            1,
-        );
+        let iso = unit_sphere_in_box(2.0, true);
         let ray = Ray::new(DVec3::new(0.1, 0.2, -5.0), DVec3::Z);
         let (t, part) = iso.intersect(&ray).first_part().unwrap();
         let p = ray.at(t);
@@ -340,31 +345,13 @@ mod tests {
     /// A container that cuts the surface shows its wall where the function is inside.
     #[test]
     fn container_wall() {
-        let iso = Isosurface::new(
-            sphere_of(1.0),
-            2,
-            Container::Box(DVec3::splat(-0.5), DVec3::splat(0.5)),
-            0.0,
-            0.001,
-            1.1,
-            true,
-            1,
-        );
+        let iso = unit_sphere_in_box(0.5, true);
         let ray = Ray::new(DVec3::new(0.1, 0.2, -5.0), DVec3::Z);
         let (t, part) = iso.intersect(&ray).first_part().unwrap();
         assert!((t - 4.5).abs() < 1e-12 && part != SURFACE);
         assert_eq!(iso.normals(ray.at(t), part).0, DVec3::NEG_Z);
         // Open, there is no wall: the ray passes through.
-        let open = Isosurface::new(
-            sphere_of(1.0),
-            2,
-            Container::Box(DVec3::splat(-0.5), DVec3::splat(0.5)),
-            0.0,
-            0.001,
-            1.1,
-            false,
-            1,
-        );
+        let open = unit_sphere_in_box(0.5, false);
         assert!(open.intersect(&ray).is_empty());
     }
 }

@@ -13,8 +13,6 @@ use std::sync::Arc;
 /// POV-Ray's tiny value and the cap of its sector numbers.
 const EPSILON: f64 = 1e-10;
 const MAX_SECTOR: u32 = 10_000_000;
-/// POV-Ray's box test: the nearest far side kept.
-const BOX_DEPTH_TOLERANCE: f64 = 1e-6;
 /// The deepest split kept on the stack (POV-Ray's holds 32; deeper pieces are taken whole).
 const STACK: usize = 64;
 
@@ -136,55 +134,9 @@ impl Parametric {
         }
     }
 
-    /// The ray's span in the container, as POV-Ray's box and sphere tests give it.
-    fn span(&self, ray: &Ray) -> Option<(f64, f64)> {
-        match self.container {
-            Container::Box(lo, hi) => {
-                let (p, d) = (ray.origin, ray.direction);
-                let (mut tmin, mut tmax) = (0.0f64, 2e10f64);
-                for axis in 0..3 {
-                    if d[axis].abs() > EPSILON {
-                        let negative = d[axis] < 0.0;
-                        let (far, near) = if negative { (lo[axis], hi[axis]) } else { (hi[axis], lo[axis]) };
-                        let t = (far - p[axis]) / d[axis];
-                        if t < tmin {
-                            return None;
-                        }
-                        tmax = tmax.min(t);
-                        let t = (near - p[axis]) / d[axis];
-                        if t >= tmin {
-                            if t > tmax {
-                                return None;
-                            }
-                            tmin = t;
-                        }
-                    } else if p[axis] < lo[axis] || p[axis] > hi[axis] {
-                        return None;
-                    }
-                }
-                (tmax >= BOX_DEPTH_TOLERANCE).then_some((tmin, tmax))
-            }
-            Container::Sphere(c, r) => {
-                let length = ray.direction.length();
-                let d = ray.direction / length;
-                let oc = c - ray.origin;
-                let (oc2, closest) = (oc.length_squared(), oc.dot(d));
-                if oc2 >= r * r && closest < EPSILON {
-                    return None;
-                }
-                let half2 = r * r - oc2 + closest * closest;
-                if half2 <= EPSILON {
-                    return None;
-                }
-                let half = half2.sqrt();
-                Some(((closest - half) / length, (closest + half) / length))
-            }
-        }
-    }
-
     /// The hit (distance and the (u, v) of its piece), POV-Ray's All_Intersections.
     fn hit(&self, ray: &Ray) -> Option<(f64, DVec2)> {
-        let (mut depth1, depth2) = self.span(ray)?;
+        let (mut depth1, depth2, _, _) = self.container.span(ray)?;
         let (p, d) = (ray.origin, ray.direction);
         if depth1 == depth2 {
             depth1 = 0.0;
@@ -317,10 +269,7 @@ impl super::shape::Surface for Parametric {
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        Some(match self.container {
-            Container::Box(lo, hi) => (lo, hi),
-            Container::Sphere(c, r) => (c - DVec3::splat(r), c + DVec3::splat(r)),
-        })
+        Some(self.container.bounds())
     }
 }
 

@@ -69,8 +69,10 @@ global_settings { assumed_gamma 1.0 }
   max(F_Bumpy(x, y, z), 0.6*F_RCube(x, y, z))
     - 0.05 * Clamp(1 - 8*Sq(y), 0, 1) * abs(2*Sector(x, z, 8) - 1)
 }
-#declare F_Saturn = function { -0.5 * f_torus2(x, y*1.6, z, 1, 1.12, 0.09) }
-#declare F_Heart = function { -0.25 * f_heart(x/0.32, (z)/0.32, (y - 1.05)/0.32, 1) }
+// the field-strength functions grow very fast away from their surface, so
+// they are capped with min() to keep the gradient of the combination low
+#declare F_Saturn = function { min(-0.5 * f_torus2(x, y*1.6, z, 1, 1.12, 0.09), 0.15) }
+#declare F_Heart = function { min(-0.06 * f_heart(x/0.32, z/0.32, (y - 1.05)/0.32, 1), 0.03) }
 #declare F_Combo = function {
   min(min(F_Ball(x, y, z), F_Saturn(x, y, z)), F_Heart(x, y, z))
 }
@@ -138,7 +140,7 @@ isosurface {
   contained_by { sphere { 0, 1.45 } }
   threshold 0.02
   accuracy 0.001
-  max_gradient 2.6
+  max_gradient 2.3
   texture {
     pigment { color rgb <0.85, 0.35, 0.2> }
     finish { ambient 0.05 diffuse 0.75 specular 0.4 roughness 0.02 }
@@ -152,7 +154,7 @@ isosurface {
   contained_by { box { <-1.25, -1.5, -1.25>, <1.25, 1.15, 1.25> } }
   threshold 0
   accuracy 0.001
-  max_gradient 1.8
+  max_gradient 1.4
   open
   texture {
     pigment { color rgb <0.3, 0.65, 0.35> }
@@ -168,7 +170,7 @@ isosurface {
   contained_by { box { <-1.35, -0.95, -1.35>, <1.35, 1.45, 1.35> } }
   threshold 0
   accuracy 0.0005
-  max_gradient 4
+  max_gradient 2.7
   texture {
     pigment { color rgb <0.35, 0.45, 0.9> }
     finish { ambient 0.05 diffuse 0.7 specular 0.6 roughness 0.01 reflection 0.08 }
