@@ -104,8 +104,11 @@ global_settings { assumed_gamma 1.0 }
 #declare H_Rim = function(px, py) {
   0.25 * Clamp(1 - 14*abs(Hypot(px - 0.22, py - 0.62) - 0.1), 0, 1)
 }
+// the last factor flattens the terrain towards the edge facing the camera
+// (the function's y = 1 row ends up at z = 0 of the height field)
 #declare H_Raw = function(px, py) {
-  Clamp(H_Hills(px, py) * min(1, 0.35 + 6*H_Valley(px, py)) + H_Rim(px, py), 0, 1)
+  Clamp((H_Hills(px, py) * min(1, 0.35 + 6*H_Valley(px, py)) + H_Rim(px, py))
+        * Clamp((1 - py)*6, 0, 1), 0, 1)
 }
 #declare H_Terrace = function(h) { h - 0.35 * mod(h, 0.1) }
 #declare H_Final = function(px, py) {
@@ -116,7 +119,7 @@ global_settings { assumed_gamma 1.0 }
 // Scene
 // ---------------------------------------------------------------------
 camera {
-  location <0, 3.4, -8.2>
+  location <0, 3.8, -8.2>
   look_at  <0, 1.0, 0.5>
   angle 56
 }
@@ -151,7 +154,7 @@ isosurface {
 // B: twisted box + ring, open (box container cuts the top off)
 isosurface {
   function { F_Tower(x, y, z) }
-  contained_by { box { <-1.25, -1.5, -1.25>, <1.25, 1.15, 1.25> } }
+  contained_by { box { <-1.25, -1.5, -1.25>, <1.25, 0.95, 1.25> } }
   threshold 0
   accuracy 0.001
   max_gradient 1.4
