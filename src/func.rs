@@ -13,6 +13,10 @@ use std::sync::Arc;
 /// The deepest stack a function may need (deeper expressions are refused when compiled).
 pub const MAX_STACK: usize = 64;
 
+/// The deepest chain of functions calling functions (deeper chains are refused when
+/// compiled, so that no evaluation runs out of stack).
+pub const MAX_NESTING: usize = 64;
+
 /// One-argument maths.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[allow(missing_docs)]
@@ -295,6 +299,8 @@ pub struct Function {
     code: Box<[Op]>,
     /// The most values its program holds at once.
     depth: usize,
+    /// 1 + the deepest nesting of the functions it calls.
+    nesting: usize,
 }
 
 impl PartialEq for Function {
@@ -304,12 +310,17 @@ impl PartialEq for Function {
 }
 
 impl Function {
-    /// A function of `params` values running `code`; `None` if the program is not well formed
-    /// or needs more than [`MAX_STACK`] values at once.
+    /// A function of `params` values running `code`; `None` if the program is not well formed,
+    /// needs more than [`MAX_STACK`] values at once or calls functions nested deeper than
+    /// [`MAX_NESTING`].
     pub fn new(params: usize, code: Vec<Op>) -> Option<Function> {
         let mut depth: usize = 0;
         let mut deepest = 0;
+        let mut nesting = 1;
         for op in &code {
+            if let Op::Call(f) = op {
+                nesting = nesting.max(f.nesting + 1);
+            }
             let (pops, pushes) = match op {
                 Op::Const(_) | Op::Arg(_) => (0, 1),
                 Op::Neg | Op::Math1(_) => (1, 1),
@@ -327,10 +338,11 @@ impl Function {
             depth = depth.checked_sub(pops)? + pushes;
             deepest = deepest.max(depth);
         }
-        (depth == 1 && deepest <= MAX_STACK).then(|| Function {
+        (depth == 1 && deepest <= MAX_STACK && nesting <= MAX_NESTING).then(|| Function {
             params,
             code: code.into_boxed_slice(),
             depth: deepest,
+            nesting,
         })
     }
 
@@ -343,6 +355,7 @@ impl Function {
             params: n,
             code: code.into_boxed_slice(),
             depth: n,
+            nesting: 1,
         }
     }
 
@@ -502,6 +515,17 @@ mod tests {
         assert_eq!(h.eval(&[2.0], 2), 5.0);
         assert!(Function::new(1, vec![Op::Add]).is_none());
         assert!(Function::new(1, vec![Op::Arg(1)]).is_none());
+    }
+
+    /// A chain of functions each calling the one before stops at MAX_NESTING.
+    #[test]
+    fn nesting_is_bounded() {
+        let mut f = Arc::new(Function::new(1, vec![Op::Arg(0)]).unwrap());
+        for _ in 1..MAX_NESTING {
+            f = Arc::new(Function::new(1, vec![Op::Arg(0), Op::Call(f)]).unwrap());
+        }
+        assert_eq!(f.eval(&[2.5], 2), 2.5);
+        assert!(Function::new(1, vec![Op::Arg(0), Op::Call(f)]).is_none());
     }
 
     #[test]

@@ -8,6 +8,7 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Temporary files being written now.
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -43,8 +44,15 @@ impl TempFile {
         &self.tmp
     }
 
-    /// Renames the finished file onto its target.
+    /// Renames the finished file onto its target (not after an interrupt: the file is then
+    /// removed).
     pub fn persist(mut self) -> std::io::Result<()> {
+        if interrupted() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::Interrupted,
+                "interrupted",
+            ));
+        }
         std::fs::rename(&self.tmp, &self.target)?;
         self.done = true;
         Ok(())
@@ -60,6 +68,26 @@ impl Drop for TempFile {
             pending.retain(|p| p != &self.tmp);
         }
     }
+}
+
+/// Whether the process was interrupted (set by [`interrupt`]).
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+
+/// For an interrupt (SIGINT, SIGTERM), before the process ends: from now on no temporary file
+/// is renamed onto its target ([`TempFile::persist`] fails), and the ones being written are
+/// removed, twice 50 ms apart. (A signal that interrupts a thread blocked opening its
+/// temporary file, a FIFO or a slow disk, restarts that open when the handler returns, which
+/// can create the file again after the first removal: seen with SIGINT and a FIFO.)
+pub fn interrupt() {
+    INTERRUPTED.store(true, Ordering::SeqCst);
+    remove_pending();
+    std::thread::sleep(std::time::Duration::from_millis(50));
+    remove_pending();
+}
+
+/// Whether [`interrupt`] was called.
+pub fn interrupted() -> bool {
+    INTERRUPTED.load(Ordering::SeqCst)
 }
 
 /// Removes every temporary file being written (for an interrupt or a fatal error; the

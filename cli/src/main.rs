@@ -130,7 +130,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     // An interrupted write leaves no temporary file behind.
     let _ = ctrlc::set_handler(|| {
-        trace::output::remove_pending();
+        trace::output::interrupt();
         eprintln!("trace: interrupted");
         std::process::exit(130);
     });
@@ -145,6 +145,8 @@ fn main() -> ExitCode {
         None => render(&cli.render),
     };
     match result {
+        // (The work ended while an interrupt was being handled: the handler's code.)
+        _ if trace::output::interrupted() => ExitCode::from(130),
         Ok(()) => ExitCode::SUCCESS,
         Err(failure) => {
             eprintln!("{}", failure.message);

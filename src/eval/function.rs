@@ -66,7 +66,11 @@ impl Evaluator<'_> {
         self.compile(body, &params, &mut code)?;
         Function::new(params.len(), code).map(Arc::new).ok_or_else(|| {
             Diagnostic::error(
-                format!("this function nests too deeply (more than {} values at once)", crate::func::MAX_STACK),
+                format!(
+                    "this function nests too deeply (more than {} values at once, or functions calling functions more than {} deep)",
+                    crate::func::MAX_STACK,
+                    crate::func::MAX_NESTING
+                ),
                 body.span,
             )
         })

@@ -686,8 +686,8 @@ impl Evaluator<'_> {
     fn function_heights(&mut self, f: &Node) -> Result<(u32, u32, Vec<u16>)> {
         let size = |ev: &mut Self, e: &Expr| -> Result<u32> {
             let v = (ev.float(e)? + 0.5).floor();
-            if !(2.0..=8192.0).contains(&v) {
-                return Err(Diagnostic::error("a function height field is 2 to 8192 points a side", e.span));
+            if !(2.0..=4096.0).contains(&v) {
+                return Err(Diagnostic::error("a function height field is 2 to 4096 points a side", e.span));
             }
             Ok(v as u32)
         };
@@ -912,7 +912,7 @@ impl Evaluator<'_> {
             ));
         }
         let n = n as usize;
-        if rest.len() != 2 * n {
+        if rest.len() % 2 != 0 || rest.len() / 2 != n {
             return Err(Diagnostic::error(
                 format!("this sphere_sweep announces {n} spheres and gives {} values (a centre and a radius each)", rest.len()),
                 count.span,
