@@ -438,8 +438,7 @@ pub fn far_torus(move_origin: bool, distance: f64, rays: u64) -> Count {
     let mut attempts = 0;
     while count.rays < rays && attempts < 20 * rays {
         attempts += 1;
-        let q = rng.unit() * (bound * rng.uniform().cbrt());
-        let u = rng.unit();
+        let (q, u) = line_in_ball(&mut rng, bound);
         let near = Ray::new(q - 3.0 * bound * u, u);
         let far = Ray::new(q - distance * u, u);
         let reference = torus.intersect(&near);
@@ -576,6 +575,13 @@ pub fn s11_shapes() -> Vec<(&'static str, trace::geometry::Shape)> {
     ]
 }
 
+/// A random line through the ball of radius `bound` about the origin: a point uniform in the
+/// ball and a uniform direction.
+fn line_in_ball(rng: &mut Rng, bound: f64) -> (DVec3, DVec3) {
+    let q = rng.unit() * (bound * rng.uniform().cbrt());
+    (q, rng.unit())
+}
+
 /// S11: as S6 for `shape` (within a ball of radius 1.5): the line's hit from 4.5 away is the
 /// reference; from `distance` away the same line must give the same hit or miss and the same
 /// point within 1e-6 (lines within 1e-3 of tangency are skipped).
@@ -586,8 +592,7 @@ pub fn far_shape(shape: &trace::geometry::Shape, distance: f64, rays: u64) -> Co
     let mut attempts = 0;
     while count.rays < rays && attempts < 20 * rays {
         attempts += 1;
-        let q = rng.unit() * (bound * rng.uniform().cbrt());
-        let u = rng.unit();
+        let (q, u) = line_in_ball(&mut rng, bound);
         let near = Ray::new(q - 3.0 * bound * u, u);
         let far = Ray::new(q - distance * u, u);
         let reference = shape.intersect(&near).first_part();
@@ -654,8 +659,7 @@ pub fn grazing_shape(shape: &trace::geometry::Shape, angle: f64, rays: u64) -> C
     let mut attempts = 0;
     while count.rays < rays && attempts < 20 * rays {
         attempts += 1;
-        let q = rng.unit() * (bound * rng.uniform().cbrt());
-        let u = rng.unit();
+        let (q, u) = line_in_ball(&mut rng, bound);
         let probe = Ray::new(q - 3.0 * bound * u, u);
         let Some((t, part)) = shape.intersect(&probe).first_part() else {
             continue;
