@@ -228,13 +228,13 @@ impl Isosurface {
         self.find_root_in((t1, f1), (t2, f2), dt, span, &|t| value(t, s))
     }
 
-    fn find_root_in(
+    fn find_root_in<F: Fn(f64) -> f64>(
         &self,
         a: (f64, f64),
         b: (f64, f64),
         dt: f64,
         span: f64,
-        value: &dyn Fn(f64) -> f64,
+        value: &F,
     ) -> Option<f64> {
         if span < self.accuracy {
             return (b.1 < 0.0).then_some(b.0);

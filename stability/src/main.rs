@@ -156,35 +156,31 @@ fn main() {
         }
     }
     eprintln!("S6 done");
-    for (label, shape) in s11_shapes() {
-        for d in SHAPE_DISTANCES {
-            let (count, ns) = timed(|| far_shape(&shape, d, rays / 4));
-            rows.push(Row {
-                experiment: "S11",
-                counter: "wrong",
-                method: label,
-                a: 1.5,
-                b: d,
-                count,
-                ns_per_ray: ns,
-            });
-        }
-    }
+    // S11 and S12: each shape against each distance or angle.
+    let mut shape_rows =
+        |experiment: &'static str,
+         counter: &'static str,
+         shapes: Vec<(&'static str, trace::geometry::Shape)>,
+         values: &[f64],
+         run: fn(&trace::geometry::Shape, f64, u64) -> trace_stability::Count| {
+            for (label, shape) in shapes {
+                for &b in values {
+                    let (count, ns) = timed(|| run(&shape, b, rays / 4));
+                    rows.push(Row {
+                        experiment,
+                        counter,
+                        method: label,
+                        a: 1.5,
+                        b,
+                        count,
+                        ns_per_ray: ns,
+                    });
+                }
+            }
+        };
+    shape_rows("S11", "wrong", s11_shapes(), &SHAPE_DISTANCES, far_shape);
     eprintln!("S11 done");
-    for (label, shape) in s12_shapes() {
-        for angle in GRAZING_ANGLES {
-            let (count, ns) = timed(|| grazing_shape(&shape, angle, rays / 4));
-            rows.push(Row {
-                experiment: "S12",
-                counter: "odd",
-                method: label,
-                a: 1.5,
-                b: angle,
-                count,
-                ns_per_ray: ns,
-            });
-        }
-    }
+    shape_rows("S12", "odd", s12_shapes(), &GRAZING_ANGLES, grazing_shape);
     eprintln!("S12 done");
     for k in SCENE_SCALES {
         for t in SCENE_SHIFTS {
