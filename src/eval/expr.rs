@@ -135,8 +135,9 @@ impl Evaluator<'_> {
             "v" => Value::Vector(Vector::new(&[0.0, 1.0])),
             "true" | "yes" | "on" => Value::Float(1.0),
             "false" | "no" | "off" => Value::Float(0.0),
-            "clock" => Value::Float(0.0),
-            "clock_on" => Value::Float(0.0),
+            // A still (POV-Ray's values without animation options).
+            "clock" | "clock_on" | "clock_delta" | "frame_number" | "initial_clock"
+            | "final_clock" | "initial_frame" | "final_frame" => Value::Float(0.0),
             "image_width" => Value::Float(self.options.width as f64),
             "image_height" => Value::Float(self.options.height as f64),
             "version" => Value::Float(self.version.unwrap_or(3.7)),

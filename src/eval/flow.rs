@@ -148,6 +148,9 @@ impl<'a> Evaluator<'a> {
                 self.end_macro(item, result)?;
             }
             NodeKind::Include => self.include(item, f)?,
+            NodeKind::FileOpen | NodeKind::FileClose | NodeKind::FileRead | NodeKind::FileWrite => {
+                self.file_directive(item)?;
+            }
             NodeKind::UnknownDirective => {
                 let span = Span {
                     start: item.span.start,
@@ -321,11 +324,7 @@ impl<'a> Evaluator<'a> {
     /// A string value: a literal, `concat(…)`, `str(v, w, p)`, or a declared string.
     pub(super) fn string(&mut self, e: &syntax::Expr) -> Result<String> {
         match &e.kind {
-            ExprKind::Str(s) => Ok(s
-                .replace("\\\"", "\"")
-                .replace("\\n", "\n")
-                .replace("\\t", "\t")
-                .replace("\\\\", "\\")),
+            ExprKind::Str(s) => Ok(super::files::unescape(s)),
             ExprKind::Call(name, _, args) if STRING_FUNCTIONS.contains(&name.as_str()) => {
                 let text = self.string_call(name, args, e.span)?;
                 if text.len() > MAX_STRING_BYTES {
@@ -498,7 +497,7 @@ impl<'a> Evaluator<'a> {
     /// a statement or block item is one step, a loop pass one, a macro call
     /// [`MACRO_CALL_STEPS`] plus one per 16 bytes of its body (parsed at every call). Nested
     /// loops cannot run for hours.
-    fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
+    pub(super) fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
         self.steps = self.steps.saturating_add(cost);
         if self.steps <= self.options.max_steps {
             return Ok(());

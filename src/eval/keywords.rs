@@ -529,6 +529,7 @@ const SUPPORTED: &[&str] = &[
     "ambient_light",
     "angle",
     "aperture",
+    "append",
     "area_light",
     "array",
     "asc",
@@ -627,6 +628,7 @@ const SUPPORTED: &[&str] = &[
     "fade_power",
     "falloff",
     "false",
+    "fclose",
     "file_exists",
     "filter",
     "finish",
@@ -639,6 +641,7 @@ const SUPPORTED: &[&str] = &[
     "fog_alt",
     "fog_offset",
     "fog_type",
+    "fopen",
     "for",
     "form",
     "frequency",
@@ -758,6 +761,7 @@ const SUPPORTED: &[&str] = &[
     "ramp_wave",
     "rand",
     "range",
+    "read",
     "red",
     "reflection",
     "repeat",
@@ -777,6 +781,11 @@ const SUPPORTED: &[&str] = &[
     "sin",
     "sine_wave",
     "sinh",
+    "sint16be",
+    "sint16le",
+    "sint32be",
+    "sint32le",
+    "sint8",
     "size",
     "sky",
     "sky_sphere",
@@ -836,6 +845,9 @@ const SUPPORTED: &[&str] = &[
     "type",
     "u",
     "u_steps",
+    "uint16be",
+    "uint16le",
+    "uint8",
     "ultra_wide_angle",
     "undef",
     "union",
@@ -865,6 +877,7 @@ const SUPPORTED: &[&str] = &[
     "while",
     "wood",
     "wrinkles",
+    "write",
     "x",
     "y",
     "yes",
@@ -906,10 +919,6 @@ pub fn is_unsupported_function(word: &str) -> bool {
             | "sum"
             | "function"
             | "spline"
-            | "fopen"
-            | "fclose"
-            | "read"
-            | "write"
     )
 }
 
@@ -939,7 +948,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by"
         | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
         "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
-        "fopen" | "fclose" | "read" | "write" | "render" | "statistics" => {
+        "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }
         "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" | "spline" => LATER,
@@ -969,8 +978,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "pattern" | "prod" | "sum" | "vturbulence" => {
             "user functions are not supported by trace yet"
         }
-        "append" | "sint16be" | "sint16le" | "sint32be" | "sint32le" | "sint8" | "uint16be"
-        | "uint16le" | "uint8" | "df3" => "file input/output is not supported by trace yet",
+        "df3" => "file input/output is not supported by trace yet",
         "bmp" | "pot" => "only png image files are read by trace",
         "all" | "alpha" | "gamma" | "premultiplied" => {
             "this image_map item is not supported by trace yet"

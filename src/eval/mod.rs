@@ -6,6 +6,7 @@
 
 mod array;
 mod expr;
+mod files;
 mod flow;
 mod function;
 mod heightfield;
@@ -329,6 +330,8 @@ pub(crate) struct Evaluator<'a> {
     charset: crate::font::Charset,
     /// Font files read, by path (`text`).
     fonts: HashMap<std::path::PathBuf, std::sync::Arc<Vec<u8>>>,
+    /// Files opened by `#fopen`.
+    files: files::Files,
 }
 
 impl<'a> Evaluator<'a> {
@@ -368,6 +371,7 @@ impl<'a> Evaluator<'a> {
             mesh_files: HashMap::new(),
             fonts: HashMap::new(),
             charset: crate::font::Charset::Ascii,
+            files: files::Files::default(),
         }
     }
 
@@ -1175,6 +1179,13 @@ impl<'a> Evaluator<'a> {
     }
 
     fn finish(mut self) -> Result<Evaluated> {
+        // Files the scene left open are written out now (POV-Ray closes them at the end).
+        self.files.flush().map_err(|e| Diagnostic {
+            severity: crate::diag::Severity::Error,
+            message: format!("cannot write a file the scene opened with #fopen: {e}"),
+            span: None,
+            notes: Vec::new(),
+        })?;
         let camera = match self.camera.take() {
             Some(items) => resolve_camera(&items, &mut self.warnings)?,
             None => ir::Camera::default(),

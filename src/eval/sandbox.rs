@@ -72,6 +72,32 @@ impl Sandbox {
         }
     }
 
+    /// Where the scene may write the file `name` (`#fopen … write`): inside the scene's own
+    /// folder only, after following `..` and links (of the folder and of the file if it
+    /// exists), never a folder or a file outside.
+    pub(crate) fn writable(&self, name: &str) -> Result<PathBuf, &'static str> {
+        let folder = &self.search[0];
+        let root = folder.canonicalize().map_err(|_| "the scene's folder cannot be found")?;
+        let path = folder.join(name);
+        let file_name = path.file_name().ok_or("it names no file")?;
+        let parent = path
+            .parent()
+            .and_then(|p| p.canonicalize().ok())
+            .ok_or("its folder does not exist")?;
+        let target = match std::fs::symlink_metadata(&path) {
+            Ok(meta) if meta.is_dir() => return Err("it is a folder"),
+            Ok(meta) if meta.file_type().is_symlink() => {
+                path.canonicalize().map_err(|_| "it is a link to nothing")?
+            }
+            _ => parent.join(file_name),
+        };
+        if target.starts_with(&root) && !target.is_dir() {
+            Ok(target)
+        } else {
+            Err("it lies outside the scene's folder")
+        }
+    }
+
     /// Like [`Sandbox::find`], with the refusal as a located error naming the file as the
     /// scene wrote it (`what` says what kind of file: "include file", "image", …).
     pub(crate) fn locate(&self, name: &str, what: &str, span: Span) -> Result<PathBuf, Diagnostic> {
@@ -153,6 +179,23 @@ mod tests {
         assert!(widened.find("secret.inc").is_ok());
         #[cfg(unix)]
         assert!(widened.find("link.inc").is_ok());
+        let _ = std::fs::remove_dir_all(root);
+    }
+
+    #[test]
+    fn files_are_written_inside_the_scene_folder_only() {
+        let root = layout("write");
+        let sandbox = Sandbox::new(&root.join("scene"), &[root.join("outside")]);
+        let scene = root.join("scene").canonicalize().unwrap();
+        assert_eq!(sandbox.writable("new.txt"), Ok(scene.join("new.txt")));
+        assert_eq!(sandbox.writable("sub/../sub/y.txt"), Ok(scene.join("sub/y.txt")));
+        // Not into a -L folder, not through `..`, an absolute path, a link or a folder.
+        assert!(sandbox.writable("../outside/secret.inc").is_err());
+        assert!(sandbox.writable("/tmp/x.txt").is_err());
+        assert!(sandbox.writable("missing/x.txt").is_err());
+        assert!(sandbox.writable("sub").is_err());
+        #[cfg(unix)]
+        assert!(sandbox.writable("link.inc").is_err());
         let _ = std::fs::remove_dir_all(root);
     }
 

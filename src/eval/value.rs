@@ -66,6 +66,8 @@ pub enum Value {
     Array(Box<Array>),
     /// `function { … }`, compiled.
     Function(std::sync::Arc<crate::func::Function>),
+    /// A file opened by `#fopen` (an index into the evaluator's files).
+    File(usize),
     /// A declaration trace could not evaluate: the reason, reported when the name is used.
     Unsupported(Box<crate::diag::Diagnostic>),
 }
@@ -113,6 +115,7 @@ impl Value {
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Function(_) => "a function",
+            Value::File(_) => "a file",
             Value::Unsupported(_) => "an unsupported value",
         }
     }

@@ -23,7 +23,7 @@ pub use crate::ir::{
     AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
     Rgb,
 };
-pub use material::{Material, MaterialMap, filter_colour};
+pub use material::{Material, filter_colour};
 pub use normal::Normal;
 pub use query::interior_fade;
 pub use pigment::Pigment;

@@ -200,6 +200,16 @@ pub enum NodeKind {
     RangeHead,
     Include,
     Message,
+    /// `#fopen F "name" read|write|append`: children the file's name and the mode word.
+    FileOpen,
+    /// `#fclose F`.
+    FileClose,
+    /// `#read (F, A, …)`: children the file, then the variables.
+    FileRead,
+    /// `#write (F, …)`: children the file, then one [`NodeKind::WriteItem`] per value.
+    FileWrite,
+    /// One value of `#write`: an optional binary kind (`uint8` …) as a child, the value in args.
+    WriteItem,
     Body,
     MacroDef,
     MacroBody,
@@ -937,6 +947,11 @@ impl Lower {
             Rule::range_head => NodeKind::RangeHead,
             Rule::include => NodeKind::Include,
             Rule::message => NodeKind::Message,
+            Rule::fopen => NodeKind::FileOpen,
+            Rule::fclose => NodeKind::FileClose,
+            Rule::read_directive => NodeKind::FileRead,
+            Rule::write_directive => NodeKind::FileWrite,
+            Rule::write_item => NodeKind::WriteItem,
             Rule::body => NodeKind::Body,
             Rule::macro_def => NodeKind::MacroDef,
             Rule::macro_body => NodeKind::MacroBody,
@@ -945,7 +960,7 @@ impl Lower {
             Rule::colour_item => NodeKind::ColourItem,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
-            Rule::ident | Rule::name_ref | Rule::item_ref => NodeKind::IdentRef,
+            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word => NodeKind::IdentRef,
             Rule::array_value => NodeKind::Array,
             Rule::deprecation => NodeKind::Deprecation,
             Rule::array_init => NodeKind::ArrayInit,
@@ -974,6 +989,7 @@ impl Lower {
                 | Rule::shape_word
                 | Rule::charset
                 | Rule::function_params
+                | Rule::file_word
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
@@ -1437,6 +1453,10 @@ fn is_word(rule: Rule) -> bool {
             | kw_macro
             | kw_undef
             | kw_include
+            | kw_fopen
+            | kw_fclose
+            | kw_read
+            | kw_write
             | kw_debug
             | kw_warning
             | kw_error

@@ -93,6 +93,39 @@ fn a_scene_reads_no_file_outside_its_folder_and_the_include_paths() {
             "{text}: {err}"
         );
     }
+    // `#fopen … read` reads only where `#include` does.
+    let out = run_in(&scene_dir, "#fopen F \"../outside/x.inc\" read\n", &[]);
+    assert!(
+        stderr(&out).contains("lies outside the folders"),
+        "{}",
+        stderr(&out)
+    );
+    // `#fopen … write` and `append` write only inside the scene's folder, even with -L.
+    let targets = [
+        "../outside/new.txt".to_string(),
+        "/tmp/trace-never-written.txt".to_string(),
+        format!("{}", outside.join("x.inc").display()),
+        "link.inc".to_string(),
+    ];
+    for target in &targets {
+        for mode in ["write", "append"] {
+            let text = format!("#fopen F \"{target}\" {mode}\n#write (F, \"overwritten\")\n");
+            let out = run_in(&scene_dir, &text, &["-L", outside.to_str().unwrap()]);
+            let err = stderr(&out);
+            assert_eq!(out.status.code(), Some(2), "{text}: {err}");
+            assert!(
+                err.contains("lies outside the scene's folder") && err.contains("scene.rt:1:"),
+                "{text}: {err}"
+            );
+        }
+    }
+    assert!(!outside.join("new.txt").exists());
+    assert!(!Path::new("/tmp/trace-never-written.txt").exists());
+    assert!(
+        std::fs::read_to_string(outside.join("x.inc"))
+            .unwrap()
+            .starts_with("SECRET_MARKER")
+    );
     // `file_exists` sees no file outside either.
     let probe = format!("#if (file_exists(\"../outside/x.inc\")) #error \"seen\" #end\n{CAMERA}");
     let out = run_in(&scene_dir, &probe, &[]);
@@ -232,6 +265,17 @@ fn work_and_memory_are_bounded() {
     let doubling = "#declare S = \"ab\";\n#for (i, 0, 40) #declare S = concat(S, S); #end\n";
     let err = load_error(doubling).expect("too long");
     assert!(err.contains("trace allows at most"), "{err}");
+    // A scene writing its files forever stops at the bound on bytes written.
+    let writing = "#declare S = \"abcdefgh\";\n#for (i, 0, 16) #declare S = concat(S, S); #end\n\
+                   #fopen F \"big.txt\" write\n#while (1) #write (F, S) #end\n";
+    let out = run_in(&dir, writing, &[]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("writes more than"),
+        "{}",
+        stderr(&out)
+    );
+    let _ = std::fs::remove_file(dir.join("big.txt"));
     // A count announces more than the list holds: no allocation of the announced size.
     let announced = "mesh2 { vertex_vectors { 100000000, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }";
     let err = load_error(announced).expect("wrong count");

@@ -258,6 +258,32 @@ fn functions_give_povrays_values() {
     assert_eq!(loaded.debug_output.trim(), expected.trim());
 }
 
+/// `#fopen`/`#write`/`#read`/`#fclose` write the file POV-Ray 3.7 writes and read back what
+/// it reads (tests/scenes/files/fileio*.povray.*, captured from `povray` on the same scene,
+/// run in a scratch folder since the scene writes beside itself).
+#[test]
+fn user_files_are_written_and_read_as_povray_does() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/scenes/files");
+    let dir = std::env::temp_dir().join(format!("trace-fileio-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy(root.join("fileio.rt"), dir.join("fileio.rt")).unwrap();
+    let options = trace::LoadOptions {
+        width: 8,
+        height: 8,
+        ..Default::default()
+    };
+    let loaded = trace::load(&dir.join("fileio.rt"), &options).unwrap_or_else(|e| panic!("{e}"));
+    let expected = std::fs::read_to_string(root.join("fileio.povray.txt")).unwrap();
+    assert_eq!(loaded.debug_output.trim(), expected.trim());
+    let written = std::fs::read(dir.join("fileio_data.txt")).unwrap();
+    assert_eq!(
+        written,
+        std::fs::read(root.join("fileio_data.povray.txt")).unwrap()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A shape's values made by directives (points in a `#while` or `#for` loop, a word in an
 /// `#if`) give the shape their literal values give, as in POV-Ray.
 #[test]
