@@ -142,6 +142,36 @@ impl Math2 {
     }
 }
 
+/// A function made of something other than an expression: a pattern's value, a pigment's
+/// colour, a spline's point (`function { pattern { … } }`, `function { pigment { … } }`,
+/// `function { spline { … } }`). The layer that made it evaluates it; programs call it
+/// through this trait (one dynamic call, small beside evaluating a pattern or a pigment).
+pub trait Native: Send + Sync + std::fmt::Debug {
+    /// How many values it takes (x, y, z for a pattern or a pigment; 1 for a spline).
+    fn params(&self) -> usize;
+    /// How many values it gives (1 for a pattern, 5 for a colour, a spline's terms).
+    fn size(&self) -> usize;
+    /// Its values for `args` (the first [`Native::size`] of them meaningful), noise from
+    /// `generator` where it has no generator of its own.
+    fn eval(&self, args: &[f64], generator: u8) -> [f64; 5];
+}
+
+/// A shared [`Native`], equal only to itself (patterns and programs compare by identity).
+#[derive(Clone, Debug)]
+pub struct NativeRef(pub Arc<dyn Native>);
+
+impl PartialEq for NativeRef {
+    fn eq(&self, other: &NativeRef) -> bool {
+        std::ptr::addr_eq(Arc::as_ptr(&self.0), Arc::as_ptr(&other.0))
+    }
+}
+
+/// Which value of a [`Native`] a program uses: 0 to 4 (`.x`/`.red` … `.transmit`), or
+/// [`GRAY`] (`.gray`: POV-Ray's weighted sum of red, green and blue).
+pub type Member = u8;
+/// The `.gray` member.
+pub const GRAY: Member = 5;
+
 /// One step of a function's program.
 #[derive(Clone, Debug)]
 #[allow(missing_docs)]
@@ -175,6 +205,8 @@ pub enum Op {
     Call(Arc<Function>),
     /// A built-in function, called with the top n values (x, y, z first).
     Internal(Internal, u8),
+    /// A native function called with its parameters' count of top values; one of its values.
+    Native(Arc<dyn Native>, Member),
 }
 
 /// POV-Ray's built-in functions that trace has (`internal(N)`).
@@ -286,7 +318,7 @@ impl Internal {
             ),
             Umbrella => clamp(-(x2 - y * z2)),
             WitchOfAgnesi => clamp(-(p(1) * (y - 1.0) + (x2 + z2) * y)),
-            Noise3d => crate::pattern::noise::noise(DVec3::new(x, y, z), generator),
+            Noise3d => crate::noise::noise(DVec3::new(x, y, z), generator),
         }
     }
 }
@@ -296,6 +328,10 @@ impl Internal {
 pub struct Function {
     /// How many values it takes.
     pub params: usize,
+    /// A function of several values (a pigment's colour, a spline's point): called in an
+    /// expression it gives them all, in another function one member of it (`F(x, y, z).red`).
+    /// Its program gives its first value.
+    pub vector: Option<Arc<dyn Native>>,
     code: Box<[Op]>,
     /// The most values its program holds at once.
     depth: usize,
@@ -328,6 +364,7 @@ impl Function {
                 Op::Select4 => (4, 1),
                 Op::Min(n) | Op::Max(n) | Op::Internal(_, n) => (*n as usize, 1),
                 Op::Call(f) => (f.params, 1),
+                Op::Native(f, _) => (f.params(), 1),
                 _ => (2, 1),
             };
             if let Op::Arg(i) = op {
@@ -340,6 +377,7 @@ impl Function {
         }
         (depth == 1 && deepest <= MAX_STACK && nesting <= MAX_NESTING).then(|| Function {
             params,
+            vector: None,
             code: code.into_boxed_slice(),
             depth: deepest,
             nesting,
@@ -353,8 +391,24 @@ impl Function {
         code.push(Op::Internal(internal, n as u8));
         Function {
             params: n,
+            vector: None,
             code: code.into_boxed_slice(),
             depth: n,
+            nesting: 1,
+        }
+    }
+
+    /// The function of `native`: its first value, or (of several) all of them as a vector
+    /// function.
+    pub fn native(native: Arc<dyn Native>) -> Function {
+        let n = native.params();
+        let mut code: Vec<Op> = (0..n as u8).map(Op::Arg).collect();
+        code.push(Op::Native(Arc::clone(&native), 0));
+        Function {
+            params: n,
+            vector: (native.size() > 1).then_some(native),
+            code: code.into_boxed_slice(),
+            depth: n.max(1),
             nesting: 1,
         }
     }
@@ -429,6 +483,15 @@ impl Function {
                     let mut a = [0.0; 16];
                     a[..n].copy_from_slice(&stack[top..top + n]);
                     f.apply(&a[..n], generator)
+                }
+                Op::Native(f, member) => {
+                    let n = f.params();
+                    top -= n;
+                    let v = f.eval(&stack[top..top + n], generator);
+                    match *member {
+                        GRAY => 0.297 * v[0] + 0.589 * v[1] + 0.114 * v[2],
+                        i => v[i as usize],
+                    }
                 }
                 binary => {
                     let b = pop!();

@@ -35,6 +35,7 @@ pub mod func;
 pub mod ir;
 pub mod memory;
 pub mod meshfile;
+pub mod noise;
 pub mod output;
 pub mod pattern;
 
@@ -164,7 +165,7 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
 fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
-    match eval::evaluate(&mut sources, file, options) {
+    match eval::evaluate(&mut sources, file, options, scene::pigment_function) {
         Ok(evaluated) => Ok(Loaded {
             scene: evaluated.scene,
             warnings: evaluated

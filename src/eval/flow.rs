@@ -25,6 +25,25 @@ pub const MAX_MACRO_DEPTH: usize = 200;
 /// Deepest nesting of include files.
 pub const MAX_INCLUDE_DEPTH: usize = 64;
 
+/// The items a macro called as a value may give (besides objects and colours).
+const VALUE_ITEMS: &[NodeKind] = &[
+    NodeKind::Pigment,
+    NodeKind::Normal,
+    NodeKind::Finish,
+    NodeKind::Texture,
+    NodeKind::Interior,
+    NodeKind::Material,
+    NodeKind::ColourMap,
+    NodeKind::PigmentMap,
+    NodeKind::TextureMap,
+    NodeKind::NormalMap,
+    NodeKind::SlopeMap,
+    NodeKind::Transform,
+    NodeKind::SkySphere,
+    NodeKind::Fog,
+    NodeKind::Camera,
+];
+
 /// A declared macro: its parameters and where its body's text lies.
 #[derive(Clone, Debug)]
 pub struct Macro {
@@ -468,13 +487,26 @@ impl<'a> Evaluator<'a> {
             // The value may stand inside the directives: `#if (A) rgb 1 #else rgb 0 #end`
             // (a colour there, as POV-Ray reads the tokens the directives leave).
             Err(not_an_expression) => match syntax::parse_fragment_items(&text, file, offset) {
+                // Or the value is an item: `#declare O = MakeObject(1)` with an object in the
+                // macro, a pigment, a function … (POV-Ray's usual way of making things).
                 Ok(items) => {
                     let mut value = None;
                     self.each_item(&items, &mut |ev, n| {
-                        if n.kind != NodeKind::ColourItem || value.is_some() {
+                        if value.is_some() {
                             return Err(only_directives(n));
                         }
-                        value = Some(ev.eval(&n.args[0])?);
+                        value = Some(match n.kind {
+                            NodeKind::ColourItem => ev.eval(&n.args[0])?,
+                            // (`function { … }` reads as a function pattern among items.)
+                            NodeKind::Pattern if n.children.first().is_some_and(|c| c.kind == NodeKind::Function) => {
+                                Value::Function(ev.function(&n.children[0])?)
+                            }
+                            NodeKind::LayeredTexture => ev.layered_texture(n)?,
+                            _ if super::object::is_object(n.kind) || VALUE_ITEMS.contains(&n.kind) => {
+                                ev.item_value(n)?
+                            }
+                            _ => return Err(only_directives(n)),
+                        });
                         Ok(())
                     })
                     .and_then(|()| value.ok_or(not_an_expression))

@@ -6,7 +6,8 @@
 use super::expr::check_arity;
 use super::{Evaluator, Result, Value};
 use crate::diag::{Diagnostic, Span};
-use crate::func::{Function, Internal, Math1, Math2, Op};
+use crate::func::{Function, Internal, Math1, Math2, Native, Op};
+use crate::ir;
 use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, UnOp};
 use std::sync::Arc;
 
@@ -44,6 +45,20 @@ impl Evaluator<'_> {
                 .collect(),
             None => vec!["x".into(), "y".into(), "z".into()],
         };
+        // `function { pigment { … } }`, `function { pattern { … } }`.
+        if let Some(body) = node
+            .children
+            .iter()
+            .find(|c| matches!(c.kind, NodeKind::Pigment | NodeKind::PatternFunction))
+        {
+            if let Some(p) = node.children.iter().find(|c| c.kind == NodeKind::FunctionParams) {
+                return Err(Diagnostic::error(
+                    "a pigment or pattern function takes no parameters (its point is x, y, z), as in POV-Ray",
+                    p.span,
+                ));
+            }
+            return self.native_function(body).map(|n| Arc::new(Function::native(n)));
+        }
         let body = &node.args[0];
         // `function { internal(N) }`: one of POV-Ray's built-in functions.
         if let ExprKind::Call(name, _, args) = &body.kind {
@@ -74,6 +89,32 @@ impl Evaluator<'_> {
                 body.span,
             )
         })
+    }
+
+    /// The scene's pattern defaults as they stand while the scene is read.
+    pub(super) fn scene_defaults(&self) -> crate::pattern::SceneDefaults {
+        crate::pattern::SceneDefaults {
+            generator: self.noise_generator(),
+            waves: self.settings.number_of_waves,
+        }
+    }
+
+    /// The function of a `pigment { … }` or `pattern { … }` body.
+    fn native_function(&mut self, body: &Node) -> Result<Arc<dyn Native>> {
+        let pigment = self.pigment(body, ir::Pigment::solid(ir::Colour::default()))?;
+        if body.kind == NodeKind::Pigment {
+            return Ok((self.pigment_function)(&pigment, self.scene_defaults()));
+        }
+        let ir::PigmentKind::Pattern(p) = pigment.kind else {
+            return Err(Diagnostic::error(
+                "`pattern { }` needs a pattern (gradient x, granite …)",
+                body.word_span,
+            ));
+        };
+        Ok(Arc::new(crate::pattern::PatternFunction {
+            pattern: p.pattern.with_scene(self.scene_defaults()),
+            from_world: pigment.transform.map(|t| t.matrix.inverse()),
+        }))
     }
 
     /// Appends the program of `e` to `code`.
@@ -142,7 +183,40 @@ impl Evaluator<'_> {
             }
             ExprKind::Call(name, name_span, args) => self.compile_call(name, *name_span, args, e.span, params, code)?,
             ExprKind::Ternary(..) => return not_here("`? :` (use select(a, b, c))", e.span),
-            ExprKind::Member(..) => return not_here("unsupported: a member (`.x`, `.red` …) of a value", e.span),
+            ExprKind::Member(base, member, member_span) => {
+                // `F(x, y, z).red`: one value of a vector function (a pigment's colour …).
+                let ExprKind::Call(name, name_span, args) = &base.kind else {
+                    return not_here("a member (`.x`, `.red` …) of anything but a pigment or spline function's value", e.span);
+                };
+                let f = match self.ident(name, *name_span)? {
+                    Value::Function(f) => f,
+                    other => {
+                        return Err(Diagnostic::error(
+                            format!("`{name}` is {}, not a function", other.kind_name()),
+                            *name_span,
+                        ));
+                    }
+                };
+                let Some(native) = f.vector.clone() else {
+                    return Err(Diagnostic::error(
+                        format!("`{name}` gives one number: it has no member `.{member}`"),
+                        *member_span,
+                    ));
+                };
+                let index = member_index(member, native.size()).ok_or_else(|| {
+                    Diagnostic::error(
+                        format!(
+                            "`.{member}` is not a member of `{name}`'s value (x, y, z, t, u, v, red, green, blue, filter, transmit, gray)"
+                        ),
+                        *member_span,
+                    )
+                })?;
+                check_arity(name, f.params, args.len(), base.span)?;
+                for a in args {
+                    self.compile(a, params, code)?;
+                }
+                code.push(Op::Native(native, index));
+            }
             ExprKind::Vector(_) | ExprKind::PlainVector(..) => return not_here("a vector", e.span),
             ExprKind::Str(_) => return not_here("a string", e.span),
             ExprKind::Index(..) => {
@@ -203,6 +277,12 @@ impl Evaluator<'_> {
             code.push(if args.len() == 3 { Op::Select3 } else { Op::Select4 });
         } else {
             match self.ident(name, name_span)? {
+                Value::Function(f) if f.vector.is_some() => {
+                    return Err(Diagnostic::error(
+                        format!("`{name}` gives several values: a function uses one of them, as in {name}(x, y, z).red or .gray"),
+                        span,
+                    ));
+                }
                 Value::Function(f) => {
                     check_arity(name, f.params, args.len(), span)?;
                     operands(self, code)?;
@@ -233,6 +313,30 @@ impl Evaluator<'_> {
         for a in args {
             values.push(self.float(a)?);
         }
-        Ok(Value::Float(f.eval(&values, self.noise_generator())))
+        let generator = self.noise_generator();
+        Ok(match &f.vector {
+            Some(native) => {
+                let v = native.eval(&values, generator);
+                match native.size() {
+                    5 => Value::Colour(v),
+                    n => Value::Vector(super::value::Vector::new(&v[..n])),
+                }
+            }
+            None => Value::Float(f.eval(&values, generator)),
+        })
     }
+}
+
+/// The value `.member` picks from a vector function's `size` values (POV-Ray's names).
+fn member_index(member: &str, size: usize) -> Option<crate::func::Member> {
+    let i: crate::func::Member = match member {
+        "x" | "u" | "red" => 0,
+        "y" | "v" | "green" => 1,
+        "z" | "blue" => 2,
+        "t" | "filter" => 3,
+        "transmit" => 4,
+        "gray" | "grey" => return Some(crate::func::GRAY),
+        _ => return None,
+    };
+    (usize::from(i) < size.max(3)).then_some(i)
 }

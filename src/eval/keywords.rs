@@ -730,6 +730,7 @@ const SUPPORTED: &[&str] = &[
     "panoramic",
     "parallel",
     "parametric",
+    "pattern",
     "perspective",
     "phase",
     "phong",
@@ -737,6 +738,7 @@ const SUPPORTED: &[&str] = &[
     "pi",
     "pigment",
     "pigment_map",
+    "pigment_pattern",
     "planar",
     "plane",
     "png",
@@ -971,11 +973,11 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this shape or shape item is not supported by trace yet"
         }
         "altitude" | "number_of_sides" | "number_of_tiles"
-        | "pigment_pattern" | "ratio"
+        | "ratio"
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "pattern" | "prod" | "sum" | "vturbulence" => {
+        "prod" | "sum" | "vturbulence" => {
             "user functions are not supported by trace yet"
         }
         "df3" => "file input/output is not supported by trace yet",

@@ -4,7 +4,8 @@ use super::value::{MaterialValue, colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
 use crate::pattern::image::ImageUse;
-use crate::pattern::{BlackHole, Mapping, MappingWarp, noise};
+use crate::noise;
+use crate::pattern::{BlackHole, Mapping, MappingWarp};
 use crate::ir::{
     self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
     PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
@@ -581,6 +582,16 @@ impl Evaluator<'_> {
         item: &'n Node,
     ) -> Result<(PatternKind, &'n [crate::syntax::Expr])> {
         let args = item.args.as_slice();
+        // `function { … }`: a user function of the point.
+        if let Some(f) = item.children.iter().find(|c| c.kind == NodeKind::Function) {
+            return Ok((PatternKind::Function(self.function(f)?), args));
+        }
+        // `pigment_pattern { … }`: a pigment's grey.
+        if let Some(p) = item.children.iter().find(|c| c.kind == NodeKind::PigmentPattern) {
+            let pigment = self.pigment(p, Pigment::solid(Colour::default()))?;
+            let native = (self.pigment_function)(&pigment, self.scene_defaults());
+            return Ok((PatternKind::Pigment(crate::func::NativeRef(native)), args));
+        }
         // The patterns that take an argument: a number (spiral arms) or a direction.
         let first = || {
             args.first().ok_or_else(|| {

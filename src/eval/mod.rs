@@ -157,8 +157,19 @@ pub struct Evaluated {
     pub warnings: Vec<Diagnostic>,
 }
 
+/// Makes a pigment's function (`function { pigment { … } }`: its colour at a point). The
+/// scene layer evaluates pigments and evaluation may not use it, so the library hands
+/// evaluation this maker (`scene::pigment_function`).
+pub type PigmentFunctionMaker =
+    fn(&ir::Pigment, crate::pattern::SceneDefaults) -> std::sync::Arc<dyn crate::func::Native>;
+
 /// Evaluates the file `file` of `sources` into a scene.
-pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) -> Result<Evaluated> {
+pub fn evaluate(
+    sources: &mut SourceMap,
+    file: FileId,
+    options: &LoadOptions,
+    pigment_function: PigmentFunctionMaker,
+) -> Result<Evaluated> {
     let statements = syntax::statements(
         sources.file(file).text.clone(),
         file,
@@ -171,7 +182,7 @@ pub fn evaluate(sources: &mut SourceMap, file: FileId, options: &LoadOptions) ->
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
     let sandbox = sandbox::Sandbox::new(&scene_dir, &options.include_paths);
-    let mut ev = Evaluator::new(options, sandbox, sources);
+    let mut ev = Evaluator::new(options, sandbox, sources, pigment_function);
     ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
@@ -278,7 +289,7 @@ pub(crate) struct FogItems {
     offset: f64,
     alt: f64,
     alt_span: Span,
-    turbulence: Option<crate::pattern::noise::Turbulence>,
+    turbulence: Option<crate::noise::Turbulence>,
     turb_depth: f64,
     /// Where the distance was given (for the check of its sign).
     distance_span: Span,
@@ -332,6 +343,8 @@ pub(crate) struct Evaluator<'a> {
     fonts: HashMap<std::path::PathBuf, std::sync::Arc<Vec<u8>>>,
     /// Files opened by `#fopen`.
     files: files::Files,
+    /// Makes pigment functions.
+    pigment_function: PigmentFunctionMaker,
 }
 
 impl<'a> Evaluator<'a> {
@@ -339,6 +352,7 @@ impl<'a> Evaluator<'a> {
         options: &'a LoadOptions,
         sandbox: sandbox::Sandbox,
         sources: &'a mut SourceMap,
+        pigment_function: PigmentFunctionMaker,
     ) -> Evaluator<'a> {
         Evaluator {
             options,
@@ -372,6 +386,7 @@ impl<'a> Evaluator<'a> {
             fonts: HashMap::new(),
             charset: crate::font::Charset::Ascii,
             files: files::Files::default(),
+            pigment_function,
         }
     }
 
@@ -454,7 +469,7 @@ impl<'a> Evaluator<'a> {
             // holds what trace does not read yet, such as a function pattern.
             return Diagnostic::error(
                 format!(
-                    "unsupported: an entry of this `{}` that trace cannot read yet (a function pattern or another construct outside the subset)",
+                    "unsupported: an entry of this `{}` that trace cannot read yet (a construct outside the subset)",
                     node.word
                 ),
                 node.word_span,
@@ -618,7 +633,7 @@ impl<'a> Evaluator<'a> {
     }
 
     /// The value of a declared item (`#declare X = sphere { … }` and the like).
-    fn item_value(&mut self, node: &Node) -> Result<Value> {
+    pub(super) fn item_value(&mut self, node: &Node) -> Result<Value> {
         Ok(match node.kind {
             _ if object::is_object(node.kind) => Value::Object(Box::new(self.object(node)?)),
             NodeKind::Pigment => {
@@ -632,6 +647,7 @@ impl<'a> Evaluator<'a> {
                 Value::Finish(self.finish_block(node, base)?)
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
+            NodeKind::Function => Value::Function(self.function(node)?),
             NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
             NodeKind::Material => Value::Material(Box::new(self.material(node)?)),
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),

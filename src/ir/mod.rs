@@ -73,7 +73,7 @@ pub struct Fog {
 #[derive(Clone, Debug, PartialEq)]
 pub struct FogTurbulence {
     /// Amount (scales the point), octaves, omega, lambda.
-    pub turbulence: crate::pattern::noise::Turbulence,
+    pub turbulence: crate::noise::Turbulence,
     /// `turb_depth` (default 0.5): how far the turbulence thins the fog.
     pub depth: f64,
 }

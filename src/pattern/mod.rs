@@ -13,10 +13,9 @@
 //! (`eval::material::pattern_kind`).
 
 pub mod image;
-pub mod noise;
 
+use crate::noise::{self, Turbulence, dnoise, noise, trunc_i32};
 use glam::DVec3;
-use noise::{Turbulence, dnoise, noise, trunc_i32};
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::OnceLock;
 
@@ -458,6 +457,14 @@ impl Pattern {
                 if n < 0.0 { 0.0 } else { n.min(1.0).powf(0.77) }
             }
             PatternKind::Average => 0.0,
+            PatternKind::Pigment(f) => {
+                let c = f.0.eval(&[x, y, z], generator);
+                0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]
+            }
+            PatternKind::Function(f) => {
+                let v = f.at(p, generator);
+                if v > 1.0 { v % 1.0 } else { v }
+            }
             PatternKind::Boxed => clip(x.abs().max(y.abs().max(z.abs()))),
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
             PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
@@ -599,6 +606,32 @@ impl Pattern {
     }
 }
 
+/// `function { pattern { … } }`: a pattern's value as a function of x, y, z (the point
+/// taken into the pattern's space first).
+#[derive(Debug)]
+pub struct PatternFunction {
+    /// The pattern, with the scene's defaults filled in.
+    pub pattern: Pattern,
+    /// Pattern space from world space (`None`: the identity).
+    pub from_world: Option<glam::DMat4>,
+}
+
+impl crate::func::Native for PatternFunction {
+    fn params(&self) -> usize {
+        3
+    }
+
+    fn size(&self) -> usize {
+        1
+    }
+
+    fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
+        let p = DVec3::new(args[0], args[1], args[2]);
+        let q = self.from_world.map_or(p, |m| m.transform_point3(p));
+        [self.pattern.value(q), 0.0, 0.0, 0.0, 0.0]
+    }
+}
+
 /// The pattern functions.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PatternKind {
@@ -684,6 +717,12 @@ pub enum PatternKind {
     Wood,
     /// `wrinkles`: ten octaves of clamped noise.
     Wrinkles,
+    /// `function { … }`: a user function of the point (POV-Ray keeps values up to 1 and
+    /// wraps larger ones with `mod 1`; the wave then wraps negative ones).
+    Function(std::sync::Arc<crate::func::Function>),
+    /// `pigment_pattern { … }`: the grey of a pigment's colour (0.297 R + 0.589 G + 0.114 B),
+    /// the pigment evaluated as a function of the point.
+    Pigment(crate::func::NativeRef),
 }
 
 /// `crackle`'s parameters.

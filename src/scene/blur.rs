@@ -6,7 +6,7 @@
 //! `confidence`, scaled by its `variance`.
 
 use crate::ir::FocalBlur;
-use crate::pattern::noise::pseudo_random;
+use crate::noise::pseudo_random;
 use glam::{DVec2, DVec3};
 
 /// POV-Ray's jitter table: 256 offsets in [−0.5, 0.5] (data).

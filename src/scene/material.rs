@@ -206,7 +206,7 @@ impl Scene {
         let mut thickness = irid.thickness;
         if irid.turbulence != 0.0 {
             // A fixed turbulence (5 octaves), from 0..1 to 1 ± the amount.
-            let t = crate::pattern::noise::Turbulence {
+            let t = crate::noise::Turbulence {
                 amount: DVec3::ONE,
                 octaves: 5,
                 omega: 0.5,

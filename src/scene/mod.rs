@@ -26,7 +26,7 @@ pub use crate::ir::{
 pub use material::{Material, filter_colour};
 pub use normal::Normal;
 pub use query::interior_fade;
-pub use pigment::Pigment;
+pub use pigment::{Pigment, pigment_function};
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -7,7 +7,7 @@
 //! back as a normal (scaling the pattern by s scales the bumps' slopes by 1/s).
 
 use crate::ir;
-use crate::pattern::noise::{dnoise, noise};
+use crate::noise::{dnoise, noise};
 use crate::pattern::{Pattern, PatternKind, cycloidal, facets_normal, quilt_cubic, quilt_offset};
 use glam::{DMat3, DMat4, DVec3};
 

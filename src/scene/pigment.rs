@@ -123,6 +123,35 @@ impl Pigment {
     }
 }
 
+/// `function { pigment { … } }`: the pigment's colour at a point, as a function of x, y, z
+/// giving red, green, blue, filter and transmit (POV-Ray's pigment functions).
+#[derive(Debug)]
+struct PigmentFunction(Pigment);
+
+impl crate::func::Native for PigmentFunction {
+    fn params(&self) -> usize {
+        3
+    }
+
+    fn size(&self) -> usize {
+        5
+    }
+
+    fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
+        let c = self.0.colour_at(DVec3::new(args[0], args[1], args[2]));
+        [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit]
+    }
+}
+
+/// The function of pigment `p` (evaluation makes pigment functions through this: it may not
+/// use the scene layer itself).
+pub fn pigment_function(
+    p: &ir::Pigment,
+    scene: crate::pattern::SceneDefaults,
+) -> Arc<dyn crate::func::Native> {
+    Arc::new(PigmentFunction(Pigment::new(p, scene)))
+}
+
 /// The colour map at `v`: the first colour below the first entry, the last at or above the
 /// last, otherwise linear interpolation of all five channels toward the first entry whose
 /// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).

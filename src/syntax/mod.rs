@@ -76,6 +76,10 @@ pub enum NodeKind {
     /// `function [(params)] { expression }`: the parameters (`FunctionParams`, its text in
     /// `word`) and the body in `args`.
     Function,
+    /// `pattern { PATTERN modifiers }` in `function { }`: a pattern's value as a function.
+    PatternFunction,
+    /// `pigment_pattern { PIGMENT }` (a pattern's child).
+    PigmentPattern,
     /// `(a, b, …)` of a function: the text, in `word`.
     FunctionParams,
     /// A value standing in a directive's body (a shape's values made in a loop): the
@@ -842,6 +846,8 @@ impl Lower {
             Rule::shape_word => NodeKind::Flag,
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
+            Rule::pattern_function => NodeKind::PatternFunction,
+            Rule::pigment_pattern => NodeKind::PigmentPattern,
             Rule::value_item => NodeKind::Value,
             Rule::function_image => NodeKind::FunctionImage,
             Rule::function_params => NodeKind::FunctionParams,
@@ -1299,6 +1305,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_adc_bailout
             | kw_blob
             | kw_function
+            | kw_pattern
+            | kw_pigment_pattern
             | kw_isosurface
             | kw_parametric
             | kw_contained_by

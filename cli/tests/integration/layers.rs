@@ -15,18 +15,20 @@ const ALLOWED: &[(&str, &[&str])] = &[
     (
         "eval",
         &[
-            "syntax", "ir", "diag", "meshfile", "pattern", "font", "func",
+            "syntax", "ir", "diag", "meshfile", "pattern", "font", "func", "noise",
         ],
     ),
-    ("ir", &["diag", "pattern", "func"]),
+    ("ir", &["diag", "pattern", "func", "noise"]),
     // func: the isosurface's function (a function of a point, like a pattern).
     ("geometry", &["func"]),
-    // func: compiled user functions; their noise is the patterns' noise.
-    ("func", &["pattern"]),
+    // func: compiled user functions (noise: f_noise3d is the patterns' noise).
+    ("func", &["noise"]),
     // pattern: functions of a point (what a pigment or normal looks up), used by the IR's
-    // materials and by the render-ready ones.
-    ("pattern", &[]),
-    ("scene", &["ir", "geometry", "pattern", "func"]),
+    // materials and by the render-ready ones; func: function patterns.
+    ("pattern", &["noise", "func"]),
+    // noise: POV-Ray's noise, turbulence and hashes (patterns, functions, normals, blur).
+    ("noise", &[]),
+    ("scene", &["ir", "geometry", "pattern", "func", "noise"]),
     ("render", &["scene", "geometry", "film"]),
     // output: temporary files removed on interrupt or when memory runs out.
     ("film", &["output"]),

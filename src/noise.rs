@@ -666,7 +666,7 @@ mod tests {
     #[test]
     fn noise_matches_povray_bit_for_bit() {
         // Measured with POV-Ray 3.7.0.10 (f_noise_generator, printed with 30 digits).
-        let rows = rows(include_str!("testdata/noise.txt"));
+        let rows = rows(include_str!("pattern/testdata/noise.txt"));
         assert!(rows.len() >= 90);
         for r in rows {
             let p = DVec3::new(r[0], r[1], r[2]);
@@ -685,7 +685,7 @@ mod tests {
         // DNoise and the turbulence sums at the same points, from the reference the pattern
         // values POV-Ray printed (wood, marble, agate, turbulence warps) confirm.
         let t = Turbulence::default();
-        for r in rows(include_str!("testdata/dnoise_turbulence.txt")) {
+        for r in rows(include_str!("pattern/testdata/dnoise_turbulence.txt")) {
             let p = DVec3::new(r[0], r[1], r[2]);
             assert_eq!(dnoise(p), DVec3::new(r[3], r[4], r[5]), "dnoise at {p}");
             assert_eq!(t.scalar(p, 2), r[6], "turbulence (generator 2) at {p}");
