@@ -308,9 +308,16 @@ impl Evaluator<'_> {
     }
 
     fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Value> {
-        if let Some(Value::Function(f)) = self.env.get(name) {
-            let f = std::sync::Arc::clone(f);
-            return self.call_function(&f, name, args, span);
+        match self.env.get(name) {
+            Some(Value::Function(f)) => {
+                let f = std::sync::Arc::clone(f);
+                return self.call_function(&f, name, args, span);
+            }
+            Some(Value::Spline(s)) => {
+                let s = std::sync::Arc::clone(s);
+                return self.call_spline(&s, name, args, span);
+            }
+            _ => {}
         }
         if let Some(v) = self.call_special(name, args, span)? {
             return Ok(v);

@@ -3,9 +3,10 @@
 //! declared functions called, POV-Ray's maths and `internal(N)`. The operators are POV-Ray's
 //! function syntax (`+ - * /`, comparisons, `&`, `|`, unary `-`); `!` and `? :` are not in it.
 
-use super::expr::check_arity;
+use super::expr::{check_arity, type_error};
 use super::{Evaluator, Result, Value};
 use crate::diag::{Diagnostic, Span};
+use crate::func::spline::{Spline, SplineKind};
 use crate::func::{Function, Internal, Math1, Math2, Native, Op};
 use crate::ir;
 use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, UnOp};
@@ -45,6 +46,11 @@ impl Evaluator<'_> {
                 .collect(),
             None => vec!["x".into(), "y".into(), "z".into()],
         };
+        // `function { spline { … } }`: the spline of its parameter.
+        if let Some(body) = node.children.iter().find(|c| c.kind == NodeKind::Spline) {
+            let spline = self.spline(body)?;
+            return Ok(Arc::new(Function::native(Arc::new(spline))));
+        }
         // `function { pigment { … } }`, `function { pattern { … } }`.
         if let Some(body) = node
             .children
@@ -89,6 +95,76 @@ impl Evaluator<'_> {
                 body.span,
             )
         })
+    }
+
+    /// `spline { [S] [kind] t, V … }`: a declared spline copied first (its kind kept unless
+    /// another is named), then the entries, as POV-Ray reads them.
+    pub(super) fn spline(&mut self, node: &Node) -> Result<Spline> {
+        let mut args = node.args.as_slice();
+        let mut spline = match args.first().map(|e| &e.kind) {
+            Some(ExprKind::Ident(name)) if matches!(self.env.get(name), Some(Value::Spline(_))) => {
+                let Some(Value::Spline(s)) = self.env.get(name) else { unreachable!() };
+                let s = (**s).clone();
+                args = &args[1..];
+                s
+            }
+            _ => Spline::new(SplineKind::Linear),
+        };
+        if let Some(kind) = node.children.last() {
+            let named = SplineKind::named(&kind.word).expect("the grammar reads only spline kinds");
+            spline = spline.with_kind(named);
+        }
+        if args.len() % 2 != 0 {
+            return Err(Diagnostic::error(
+                "a spline's entries come in pairs: a parameter, then its vector",
+                args[args.len() - 1].span,
+            ));
+        }
+        for pair in args.chunks(2) {
+            let t = self.float(&pair[0])?;
+            let v = self.eval(&pair[1])?;
+            let (values, terms) = match v {
+                // (A float stands for a vector of it, as POV-Ray promotes it.)
+                Value::Float(f) => ([f; 5], 1),
+                Value::Vector(v) => (v.c, v.len),
+                Value::Colour(c) => (c, 5),
+                other => return Err(type_error("a vector", &other, pair[1].span)),
+            };
+            self.charge(1, "spline entry", pair[0].span)?;
+            spline.insert(t, values, terms);
+        }
+        if spline.is_empty() {
+            return Err(Diagnostic::error("a spline needs at least one entry", node.word_span));
+        }
+        Ok(spline)
+    }
+
+    /// `S(t)` or `S(t, kind)`: the spline's vector at t.
+    pub(super) fn call_spline(&mut self, spline: &Spline, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+        if !(1..=2).contains(&args.len()) {
+            return Err(Diagnostic::error(
+                format!("the spline `{name}` takes a parameter and, optionally, a spline kind"),
+                span,
+            ));
+        }
+        let t = self.float(&args[0])?;
+        let v = match args.get(1) {
+            Some(e) => {
+                let kind = match &e.kind {
+                    ExprKind::Ident(k) => SplineKind::named(k),
+                    _ => None,
+                }
+                .ok_or_else(|| {
+                    Diagnostic::error(
+                        "expected linear_spline, quadratic_spline, cubic_spline or natural_spline",
+                        e.span,
+                    )
+                })?;
+                spline.with_kind(kind).at(t)
+            }
+            None => spline.at(t),
+        };
+        Ok(Value::Vector(super::value::Vector::new(&v[..spline.terms])))
     }
 
     /// The scene's pattern defaults as they stand while the scene is read.

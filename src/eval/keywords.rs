@@ -704,6 +704,7 @@ const SUPPORTED: &[&str] = &[
     "min",
     "mod",
     "mortar",
+    "natural_spline",
     "no",
     "no_bump_scale",
     "no_shadow",
@@ -803,6 +804,7 @@ const SUPPORTED: &[&str] = &[
     "spherical",
     "spiral1",
     "spiral2",
+    "spline",
     "spotlight",
     "spotted",
     "sqr",
@@ -920,7 +922,6 @@ pub fn is_unsupported_function(word: &str) -> bool {
             | "prod"
             | "sum"
             | "function"
-            | "spline"
     )
 }
 
@@ -953,7 +954,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }
-        "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" | "spline" => LATER,
+        "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" => LATER,
         "hf_gray_16" | "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
@@ -985,7 +986,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "all" | "alpha" | "gamma" | "premultiplied" => {
             "this image_map item is not supported by trace yet"
         }
-        "natural_spline" => "splines are not supported by trace yet",
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }

@@ -24,6 +24,7 @@ use crate::syntax::{self, Node, NodeKind};
 use glam::DVec3;
 pub use object::ObjectValue;
 use std::collections::HashMap;
+use std::sync::Arc;
 use value::{Value, colour5, rgb};
 
 type Result<T> = std::result::Result<T, Diagnostic>;
@@ -648,6 +649,7 @@ impl<'a> Evaluator<'a> {
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
             NodeKind::Function => Value::Function(self.function(node)?),
+            NodeKind::Spline => Value::Spline(Arc::new(self.spline(node)?)),
             NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
             NodeKind::Material => Value::Material(Box::new(self.material(node)?)),
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),

@@ -66,6 +66,8 @@ pub enum Value {
     Array(Box<Array>),
     /// `function { … }`, compiled.
     Function(std::sync::Arc<crate::func::Function>),
+    /// `spline { … }`.
+    Spline(std::sync::Arc<crate::func::spline::Spline>),
     /// A file opened by `#fopen` (an index into the evaluator's files).
     File(usize),
     /// A declaration trace could not evaluate: the reason, reported when the name is used.
@@ -116,6 +118,7 @@ impl Value {
             Value::Array(_) => "an array",
             Value::Function(_) => "a function",
             Value::File(_) => "a file",
+            Value::Spline(_) => "a spline",
             Value::Unsupported(_) => "an unsupported value",
         }
     }

@@ -78,6 +78,9 @@ pub enum NodeKind {
     Function,
     /// `pattern { PATTERN modifiers }` in `function { }`: a pattern's value as a function.
     PatternFunction,
+    /// `spline { … }`: kinds as IdentRef children, the rest (a declared spline, then the
+    /// entries' parameters and values) as args.
+    Spline,
     /// `pigment_pattern { PIGMENT }` (a pattern's child).
     PigmentPattern,
     /// `(a, b, …)` of a function: the text, in `word`.
@@ -847,6 +850,7 @@ impl Lower {
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
             Rule::pattern_function => NodeKind::PatternFunction,
+            Rule::spline => NodeKind::Spline,
             Rule::pigment_pattern => NodeKind::PigmentPattern,
             Rule::value_item => NodeKind::Value,
             Rule::function_image => NodeKind::FunctionImage,
@@ -966,7 +970,9 @@ impl Lower {
             Rule::colour_item => NodeKind::ColourItem,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
-            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word => NodeKind::IdentRef,
+            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word | Rule::spline_kind => {
+                NodeKind::IdentRef
+            }
             Rule::array_value => NodeKind::Array,
             Rule::deprecation => NodeKind::Deprecation,
             Rule::array_init => NodeKind::ArrayInit,
@@ -996,6 +1002,7 @@ impl Lower {
                 | Rule::charset
                 | Rule::function_params
                 | Rule::file_word
+                | Rule::spline_kind
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
@@ -1306,6 +1313,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_blob
             | kw_function
             | kw_pattern
+            | kw_spline
             | kw_pigment_pattern
             | kw_isosurface
             | kw_parametric

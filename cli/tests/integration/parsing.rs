@@ -258,6 +258,21 @@ fn functions_give_povrays_values() {
     assert_eq!(loaded.debug_output.trim(), expected.trim());
 }
 
+/// Splines of every kind, copied, retyped at the call, and as functions, give POV-Ray 3.7's
+/// values (tests/scenes/ok/splines.povray.txt, captured from `povray` on the same scene).
+#[test]
+fn splines_give_povrays_values() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/scenes/ok");
+    let options = trace::LoadOptions {
+        width: 8,
+        height: 8,
+        ..Default::default()
+    };
+    let loaded = trace::load(&root.join("splines.rt"), &options).unwrap_or_else(|e| panic!("{e}"));
+    let expected = std::fs::read_to_string(root.join("splines.povray.txt")).unwrap();
+    assert_eq!(loaded.debug_output.trim(), expected.trim());
+}
+
 /// `#fopen`/`#write`/`#read`/`#fclose` write the file POV-Ray 3.7 writes and read back what
 /// it reads (tests/scenes/files/fileio*.povray.*, captured from `povray` on the same scene,
 /// run in a scratch folder since the scene writes beside itself).

@@ -10,6 +10,8 @@
 use glam::DVec3;
 use std::sync::Arc;
 
+pub mod spline;
+
 /// The deepest stack a function may need (deeper expressions are refused when compiled).
 pub const MAX_STACK: usize = 64;
 
