@@ -165,7 +165,11 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
 fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
-    match eval::evaluate(&mut sources, file, options, scene::pigment_function) {
+    let services = eval::Services {
+        pigment_function: scene::pigment_function,
+        object_query: scene::object_query,
+    };
+    match eval::evaluate(&mut sources, file, options, services) {
         Ok(evaluated) => Ok(Loaded {
             scene: evaluated.scene,
             warnings: evaluated

@@ -527,6 +527,9 @@ impl Evaluator<'_> {
     /// Functions that do not simply take numbers: `defined(Name)`, the string functions that
     /// give numbers, `file_exists`, and the bitwise ones.
     fn call_special(&mut self, name: &str, args: &[Expr], span: Span) -> Result<Option<Value>> {
+        if matches!(name, "trace" | "inside" | "min_extent" | "max_extent") {
+            return self.object_question(name, args, span).map(Some);
+        }
         let want = |n: usize| check_arity(name, n, args.len(), span);
         let f = match name {
             "defined" => {

@@ -662,6 +662,7 @@ const SUPPORTED: &[&str] = &[
     "image_map",
     "image_pattern",
     "include",
+    "inside",
     "inside_vector",
     "int",
     "interior",
@@ -693,6 +694,7 @@ const SUPPORTED: &[&str] = &[
     "material",
     "matrix",
     "max",
+    "max_extent",
     "max_gradient",
     "max_iteration",
     "max_trace",
@@ -702,6 +704,7 @@ const SUPPORTED: &[&str] = &[
     "metallic",
     "metric",
     "min",
+    "min_extent",
     "mod",
     "mortar",
     "natural_spline",
@@ -836,6 +839,7 @@ const SUPPORTED: &[&str] = &[
     "tolerance",
     "toroidal",
     "torus",
+    "trace",
     "transform",
     "translate",
     "transmit",
@@ -913,11 +917,7 @@ pub fn status(word: &str) -> Option<Status> {
 pub fn is_unsupported_function(word: &str) -> bool {
     matches!(
         word,
-        "min_extent"
-            | "max_extent"
-            | "trace"
-            | "inside"
-            | "eval_pigment"
+        "eval_pigment"
             | "vturbulence"
             | "prod"
             | "sum"
@@ -954,7 +954,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }
-        "min_extent" | "max_extent" | "trace" | "inside" | "eval_pigment" => LATER,
+        "eval_pigment" => LATER,
         "hf_gray_16" | "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"

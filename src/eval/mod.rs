@@ -164,12 +164,25 @@ pub struct Evaluated {
 pub type PigmentFunctionMaker =
     fn(&ir::Pigment, crate::pattern::SceneDefaults) -> std::sync::Arc<dyn crate::func::Native>;
 
+/// Builds an object made of placed parts for `trace()`, `inside()`, `min_extent` and
+/// `max_extent` (the scene layer's, handed to evaluation by the library).
+pub type ObjectQueryMaker = fn(Vec<ir::Object>) -> Box<dyn ir::ObjectQuery>;
+
+/// What evaluation needs from the layers after it, handed in by the library.
+#[derive(Clone, Copy)]
+pub struct Services {
+    /// Makes pigment functions.
+    pub pigment_function: PigmentFunctionMaker,
+    /// Makes objects that answer trace() and its kin.
+    pub object_query: ObjectQueryMaker,
+}
+
 /// Evaluates the file `file` of `sources` into a scene.
 pub fn evaluate(
     sources: &mut SourceMap,
     file: FileId,
     options: &LoadOptions,
-    pigment_function: PigmentFunctionMaker,
+    services: Services,
 ) -> Result<Evaluated> {
     let statements = syntax::statements(
         sources.file(file).text.clone(),
@@ -183,7 +196,7 @@ pub fn evaluate(
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
     let sandbox = sandbox::Sandbox::new(&scene_dir, &options.include_paths);
-    let mut ev = Evaluator::new(options, sandbox, sources, pigment_function);
+    let mut ev = Evaluator::new(options, sandbox, sources, services);
     ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
@@ -346,6 +359,13 @@ pub(crate) struct Evaluator<'a> {
     files: files::Files,
     /// Makes pigment functions.
     pigment_function: PigmentFunctionMaker,
+    /// Makes objects that answer trace() and its kin.
+    object_query: ObjectQueryMaker,
+    /// The id of the last object made (see `ObjectValue::id`).
+    next_object_id: u64,
+    /// Objects asked by trace() and its kin so far, by id (a scatter loop asks one object
+    /// thousands of times).
+    queries: HashMap<u64, Arc<dyn ir::ObjectQuery>>,
 }
 
 impl<'a> Evaluator<'a> {
@@ -353,7 +373,7 @@ impl<'a> Evaluator<'a> {
         options: &'a LoadOptions,
         sandbox: sandbox::Sandbox,
         sources: &'a mut SourceMap,
-        pigment_function: PigmentFunctionMaker,
+        services: Services,
     ) -> Evaluator<'a> {
         Evaluator {
             options,
@@ -387,7 +407,10 @@ impl<'a> Evaluator<'a> {
             fonts: HashMap::new(),
             charset: crate::font::Charset::Ascii,
             files: files::Files::default(),
-            pigment_function,
+            pigment_function: services.pigment_function,
+            object_query: services.object_query,
+            next_object_id: 0,
+            queries: HashMap::new(),
         }
     }
 

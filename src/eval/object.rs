@@ -4,7 +4,7 @@
 //! modifiers on the group apply to every member, and the group's texture to the members that
 //! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
 
-use super::{Evaluator, Result, Value, expr::type_error};
+use super::{Evaluator, Result, Value, expr::type_error, value::Vector};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
 use crate::syntax::{Expr, ExprKind, Node, NodeKind};
@@ -56,6 +56,8 @@ pub struct ObjectValue {
     is_union: bool,
     /// `bounded_by`: the object's bounding shapes, in the world.
     bounds: Vec<ir::Bound>,
+    /// Which object this is, for the queries of trace() and its kin (0: none yet).
+    pub(super) id: u64,
 }
 
 /// Whether a node is a directive (run by `each_item` wherever it stands).
@@ -144,6 +146,7 @@ impl ObjectValue {
             lights: Vec::new(),
             is_union: false,
             bounds: Vec::new(),
+            id: 0,
         }
     }
 
@@ -157,6 +160,7 @@ impl ObjectValue {
             lights: Vec::new(),
             is_union: false,
             bounds: Vec::new(),
+            id: 0,
         }
     }
 
@@ -432,7 +436,99 @@ impl Evaluator<'_> {
             _ => unreachable!("{:?} is not an object", node.kind),
         };
         self.each_item(modifiers, &mut |ev, m| ev.object_modifier(&mut object, m, node))?;
+        // (Each object made is new to trace(), min_extent … : a modified copy is asked anew.)
+        self.next_object_id += 1;
+        object.id = self.next_object_id;
         Ok(object)
+    }
+
+    /// `trace(O, A, D [, N])`, `inside(O, P)`, `min_extent(O)`, `max_extent(O)`: the first hit
+    /// of the ray from A along D (and its normal in N; zero vectors when missed), whether P
+    /// is inside, the bounding box's corners.
+    pub(super) fn object_question(&mut self, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+        let arity_ok = match name {
+            "trace" => (3..=4).contains(&args.len()),
+            "inside" => args.len() == 2,
+            _ => args.len() == 1,
+        };
+        if !arity_ok {
+            let wanted = match name {
+                "trace" => "an object, a start point, a direction and optionally a vector for the normal",
+                "inside" => "an object and a point",
+                _ => "an object",
+            };
+            return Err(Diagnostic::error(format!("`{name}` takes {wanted}"), span));
+        }
+        let query = self.object_query_of(&args[0])?;
+        Ok(match name {
+            "trace" => {
+                let origin = self.vec3(&args[1])?;
+                let direction = self.vec3(&args[2])?;
+                if direction.length_squared() == 0.0 {
+                    return Err(Diagnostic::error("`trace`: the direction is the zero vector", args[2].span));
+                }
+                let (point, normal) = query.trace(origin, direction.normalize()).unwrap_or((DVec3::ZERO, DVec3::ZERO));
+                if let Some(n) = args.get(3) {
+                    let ExprKind::Ident(var) = &n.kind else {
+                        return Err(Diagnostic::error("`trace` gives the normal to a variable named here", n.span));
+                    };
+                    self.env.insert(var.clone(), Value::Vector(Vector::from_vec3(normal)));
+                }
+                Value::Vector(Vector::from_vec3(point))
+            }
+            "inside" => {
+                let p = self.vec3(&args[1])?;
+                Value::Float(if query.inside(p) { 1.0 } else { 0.0 })
+            }
+            _ => {
+                let (lo, hi) = query.extent();
+                Value::Vector(Vector::from_vec3(if name == "min_extent" { lo } else { hi }))
+            }
+        })
+    }
+
+    /// The object `e` names, ready for questions (made once per object; see `ObjectValue::id`).
+    fn object_query_of(&mut self, e: &Expr) -> Result<Arc<dyn ir::ObjectQuery>> {
+        /// Objects kept ready at once (a loop making and asking new objects does not pile them up).
+        const KEPT: usize = 64;
+        // (A declared object asked again is not copied to find its id.)
+        if let ExprKind::Ident(name) = &e.kind
+            && let Some(Value::Object(o)) = self.env.get(name)
+            && let Some(q) = self.queries.get(&o.id)
+        {
+            return Ok(Arc::clone(q));
+        }
+        let object = match self.eval(e)? {
+            Value::Object(o) => o,
+            other => return Err(type_error("an object", &other, e.span)),
+        };
+        if object.id != 0 {
+            if let Some(q) = self.queries.get(&object.id) {
+                return Ok(Arc::clone(q));
+            }
+        }
+        let parts = self.placed_parts(&object, e.span)?;
+        let query: Arc<dyn ir::ObjectQuery> = Arc::from((self.object_query)(parts));
+        if object.id != 0 {
+            if self.queries.len() >= KEPT {
+                self.queries.clear();
+            }
+            self.queries.insert(object.id, Arc::clone(&query));
+        }
+        Ok(query)
+    }
+
+    /// The parts of `object` placed in the world as the scene would hold them (for trace(),
+    /// inside(), min_extent, max_extent).
+    pub(super) fn placed_parts(&mut self, object: &ObjectValue, span: Span) -> Result<Vec<ir::Object>> {
+        let objects = std::mem::take(&mut self.objects);
+        let lights = std::mem::take(&mut self.lights);
+        let next_medium = self.next_medium;
+        let placed = self.place(object.clone(), span);
+        let parts = std::mem::replace(&mut self.objects, objects);
+        self.lights = lights;
+        self.next_medium = next_medium;
+        placed.map(|()| parts)
     }
 
     /// `isosurface { function {…} [contained_by {…}] settings… modifiers }`.

@@ -270,7 +270,11 @@ impl super::shape::Surface for Text {
         if self.glyphs.is_empty() {
             return Some((DVec3::ZERO, DVec3::ZERO));
         }
-        Some((lo.extend(self.depth.min(0.0)), hi.extend(self.depth.max(0.0))))
+        // (POV-Ray's glyph boxes reach its tolerance past the faces.)
+        Some((
+            lo.extend(self.depth.min(0.0) - 1e-6),
+            hi.extend(self.depth.max(0.0) + 1e-6),
+        ))
     }
 
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {

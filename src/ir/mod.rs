@@ -32,6 +32,20 @@ pub struct Colour {
     pub transmit: f64,
 }
 
+/// What evaluation asks of an object it has made (`trace()`, `inside()`, `min_extent`,
+/// `max_extent`). The scene layer answers (it builds the object as a scene of its own);
+/// evaluation receives the maker from the library.
+pub trait ObjectQuery: Send + Sync {
+    /// The first hit of the ray from `origin` along the unit `direction`: the point and the
+    /// surface's unit normal (outward, reversed by `inverse`, not bent by a normal pattern).
+    fn trace(&self, origin: DVec3, direction: DVec3) -> Option<(DVec3, DVec3)>;
+    /// Whether `p` is inside the object.
+    fn inside(&self, p: DVec3) -> bool;
+    /// The object's bounding box (±1e10 along an unbounded side, as POV-Ray's), in single
+    /// precision as POV-Ray keeps it.
+    fn extent(&self) -> (DVec3, DVec3);
+}
+
 /// The whole scene.
 #[derive(Clone, Debug)]
 pub struct Scene {

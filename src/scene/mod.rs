@@ -17,6 +17,7 @@ mod build;
 mod material;
 mod normal;
 mod pigment;
+mod probe;
 mod query;
 
 pub use crate::ir::{
@@ -27,6 +28,7 @@ pub use material::{Material, filter_colour};
 pub use normal::Normal;
 pub use query::interior_fade;
 pub use pigment::{Pigment, pigment_function};
+pub use probe::object_query;
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

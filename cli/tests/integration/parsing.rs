@@ -258,19 +258,23 @@ fn functions_give_povrays_values() {
     assert_eq!(loaded.debug_output.trim(), expected.trim());
 }
 
-/// Splines of every kind, copied, retyped at the call, and as functions, give POV-Ray 3.7's
-/// values (tests/scenes/ok/splines.povray.txt, captured from `povray` on the same scene).
+/// Splines (every kind, copied, retyped at the call, as functions) and trace(), inside(),
+/// min_extent and max_extent give POV-Ray 3.7's values (tests/scenes/ok/NAME.povray.txt,
+/// captured from `povray` on the same scene).
 #[test]
-fn splines_give_povrays_values() {
+fn splines_and_object_queries_give_povrays_values() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/scenes/ok");
     let options = trace::LoadOptions {
         width: 8,
         height: 8,
         ..Default::default()
     };
-    let loaded = trace::load(&root.join("splines.rt"), &options).unwrap_or_else(|e| panic!("{e}"));
-    let expected = std::fs::read_to_string(root.join("splines.povray.txt")).unwrap();
-    assert_eq!(loaded.debug_output.trim(), expected.trim());
+    for name in ["splines", "object_queries"] {
+        let loaded = trace::load(&root.join(format!("{name}.rt")), &options)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let expected = std::fs::read_to_string(root.join(format!("{name}.povray.txt"))).unwrap();
+        assert_eq!(loaded.debug_output.trim(), expected.trim(), "{name}");
+    }
 }
 
 /// `#fopen`/`#write`/`#read`/`#fclose` write the file POV-Ray 3.7 writes and read back what
