@@ -54,15 +54,23 @@ pub(super) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
                 png::ColorType::Grayscale if bits <= 8 => grey_byte(v(0) as f32 / max) * 257,
                 png::ColorType::Grayscale | png::ColorType::GrayscaleAlpha if bits == 16 => v(0) as u16,
                 png::ColorType::GrayscaleAlpha => (v(0) * 257) as u16,
-                _ if bits == 16 => {
-                    let c = |k| f64::from(v(k) as f32 / 65535.0f32);
-                    ((0.297 * c(0) + 0.589 * c(1) + 0.114 * c(2)) * 65535.0) as u16
-                }
+                _ if bits == 16 => grey16([v(0) as u16, v(1) as u16, v(2) as u16]),
                 _ => (v(0) * 256 + v(1)) as u16,
             };
         }
     }
     Ok((w, h, heights))
+}
+
+/// The height of a 16-bit colour pixel: POV-Ray's grey of it (0.297 r + 0.589 g + 0.114 b).
+pub(super) fn grey16(rgb: [u16; 3]) -> u16 {
+    let c = |k: usize| f64::from(f32::from(rgb[k]) / 65535.0f32);
+    ((0.297 * c(0) + 0.589 * c(1) + 0.114 * c(2)) * 65535.0) as u16
+}
+
+/// A value kept in a 16-bit channel as POV-Ray keeps it (single precision, truncated).
+pub(super) fn channel16(v: f64) -> u16 {
+    ((v as f32) * 65535.0) as i32 as u16
 }
 
 /// POV-Ray's single-precision grey of a grey palette entry `e` (0 to 1), back to a byte.

@@ -499,12 +499,6 @@ impl<'a> Evaluator<'a> {
                 node.word_span,
             );
         }
-        if node.word == "function" && matches!(context, "pigment" | "normal" | "texture") {
-            return Diagnostic::error(
-                format!("unsupported: a function pattern in a {context} (trace has functions in declarations and isosurfaces only yet)"),
-                node.word_span,
-            );
-        }
         match keywords::status(&node.word) {
             Some(keywords::Status::Unsupported(_)) => self.unknown_word(&node.word, node.word_span),
             // A keyword trace reads elsewhere: say that it is misplaced, not unknown.

@@ -692,11 +692,25 @@ impl Evaluator<'_> {
             Ok(v as u32)
         };
         let (width, depth) = (size(self, &f.args[0])?, size(self, &f.args[1])?);
+        let point = |x: u32, z: u32| {
+            let y = f64::from(depth - 1 - z) / f64::from(depth - 1);
+            glam::DVec3::new(f64::from(x) / f64::from(width - 1), y, 0.0)
+        };
+        // A pigment: POV-Ray keeps its colours in a 16-bit image, whose grey is the height.
         if let Some(p) = f.children.iter().find(|c| c.kind == NodeKind::Pigment) {
-            return Err(Diagnostic::error(
-                "unsupported: a height field from a pigment function (trace's functions have no pigment bodies yet)",
-                p.word_span,
-            ));
+            let pigment = self.pigment(p, crate::ir::Pigment::solid(crate::ir::Colour::default()))?;
+            let colour = (self.pigment_function)(&pigment, self.scene_defaults());
+            let generator = self.noise_generator();
+            let mut heights = Vec::with_capacity((width * depth) as usize);
+            for z in 0..depth {
+                for x in 0..width {
+                    let q = point(x, z);
+                    let c = colour.eval(&[q.x, q.y, q.z], generator);
+                    let channel = super::heightfield::channel16;
+                    heights.push(super::heightfield::grey16([channel(c[0]), channel(c[1]), channel(c[2])]));
+                }
+            }
+            return Ok((width, depth, heights));
         }
         let body = Node {
             kind: NodeKind::Function,
@@ -708,11 +722,9 @@ impl Evaluator<'_> {
         let generator = self.noise_generator();
         let mut heights = Vec::with_capacity((width * depth) as usize);
         for z in 0..depth {
-            let y = f64::from(depth - 1 - z) / f64::from(depth - 1);
             for x in 0..width {
-                let p = glam::DVec3::new(f64::from(x) / f64::from(width - 1), y, 0.0);
-                let v = function.at(p, generator) as f32;
-                heights.push((v * 65535.0) as i32 as u16);
+                let v = function.at(point(x, z), generator);
+                heights.push(super::heightfield::channel16(v));
             }
         }
         Ok((width, depth, heights))

@@ -88,13 +88,16 @@ impl Evaluator<'_> {
     fn transform_block(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
         let mut t = Transform::IDENTITY;
         let mut inverse = false;
-        for child in &node.children {
+        // (Directives may stand among the items, as transforms.inc's macros write them.)
+        self.each_item(&node.children, &mut |ev, child| {
             match child.kind {
                 NodeKind::Inverse => inverse = true,
-                NodeKind::IdentRef => t = t.then(self.declared_transform(child)?),
-                _ => t = t.then(self.transform(child)?),
+                NodeKind::IdentRef => t = t.then(ev.declared_transform(child)?),
+                _ if Self::is_transform(child) => t = t.then(ev.transform(child)?),
+                _ => return Err(ev.unknown_item(child, "transform")),
             }
-        }
+            Ok(())
+        })?;
         Ok(if inverse { t.inverse() } else { t })
     }
 

@@ -27,11 +27,16 @@ impl super::shape::Surface for Plane {
     #[inline]
     fn intersect(&self, ray: &Ray) -> Crossings {
         // Solve n·(o + t·d) = distance.
+        // POV-Ray's plane: a ray within 1e-10 of parallel misses, and so does a hit farther
+        // than its MAX_DISTANCE, 1e7 (trace() scatter macros meet both).
         let denom = self.normal.dot(ray.direction);
-        if denom == 0.0 {
+        if denom.abs() < 1e-10 {
             return Crossings::NONE;
         }
         let t = (self.distance - self.normal.dot(ray.origin)) / denom;
+        if t > 1e7 {
+            return Crossings::NONE;
+        }
         Crossings::within(ray, &[t])
     }
 

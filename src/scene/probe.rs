@@ -30,7 +30,9 @@ pub fn object_query(objects: Vec<ir::Object>) -> Box<dyn ir::ObjectQuery> {
 
 impl ir::ObjectQuery for Probe {
     fn trace(&self, origin: DVec3, direction: DVec3) -> Option<(DVec3, DVec3)> {
-        let ray = Ray::new(origin, direction);
+        // POV-Ray's trace() ignores hits nearer than its MIN_ISECT_DEPTH.
+        let mut ray = Ray::new(origin, direction);
+        ray.tmin = 1e-4;
         let hit = self.scene.intersect(&ray)?;
         let surface = self.scene.surface(&ray, &hit);
         let object = &self.scene.objects[hit.object.0 as usize];
