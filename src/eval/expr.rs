@@ -448,6 +448,17 @@ impl Evaluator<'_> {
                 arity(1)?;
                 v3(0)?.length()
             }
+            "vturbulence" => {
+                // vturbulence(lambda, omega, octaves, P): POV-Ray's vector turbulence at P.
+                arity(4)?;
+                let t = crate::noise::Turbulence {
+                    amount: glam::DVec3::ONE,
+                    lambda: f64::from(f(0, self)? as f32),
+                    omega: f64::from(f(1, self)? as f32),
+                    octaves: (f(2, self)? as i64).clamp(1, 10) as u32,
+                };
+                return Ok(Value::Vector(Vector::from_vec3(t.vector(v3(3)?))));
+            }
             "vcross" => {
                 arity(2)?;
                 return Ok(Value::Vector(Vector::from_vec3(v3(0)?.cross(v3(1)?))));

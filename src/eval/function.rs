@@ -208,7 +208,7 @@ impl Evaluator<'_> {
                     "y" | "v" => alias("y", "v"),
                     _ => None,
                 };
-                if let Some(i) = register.or_else(|| params.iter().position(|p| p == name)) {
+                if let Some(i) = register.or_else(|| params.iter().rposition(|p| p == name)) {
                     code.push(Op::Arg(i as u8));
                     return Ok(());
                 }
@@ -345,6 +345,25 @@ impl Evaluator<'_> {
             operands(self, code)?;
             let n = args.len() as u8;
             code.push(if name == "min" { Op::Min(n) } else { Op::Max(n) });
+        } else if name == "sum" || name == "prod" {
+            // sum(i, a, b, f): the term is a function of this one's parameters and i.
+            check_arity(name, 4, args.len(), span)?;
+            let ExprKind::Ident(var) = &args[0].kind else {
+                return Err(Diagnostic::error(format!("`{name}` counts with a name: {name}(i, a, b, f)"), args[0].span));
+            };
+            if params.len() + 1 > crate::func::MAX_STACK {
+                return Err(Diagnostic::error(format!("`{name}` nested too deeply"), span));
+            }
+            self.compile(&args[1], params, code)?;
+            self.compile(&args[2], params, code)?;
+            let mut inner: Vec<String> = params.to_vec();
+            inner.push(var.clone());
+            let mut term = Vec::new();
+            self.compile(&args[3], &inner, &mut term)?;
+            let term = Function::new(inner.len(), term).ok_or_else(|| {
+                Diagnostic::error(format!("the term of this `{name}` nests too deeply"), args[3].span)
+            })?;
+            code.push(Op::Loop(Arc::new(term), name == "prod"));
         } else if name == "select" {
             if !(3..=4).contains(&args.len()) {
                 return Err(Diagnostic::error("`select` takes 3 or 4 arguments", span));

@@ -754,6 +754,7 @@ const SUPPORTED: &[&str] = &[
     "precision",
     "precompute",
     "prism",
+    "prod",
     "quadratic_spline",
     "quadric",
     "quartic",
@@ -825,6 +826,7 @@ const SUPPORTED: &[&str] = &[
     "strupr",
     "sturm",
     "substr",
+    "sum",
     "superellipsoid",
     "switch",
     "t",
@@ -878,6 +880,7 @@ const SUPPORTED: &[&str] = &[
     "vnormalize",
     "vrotate",
     "vstr",
+    "vturbulence",
     "warning",
     "warp",
     "water_level",
@@ -918,9 +921,6 @@ pub fn is_unsupported_function(word: &str) -> bool {
     matches!(
         word,
         "eval_pigment"
-            | "vturbulence"
-            | "prod"
-            | "sum"
             | "function"
     )
 }
@@ -977,9 +977,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "ratio"
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
-        }
-        "prod" | "sum" | "vturbulence" => {
-            "user functions are not supported by trace yet"
         }
         "df3" => "file input/output is not supported by trace yet",
         "bmp" | "pot" => "only png image files are read by trace",

@@ -209,7 +209,14 @@ pub enum Op {
     Internal(Internal, u8),
     /// A native function called with its parameters' count of top values; one of its values.
     Native(Arc<dyn Native>, Member),
+    /// `sum(i, a, b, f)` or `prod(i, a, b, f)` (`true`): pops b and a, and runs the term f
+    /// (a function of this function's parameters and i) for i = a, a + 1, … while i ≤ b.
+    Loop(Arc<Function>, bool),
 }
+
+/// The most terms `sum` and `prod` add or multiply in one evaluation (a hostile bound such as
+/// 1e15 stops there).
+pub const MAX_LOOP_TERMS: u32 = 1 << 20;
 
 /// POV-Ray's built-in functions that trace has (`internal(N)`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -356,7 +363,7 @@ impl Function {
         let mut deepest = 0;
         let mut nesting = 1;
         for op in &code {
-            if let Op::Call(f) = op {
+            if let Op::Call(f) | Op::Loop(f, _) = op {
                 nesting = nesting.max(f.nesting + 1);
             }
             let (pops, pushes) = match op {
@@ -367,6 +374,7 @@ impl Function {
                 Op::Min(n) | Op::Max(n) | Op::Internal(_, n) => (*n as usize, 1),
                 Op::Call(f) => (f.params, 1),
                 Op::Native(f, _) => (f.params(), 1),
+                Op::Loop(f, _) if f.params != params + 1 || f.params > MAX_STACK => return None,
                 _ => (2, 1),
             };
             if let Op::Arg(i) = op {
@@ -485,6 +493,23 @@ impl Function {
                     let mut a = [0.0; 16];
                     a[..n].copy_from_slice(&stack[top..top + n]);
                     f.apply(&a[..n], generator)
+                }
+                Op::Loop(term, product) => {
+                    let end = pop!();
+                    let mut i = pop!();
+                    let n = args.len();
+                    let mut a = [0.0; MAX_STACK];
+                    a[..n].copy_from_slice(args);
+                    let mut acc = if *product { 1.0 } else { 0.0 };
+                    let mut terms = 0;
+                    while i <= end && terms < MAX_LOOP_TERMS {
+                        a[n] = i;
+                        let v = term.eval(&a[..=n], generator);
+                        acc = if *product { acc * v } else { acc + v };
+                        i += 1.0;
+                        terms += 1;
+                    }
+                    acc
                 }
                 Op::Native(f, member) => {
                     let n = f.params();
