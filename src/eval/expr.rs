@@ -75,12 +75,11 @@ impl Evaluator<'_> {
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b),
             ExprKind::Ternary(c, a, b) => {
+                // POV-Ray evaluates both branches (it reads them), so a rand() in the one not
+                // taken still draws its number.
                 let cond = self.float(c)?;
-                if cond.abs() > EQUALITY_TOLERANCE {
-                    self.eval(a)
-                } else {
-                    self.eval(b)
-                }
+                let (va, vb) = (self.eval(a)?, self.eval(b)?);
+                Ok(if cond.abs() > EQUALITY_TOLERANCE { va } else { vb })
             }
             ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, expr.span),
             ExprKind::Member(base, name, span) => {

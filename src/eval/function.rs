@@ -100,6 +100,36 @@ impl Evaluator<'_> {
     /// `spline { [S] [kind] t, V … }`: a declared spline copied first (its kind kept unless
     /// another is named), then the entries, as POV-Ray reads them.
     pub(super) fn spline(&mut self, node: &Node) -> Result<Spline> {
+        // Entries made by directives (`#for` over an array of points) join the written ones
+        // in the order they stand.
+        let flat;
+        let node = if node.children.iter().any(|c| super::object::is_directive(c.kind)) {
+            let mut args = node.args.clone();
+            let mut kinds = Vec::new();
+            for c in &node.children {
+                if !super::object::is_directive(c.kind) {
+                    kinds.push(c.clone());
+                    continue;
+                }
+                let at = c.span.start;
+                self.each_item(std::slice::from_ref(c), &mut |ev, item| {
+                    match item.kind {
+                        NodeKind::Value => {
+                            let v = ev.eval(&item.args[0])?;
+                            args.push(super::shapes::value_expr(v, item.args[0].span, at)?);
+                        }
+                        NodeKind::IdentRef if SplineKind::named(&item.word).is_some() => kinds.push(item.clone()),
+                        _ => return Err(ev.unknown_item(item, "spline")),
+                    }
+                    Ok(())
+                })?;
+            }
+            args.sort_by_key(|e| e.span.start);
+            flat = Node { args, children: kinds, ..node.clone() };
+            &flat
+        } else {
+            node
+        };
         let mut args = node.args.as_slice();
         let mut spline = match args.first().map(|e| &e.kind) {
             Some(ExprKind::Ident(name)) if matches!(self.env.get(name), Some(Value::Spline(_))) => {

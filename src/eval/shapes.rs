@@ -75,7 +75,7 @@ const MAX_FONT_BYTES: u64 = 64 << 20;
 
 /// A value produced by a directive among a shape's values, as an expression standing at
 /// `at` (the directive's place, so that the values keep their order among the others).
-fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
+pub(super) fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
     let span = Span { start: at, ..span };
     let kind = match value {
         Value::Float(f) => ExprKind::Number(f),
