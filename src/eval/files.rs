@@ -79,8 +79,8 @@ impl Lexer<'_> {
             let rest = &self.text[self.pos..];
             if rest.starts_with("//") {
                 self.pos += rest.find('\n').unwrap_or(rest.len());
-            } else if rest.starts_with("/*") {
-                self.pos += rest[2..].find("*/").map_or(rest.len(), |i| i + 4);
+            } else if let Some(comment) = rest.strip_prefix("/*") {
+                self.pos += comment.find("*/").map_or(rest.len(), |i| i + 4);
             } else {
                 return;
             }

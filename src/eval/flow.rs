@@ -467,29 +467,6 @@ impl<'a> Evaluator<'a> {
         args: &[syntax::Expr],
         call_span: Span,
     ) -> Result<Value> {
-        self.macro_value_inner(name, name_span, args, call_span, false)
-            .map(|v| v.expect("a value is required"))
-    }
-
-    /// Like [`Evaluator::macro_value`], but a macro that only runs directives gives `None`.
-    pub(super) fn macro_value_or_none(
-        &mut self,
-        name: &str,
-        name_span: Span,
-        args: &[syntax::Expr],
-        call_span: Span,
-    ) -> Result<Option<Value>> {
-        self.macro_value_inner(name, name_span, args, call_span, true)
-    }
-
-    fn macro_value_inner(
-        &mut self,
-        name: &str,
-        name_span: Span,
-        args: &[syntax::Expr],
-        call_span: Span,
-        may_be_empty: bool,
-    ) -> Result<Option<Value>> {
         let (text, file, offset) = self.begin_macro(name, name_span, args)?;
         let only_directives = |n: &Node| {
             Diagnostic::error(
@@ -504,7 +481,7 @@ impl<'a> Evaluator<'a> {
                     .and_then(|()| {
                         let value = self.eval(&fragment.expr)?;
                         self.each_item(&fragment.after, &mut directives)?;
-                        Ok(Some(value))
+                        Ok(value)
                     })
             }
             // The value may stand inside the directives: `#if (A) rgb 1 #else rgb 0 #end`
@@ -536,11 +513,7 @@ impl<'a> Evaluator<'a> {
                         });
                         Ok(())
                     })
-                    .and_then(|()| match value {
-                        None if may_be_empty => Ok(None),
-                        None => Err(not_an_expression),
-                        some => Ok(some),
-                    })
+                    .and_then(|()| value.ok_or(not_an_expression))
                 }
                 Err(_) => Err(not_an_expression),
             },

@@ -12,27 +12,6 @@ use crate::ir;
 use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, UnOp};
 use std::sync::Arc;
 
-/// The functions.inc name of POV-Ray's internal function `n`, for messages.
-fn internal_name(n: i64) -> &'static str {
-    const NAMES: [&str; 79] = [
-        "f_algbr_cyl1", "f_algbr_cyl2", "f_algbr_cyl3", "f_algbr_cyl4", "f_bicorn", "f_bifolia", "f_blob",
-        "f_blob2", "f_boy_surface", "f_comma", "f_cross_ellipsoids", "f_crossed_trough", "f_cubic_saddle",
-        "f_cushion", "f_devils_curve", "f_devils_curve_2d", "f_dupin_cyclid", "f_ellipsoid", "f_enneper",
-        "f_flange_cover", "f_folium_surface", "f_folium_surface_2d", "f_glob", "f_heart", "f_helical_torus",
-        "f_helix1", "f_helix2", "f_hex_x", "f_hex_y", "f_hetero_mf", "f_hunt_surface", "f_hyperbolic_torus",
-        "f_isect_ellipsoids", "f_kampyle_of_eudoxus", "f_kampyle_of_eudoxus_2d", "f_klein_bottle",
-        "f_kummer_surface_v1", "f_kummer_surface_v2", "f_lemniscate_of_gerono", "f_lemniscate_of_gerono_2d",
-        "f_mesh1", "f_mitre", "f_nodal_cubic", "f_odd", "f_ovals_of_cassini", "f_paraboloid",
-        "f_parabolic_torus", "f_ph", "f_pillow", "f_piriform", "f_piriform_2d", "f_poly4", "f_polytubes",
-        "f_quantum", "f_quartic_paraboloid", "f_quartic_saddle", "f_quartic_cylinder", "f_r", "f_ridge",
-        "f_ridged_mf", "f_rounded_box", "f_sphere", "f_spikes", "f_spikes_2d", "f_spiral", "f_steiners_roman",
-        "f_strophoid", "f_strophoid_2d", "f_superellipsoid", "f_th", "f_torus", "f_torus2", "f_torus_gumdrop",
-        "f_umbrella", "f_witch_of_agnesi", "f_witch_of_agnesi_2d", "f_noise3d", "f_pattern",
-        "f_noise_generator",
-    ];
-    usize::try_from(n).ok().and_then(|i| NAMES.get(i)).copied().unwrap_or("an unknown one")
-}
-
 impl Evaluator<'_> {
     /// A `function { … }` node, compiled.
     pub(super) fn function(&mut self, node: &Node) -> Result<Arc<Function>> {
@@ -74,10 +53,7 @@ impl Evaluator<'_> {
                 return match Internal::numbered(n) {
                     Some(f) => Ok(Arc::new(Function::internal(f))),
                     None => Err(Diagnostic::error(
-                        format!(
-                            "unsupported: POV-Ray's internal function {n} ({}) is not in trace yet",
-                            internal_name(n)
-                        ),
+                        format!("POV-Ray has no internal function {n} (they are numbered 0 to 78)"),
                         body.span,
                     )),
                 };

@@ -967,20 +967,6 @@ impl Evaluator<'_> {
     /// placement of the pigment it replaces, as in POV-Ray (a pigment block modifies the
     /// current pigment).
     fn pigment_value(&mut self, e: &crate::syntax::Expr, pigment: Pigment) -> Result<Pigment> {
-        // A macro first in a pigment may only run directives (declare a function the
-        // pigment then uses, as POV-Ray's wallstucco scene does): it leaves the pigment as
-        // it was.
-        if let crate::syntax::ExprKind::Call(name, name_span, args) = &e.kind
-            && self.macros.contains_key(name)
-        {
-            return match self.macro_value_or_none(name, *name_span, args, e.span)? {
-                Some(v) => {
-                    self.warn_bare_colour(&v, e.span, "in a pigment");
-                    pigment_from(v, e.span, pigment)
-                }
-                None => Ok(pigment),
-            };
-        }
         let v = self.eval(e)?;
         self.warn_bare_colour(&v, e.span, "in a pigment");
         pigment_from(v, e.span, pigment)

@@ -4,13 +4,15 @@
 //! A function is a program of [`Op`]s over its parameters (x, y, z by default). Declared
 //! floats are folded in as constants when the function is compiled, as POV-Ray does; calls to
 //! other declared functions run their programs; `internal(N)` is one of POV-Ray's built-in
-//! functions (functions.inc names them `f_sphere`, `f_torus` …), written here from their
-//! published formulas.
+//! functions (functions.inc names them `f_sphere`, `f_torus` …: [`Internal`]).
 
 use glam::DVec3;
 use std::sync::Arc;
 
+mod internal;
 pub mod spline;
+
+pub use internal::Internal;
 
 /// The deepest stack a function may need (deeper expressions are refused when compiled).
 pub const MAX_STACK: usize = 64;
@@ -217,120 +219,6 @@ pub enum Op {
 /// The most terms `sum` and `prod` add or multiply in one evaluation (a hostile bound such as
 /// 1e15 stops there).
 pub const MAX_LOOP_TERMS: u32 = 1 << 20;
-
-/// POV-Ray's built-in functions that trace has (`internal(N)`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(missing_docs)]
-pub enum Internal {
-    Ellipsoid,
-    Heart,
-    Paraboloid,
-    Ph,
-    R,
-    RoundedBox,
-    Sphere,
-    Superellipsoid,
-    Th,
-    Torus,
-    Torus2,
-    TorusGumdrop,
-    Umbrella,
-    WitchOfAgnesi,
-    Noise3d,
-}
-
-impl Internal {
-    /// POV-Ray's number `n` (functions.inc's `internal(n)`), if trace has it.
-    pub fn numbered(n: i64) -> Option<Internal> {
-        use Internal::*;
-        Some(match n {
-            17 => Ellipsoid,
-            23 => Heart,
-            45 => Paraboloid,
-            47 => Ph,
-            57 => R,
-            60 => RoundedBox,
-            61 => Sphere,
-            68 => Superellipsoid,
-            69 => Th,
-            70 => Torus,
-            71 => Torus2,
-            72 => TorusGumdrop,
-            73 => Umbrella,
-            74 => WitchOfAgnesi,
-            76 => Noise3d,
-            _ => return None,
-        })
-    }
-
-    /// How many values it takes (x, y, z and its parameters).
-    pub fn arity(self) -> usize {
-        use Internal::*;
-        3 + match self {
-            Ph | R | Th | Noise3d => 0,
-            Heart | Paraboloid | Sphere | TorusGumdrop | Umbrella => 1,
-            Superellipsoid | Torus | WitchOfAgnesi => 2,
-            Ellipsoid | Torus2 => 3,
-            RoundedBox => 4,
-        }
-    }
-
-    fn apply(self, a: &[f64], generator: u8) -> f64 {
-        use Internal::*;
-        let (x, y, z) = (a[0], a[1], a[2]);
-        let p = |i: usize| a[3 + i];
-        let clamp = |r: f64| (p(0) * r).clamp(-10.0, 10.0);
-        let (x2, y2, z2) = (x * x, y * y, z * z);
-        match self {
-            Ellipsoid => (x2 * p(0) * p(0) + y2 * p(1) * p(1) + z2 * p(2) * p(2)).sqrt(),
-            Heart => {
-                let s = 2.0 * x2 + y2 + z2 - 1.0;
-                clamp(-(s * s * s - 0.1 * x2 * z2 * z - y2 * z2 * z))
-            }
-            Paraboloid => clamp(-(x2 - y + z2)),
-            Ph => (x2 + z2).sqrt().atan2(y),
-            R => (x2 + y2 + z2).sqrt(),
-            RoundedBox => {
-                let r = p(0);
-                let far = DVec3::new(p(1), p(2), p(3)) - DVec3::splat(r);
-                let q = DVec3::new(x, y, z);
-                let above = (q - far).max(DVec3::ZERO);
-                let below = (-far - q).max(DVec3::ZERO);
-                -r + above.max(below).length() - 1e-6
-            }
-            Sphere => -p(0) + (x2 + y2 + z2).sqrt(),
-            Superellipsoid => {
-                let (e, n) = (p(0), p(1));
-                let (pe, pn) = (2.0 / e, 1.0 / n);
-                1.0 - ((x.abs().powf(pe) + y.abs().powf(pe)).powf(e * pn) + z.abs().powf(2.0 * pn))
-                    .powf(n * 0.5)
-            }
-            Th => x.atan2(z),
-            Torus => {
-                let h = (x2 + z2).sqrt() - p(0);
-                -p(1) + (h * h + y2).sqrt()
-            }
-            Torus2 => {
-                let (a2, b2) = (p(1) * p(1), p(2) * p(2));
-                clamp(
-                    -(x2 * x2 + y2 * y2 + z2 * z2 + 2.0 * x2 * y2 + 2.0 * x2 * z2 + 2.0 * y2 * z2
-                        - 2.0 * (a2 + b2) * x2
-                        + 2.0 * (a2 - b2) * y2
-                        - 2.0 * (a2 + b2) * z2
-                        + (a2 - b2) * (a2 - b2)),
-                )
-            }
-            TorusGumdrop => clamp(
-                -(4.0 * (x2 * x2 + (y2 + z2) * (y2 + z2)) + 17.0 * x2 * (y2 + z2)
-                    - 20.0 * (x2 + y2 + z2)
-                    + 17.0),
-            ),
-            Umbrella => clamp(-(x2 - y * z2)),
-            WitchOfAgnesi => clamp(-(p(1) * (y - 1.0) + (x2 + z2) * y)),
-            Noise3d => crate::noise::noise(DVec3::new(x, y, z), generator),
-        }
-    }
-}
 
 /// A compiled function.
 #[derive(Clone, Debug)]

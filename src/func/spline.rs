@@ -91,6 +91,8 @@ impl Spline {
     }
 
     /// Precomputes what the kind needs (natural splines' second derivatives).
+    // (The component index k runs over every entry's five values.)
+    #[allow(clippy::needless_range_loop)]
     fn prepare(&mut self) {
         self.second.clear();
         let n = self.entries.len();
