@@ -92,7 +92,15 @@ impl<'a> Evaluator<'a> {
     fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
         self.charge(1, "statement", item.word_span)?;
         match item.kind {
-            NodeKind::Version => self.version = Some(self.float(&item.args[0])?),
+            NodeKind::Version => {
+                self.version = Some(self.float(&item.args[0])?);
+                if item.children.iter().any(|c| c.kind == NodeKind::MissingSemicolon) {
+                    self.warn(Diagnostic::warning(
+                        "`#version` wants a `;` after its number (POV-Ray warns too)",
+                        item.args[0].span,
+                    ));
+                }
+            }
             NodeKind::Declare | NodeKind::Local => self.declare(item)?,
             NodeKind::Undef => {
                 self.env.remove(&item.children[0].word);
@@ -194,6 +202,13 @@ impl<'a> Evaluator<'a> {
             .first()
             .filter(|c| c.kind == NodeKind::Deprecation);
         let children = &node.children[usize::from(deprecation.is_some())..];
+        let (children, missing) = match children.split_last() {
+            // (Messages point at the value the `;` should follow.)
+            Some((last, rest)) if last.kind == NodeKind::MissingSemicolon => {
+                (rest, node.args.first().map(|e| e.span))
+            }
+            _ => (children, None),
+        };
         let name = children[0].word.clone();
         let subs: Vec<&Node> = children
             .iter()
@@ -221,6 +236,23 @@ impl<'a> Evaluator<'a> {
                 return Err(*d);
             }
             return self.assign_element(&children[0], &subs, value);
+        }
+        // A float, vector or colour without its `;`: accepted with a warning before version
+        // 3.5, refused after, as POV-Ray does.
+        if let Some(at) = missing
+            && matches!(value, Value::Float(_) | Value::Vector(_) | Value::Colour(_))
+        {
+            if self.version.is_some_and(|v| v < 3.5 - 1e-9) {
+                self.warn(Diagnostic::warning(
+                    "a declared float, vector or colour wants a `;` after it (POV-Ray warns before version 3.5)",
+                    at,
+                ));
+            } else {
+                return Err(Diagnostic::error(
+                    "expected `;`: a declared float, vector or colour ends with one from version 3.5 on (as in POV-Ray; before it, a warning)",
+                    at,
+                ));
+            }
         }
         if node.kind == NodeKind::Local {
             self.shadow(&name);

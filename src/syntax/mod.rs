@@ -78,6 +78,8 @@ pub enum NodeKind {
     Function,
     /// `pattern { PATTERN modifiers }` in `function { }`: a pattern's value as a function.
     PatternFunction,
+    /// Where a declaration's or `#version`'s `;` is missing.
+    MissingSemicolon,
     /// `spline { … }`: kinds as IdentRef children, the rest (a declared spline, then the
     /// entries' parameters and values) as args.
     Spline,
@@ -850,6 +852,7 @@ impl Lower {
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
             Rule::pattern_function => NodeKind::PatternFunction,
+            Rule::missing_semicolon => NodeKind::MissingSemicolon,
             Rule::spline => NodeKind::Spline,
             Rule::pigment_pattern => NodeKind::PigmentPattern,
             Rule::value_item => NodeKind::Value,

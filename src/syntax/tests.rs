@@ -78,9 +78,14 @@ fn colour_with_channel_modifiers() {
     assert_eq!(parts.len(), 2);
 }
 
+/// A float declared without its `;` is read and marked: evaluation refuses it from version 3.5
+/// on and warns before, as POV-Ray does.
 #[test]
-fn declare_of_a_float_needs_a_semicolon() {
-    assert!(parse("#declare A = 1 sphere { 0, 1 }").is_err());
+fn declare_of_a_float_without_semicolon_is_marked() {
+    let nodes = parse("#declare A = 1 sphere { 0, 1 }").expect("parses");
+    assert!(nodes[0].children.iter().any(|c| c.kind == NodeKind::MissingSemicolon));
+    let nodes = parse("#declare A = 1; sphere { 0, 1 }").expect("parses");
+    assert!(!nodes[0].children.iter().any(|c| c.kind == NodeKind::MissingSemicolon));
 }
 
 #[test]

@@ -366,3 +366,28 @@ fn povray_reading_of_ternaries_splines_and_transforms() {
         "{centre}"
     );
 }
+
+/// A float, vector or colour declared without its `;`: POV-Ray 3.7 refuses it in a 3.5 or later
+/// scene and only warns in an older one (checked with povray), and so does trace.
+#[test]
+fn missing_semicolons_follow_the_version() {
+    let scene = "#declare X = 5\n#declare V = <1, 2, 3>\nsphere { V, X }\n";
+    let load = |text: String| {
+        trace::load_str(
+            std::path::Path::new("v.rt"),
+            text,
+            &trace::LoadOptions::default(),
+        )
+    };
+    let err = load(format!("#version 3.7;\n{scene}"))
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        err.contains("expected `;`") && err.contains("v.rt:2:14"),
+        "{err}"
+    );
+    let old = load(format!("#version 3.1\n{scene}")).expect("read");
+    assert_eq!(old.warnings.len(), 3, "{:?}", old.warnings);
+    assert_eq!(old.scene.objects.len(), 1);
+}
