@@ -379,10 +379,10 @@ fn missing_semicolons_follow_the_version() {
             &trace::LoadOptions::default(),
         )
     };
-    let err = load(format!("#version 3.7;\n{scene}"))
-        .err()
-        .expect("refused")
-        .to_string();
+    let err = match load(format!("#version 3.7;\n{scene}")) {
+        Ok(_) => panic!("a 3.7 scene without its `;` is refused"),
+        Err(e) => e.to_string(),
+    };
     assert!(
         err.contains("expected `;`") && err.contains("v.rt:2:14"),
         "{err}"
