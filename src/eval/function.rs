@@ -87,17 +87,13 @@ impl Evaluator<'_> {
                     kinds.push(c.clone());
                     continue;
                 }
-                let at = c.span.start;
-                self.each_item(std::slice::from_ref(c), &mut |ev, item| {
-                    match item.kind {
-                        NodeKind::Value => {
-                            let v = ev.eval(&item.args[0])?;
-                            args.push(super::shapes::value_expr(v, item.args[0].span, at)?);
-                        }
-                        NodeKind::IdentRef if SplineKind::named(&item.word).is_some() => kinds.push(item.clone()),
-                        _ => return Err(ev.unknown_item(item, "spline")),
+                self.directive_values(c, &mut args, &mut |ev, item| {
+                    if item.kind == NodeKind::IdentRef && SplineKind::named(&item.word).is_some() {
+                        kinds.push(item.clone());
+                        Ok(())
+                    } else {
+                        Err(ev.unknown_item(item, "spline"))
                     }
-                    Ok(())
                 })?;
             }
             args.sort_by_key(|e| e.span.start);

@@ -75,7 +75,7 @@ const MAX_FONT_BYTES: u64 = 64 << 20;
 
 /// A value produced by a directive among a shape's values, as an expression standing at
 /// `at` (the directive's place, so that the values keep their order among the others).
-pub(super) fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
+fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
     let span = Span { start: at, ..span };
     let kind = match value {
         Value::Float(f) => ExprKind::Number(f),
@@ -92,7 +92,28 @@ pub(super) fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
     Ok(Expr { kind, span })
 }
 
-impl Evaluator<'_> {
+impl<'a> Evaluator<'a> {
+    /// Runs the directive `c` standing among a construct's values (a shape's, a spline's):
+    /// the values it leaves join `values`, placed where the directive stands; every other item
+    /// it gives goes to `other`.
+    pub(super) fn directive_values(
+        &mut self,
+        c: &Node,
+        values: &mut Vec<Expr>,
+        other: &mut dyn FnMut(&mut Evaluator<'a>, &Node) -> Result<()>,
+    ) -> Result<()> {
+        let at = c.span.start;
+        self.each_item(std::slice::from_ref(c), &mut |ev, item| {
+            if item.kind == NodeKind::Value {
+                let v = ev.eval(&item.args[0])?;
+                values.push(value_expr(v, item.args[0].span, at)?);
+                Ok(())
+            } else {
+                other(ev, item)
+            }
+        })
+    }
+
     /// A shape node whose values include directives (`#while` loops making points), with the
     /// directives run: their values take their place among the shape's values and anything
     /// else they give joins the modifiers. `None` when there is no such directive.
@@ -114,18 +135,13 @@ impl Evaluator<'_> {
                 continue;
             }
             let at = c.span.start;
-            self.each_item(std::slice::from_ref(c), &mut |ev, item| {
-                match item.kind {
-                    NodeKind::Value => {
-                        let v = ev.eval(&item.args[0])?;
-                        values.push(value_expr(v, item.args[0].span, at)?);
-                    }
-                    NodeKind::Flag if takes(&node.word, &item.word) => {
-                        let mut word = item.clone();
-                        word.span.start = at;
-                        children.push(word);
-                    }
-                    _ => extra.push(item.clone()),
+            self.directive_values(c, &mut values, &mut |_, item| {
+                if item.kind == NodeKind::Flag && takes(&node.word, &item.word) {
+                    let mut word = item.clone();
+                    word.span.start = at;
+                    children.push(word);
+                } else {
+                    extra.push(item.clone());
                 }
                 Ok(())
             })?;
