@@ -222,6 +222,9 @@ impl<'a> Evaluator<'a> {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
             Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
+            Some(item) if matches!(item.kind, NodeKind::If | NodeKind::IfDef | NodeKind::Switch) => {
+                self.directive_value(item).or_else(unsupported_later)?
+            }
             Some(item) if item.kind == NodeKind::Function => {
                 self.function(item).map(Value::Function).or_else(unsupported_later)?
             }
@@ -527,22 +530,10 @@ impl<'a> Evaluator<'a> {
                         if value.is_some() {
                             return Err(only_directives(n));
                         }
-                        value = Some(match n.kind {
-                            NodeKind::ColourItem | NodeKind::Value => ev.eval(&n.args[0])?,
-                            // A declared value alone (`#if (Ok) Q; #else <0, 0, 0>; #end`).
-                            NodeKind::IdentRef | NodeKind::Unknown if ev.env.contains_key(&n.word) => {
-                                ev.lookup(n)?
-                            }
-                            // (`function { … }` reads as a function pattern among items.)
-                            NodeKind::Pattern if n.children.first().is_some_and(|c| c.kind == NodeKind::Function) => {
-                                Value::Function(ev.function(&n.children[0])?)
-                            }
-                            NodeKind::LayeredTexture => ev.layered_texture(n)?,
-                            _ if super::object::is_object(n.kind) || VALUE_ITEMS.contains(&n.kind) => {
-                                ev.item_value(n)?
-                            }
-                            _ => return Err(only_directives(n)),
-                        });
+                        match ev.item_as_value(n)? {
+                            Some(v) => value = Some(v),
+                            None => return Err(only_directives(n)),
+                        }
                         Ok(())
                     })
                     .and_then(|()| value.ok_or(not_an_expression))
@@ -558,6 +549,50 @@ impl<'a> Evaluator<'a> {
         });
         self.return_from_macro();
         result
+    }
+
+    /// The value an item left by a directive or a macro stands for, where a value is wanted
+    /// (`None` if it is no value): an expression, a colour, a declared name, an object, a
+    /// pigment or another declarable item, a function.
+    fn item_as_value(&mut self, n: &Node) -> Result<Option<Value>> {
+        Ok(Some(match n.kind {
+            NodeKind::ColourItem | NodeKind::Value => self.eval(&n.args[0])?,
+            // A declared value alone (`#if (Ok) Q; #else <0, 0, 0>; #end`).
+            NodeKind::IdentRef | NodeKind::Unknown if self.env.contains_key(&n.word) => {
+                self.lookup(n)?
+            }
+            // (`function { … }` reads as a function pattern among items.)
+            NodeKind::Pattern
+                if n.children.first().is_some_and(|c| c.kind == NodeKind::Function) =>
+            {
+                Value::Function(self.function(&n.children[0])?)
+            }
+            NodeKind::LayeredTexture => self.layered_texture(n)?,
+            _ if super::object::is_object(n.kind) || VALUE_ITEMS.contains(&n.kind) => {
+                self.item_value(n)?
+            }
+            _ => return Ok(None),
+        }))
+    }
+
+    /// `#declare X = #if (c) A #else B #end`: the one value the directive's taken branch
+    /// gives, as POV-Ray reads the tokens the directive leaves.
+    fn directive_value(&mut self, directive: &Node) -> Result<Value> {
+        let mut value = None;
+        self.each_item(std::slice::from_ref(directive), &mut |ev, n| {
+            let v = ev.item_as_value(n)?;
+            match (v, &value) {
+                (Some(v), None) => value = Some(v),
+                (Some(_), Some(_)) => {
+                    return Err(Diagnostic::error("a declaration takes one value", n.word_span));
+                }
+                (None, _) => return Err(ev.unknown_item(n, "a declaration")),
+            }
+            Ok(())
+        })?;
+        value.ok_or_else(|| {
+            Diagnostic::error("this directive gives the declaration no value", directive.word_span)
+        })
     }
 
     /// Counts `cost` steps against the scene's evaluation budget

@@ -618,6 +618,7 @@ const SUPPORTED: &[&str] = &[
     "emission",
     "end",
     "error",
+    "eval_pigment",
     "exp",
     "exponent",
     "face_indices",
@@ -920,8 +921,7 @@ pub fn status(word: &str) -> Option<Status> {
 pub fn is_unsupported_function(word: &str) -> bool {
     matches!(
         word,
-        "eval_pigment"
-            | "function"
+        "function"
     )
 }
 
@@ -954,7 +954,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }
-        "eval_pigment" => LATER,
         "hf_gray_16" | "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
