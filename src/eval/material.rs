@@ -94,6 +94,8 @@ impl Evaluator<'_> {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Texture(t) => texture = t,
+                    // `texture { P }` with a declared pigment: POV-Ray takes it as the pigment.
+                    Value::Pigment(p) => texture.pigment = p,
                     other => return Err(type_error("a texture", &other, item.span)),
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,

@@ -686,6 +686,8 @@ impl<'a> Evaluator<'a> {
     fn global_settings(&mut self, node: &Node) -> Result<()> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
+                // (`#default { … }` may stand here too, as POV-Ray reads it anywhere.)
+                NodeKind::Default => ev.statement(item)?,
                 NodeKind::Charset => {
                     ev.charset = if item.word.ends_with("ascii") {
                         crate::font::Charset::Ascii
