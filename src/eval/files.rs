@@ -37,6 +37,9 @@ pub(super) enum UserFile {
 pub(super) struct Files {
     open: Vec<Option<UserFile>>,
     written: u64,
+    /// Files read so far, by path, while the scene has not written them since: a loop
+    /// opening one file again and again keeps one copy of its text.
+    read: std::collections::HashMap<PathBuf, FileId>,
 }
 
 impl Files {
@@ -275,13 +278,18 @@ impl Evaluator<'_> {
         }
         let file = if mode == "read" {
             let path = self.find_file(&name, "user file", span)?;
-            let text = crate::diag::read_source(&path).map_err(|e| {
-                Diagnostic::error(format!("cannot read {}: {e}", path.display()), span)
-            })?;
-            UserFile::Read {
-                file: self.sources.add(&path, text),
-                pos: 0,
-            }
+            let file = match self.files.read.get(&path) {
+                Some(id) => *id,
+                None => {
+                    let text = crate::diag::read_source(&path).map_err(|e| {
+                        Diagnostic::error(format!("cannot read {}: {e}", path.display()), span)
+                    })?;
+                    let id = self.sources.add(&path, text);
+                    self.files.read.insert(path, id);
+                    id
+                }
+            };
+            UserFile::Read { file, pos: 0 }
         } else {
             let path = self.sandbox.writable(&name).map_err(|why| {
                 Diagnostic::error(format!("cannot write user file \"{name}\": {why}"), span)
@@ -296,6 +304,8 @@ impl Evaluator<'_> {
                 .map_err(|e| {
                     Diagnostic::error(format!("cannot write {}: {e}", path.display()), span)
                 })?;
+            // (Read again after this, the file is read anew.)
+            self.files.read.remove(&path);
             UserFile::Write {
                 out: std::io::BufWriter::new(opened),
                 path,

@@ -122,6 +122,7 @@ impl Evaluator<'_> {
                 args[args.len() - 1].span,
             ));
         }
+        let mut entries = Vec::with_capacity(args.len() / 2);
         for pair in args.chunks(2) {
             let t = self.float(&pair[0])?;
             let v = self.eval(&pair[1])?;
@@ -133,8 +134,9 @@ impl Evaluator<'_> {
                 other => return Err(type_error("a vector", &other, pair[1].span)),
             };
             self.charge(1, "spline entry", pair[0].span)?;
-            spline.insert(t, values, terms);
+            entries.push((t, values, terms));
         }
+        spline.extend(entries);
         if spline.is_empty() {
             return Err(Diagnostic::error("a spline needs at least one entry", node.word_span));
         }

@@ -81,11 +81,20 @@ impl Spline {
     /// Adds an entry of `terms` values at `par` (an entry already at `par` is replaced, as in
     /// POV-Ray).
     pub fn insert(&mut self, par: f64, values: [f64; 5], terms: usize) {
-        self.terms = self.terms.max(terms);
-        let i = self.entries.partition_point(|(p, _)| *p < par);
-        match self.entries.get_mut(i) {
-            Some(e) if e.0 == par => e.1 = values,
-            _ => self.entries.insert(i, (par, values)),
+        self.extend([(par, values, terms)]);
+    }
+
+    /// Adds entries (parameter, values, how many values), in order, as [`Spline::insert`]
+    /// does, preparing the spline once at the end (a natural spline's coefficients cost a
+    /// pass over all entries).
+    pub fn extend(&mut self, entries: impl IntoIterator<Item = (f64, [f64; 5], usize)>) {
+        for (par, values, terms) in entries {
+            self.terms = self.terms.max(terms);
+            let i = self.entries.partition_point(|(p, _)| *p < par);
+            match self.entries.get_mut(i) {
+                Some(e) if e.0 == par => e.1 = values,
+                _ => self.entries.insert(i, (par, values)),
+            }
         }
         self.prepare();
     }
