@@ -552,6 +552,7 @@ const SUPPORTED: &[&str] = &[
     "blob",
     "blue",
     "blur_samples",
+    "bmp",
     "bounded_by",
     "box",
     "boxed",
@@ -621,6 +622,7 @@ const SUPPORTED: &[&str] = &[
     "eval_pigment",
     "exp",
     "exponent",
+    "exr",
     "face_indices",
     "facets",
     "fade_color",
@@ -648,11 +650,14 @@ const SUPPORTED: &[&str] = &[
     "frequency",
     "fresnel",
     "function",
+    "gamma",
+    "gif",
     "global_settings",
     "gradient",
     "granite",
     "gray",
     "green",
+    "hdr",
     "height_field",
     "hexagon",
     "hollow",
@@ -676,6 +681,7 @@ const SUPPORTED: &[&str] = &[
     "irid_wavelength",
     "isosurface",
     "jitter",
+    "jpeg",
     "julia_fractal",
     "lambda",
     "lathe",
@@ -737,6 +743,7 @@ const SUPPORTED: &[&str] = &[
     "parametric",
     "pattern",
     "perspective",
+    "pgm",
     "phase",
     "phong",
     "phong_size",
@@ -752,6 +759,7 @@ const SUPPORTED: &[&str] = &[
     "poly_wave",
     "polygon",
     "pow",
+    "ppm",
     "precision",
     "precompute",
     "prism",
@@ -830,14 +838,17 @@ const SUPPORTED: &[&str] = &[
     "sum",
     "superellipsoid",
     "switch",
+    "sys",
     "t",
     "tan",
     "tanh",
     "text",
     "texture",
     "texture_map",
+    "tga",
     "thickness",
     "threshold",
+    "tiff",
     "tightness",
     "tolerance",
     "toroidal",
@@ -941,9 +952,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this light_source item is outside trace's subset"
         }
         "density_map" => LATER,
-        "gif" | "tga" | "iff" | "ppm" | "pgm" | "jpeg" | "tiff" | "sys" | "exr" | "hdr" => {
-            "only png image files are read by trace"
-        }
+        "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "density_file" | "julia" | "magnet" | "mandel"
         | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
@@ -978,8 +987,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "df3" => "file input/output is not supported by trace yet",
-        "bmp" | "pot" => "only png image files are read by trace",
-        "all" | "alpha" | "gamma" | "premultiplied" => {
+        "all" | "alpha" | "premultiplied" => {
             "this image_map item is not supported by trace yet"
         }
         "reflection_exponent" | "refraction" | "translucency" => {

@@ -1,9 +1,10 @@
 //! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
 
 use super::value::{MaterialValue, colour5, to_colour};
+use super::images::{Encoding, FileType};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
-use crate::pattern::image::ImageUse;
+use crate::pattern::image::{ImageUse, Interpolation, MapType};
 use crate::noise;
 use crate::pattern::{BlackHole, Mapping, MappingWarp};
 use crate::ir::{
@@ -41,32 +42,6 @@ enum ImageRole {
     /// `bump_map`: heights, with the `bump_size` given inside.
     Bumps(Option<f64>),
 }
-
-/// A palette PNG's pixel indices (top row first), `None` for other files.
-fn palette_indices(path: &std::path::Path) -> Option<Vec<u8>> {
-    let file = std::io::BufReader::new(std::fs::File::open(path).ok()?);
-    let mut decoder = png::Decoder::new(file);
-    decoder.set_transformations(png::Transformations::IDENTITY);
-    let mut reader = decoder.read_info().ok()?;
-    if reader.info().color_type != png::ColorType::Indexed {
-        return None;
-    }
-    let mut buf = vec![0; reader.output_buffer_size()?];
-    let out = reader.next_frame(&mut buf).ok()?;
-    let bits = out.bit_depth as usize;
-    let (w, h) = (out.width as usize, out.height as usize);
-    let mut indices = Vec::with_capacity(w * h);
-    for row in buf.chunks(out.line_size).take(h) {
-        for x in 0..w {
-            let bit = x * bits;
-            let byte = row[bit / 8];
-            let shift = 8 - bits - bit % 8;
-            indices.push((byte >> shift) & ((1u16 << bits) - 1) as u8);
-        }
-    }
-    Some(indices)
-}
-
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
 /// last.
@@ -1120,33 +1095,71 @@ impl Evaluator<'_> {
             other => return Err(type_error("a file name (a string)", &other, file_expr.span)),
         };
         let role = node.word.as_str();
-        let (mut once, mut bilinear) = (false, false);
+        let (mut once, mut map_type, mut interpolation) = (false, MapType::Planar, Interpolation::Nearest);
         let (mut use_, mut use_index, mut bump_size) = (ImageUse::Colour, false, None);
+        // (filter or transmit, the palette entry and where it is named, the amount)
+        type SeeThrough = (bool, Option<(i64, crate::diag::Span)>, f32);
+        let mut see_through: Vec<SeeThrough> = Vec::new();
+        let (mut file_type, mut type_span, mut gamma) = (None, file_expr.span, None);
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
-                NodeKind::ImageType => {}
+                NodeKind::ImageType => {
+                    file_type = FileType::from_keyword(&item.word);
+                    type_span = item.span;
+                }
+                NodeKind::ImageGamma => {
+                    gamma = Some(match item.args.first() {
+                        None => Encoding::Srgb,
+                        Some(g) => {
+                            let g_value = ev.float(g)?;
+                            if g_value <= 0.0 {
+                                return Err(Diagnostic::error("gamma value must be positive", g.span));
+                            }
+                            Encoding::Power(g_value)
+                        }
+                    })
+                }
                 NodeKind::Once => once = true,
                 NodeKind::MapType => {
                     let t = ev.float(&item.args[0])?;
-                    if t != 0.0 {
-                        return Err(Diagnostic::error(
-                            "unsupported: map_type other than 0 (planar) (not supported by trace yet)",
-                            item.args[0].span,
-                        ));
-                    }
-                }
-                NodeKind::Interpolate => {
-                    let n = ev.float(&item.args[0])?;
-                    bilinear = match n as i64 {
-                        0 => false,
-                        2 => true,
+                    map_type = match t as i64 {
+                        1 => MapType::Spherical,
+                        2 => MapType::Cylindrical,
+                        5 => MapType::Torus,
+                        0 => MapType::Planar,
+                        // (POV-Ray refuses the others in an image_map, and maps planar elsewhere.)
+                        _ if role != "image_map" => MapType::Planar,
                         _ => {
                             return Err(Diagnostic::error(
-                                "unsupported: interpolate other than 0 or 2 (bilinear) (not supported by trace yet)",
+                                "invalid map_type: an image_map takes 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus)",
                                 item.args[0].span,
                             ));
                         }
                     };
+                }
+                NodeKind::Interpolate => {
+                    let n = ev.float(&item.args[0])?;
+                    interpolation = match n as i64 {
+                        0 | 1 => Interpolation::Nearest,
+                        2 => Interpolation::Bilinear,
+                        3 => Interpolation::Bicubic,
+                        4 => Interpolation::NormalizedDistance,
+                        _ => {
+                            return Err(Diagnostic::error(
+                                "invalid interpolate value: 2 (bilinear), 3 (bicubic) or 4 (normalised distance)",
+                                item.args[0].span,
+                            ));
+                        }
+                    };
+                }
+                NodeKind::ImageSeeThrough if role == "image_map" => {
+                    let filter = item.word == "filter";
+                    let (index, value) = match item.args.as_slice() {
+                        [v] => (None, ev.float(v)?),
+                        [i, v] => (Some(((ev.float(i)? + 0.01) as i64, i.span)), ev.float(v)?),
+                        _ => unreachable!("the grammar gives one or two values"),
+                    };
+                    see_through.push((filter, index, value as f32));
                 }
                 NodeKind::ImageUse if role != "image_map" => match item.word.as_str() {
                     "use_alpha" if role == "image_pattern" => use_ = ImageUse::Alpha,
@@ -1157,75 +1170,76 @@ impl Evaluator<'_> {
                 NodeKind::BumpSize if role == "bump_map" => {
                     bump_size = Some(ev.float(&item.args[0])?)
                 }
-                _ if role == "image_map" && matches!(item.word.as_str(), "filter" | "transmit") => {
-                    return Err(Diagnostic::error(
-                        format!(
-                            "unsupported: `{}` in an image_map (see-through palette entries or a whole image made see-through are not supported by trace yet)",
-                            item.word
-                        ),
-                        item.word_span,
-                    ));
-                }
                 _ => return Err(ev.unknown_item(item, role)),
             }
             Ok(())
         })?;
-        if !file.to_ascii_lowercase().ends_with(".png") {
-            return Err(Diagnostic::error(
-                format!("unsupported: {role} reads PNG files only"),
-                file_expr.span,
-            ));
-        }
-        let path = self.find_file(file, "image", file_expr.span)?;
-        let cannot = |what: &str, e: &dyn std::fmt::Display| {
-            Diagnostic::error(format!("cannot {what} image {}: {e}", path.display()), file_expr.span)
-        };
-        let decoded = image::ImageReader::open(&path)
-            .map_err(|e| cannot("open", &e))?
-            .decode()
-            .map_err(|e| cannot("decode", &e))?;
-        let has_alpha = decoded.color().has_alpha();
-        let img = decoded.into_rgba16();
-        // An image_map's PNG values are sRGB-encoded: decoded to linear, then into the working
-        // gamma. image_pattern and bump_map take the numbers as they are.
-        let gamma = self.assumed_gamma.unwrap_or(1.0);
+        let (_, picture) = self.read_image(file, file_type, type_span, file_expr.span)?;
+        // An image_map's colours are decoded to linear light (by the scene's `gamma`, else by
+        // the file's own encoding), then put in the working gamma; image_pattern and bump_map
+        // take the numbers as they are, unless the scene gives a `gamma`.
+        let working = self.assumed_gamma.unwrap_or(1.0);
         let colours = role == "image_map";
-        let to_working = |v: u16| {
-            let v = v as f64 / 65535.0;
-            if !colours {
-                return v as f32;
-            }
-            let linear = super::value::srgb_decode(v);
-            (if gamma == 1.0 {
-                linear
-            } else {
-                linear.powf(1.0 / gamma)
-            }) as f32
+        let encoding = gamma.unwrap_or(picture.encoding);
+        let to_working = |v: f32| {
+            let v = f64::from(v);
+            let linear = match (colours, gamma) {
+                (false, None) => return v as f32,
+                (true, None) if encoding == Encoding::AsWorking => return v as f32,
+                _ => encoding.decode(v),
+            };
+            (if working == 1.0 || !colours { linear } else { linear.powf(1.0 / working) }) as f32
         };
-        let pixels = img
-            .pixels()
-            .map(|p| {
-                [
-                    to_working(p.0[0]),
-                    to_working(p.0[1]),
-                    to_working(p.0[2]),
-                    1.0 - p.0[3] as f32 / 65535.0,
-                ]
-            })
+        let mut pixels: Vec<[f32; 5]> = picture
+            .pixels
+            .iter()
+            .map(|p| [to_working(p[0]), to_working(p[1]), to_working(p[2]), 0.0, 1.0 - p[3]])
             .collect();
+        // `filter`/`transmit`: a palette image's entries take them (all, or one by index);
+        // another image adds `all`'s amount to every pixel, as POV-Ray does.
+        for (filter, index, value) in see_through {
+            let channel = if filter { 3 } else { 4 };
+            match (&picture.indices, index) {
+                (Some(indices), index) => {
+                    if let Some((i, span)) = index {
+                        if !(0..256).contains(&i) {
+                            return Err(Diagnostic::error(
+                                format!("palette entry {i} is out of range for this image"),
+                                span,
+                            ));
+                        }
+                    }
+                    for (px, &k) in pixels.iter_mut().zip(indices) {
+                        if index.is_none_or(|(i, _)| i == i64::from(k)) {
+                            px[channel] = value;
+                        }
+                    }
+                }
+                (None, None) => pixels.iter_mut().for_each(|px| px[channel] += value),
+                (None, Some((_, span))) => {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "`{} N, V` sets a palette entry: this image has no palette (use `{} all V`)",
+                            if filter { "filter" } else { "transmit" },
+                            if filter { "filter" } else { "transmit" },
+                        ),
+                        span,
+                    ));
+                }
+            }
+        }
         // `use_index` on a palette image: bump heights are the pixels' indices.
-        let indices = (use_index && role == "bump_map")
-            .then(|| palette_indices(&path))
-            .flatten();
+        let indices = if use_index && role == "bump_map" { picture.indices } else { None };
         let image = ImageMap {
             file: file.clone(),
-            width: img.width(),
-            height: img.height(),
+            width: picture.width,
+            height: picture.height,
             pixels,
             indices,
-            has_alpha,
+            has_alpha: picture.has_alpha,
             once,
-            bilinear,
+            map_type,
+            interpolation,
         };
         let kind = match role {
             "image_map" => ImageRole::Colours,

@@ -10,6 +10,7 @@ mod files;
 mod flow;
 mod function;
 mod heightfield;
+mod images;
 pub mod keywords;
 mod material;
 mod object;

@@ -641,21 +641,30 @@ impl<'a> Evaluator<'a> {
         };
         i += 1;
         let name = self.string(file)?;
-        let png = match kind {
-            Some(w) => w.word == "png",
-            None => name.to_ascii_lowercase().ends_with(".png"),
+        let file_type = match kind {
+            Some(w) => Some(super::images::FileType::from_keyword(&w.word).ok_or_else(|| {
+                Diagnostic::error(
+                    format!("`{}` is not an image format (png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr, hdr)", w.word),
+                    w.span,
+                )
+            })?),
+            None => None,
         };
-        if !png {
-            let at = kind.map_or(file.span, |w| w.span);
-            return Err(Diagnostic::error(
-                "unsupported: only png height fields are read by trace yet",
-                at,
-            ));
-        }
+        let type_span = kind.map_or(file.span, |w| w.span);
         let (smooth, water_level) = self.height_field_options(&items, i)?;
-        let path = self.find_file(&name, "image", file.span)?;
-        let (width, depth, heights) = super::heightfield::read_png(&path)
-            .map_err(|e| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span))?;
+        let (path, picture) = self.read_image(&name, file_type, type_span, file.span)?;
+        let cannot = |e: String| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span);
+        if picture.width < 2 || picture.height < 2 {
+            return Err(cannot(format!("{}×{} pixels: a height field needs at least 2×2", picture.width, picture.height)));
+        }
+        // PNG files go through POV-Ray's PNG reader's own conversions (heightfield.rs).
+        let is_png = file_type.or_else(|| super::images::FileType::from_name(&name))
+            == Some(super::images::FileType::Png);
+        let (width, depth, heights) = if is_png {
+            super::heightfield::read_png(&path).map_err(cannot)?
+        } else {
+            (picture.width, picture.height, picture.heights())
+        };
         Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
             width,
             depth,

@@ -1,10 +1,36 @@
-//! Images as patterns: POV-Ray's planar image mapping (`map_pos`) and pixel lookup, shared by
+//! Images as patterns: POV-Ray's image mappings (`map_pos`) and pixel lookup, shared by
 //! `image_map` (colours), `image_pattern` (a value) and `bump_map` (a normal).
 
 use glam::DVec3;
 
 /// POV-Ray's weights for the grey of a colour (`Colour::greyscale`).
 const GREY: [f32; 3] = [0.297, 0.589, 0.114];
+
+/// How an image wraps around pattern space (`map_type`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MapType {
+    /// `map_type 0`: the unit square of the x-y plane, repeated.
+    Planar,
+    /// `map_type 1`: around the origin, longitude from +x towards +z, latitude by y.
+    Spherical,
+    /// `map_type 2`: around the y axis, one image per unit of height.
+    Cylindrical,
+    /// `map_type 5`: around a torus of major radius 1 about the y axis.
+    Torus,
+}
+
+/// How pixels are blended between their centres (`interpolate`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interpolation {
+    /// No blending (0): the pixel the point falls in.
+    Nearest,
+    /// `interpolate 2`: bilinear, between the four nearest pixels.
+    Bilinear,
+    /// `interpolate 3`: bicubic (Catmull-Rom weights) over the sixteen nearest pixels.
+    Bicubic,
+    /// `interpolate 4`: the four nearest pixels weighted by their inverse squared distance.
+    NormalizedDistance,
+}
 
 /// A decoded image.
 #[derive(Clone, PartialEq)]
@@ -15,19 +41,21 @@ pub struct ImageMap {
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
-    /// Pixels, top row first: rgb and transmit (1 − alpha). For `image_map` the rgb is linear
-    /// (working gamma); for `image_pattern` and `bump_map` it is the file's values, as POV-Ray
-    /// reads them there without gamma.
-    pub pixels: Vec<[f32; 4]>,
+    /// Pixels, top row first: rgb, filter and transmit (1 − alpha, plus the image_map's
+    /// `filter`/`transmit` settings). For `image_map` the rgb is linear (working gamma); for
+    /// `image_pattern` and `bump_map` it is the file's values, as POV-Ray reads them there.
+    pub pixels: Vec<[f32; 5]>,
     /// For `bump_map … use_index` on a palette image: each pixel's palette index, the height
     /// POV-Ray takes then (without interpolation).
     pub indices: Option<Vec<u8>>,
     /// Whether the file has an alpha channel (`use_alpha` reads red otherwise).
     pub has_alpha: bool,
-    /// `once`: no tiling; outside the unit square the image is absent.
+    /// `once`: no tiling; outside the mapped area the image is absent.
     pub once: bool,
-    /// `interpolate 2` (bilinear) or none (nearest pixel).
-    pub bilinear: bool,
+    /// `map_type`.
+    pub map_type: MapType,
+    /// `interpolate`.
+    pub interpolation: Interpolation,
 }
 
 impl std::fmt::Debug for ImageMap {
@@ -36,7 +64,8 @@ impl std::fmt::Debug for ImageMap {
             .field("file", &self.file)
             .field("size", &(self.width, self.height))
             .field("once", &self.once)
-            .field("bilinear", &self.bilinear)
+            .field("map_type", &self.map_type)
+            .field("interpolation", &self.interpolation)
             .finish()
     }
 }
@@ -50,62 +79,178 @@ pub enum ImageUse {
     Alpha,
 }
 
+/// POV-Ray's margin added to image coordinates before the lookup.
+const EDGE: f64 = 1e-10;
+
+/// `v` wrapped into [0, size) (a value that lands on `size` by rounding becomes 0).
+fn wrap(v: f64, size: f64) -> f64 {
+    let mut w = v % size;
+    if w < 0.0 {
+        w += size;
+    }
+    if w >= size { 0.0 } else { w }
+}
+
+/// The angle of (x, z) around the y axis, from +x towards +z, in [0, 2π).
+fn longitude(x: f64, z: f64, len: f64) -> f64 {
+    if z == 0.0 {
+        if x > 0.0 { 0.0 } else { std::f64::consts::PI }
+    } else {
+        let theta = (x / len).acos();
+        if z < 0.0 {
+            std::f64::consts::TAU - theta
+        } else {
+            theta
+        }
+    }
+}
+
 impl ImageMap {
-    /// POV-Ray's planar `map_pos`: the pixel coordinates (x right, y down, in [0, width) ×
-    /// [0, height)) of pattern point `q`, whose unit square of the x-y plane holds the image
-    /// (row 0 at y = 1), tiled unless `once`; `None` off a `once` image.
-    pub fn pixel_coords(&self, q: DVec3) -> Option<(f64, f64)> {
-        const EDGE: f64 = 1e-10;
-        if self.once && !((0.0..=1.0).contains(&q.x) && (0.0..=1.0).contains(&q.y)) {
-            return None;
+    /// The image coordinates (x right, y up, in pixels, before wrapping) of pattern point
+    /// `q` by the map type; `None` where the mapping has no point (off a `once` band, or at
+    /// the centre of a sphere).
+    fn map(&self, q: DVec3) -> Option<(f64, f64)> {
+        let (w, h) = (f64::from(self.width), f64::from(self.height));
+        let outside = |t: f64| self.once && !(0.0..=1.0).contains(&t);
+        match self.map_type {
+            MapType::Planar => {
+                if outside(q.x) || outside(q.y) {
+                    return None;
+                }
+                Some(((q.x * w) % w, (q.y * h) % h))
+            }
+            MapType::Spherical => {
+                let len = q.length();
+                if len == 0.0 {
+                    return None;
+                }
+                let d = q / len;
+                let phi = 0.5 + d.y.asin() / std::f64::consts::PI;
+                let flat = (d.x * d.x + d.z * d.z).sqrt();
+                let theta = if flat == 0.0 {
+                    0.0
+                } else {
+                    longitude(d.x, d.z, flat) / std::f64::consts::TAU
+                };
+                Some((theta * w, phi * h))
+            }
+            MapType::Cylindrical => {
+                if outside(q.y) {
+                    return None;
+                }
+                let v = (q.y * h) % h;
+                let len = q.length();
+                if len == 0.0 {
+                    return None;
+                }
+                let (x, z) = (q.x / len, q.z / len);
+                let flat = (x * x + z * z).sqrt();
+                if flat == 0.0 {
+                    return None;
+                }
+                Some((longitude(x, z, flat) / std::f64::consts::TAU * w, v))
+            }
+            MapType::Torus => {
+                let len = (q.x * q.x + q.z * q.z).sqrt();
+                if len == 0.0 {
+                    return None;
+                }
+                let theta = -longitude(q.x, q.z, len);
+                let x = len - 1.0;
+                let tube = (x * x + q.y * q.y).sqrt();
+                let mut phi = (-x / tube).acos();
+                if q.y > 0.0 {
+                    phi = std::f64::consts::TAU - phi;
+                }
+                let (theta, phi) = (theta / std::f64::consts::TAU, phi / std::f64::consts::TAU);
+                Some((-theta * w, phi * h))
+            }
         }
-        let (w, h) = (self.width as f64, self.height as f64);
-        let mut u = (q.x * w) % w + EDGE;
-        if u < 0.0 {
-            u += w;
-        }
-        let mut y = h - ((q.y * h) % h + EDGE);
-        if y < 0.0 {
-            y += h;
-        } else if y >= h {
-            y -= h;
-        }
-        Some((u, y))
     }
 
-    /// The pixel value at pixel coordinates `(u, y)`: the nearest pixel, or the bilinear blend
-    /// of the four around (tiling, or clamped at the edges of a `once` image).
-    pub fn texel(&self, u: f64, y: f64) -> [f32; 4] {
-        let (iw, ih) = (self.width as i64, self.height as i64);
-        let at = |x: i64, y: i64| {
-            let (x, y) = if self.once {
-                (x.clamp(0, iw - 1), y.clamp(0, ih - 1))
-            } else {
-                (x.rem_euclid(iw), y.rem_euclid(ih))
-            };
-            self.pixels[y as usize * self.width as usize + x as usize]
-        };
-        if self.bilinear {
-            // Pixel centres at integer + ½: blend pixel i−1 and i with the fraction of u + ½.
-            let (x, yy) = (u + 0.5, y + 0.5);
-            let (i, j) = (x.floor() as i64, yy.floor() as i64);
-            let (p, r) = ((x - x.floor()) as f32, (yy - yy.floor()) as f32);
-            let mix = |a: [f32; 4], b: [f32; 4], t: f32| {
-                std::array::from_fn::<f32, 4, _>(|k| a[k] + (b[k] - a[k]) * t)
-            };
-            let top = mix(at(i - 1, j - 1), at(i, j - 1), p);
-            let bottom = mix(at(i - 1, j), at(i, j), p);
-            mix(top, bottom, r)
-        } else {
-            at(
-                (u.floor() as i64).min(iw - 1),
-                (y.floor() as i64).min(ih - 1),
-            )
+    /// POV-Ray's `map_pos`: the pixel coordinates (x right, y down, in [0, width) ×
+    /// [0, height)) of pattern point `q`; `None` off a `once` image or where the mapping has
+    /// no point.
+    pub fn pixel_coords(&self, q: DVec3) -> Option<(f64, f64)> {
+        let (w, h) = (f64::from(self.width), f64::from(self.height));
+        let (u, v) = self.map(q)?;
+        let (u, v) = (u + EDGE, v + EDGE);
+        if self.once && (u >= w || v >= h || u < 0.0 || v < 0.0) {
+            return None;
         }
+        Some((wrap(u, w), wrap(-v, h)))
+    }
+
+    /// The pixel holding pixel coordinates (x, y): wrapped around the image, or clamped to
+    /// the edge of a `once` image.
+    fn pixel(&self, x: f64, y: f64) -> [f32; 5] {
+        let (w, h) = (f64::from(self.width), f64::from(self.height));
+        let index = |v: f64, size: f64, n: u32| {
+            if self.once {
+                if v < 0.0 {
+                    0
+                } else if v >= size {
+                    n as usize - 1
+                } else {
+                    v as usize
+                }
+            } else {
+                wrap(v, size) as usize
+            }
+        };
+        let (i, j) = (index(x, w, self.width), index(y, h, self.height));
+        self.pixels[j * self.width as usize + i]
+    }
+
+    /// The pixel value at pixel coordinates `(u, y)`, blended as `interpolate` says.
+    pub fn texel(&self, u: f64, y: f64) -> [f32; 5] {
+        if self.interpolation == Interpolation::Nearest {
+            return self.pixel(u, y);
+        }
+        // Pixel centres at integer + ½.
+        let (x, yy) = (u + 0.5, y + 0.5);
+        let (i, j) = (x.trunc(), yy.trunc());
+        let (p, q) = (x - i, yy - j);
+        let mut sum = [0.0f64; 5];
+        let mut add = |px: [f32; 5], weight: f64| {
+            for (s, c) in sum.iter_mut().zip(px) {
+                *s += f64::from(c) * weight;
+            }
+        };
+        match self.interpolation {
+            Interpolation::Bicubic => {
+                let (fx, fy) = (cubic_weights(p), cubic_weights(q));
+                for (a, wx) in fx.iter().enumerate() {
+                    for (b, wy) in fy.iter().enumerate() {
+                        add(self.pixel(i + a as f64 - 2.0, j + b as f64 - 2.0), wx * wy);
+                    }
+                }
+            }
+            _ => {
+                let weights = if self.interpolation == Interpolation::Bilinear {
+                    [p * q, (1.0 - p) * q, p * (1.0 - q), (1.0 - p) * (1.0 - q)]
+                } else {
+                    let inverse = |a: f64, b: f64| 1.0 / (a * a + b * b);
+                    let raw = [
+                        inverse(1.0 - p, 1.0 - q),
+                        inverse(p, 1.0 - q),
+                        inverse(1.0 - p, q),
+                        inverse(p, q),
+                    ];
+                    let total: f64 = raw.iter().sum();
+                    raw.map(|r| r / total)
+                };
+                add(self.pixel(i, j), weights[0]);
+                add(self.pixel(i - 1.0, j), weights[1]);
+                add(self.pixel(i, j - 1.0), weights[2]);
+                add(self.pixel(i - 1.0, j - 1.0), weights[3]);
+            }
+        }
+        sum.map(|s| s as f32)
     }
 
     /// The pixel at pattern point `q`, `None` off a `once` image.
-    pub fn at(&self, q: DVec3) -> Option<[f32; 4]> {
+    pub fn at(&self, q: DVec3) -> Option<[f32; 5]> {
         self.pixel_coords(q).map(|(u, y)| self.texel(u, y))
     }
 
@@ -116,7 +261,7 @@ impl ImageMap {
             return 0.0;
         };
         let v = match use_ {
-            ImageUse::Alpha if self.has_alpha => px[3],
+            ImageUse::Alpha if self.has_alpha => px[4],
             ImageUse::Alpha => px[0],
             ImageUse::Colour => grey(px),
         };
@@ -133,7 +278,7 @@ impl ImageMap {
         // The height at pixel coordinates: the palette index (use_index, no interpolation),
         // else the grey.
         let height = |x: f64, y: f64| match &self.indices {
-            Some(indices) if !self.bilinear => {
+            Some(indices) if self.interpolation == Interpolation::Nearest => {
                 let (iw, ih) = (self.width as usize, self.height as usize);
                 let (i, j) = ((x as usize).min(iw - 1), (y as usize).min(ih - 1));
                 f64::from(indices[j * iw + i])
@@ -179,6 +324,17 @@ impl ImageMap {
 }
 
 /// POV-Ray's grey of a pixel.
-fn grey(px: [f32; 4]) -> f32 {
+fn grey(px: [f32; 5]) -> f32 {
     GREY[0] * px[0] + GREY[1] * px[1] + GREY[2] * px[2]
+}
+
+/// POV-Ray's bicubic weights of the four pixels around fraction `p` (Catmull-Rom).
+fn cubic_weights(p: f64) -> [f64; 4] {
+    let q = 1.0 - p;
+    [
+        -0.5 * p * q * q,
+        0.5 * q * (q * (3.0 * p + 1.0) + 1.0),
+        0.5 * p * (p * (3.0 * q + 1.0) + 1.0),
+        -0.5 * q * p * p,
+    ]
 }

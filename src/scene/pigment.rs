@@ -210,14 +210,14 @@ pub(super) fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
     (prev, cur, (v - entries[prev].0) / (entries[cur].0 - entries[prev].0))
 }
 
-/// Planar image map (POV-Ray `planar_image_map`, `image_map`): the image's pixel, fully
+/// An image map (POV-Ray's `image_map`): the image's pixel, fully
 /// transparent white off a `once` image.
 fn image_colour(image: &ImageMap, q: DVec3) -> Colour {
     match image.at(q) {
         Some(px) => Colour {
             rgb: Rgb::new(px[0] as f64, px[1] as f64, px[2] as f64),
-            filter: 0.0,
-            transmit: px[3] as f64,
+            filter: px[3] as f64,
+            transmit: px[4] as f64,
         },
         None => Colour {
             rgb: Rgb::ONE,

@@ -181,6 +181,10 @@ pub enum NodeKind {
     MapEntry,
     ImageMap,
     ImageType,
+    /// `gamma G` or `gamma srgb` in an image_map: the file's encoding.
+    ImageGamma,
+    /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
+    ImageSeeThrough,
     MapType,
     Once,
     Interpolate,
@@ -937,6 +941,8 @@ impl Lower {
             Rule::image_map => NodeKind::ImageMap,
             Rule::image_use => NodeKind::ImageUse,
             Rule::image_type => NodeKind::ImageType,
+            Rule::image_gamma => NodeKind::ImageGamma,
+            Rule::image_see_through => NodeKind::ImageSeeThrough,
             Rule::map_type => NodeKind::MapType,
             Rule::once => NodeKind::Once,
             Rule::interpolate => NodeKind::Interpolate,
@@ -1006,6 +1012,7 @@ impl Lower {
                 | Rule::function_params
                 | Rule::file_word
                 | Rule::spline_kind
+                | Rule::image_type
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
@@ -1313,6 +1320,10 @@ fn is_word(rule: Rule) -> bool {
         rule,
         word | keyword
             | kw_adc_bailout
+            | kw_gamma
+            | kw_image_channel
+            | kw_all
+            | kw_srgb
             | kw_blob
             | kw_function
             | kw_pattern

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Writes the image files of examples/image_formats.rt into examples/images/, one per format
+POV-Ray reads, made from examples/trace_logo.png (64x48) and examples/heights/hills8.png:
+logo.jpg (4:2:0 JPEG), logo.gif (non-interlaced, 256-colour palette), logo.tga, logo.ppm,
+logo.bmp, logo.tif, grey.pgm, hills.gif (palette height field: the index is the height),
+hills16.pgm (16-bit grey height field), ramp.hdr (Radiance RGBE, values up to 3) and
+sky.exr (a trace render of examples/mirrors.rt at 64x48, float channels).
+
+Usage: python3 scripts/make_images.py   (needs Pillow; the EXR needs a built trace)
+"""
+import math, os, struct, subprocess
+
+from PIL import Image
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+OUT = os.path.join(ROOT, "examples", "images")
+
+
+def rgbe(r, g, b):
+    m = max(r, g, b)
+    if m < 1e-32:
+        return bytes(4)
+    e = math.frexp(m)[1]
+    s = 256.0 / 2.0 ** e
+    return bytes([int(r * s), int(g * s), int(b * s), e + 128])
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    out = lambda name: os.path.join(OUT, name)
+    logo = Image.open(os.path.join(ROOT, "examples", "trace_logo.png"))
+    logo.save(out("logo.jpg"), quality=90)
+    logo.convert("P", palette=Image.ADAPTIVE, colors=256).save(out("logo.gif"), interlace=False)
+    logo.save(out("logo.tga"))
+    logo.save(out("logo.ppm"))
+    logo.save(out("logo.bmp"))
+    logo.save(out("logo.tif"))
+    logo.convert("L").save(out("grey.pgm"))
+    hills = Image.open(os.path.join(ROOT, "examples", "heights", "hills8.png"))
+    hills.convert("P").save(out("hills.gif"), interlace=False)
+    hills16 = Image.open(os.path.join(ROOT, "examples", "heights", "hills16.png"))
+    w, h = hills16.size
+    data = b"".join(struct.pack(">H", hills16.getpixel((x, y))) for y in range(h) for x in range(w))
+    with open(out("hills16.pgm"), "wb") as f:
+        f.write(b"P5\n%d %d\n65535\n" % (w, h) + data)
+    w, h = 64, 48
+    pixels = b"".join(
+        rgbe(3.0 * x / w, 2.0 * y / h, 0.5 + 0.5 * math.sin(x * 0.3 + y * 0.2))
+        for y in range(h)
+        for x in range(w)
+    )
+    with open(out("ramp.hdr"), "wb") as f:
+        f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w) + pixels)
+    trace = os.path.join(ROOT, "target", "release", "trace")
+    if os.path.exists(trace):
+        subprocess.run([trace, os.path.join(ROOT, "examples", "mirrors.rt"), "-o", out("sky.exr"),
+                        "--width", "64", "--height", "48", "--quiet"], check=True)
+
+
+if __name__ == "__main__":
+    main()

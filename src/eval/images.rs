@@ -1,0 +1,391 @@
+//! Image files as POV-Ray 3.7 reads them, for `image_map`, `image_pattern`, `bump_map` and
+//! `height_field`: the formats it names (`png`, `jpeg`, `gif`, `tga`, `ppm`, `pgm`, `tiff`,
+//! `bmp`, `exr`, `hdr`, and `sys`), found from the keyword or the file's extension, and
+//! each format's own idea of how its numbers are encoded when the scene gives no `gamma`
+//! (checked against POV-Ray's readers and renders):
+//!
+//! - PNG: an `sRGB` chunk means sRGB, a `gAMA` chunk a power law, neither sRGB;
+//! - JPEG, GIF, TGA and BMP: sRGB;
+//! - PPM, PGM and TIFF: no encoding known, the numbers are taken as working-gamma values;
+//! - HDR and EXR: linear.
+//!
+//! Decoding uses the image crate with only these formats enabled; palette indices (a
+//! palette image's height field and `use_index`) come from the png and gif decoders.
+
+use std::path::Path;
+
+/// The largest image trace reads (pixels): 8192 × 8192.
+const MAX_PIXELS: u64 = 1 << 26;
+
+/// An image file format, as a scene names it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum FileType {
+    Png,
+    Jpeg,
+    Gif,
+    Tga,
+    Ppm,
+    Pgm,
+    Tiff,
+    Bmp,
+    Exr,
+    Hdr,
+    /// `sys`: POV-Ray's platform format (none on Unix; trace reads the file's own format).
+    Sys,
+    /// `iff` (Amiga) and `pot` (Fractint): named by POV-Ray, not read by trace.
+    Unread(&'static str),
+}
+
+impl FileType {
+    /// The format a keyword names.
+    pub(super) fn from_keyword(word: &str) -> Option<FileType> {
+        Some(match word {
+            "png" => FileType::Png,
+            "jpeg" => FileType::Jpeg,
+            "gif" => FileType::Gif,
+            "tga" => FileType::Tga,
+            "ppm" => FileType::Ppm,
+            "pgm" => FileType::Pgm,
+            "tiff" => FileType::Tiff,
+            "bmp" => FileType::Bmp,
+            "exr" => FileType::Exr,
+            "hdr" => FileType::Hdr,
+            "sys" => FileType::Sys,
+            "iff" => FileType::Unread("iff"),
+            "pot" => FileType::Unread("pot"),
+            _ => return None,
+        })
+    }
+
+    /// The format POV-Ray infers from a file name's extension (any case); `None` for an
+    /// extension it does not know. A name without an extension is PNG (POV-Ray takes its
+    /// output format, PNG unless told otherwise).
+    pub(super) fn from_name(name: &str) -> Option<FileType> {
+        let Some((stem, ext)) = name.rsplit_once('.') else {
+            return Some(FileType::Png);
+        };
+        if stem.is_empty() && !name.contains('/') || ext.contains('/') {
+            return Some(FileType::Png);
+        }
+        Some(match ext.to_ascii_lowercase().as_str() {
+            "png" => FileType::Png,
+            "jpg" | "jpeg" => FileType::Jpeg,
+            "gif" => FileType::Gif,
+            "tga" => FileType::Tga,
+            "ppm" => FileType::Ppm,
+            "pgm" => FileType::Pgm,
+            "tif" | "tiff" => FileType::Tiff,
+            "bmp" => FileType::Bmp,
+            "exr" => FileType::Exr,
+            "hdr" => FileType::Hdr,
+            "iff" => FileType::Unread("iff"),
+            _ => return None,
+        })
+    }
+
+    /// The extensions POV-Ray tries after a name that is not found as given.
+    pub(super) fn extensions(self) -> &'static [&'static str] {
+        match self {
+            FileType::Png => &[".png"],
+            FileType::Jpeg => &[".jpg", ".jpeg"],
+            FileType::Gif => &[".gif"],
+            FileType::Tga => &[".tga"],
+            FileType::Ppm => &[".ppm"],
+            FileType::Pgm => &[".pgm"],
+            FileType::Tiff => &[".tif", ".tiff"],
+            FileType::Bmp => &[".bmp"],
+            FileType::Exr => &[".exr"],
+            FileType::Hdr => &[".hdr"],
+            FileType::Sys | FileType::Unread(_) => &[],
+        }
+    }
+
+    fn format(self) -> Option<image::ImageFormat> {
+        use image::ImageFormat as F;
+        Some(match self {
+            FileType::Png => F::Png,
+            FileType::Jpeg => F::Jpeg,
+            FileType::Gif => F::Gif,
+            FileType::Tga => F::Tga,
+            FileType::Ppm | FileType::Pgm => F::Pnm,
+            FileType::Tiff => F::Tiff,
+            FileType::Bmp => F::Bmp,
+            FileType::Exr => F::OpenExr,
+            FileType::Hdr => F::Hdr,
+            FileType::Sys | FileType::Unread(_) => return None,
+        })
+    }
+}
+
+/// How a file's numbers encode light, when the scene does not say (`gamma G` does).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Encoding {
+    /// The sRGB transfer function.
+    Srgb,
+    /// A power law: linear = value^g (g is the decoding exponent, 2.2 for most files).
+    Power(f64),
+    /// Linear light (HDR, EXR): converted to the working gamma like any other.
+    Linear,
+    /// Unknown (PPM, PGM, TIFF): POV-Ray takes the numbers as working-gamma values.
+    AsWorking,
+}
+
+impl Encoding {
+    /// Linear light from a file value.
+    pub(super) fn decode(self, v: f64) -> f64 {
+        match self {
+            Encoding::Srgb => super::value::srgb_decode(v),
+            Encoding::Power(g) => v.max(0.0).powf(g),
+            Encoding::Linear | Encoding::AsWorking => v,
+        }
+    }
+}
+
+/// A decoded image file: its pixels as the file holds them.
+pub(super) struct Picture {
+    pub width: u32,
+    pub height: u32,
+    /// Red, green, blue and alpha (1 opaque), top row first: 0 to 1 for integer files, as
+    /// stored for floating-point ones.
+    pub pixels: Vec<[f32; 4]>,
+    /// Each pixel's palette index, for palette PNG and GIF files.
+    pub indices: Option<Vec<u8>>,
+    /// A grey file (one channel, with or without alpha).
+    pub grey: bool,
+    /// More than 8 bits per integer channel.
+    pub deep: bool,
+    /// Whether the file has an alpha channel (or a transparent palette entry).
+    pub has_alpha: bool,
+    /// The file's own encoding.
+    pub encoding: Encoding,
+    /// An interlaced GIF (POV-Ray 3.7 reads its rows in the file's order, not de-interlaced).
+    pub interlaced: bool,
+}
+
+/// Reads `path` as a file of type `ty`.
+pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
+    if let FileType::Unread(word) = ty {
+        return Err(format!("`{word}` images are not read by trace (PNG, JPEG, GIF, TGA, PPM, PGM, TIFF, BMP, EXR and HDR are)"));
+    }
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut reader = image::ImageReader::new(std::io::BufReader::new(file));
+    match ty.format() {
+        Some(format) => reader.set_format(format),
+        None => reader = reader.with_guessed_format().map_err(|e| e.to_string())?,
+    }
+    let format = reader.format();
+    let (w, h) = reader.into_dimensions().map_err(|e| e.to_string())?;
+    if u64::from(w) * u64::from(h) > MAX_PIXELS {
+        return Err(format!("{w}×{h} pixels; trace reads images up to {MAX_PIXELS} pixels"));
+    }
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let mut reader = image::ImageReader::new(std::io::BufReader::new(file));
+    if let Some(format) = format {
+        reader.set_format(format);
+    }
+    let mut limits = image::Limits::default();
+    limits.max_alloc = Some(MAX_PIXELS * 16);
+    reader.limits(limits);
+    let decoded = reader.decode().map_err(|e| e.to_string())?;
+    use image::DynamicImage as D;
+    let grey = matches!(decoded, D::ImageLuma8(_) | D::ImageLumaA8(_) | D::ImageLuma16(_) | D::ImageLumaA16(_));
+    let deep = matches!(
+        decoded,
+        D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_)
+    );
+    let mut has_alpha = decoded.color().has_alpha();
+    let mut pixels: Vec<[f32; 4]> = decoded.into_rgba32f().pixels().map(|p| p.0).collect();
+    match format {
+        Some(image::ImageFormat::Hdr) => pixels.iter_mut().for_each(rgbe_midpoint),
+        // POV-Ray reads an EXR file's channels as half floats, whatever the file holds.
+        Some(image::ImageFormat::OpenExr) => {
+            for p in &mut pixels {
+                *p = p.map(|c| half::f16::from_f32(c).to_f32());
+            }
+        }
+        _ => {}
+    }
+    let mut encoding = match format {
+        Some(image::ImageFormat::Pnm) | Some(image::ImageFormat::Tiff) => Encoding::AsWorking,
+        Some(image::ImageFormat::OpenExr) | Some(image::ImageFormat::Hdr) => Encoding::Linear,
+        _ => Encoding::Srgb,
+    };
+    let (mut indices, mut interlaced) = (None, false);
+    match format {
+        Some(image::ImageFormat::Png) => {
+            let (png_encoding, png_indices) = png_details(path)?;
+            encoding = png_encoding;
+            indices = png_indices;
+        }
+        Some(image::ImageFormat::Gif) => {
+            let (gif_indices, transparent, gif_interlaced) = gif_indices(path)?;
+            indices = Some(gif_indices);
+            has_alpha |= transparent;
+            interlaced = gif_interlaced;
+        }
+        _ => {}
+    }
+    Ok(Picture {
+        width: w,
+        height: h,
+        pixels,
+        indices,
+        grey,
+        deep,
+        has_alpha,
+        encoding,
+        interlaced,
+    })
+}
+
+/// POV-Ray's decoding of a Radiance RGBE pixel: the middle of the mantissa's step,
+/// (m + 0.5) × 2^(e − 136), where the decoder gives m × 2^(e − 136). The shared exponent is
+/// found again from the largest channel, whose mantissa lies in [128, 256).
+fn rgbe_midpoint(p: &mut [f32; 4]) {
+    let largest = f64::from(p[0].max(p[1]).max(p[2]));
+    if largest > 0.0 {
+        let step = (largest.log2().floor() - 7.0).exp2();
+        for c in &mut p[..3] {
+            *c = (f64::from(*c) + 0.5 * step) as f32;
+        }
+    }
+}
+
+/// A PNG's encoding (its `sRGB` or `gAMA` chunk) and, for a palette file, each pixel's index.
+fn png_details(path: &Path) -> Result<(Encoding, Option<Vec<u8>>), String> {
+    let file = std::io::BufReader::new(std::fs::File::open(path).map_err(|e| e.to_string())?);
+    let mut decoder = png::Decoder::new(file);
+    decoder.set_transformations(png::Transformations::IDENTITY);
+    let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
+    let info = reader.info();
+    let encoding = if info.srgb.is_some() {
+        Encoding::Srgb
+    } else if let Some(g) = info.source_gamma {
+        Encoding::Power(1.0 / f64::from(g.into_value()))
+    } else {
+        Encoding::Srgb
+    };
+    if info.color_type != png::ColorType::Indexed {
+        return Ok((encoding, None));
+    }
+    let size = reader.output_buffer_size().ok_or("the image is too large")?;
+    let mut buf = vec![0; size];
+    let out = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
+    let bits = out.bit_depth as usize;
+    let (w, h) = (out.width as usize, out.height as usize);
+    let mut indices = Vec::with_capacity(w * h);
+    for row in buf.chunks(out.line_size).take(h) {
+        for x in 0..w {
+            let bit = x * bits;
+            let shift = 8 - bits - bit % 8;
+            indices.push((row[bit / 8] >> shift) & ((1u16 << bits) - 1) as u8);
+        }
+    }
+    Ok((encoding, Some(indices)))
+}
+
+/// A GIF's first frame as palette indices (top row first), whether it has a transparent
+/// index, and whether it is interlaced.
+fn gif_indices(path: &Path) -> Result<(Vec<u8>, bool, bool), String> {
+    let file = std::io::BufReader::new(std::fs::File::open(path).map_err(|e| e.to_string())?);
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::Indexed);
+    let mut decoder = options.read_info(file).map_err(|e| e.to_string())?;
+    let (w, h) = (usize::from(decoder.width()), usize::from(decoder.height()));
+    let frame = decoder.next_frame_info().map_err(|e| e.to_string())?.ok_or("the file holds no image")?;
+    let (left, top) = (usize::from(frame.left), usize::from(frame.top));
+    let fw = usize::from(frame.width);
+    let (transparent, interlaced) = (frame.transparent.is_some(), frame.interlaced);
+    let mut buffer = vec![0u8; decoder.buffer_size()];
+    decoder.read_into_buffer(&mut buffer).map_err(|e| e.to_string())?;
+    // The frame sits at its offset on the logical screen; the rest is index 0.
+    let mut indices = vec![0u8; w * h];
+    for (y, row) in buffer.chunks(fw.max(1)).enumerate() {
+        for (x, &i) in row.iter().enumerate() {
+            if let Some(p) = indices.get_mut((top + y) * w + left + x).filter(|_| left + x < w) {
+                *p = i;
+            }
+        }
+    }
+    Ok((indices, transparent, interlaced))
+}
+
+impl Picture {
+    /// POV-Ray's 16-bit heights of the image, bottom row first (its z = 0 is the image's last
+    /// row): a palette image's index × 256; a grey image's grey × 65535; a colour image of
+    /// more than 8 bits its grey (0.297 r + 0.589 g + 0.114 b) × 65535; any other colour
+    /// image red × 256 + green in bytes ((r × 256 + g) × 255, r and g from 0 to 1).
+    pub(super) fn heights(&self) -> Vec<u16> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut heights = vec![0u16; w * h];
+        for y in 0..h {
+            let z = h - 1 - y;
+            for x in 0..w {
+                let i = y * w + x;
+                let [r, g, b, _] = self.pixels[i];
+                heights[z * w + x] = if let Some(indices) = &self.indices {
+                    u16::from(indices[i]) * 256
+                } else if self.grey {
+                    (r * 65535.0f32) as u16
+                } else if self.deep {
+                    super::heightfield::grey16([r, g, b].map(|c| (c * 65535.0).round() as u16))
+                } else {
+                    ((f64::from(r) * 256.0 + f64::from(g)) * 255.0) as u16
+                };
+            }
+        }
+        heights
+    }
+}
+
+impl super::Evaluator<'_> {
+    /// Finds and reads the image file `name`, of type `ty` (named by a keyword at
+    /// `type_span`) or else inferred from the name. Like POV-Ray, a name not found as given
+    /// is tried with the format's extensions.
+    pub(super) fn read_image(
+        &mut self,
+        name: &str,
+        ty: Option<FileType>,
+        type_span: crate::diag::Span,
+        name_span: crate::diag::Span,
+    ) -> super::Result<(std::path::PathBuf, Picture)> {
+        use crate::diag::Diagnostic;
+        let ty = match ty.or_else(|| FileType::from_name(name)) {
+            Some(ty) => ty,
+            None => {
+                return Err(Diagnostic::error(
+                    format!("cannot tell the format of image \"{name}\" from its extension"),
+                    name_span,
+                )
+                .with_note("name it before the file: png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr or hdr"));
+            }
+        };
+        if let FileType::Unread(word) = ty {
+            return Err(Diagnostic::error(
+                format!("unsupported: `{word}` images (trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr)"),
+                type_span,
+            ));
+        }
+        let path = match self.sandbox.find(name) {
+            Err(super::sandbox::Refusal::NotFound) => ty
+                .extensions()
+                .iter()
+                .find_map(|ext| self.sandbox.find(&format!("{name}{ext}")).ok()),
+            found => found.ok(),
+        };
+        let path = match path {
+            Some(path) => path,
+            None => self.find_file(name, "image", name_span)?,
+        };
+        let picture = read(&path, ty).map_err(|e| {
+            Diagnostic::error(format!("cannot read image {}: {e}", path.display()), name_span)
+        })?;
+        if picture.interlaced {
+            self.warn(Diagnostic::warning(
+                "an interlaced GIF: trace reads it as the picture it is; POV-Ray 3.7 reads its rows in the file's interlaced order, a scrambled picture",
+                name_span,
+            ));
+        }
+        Ok((path, picture))
+    }
+}
