@@ -623,6 +623,7 @@ const SUPPORTED: &[&str] = &[
     "exp",
     "exponent",
     "exr",
+    "exterior",
     "face_indices",
     "facets",
     "fade_color",
@@ -682,6 +683,7 @@ const SUPPORTED: &[&str] = &[
     "isosurface",
     "jitter",
     "jpeg",
+    "julia",
     "julia_fractal",
     "lambda",
     "lathe",
@@ -695,7 +697,9 @@ const SUPPORTED: &[&str] = &[
     "log",
     "look_at",
     "macro",
+    "magnet",
     "major_radius",
+    "mandel",
     "map_type",
     "marble",
     "material",
@@ -723,6 +727,8 @@ const SUPPORTED: &[&str] = &[
     "normal_indices",
     "normal_map",
     "normal_vectors",
+    "number_of_sides",
+    "number_of_tiles",
     "number_of_waves",
     "object",
     "octaves",
@@ -742,6 +748,7 @@ const SUPPORTED: &[&str] = &[
     "parallel",
     "parametric",
     "pattern",
+    "pavement",
     "perspective",
     "pgm",
     "phase",
@@ -850,6 +857,7 @@ const SUPPORTED: &[&str] = &[
     "threshold",
     "tiff",
     "tightness",
+    "tiling",
     "tolerance",
     "toroidal",
     "torus",
@@ -953,8 +961,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "density_file" | "julia" | "magnet" | "mandel"
-        | "pavement" | "tiling" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
+        "density_file" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "no_image" | "no_reflection" | "double_illuminate" | "clipped_by"
@@ -971,7 +978,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "dispersion_samples" | "eccentricity" | "expand_thresholds" | "extinction" | "gather"
         | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
         | "no_radiosity" | "pass_through" | "pretrace_end" | "pretrace_start" | "samples"
-        | "save_file" | "spacing" | "steps" | "target" | "exterior" | "arc_angle"
+        | "save_file" | "spacing" | "steps" | "target" | "arc_angle"
         | "falloff_angle" | "brightness" | "count" | "distance_maximum" | "error_bound"
         | "gray_threshold" | "low_error_factor" | "maximum_reuse" | "minimum_reuse"
         | "nearest_count" | "recursion_limit" => {
@@ -981,7 +988,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude" | "number_of_sides" | "number_of_tiles"
+        "altitude"
         | "ratio"
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"

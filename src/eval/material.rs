@@ -4,7 +4,9 @@ use super::value::{MaterialValue, colour5, to_colour};
 use super::images::{Encoding, FileType};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
+use crate::pattern::fractal::{self, Fractal, FractalKind};
 use crate::pattern::image::{ImageUse, Interpolation, MapType};
+use crate::pattern::pavement;
 use crate::noise;
 use crate::pattern::{BlackHole, Mapping, MappingWarp};
 use crate::ir::{
@@ -41,6 +43,15 @@ enum ImageRole {
     Pattern(ImageUse),
     /// `bump_map`: heights, with the `bump_size` given inside.
     Bumps(Option<f64>),
+}
+
+/// The checks POV-Ray makes when a pattern's block ends: a `pavement`'s sides, tiles and
+/// variant (its options then reduced as POV-Ray reduces them).
+fn check_pattern(pattern: &mut Pattern, span: crate::diag::Span) -> Result<()> {
+    if let PatternKind::Pavement(pv) = &mut pattern.kind {
+        *pv = pv.checked().map_err(|e| Diagnostic::error(e.to_string(), span))?;
+    }
+    Ok(())
 }
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
@@ -150,6 +161,9 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
+        if let Some(m) = &mut texture.map {
+            check_pattern(&mut m.pattern, node.word_span)?;
+        }
         let Some(m) = &mut texture.map else {
             let stray = list.first().map(|(_, s)| *s).or(map.map(|(_, s)| s));
             return match stray {
@@ -355,6 +369,9 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
+        if let PigmentKind::Pattern(p) = &mut pigment.kind {
+            check_pattern(&mut p.pattern, node.word_span)?;
+        }
         if let Some((m, map_span)) = map {
             match &mut pigment.kind {
                 PigmentKind::Pattern(p) if p.pattern.kind.list_len().is_none() => p.map = m,
@@ -594,6 +611,58 @@ impl Evaluator<'_> {
                 };
                 return Ok((kind, &args[1..]));
             }
+            "tiling" => {
+                let e = first()?;
+                let n = pavement::parameter_byte(self.float(e)?);
+                if !(1..=27).contains(&n) {
+                    return Err(Diagnostic::error("tiling number must be between 1 and 27", e.span));
+                }
+                return Ok((PatternKind::Tiling(n), &args[1..]));
+            }
+            "mandel" => {
+                let n = self.float(first()?)? as i32;
+                let f = Fractal::new(FractalKind::Mandel, n);
+                return Ok((PatternKind::Fractal(Box::new(f)), &args[1..]));
+            }
+            "julia" => {
+                let c = self.uv(first()?)?.to_array();
+                let Some(n) = args.get(1) else {
+                    return Err(Diagnostic::error("`julia` needs its constant and a number of iterations: julia <0.3, 0.5>, 30", item.span));
+                };
+                let f = Fractal::new(FractalKind::Julia { c }, self.float(n)? as i32);
+                return Ok((PatternKind::Fractal(Box::new(f)), &args[2..]));
+            }
+            "magnet" => {
+                // `magnet 1|2 mandel N` or `magnet 1|2 julia <c>, N` (the second word reaches
+                // here as a name).
+                let kind_expr = first()?;
+                let kind = self.float(kind_expr)? as i64;
+                let Some(form) = item.children.iter().find(|c| c.kind == NodeKind::MagnetForm) else {
+                    return Err(Diagnostic::error(
+                        "invalid magnet pattern: `magnet 1 mandel N` or `magnet 1 julia <c>, N` (types 1 and 2)",
+                        item.span,
+                    ));
+                };
+                let which = form.word.as_str();
+                if kind != 1 && kind != 2 {
+                    return Err(Diagnostic::error(
+                        format!("invalid magnet-{which} pattern type: valid types are 1 and 2"),
+                        kind_expr.span,
+                    ));
+                }
+                let (julia, rest) = if which == "julia" {
+                    let c = args.get(1).ok_or_else(|| Diagnostic::error("`magnet … julia` needs its constant: magnet 1 julia <0.3, 0.5>, 30", item.span))?;
+                    (Some(self.uv(c)?.to_array()), 2)
+                } else {
+                    (None, 1)
+                };
+                let Some(n) = args.get(rest) else {
+                    return Err(Diagnostic::error("`magnet` needs a number of iterations after it", item.span));
+                };
+                let f = Fractal::new(FractalKind::Magnet { kind: kind as u8, julia }, self.float(n)? as i32);
+                return Ok((PatternKind::Fractal(Box::new(f)), &args[rest + 1..]));
+            }
+            "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
             "agate" => PatternKind::Agate { turb: 1.0 },
             "average" => PatternKind::Average,
             "boxed" => PatternKind::Boxed,
@@ -805,8 +874,9 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
-        let normal =
+        let mut normal =
             normal.ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))?;
+        check_pattern(&mut normal.pattern, node.word_span)?;
         if normal.pattern.kind == PatternKind::Average && normal.map.is_none() {
             return Err(Diagnostic::error(
                 "an average of normals needs a normal_map",
@@ -911,6 +981,75 @@ impl Evaluator<'_> {
                 }
             }
             "coords" | "size" => return Err(misplaced("facets")),
+            "exponent" => {
+                let e = arg()?;
+                let v = self.float(e)? as i32;
+                match &mut pattern.kind {
+                    PatternKind::Fractal(f) if !matches!(f.kind, FractalKind::Magnet { .. }) => {
+                        if !(fractal::MIN_EXPONENT..=fractal::MAX_EXPONENT).contains(&v) {
+                            self.warn(Diagnostic::warning(
+                                "supported exponents are 2 to 33: using the default exponent 2",
+                                e.span,
+                            ));
+                        }
+                        f.exponent = v;
+                    }
+                    _ => return Err(misplaced("mandel or julia")),
+                }
+            }
+            "interior" | "exterior" => {
+                let interior = item.word == "interior";
+                let e = arg()?;
+                let v = self.float(e)?;
+                match &mut pattern.kind {
+                    PatternKind::Pavement(pv) if interior => pv.interior = pavement::parameter_byte(v),
+                    PatternKind::Pavement(pv) => pv.exterior = pavement::parameter_byte(v),
+                    PatternKind::Fractal(f) => {
+                        let (kind, max) = if interior {
+                            ("interior", fractal::MAX_INTERIOR_TYPE)
+                        } else {
+                            ("exterior", fractal::MAX_EXTERIOR_TYPE)
+                        };
+                        let t = v as i32;
+                        if !(0..=max).contains(&t) {
+                            return Err(Diagnostic::error(
+                                format!("invalid fractal pattern {kind} type: valid types are 0 to {max}"),
+                                e.span,
+                            ));
+                        }
+                        let Some(factor) = item.args.get(1) else {
+                            return Err(Diagnostic::error(
+                                format!("`{kind}` takes a type and a factor: {kind} {t}, 1"),
+                                item.span,
+                            ));
+                        };
+                        let factor = self.float(factor)?;
+                        if interior {
+                            f.interior = (t, factor);
+                        } else {
+                            f.exterior = (t, factor);
+                        }
+                    }
+                    _ => return Err(misplaced("mandel, julia, magnet or pavement")),
+                }
+            }
+            "number_of_sides" | "number_of_tiles" | "pattern" => {
+                let v = pavement::parameter_byte(self.float(arg()?)?);
+                let PatternKind::Pavement(pv) = &mut pattern.kind else {
+                    return Err(misplaced("pavement"));
+                };
+                match item.word.as_str() {
+                    "number_of_sides" => pv.sides = v,
+                    "number_of_tiles" => pv.tiles = v,
+                    _ => pv.pattern = v,
+                }
+            }
+            "form" if matches!(pattern.kind, PatternKind::Pavement(_)) => {
+                let v = pavement::parameter_byte(self.float(arg()?)?);
+                if let PatternKind::Pavement(pv) = &mut pattern.kind {
+                    pv.form = v;
+                }
+            }
             "form" | "metric" | "offset" | "solid" => {
                 let PatternKind::Crackle(c) = &mut pattern.kind else {
                     return Err(misplaced("crackle"));

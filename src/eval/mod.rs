@@ -1343,8 +1343,11 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
                 "camera sky is parallel to the viewing direction; right kept",
                 c.span,
             ));
+            // POV-Ray keeps the direction of `right`, with the same handedness rule.
+            let r = right.normalize_or_zero();
             direction = dl * d;
-            up = ul * d.cross(right.normalize_or_zero()).normalize_or_zero();
+            right = handedness * rl * r;
+            up = ul * d.cross(r);
         } else {
             let r = r.normalize();
             direction = dl * d;

@@ -963,7 +963,7 @@ impl<'a> Evaluator<'a> {
     }
 
     /// A 2-D point `<a, b>` (a float is `<f, f>`).
-    fn uv(&mut self, e: &Expr) -> Result<DVec2> {
+    pub(super) fn uv(&mut self, e: &Expr) -> Result<DVec2> {
         match self.eval(e)? {
             Value::Float(f) => Ok(DVec2::splat(f)),
             Value::Vector(v) if v.len == 2 => Ok(DVec2::new(v.c[0], v.c[1])),

@@ -12,7 +12,10 @@
 //! here or in a file of this module), and the keyword's arm in the evaluator's pattern table
 //! (`eval::material::pattern_kind`).
 
+pub mod fractal;
 pub mod image;
+pub mod pavement;
+pub mod tiling;
 
 use crate::noise::{self, Turbulence, dnoise, noise, trunc_i32};
 use glam::DVec3;
@@ -466,6 +469,9 @@ impl Pattern {
                 if v > 1.0 { v % 1.0 } else { v }
             }
             PatternKind::Boxed => clip(x.abs().max(y.abs().max(z.abs()))),
+            PatternKind::Fractal(f) => f.value([x, y, z]),
+            PatternKind::Pavement(pv) => pv.value([x, y, z]),
+            PatternKind::Tiling(n) => tiling::tiling(i32::from(*n), [x, y, z]),
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
             PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
             PatternKind::Cells => {
@@ -723,6 +729,12 @@ pub enum PatternKind {
     /// `pigment_pattern { … }`: the grey of a pigment's colour (0.297 R + 0.589 G + 0.114 B),
     /// the pigment evaluated as a function of the point.
     Pigment(crate::func::NativeRef),
+    /// `mandel`, `julia`, `magnet`: escape-time fractals in the x-y plane.
+    Fractal(Box<fractal::Fractal>),
+    /// `pavement`: tilings of the x-z plane by polyominoes, polyiamonds and polyhexes.
+    Pavement(pavement::Pavement),
+    /// `tiling N` (1 to 27): POV-Ray's periodic and Penrose tilings of the x-z plane.
+    Tiling(u8),
 }
 
 /// `crackle`'s parameters.

@@ -183,6 +183,8 @@ pub enum NodeKind {
     ImageType,
     /// `gamma G` or `gamma srgb` in an image_map: the file's encoding.
     ImageGamma,
+    /// `mandel` or `julia` after `magnet N`.
+    MagnetForm,
     /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
     ImageSeeThrough,
     MapType,
@@ -942,6 +944,7 @@ impl Lower {
             Rule::image_use => NodeKind::ImageUse,
             Rule::image_type => NodeKind::ImageType,
             Rule::image_gamma => NodeKind::ImageGamma,
+            Rule::magnet_form => NodeKind::MagnetForm,
             Rule::image_see_through => NodeKind::ImageSeeThrough,
             Rule::map_type => NodeKind::MapType,
             Rule::once => NodeKind::Once,
@@ -1013,6 +1016,7 @@ impl Lower {
                 | Rule::file_word
                 | Rule::spline_kind
                 | Rule::image_type
+                | Rule::magnet_form
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
@@ -1321,6 +1325,7 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_gamma
+            | fractal_side
             | kw_image_channel
             | kw_all
             | kw_srgb
