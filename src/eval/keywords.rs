@@ -614,6 +614,7 @@ const SUPPORTED: &[&str] = &[
     "dist_exp",
     "distance",
     "div",
+    "double_illuminate",
     "else",
     "elseif",
     "emission",
@@ -653,6 +654,7 @@ const SUPPORTED: &[&str] = &[
     "function",
     "gamma",
     "gif",
+    "global_lights",
     "global_settings",
     "gradient",
     "granite",
@@ -688,6 +690,7 @@ const SUPPORTED: &[&str] = &[
     "lambda",
     "lathe",
     "leopard",
+    "light_group",
     "light_source",
     "linear_spline",
     "linear_sweep",
@@ -696,6 +699,7 @@ const SUPPORTED: &[&str] = &[
     "location",
     "log",
     "look_at",
+    "looks_like",
     "macro",
     "magnet",
     "major_radius",
@@ -721,6 +725,9 @@ const SUPPORTED: &[&str] = &[
     "natural_spline",
     "no",
     "no_bump_scale",
+    "no_image",
+    "no_radiosity",
+    "no_reflection",
     "no_shadow",
     "noise_generator",
     "normal",
@@ -771,6 +778,7 @@ const SUPPORTED: &[&str] = &[
     "precompute",
     "prism",
     "prod",
+    "projected_through",
     "quadratic_spline",
     "quadric",
     "quartic",
@@ -950,13 +958,12 @@ pub fn reason(word: &str) -> Option<&'static str> {
     const LATER: &str = "not supported by trace yet";
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
-        "polynomial"
-        | "light_group" | "lemon" => "this shape is not supported by trace yet",
+        "polynomial" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
         "dispersion" | "caustics" => "this interior item is outside trace's subset",
         "albedo" => "this finish item is outside trace's subset",
-        "looks_like" | "projected_through" | "media_interaction" | "media_attenuation" => {
+        "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
         }
         "density_map" => LATER,
@@ -964,7 +971,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "density_file" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "no_image" | "no_reflection" | "double_illuminate" | "clipped_by"
+        "clipped_by"
         | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
         "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
         "render" | "statistics" => {
@@ -977,7 +984,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "aa_level" | "aa_threshold" | "always_sample" | "anisotropy" | "autostop" | "collect"
         | "dispersion_samples" | "eccentricity" | "expand_thresholds" | "extinction" | "gather"
         | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
-        | "no_radiosity" | "pass_through" | "pretrace_end" | "pretrace_start" | "samples"
+        | "pass_through" | "pretrace_end" | "pretrace_start" | "samples"
         | "save_file" | "spacing" | "steps" | "target" | "arc_angle"
         | "falloff_angle" | "brightness" | "count" | "distance_maximum" | "error_bound"
         | "gray_threshold" | "low_error_factor" | "maximum_reuse" | "minimum_reuse"
@@ -1003,7 +1010,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "texture_list" | "uv_indices" | "hierarchy" => {
             "this object item is not supported by trace yet"
         }
-        "area_illumination" | "global_lights" => {
+        "area_illumination" => {
             "this light_source item is not supported by trace yet"
         }
         "bokeh" => "this camera item is not supported by trace yet",

@@ -282,6 +282,11 @@ fn share<T: PartialEq>(
 /// Moves a light: its position, the point it aims at and its area-light axes.
 pub(crate) fn transform_light(light: &mut ir::Light, m: &glam::DMat4) {
     light.position = m.transform_point3(light.position);
+    if let Some(parts) = &mut light.projected_through {
+        for part in Arc::make_mut(parts) {
+            Transform { matrix: *m }.append_to(&mut part.transform);
+        }
+    }
     match &mut light.kind {
         ir::LightKind::Point => {}
         ir::LightKind::Spot { point_at, .. } | ir::LightKind::Parallel { point_at } => {
@@ -337,6 +342,8 @@ pub(crate) struct Evaluator<'a> {
     objects: Vec<ir::Object>,
     /// The next unused [`ir::Object::medium`].
     next_medium: u32,
+    /// The next `light_group`'s number.
+    next_light_group: u32,
     background: Rgb,
     default_texture: Texture,
     /// The interior of objects without one, shared by all of them.
@@ -396,6 +403,7 @@ impl<'a> Evaluator<'a> {
             lights: Vec::new(),
             objects: Vec::new(),
             next_medium: 0,
+            next_light_group: 0,
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             default_interior: Default::default(),
@@ -573,8 +581,11 @@ impl<'a> Evaluator<'a> {
                 self.camera = Some(items);
             }
             NodeKind::LightSource => {
-                let light = self.light(node)?;
+                let (light, looks) = self.light(node)?;
                 self.lights.push(light);
+                if let Some(object) = looks {
+                    self.place(object, node.word_span)?;
+                }
             }
             NodeKind::Fog => {
                 let fog = self.fog(node)?;
@@ -902,7 +913,9 @@ impl<'a> Evaluator<'a> {
         })
     }
 
-    fn light(&mut self, node: &Node) -> Result<ir::Light> {
+    /// A `light_source`, and its `looks_like` object (placed at the light, casting no
+    /// shadow).
+    fn light(&mut self, node: &Node) -> Result<(ir::Light, Option<object::ObjectValue>)> {
         let position = self.vec3(&node.args[0])?;
         // A light without a colour is black (POV-Ray accepts it silently).
         let colour = match node.args.get(1) {
@@ -925,9 +938,29 @@ impl<'a> Evaluator<'a> {
         // Every area-light modifier given, in order (POV-Ray accepts them before `area_light`).
         let mut area_modifiers: Vec<(String, Span)> = Vec::new();
         let mut transform: Option<Transform> = None;
+        // `looks_like` and `projected_through` objects, with the light's transformations
+        // that follow them (those before are the light's place, which a looks_like object
+        // moves to).
+        let mut looks: Option<(object::ObjectValue, Transform)> = None;
+        let mut through: Option<(object::ObjectValue, Transform, Span)> = None;
         self.each_item(&node.children, &mut |ev, item| {
             let arg = |i: usize| &item.args[i];
             match item.kind {
+                NodeKind::LooksLike if item.word == "looks_like" => {
+                    if looks.is_some() {
+                        return Err(Diagnostic::error("only one looks_like per light_source", item.word_span));
+                    }
+                    let mut object = ev.object(item)?;
+                    let centre = transform.as_ref().map_or(position, |t| t.matrix.transform_point3(position));
+                    object.transform(Transform { matrix: glam::DMat4::from_translation(centre) }, false);
+                    looks = Some((object, Transform::IDENTITY));
+                }
+                NodeKind::LooksLike => {
+                    if through.is_some() {
+                        return Err(Diagnostic::error("only one projected_through per light_source", item.word_span));
+                    }
+                    through = Some((ev.object(item)?, Transform::IDENTITY, item.word_span));
+                }
                 NodeKind::LightFlag => match item.word.as_str() {
                     "spotlight" => {
                         light_type = LightType::Spot;
@@ -1003,6 +1036,12 @@ impl<'a> Evaluator<'a> {
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
+                    for after in [looks.as_mut().map(|l| &mut l.1), through.as_mut().map(|p| &mut p.1)]
+                        .into_iter()
+                        .flatten()
+                    {
+                        *after = after.then(t);
+                    }
                     transform = Some(transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
                 _ => return Err(ev.unknown_item(item, "light_source")),
@@ -1077,11 +1116,23 @@ impl<'a> Evaluator<'a> {
             shadowless: light_type == LightType::Fill,
             fade,
             area,
+            projected_through: None,
+            group: None,
         };
         if let Some(t) = transform {
             transform_light(&mut light, &t.matrix);
         }
-        Ok(light)
+        if let Some((mut object, after, span)) = through {
+            object.transform(after, false);
+            let parts = self.placed_parts(&object, span)?;
+            light.projected_through = Some(Arc::new(parts));
+        }
+        let looks = looks.map(|(mut object, after)| {
+            object.transform(after, false);
+            object.cast_no_shadow();
+            object
+        });
+        Ok((light, looks))
     }
 
     fn camera_items(&mut self, node: &Node, mut c: CameraItems) -> Result<CameraItems> {

@@ -31,6 +31,10 @@ struct Part {
     vertex_normals: Option<[DVec3; 3]>,
     inverse: bool,
     no_shadow: bool,
+    /// `no_image`, `no_reflection`, `double_illuminate`.
+    sight: ir::Sight,
+    /// For a part of a `light_group`: which lights light it.
+    light_group: Option<ir::LightGroup>,
     /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
     hollow: Option<bool>,
     /// The `bounded_by` shapes of the member it came from (a union's own are the object's).
@@ -54,6 +58,8 @@ pub struct ObjectValue {
     lights: Vec<ir::Light>,
     /// A union (its `hollow` goes only to members without their own).
     is_union: bool,
+    /// `global_lights` given on a `light_group`.
+    global_lights: bool,
     /// `bounded_by`: the object's bounding shapes, in the world.
     bounds: Vec<ir::Bound>,
     /// Which object this is, for the queries of trace() and its kin (0: none yet).
@@ -136,6 +142,8 @@ impl ObjectValue {
                 vertex_normals: None,
                 inverse: false,
                 no_shadow: false,
+                sight: ir::Sight::default(),
+                light_group: None,
                 hollow: None,
                 bounds: Vec::new(),
             }],
@@ -145,6 +153,7 @@ impl ObjectValue {
             own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
+            global_lights: false,
             bounds: Vec::new(),
             id: 0,
         }
@@ -159,15 +168,21 @@ impl ObjectValue {
             own_interiors: 0,
             lights: Vec::new(),
             is_union: false,
+            global_lights: false,
             bounds: Vec::new(),
             id: 0,
         }
     }
 
+    /// Marks every part as casting no shadow (a light's `looks_like` object).
+    pub(super) fn cast_no_shadow(&mut self) {
+        self.parts.iter_mut().for_each(|p| p.no_shadow = true);
+    }
+
     /// Applies a transformation to the geometry and to every texture already attached.
     /// Applies a transformation; `scale` tells that it is a `scale` modifier (which makes
     /// POV-Ray normalise a smooth triangle's vertex normals).
-    fn transform(&mut self, t: Transform, scale: bool) {
+    pub(super) fn transform(&mut self, t: Transform, scale: bool) {
         let normal_matrix = DMat3::from_mat4(t.matrix).inverse().transpose();
         for part in &mut self.parts {
             part.transform = compose(part.transform, t);
@@ -385,14 +400,18 @@ impl Evaluator<'_> {
                 let mut group = ObjectValue::empty();
                 group.is_union = true;
                 self.each_item(&node.children, &mut |ev, item| {
-                    if item.kind == NodeKind::LightSource {
-                        group.lights.push(ev.light(item)?);
-                        return Ok(());
-                    }
-                    if !is_object(item.kind) {
+                    let m = if item.kind == NodeKind::LightSource {
+                        let (light, looks) = ev.light(item)?;
+                        group.lights.push(light);
+                        match looks {
+                            Some(m) => m,
+                            None => return Ok(()),
+                        }
+                    } else if !is_object(item.kind) {
                         return ev.object_modifier(&mut group, item, node);
-                    }
-                    let m = ev.object(item)?;
+                    } else {
+                        ev.object(item)?
+                    };
                     group.lights.extend(m.lights);
                     // The member's interiors stay distinct from the other members'; its parts
                     // without one of their own share the member's (POV-Ray shares one
@@ -414,17 +433,21 @@ impl Evaluator<'_> {
                     group.own_interiors = base + m.own_interiors + 1;
                     Ok(())
                 })?;
+                if node.word == "light_group" {
+                    self.light_group(&mut group);
+                }
                 group
             }
-            NodeKind::ObjectRef => {
+            NodeKind::ObjectRef | NodeKind::LooksLike => {
                 let (first, rest) = node.children.split_first().expect("object {} has a body");
                 modifiers = rest;
                 match first.kind {
                     NodeKind::MacroCall => self.macro_object(first)?,
                     NodeKind::LightSource => {
-                        let mut light = ObjectValue::empty();
-                        light.lights.push(self.light(first)?);
-                        light
+                        let (light, looks) = self.light(first)?;
+                        let mut object = looks.unwrap_or_else(ObjectValue::empty);
+                        object.lights.push(light);
+                        object
                     }
                     NodeKind::IdentRef => match self.lookup(first)? {
                         Value::Object(o) => *o,
@@ -529,6 +552,24 @@ impl Evaluator<'_> {
         self.lights = lights;
         self.next_medium = next_medium;
         placed.map(|()| parts)
+    }
+
+    /// Makes `group` a `light_group`: its lights light only its members (and those of the
+    /// groups inside it, whose own lights stay theirs); its members see the lights outside
+    /// every group only with `global_lights`.
+    fn light_group(&mut self, group: &mut ObjectValue) {
+        let id = self.next_light_group;
+        self.next_light_group += 1;
+        for light in &mut group.lights {
+            light.group.get_or_insert(id);
+        }
+        for part in &mut group.parts {
+            let lights = part.light_group.get_or_insert_with(|| ir::LightGroup {
+                groups: Vec::new(),
+                global_lights: group.global_lights,
+            });
+            lights.groups.push(id);
+        }
     }
 
     /// `isosurface { function {…} [contained_by {…}] settings… modifiers }`.
@@ -922,6 +963,20 @@ impl Evaluator<'_> {
             NodeKind::FunctionImage if owner.word == "height_field" => {}
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
+                "no_image" => object.parts.iter_mut().for_each(|p| p.sight.no_image = true),
+                "no_reflection" => object.parts.iter_mut().for_each(|p| p.sight.no_reflection = true),
+                "double_illuminate" => {
+                    object.parts.iter_mut().for_each(|p| p.sight.double_illuminate = true)
+                }
+                // Radiosity is outside trace's subset: nothing to exclude the object from.
+                "no_radiosity" => {}
+                "global_lights" if owner.word == "light_group" => object.global_lights = true,
+                "global_lights" => {
+                    return Err(Diagnostic::error(
+                        "`global_lights` applies only to a light_group",
+                        m.word_span,
+                    ));
+                }
                 "inverse" => object.parts.iter_mut().for_each(|p| p.inverse = !p.inverse),
                 // `sturm` picks POV-Ray's slower root solver; trace's torus solver is always
                 // robust.
@@ -1021,10 +1076,17 @@ impl Evaluator<'_> {
                 };
             let bounds =
                 (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
-            let extras = (interior_texture.is_some() || bounds.is_some()).then(|| {
+            let (sight, light_group) = (part.sight, part.light_group);
+            let extras = (interior_texture.is_some()
+                || bounds.is_some()
+                || sight != ir::Sight::default()
+                || light_group.is_some())
+            .then(|| {
                 Box::new(ir::ObjectExtras {
                     interior_texture,
                     bounds,
+                    sight,
+                    light_group,
                 })
             });
             self.objects.push(ir::Object {

@@ -243,6 +243,12 @@ pub struct Light {
     pub fade: Option<LightFade>,
     /// `area_light`: soft shadows from a grid of points.
     pub area: Option<AreaLight>,
+    /// The `light_group` the light belongs to: it lights only that group's objects.
+    pub group: Option<u32>,
+    /// `projected_through { … }`: the light reaches a point only along rays that cross this
+    /// object (its parts, placed in the world); nothing between it and the light casts a
+    /// shadow.
+    pub projected_through: Option<Arc<Vec<Object>>>,
 }
 
 /// How a light emits.
@@ -341,6 +347,32 @@ pub struct ObjectExtras {
     /// start outside it) skip the object too; POV-Ray removes the shapes of other bounds and
     /// keeps their box.
     pub bounds: Option<Arc<Bounds>>,
+    /// `no_image`, `no_reflection`, `double_illuminate`.
+    pub sight: Sight,
+    /// For an object in a `light_group`: which lights light it.
+    pub light_group: Option<LightGroup>,
+}
+
+/// Which rays see an object, and from which side lights reach it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Sight {
+    /// `no_image`: unseen by camera rays and by rays that reach it through transparent
+    /// objects without a reflection on the way (it still casts shadows and is reflected).
+    pub no_image: bool,
+    /// `no_reflection`: unseen by rays that were reflected on their way.
+    pub no_reflection: bool,
+    /// `double_illuminate`: lit from both sides (a light behind the surface lights it as one
+    /// in front, with `diffuse`).
+    pub double_illuminate: bool,
+}
+
+/// The lights of an object in a `light_group`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LightGroup {
+    /// The groups whose lights light it (its own, and those of groups around it).
+    pub groups: Vec<u32>,
+    /// `global_lights on`: the lights outside every group light it too.
+    pub global_lights: bool,
 }
 
 impl Object {
@@ -354,6 +386,13 @@ impl Object {
     /// `bounded_by`, if any.
     pub fn bounds(&self) -> Option<&Bounds> {
         self.extras.as_ref().and_then(|e| e.bounds.as_deref())
+    }
+
+    /// `no_image`, `no_reflection` and `double_illuminate`.
+    pub fn sight(&self) -> Sight {
+        self.extras
+            .as_ref()
+            .map_or_else(Sight::default, |e| e.sight)
     }
 }
 

@@ -88,6 +88,18 @@ impl Tracer<'_> {
         if colour == Rgb::ZERO {
             return None;
         }
+        // `projected_through`: dark unless the way to the light crosses the object, and only
+        // what lies before that crossing casts shadows.
+        let mut reach = None;
+        if let Some(through) = &light.through {
+            let ray = scene.spawn(hit, from, direction);
+            let length = shadow_length(light, &ray, distance);
+            let first = through.iter().filter_map(|s| s.first_hit(&ray)).reduce(f64::min);
+            match first {
+                Some(t) if t < length => reach = Some(t),
+                _ => return None,
+            }
+        }
         if !light.shadowless {
             let visible = match &light.area {
                 Some(area) if area.size1 * area.size2 > 1 => {
@@ -95,7 +107,7 @@ impl Tracer<'_> {
                 }
                 _ => {
                     let mut shadow = scene.spawn(hit, from, direction);
-                    shadow.tmax = shadow_length(light, &shadow, distance);
+                    shadow.tmax = reach.unwrap_or_else(|| shadow_length(light, &shadow, distance));
                     self.counts.shadow += 1;
                     scene.transmittance(&shadow)
                 }

@@ -154,6 +154,9 @@ pub struct Tracer<'a> {
     pub counts: RayCounts,
     /// Area-light visibility cache, reused between shading points.
     pub(super) area_cache: Vec<Option<Rgb>>,
+    /// Whether the ray being traced was reflected on its way (objects with `no_reflection`
+    /// hide from it, those with `no_image` from the others).
+    reflected: bool,
 }
 
 /// grey(c) = 0.297 r + 0.589 g + 0.114 b (POV-Ray's luminance weights).
@@ -187,6 +190,7 @@ impl<'a> Tracer<'a> {
             scene,
             counts: RayCounts::default(),
             area_cache: Vec::new(),
+            reflected: false,
         }
     }
 
@@ -200,7 +204,7 @@ impl<'a> Tracer<'a> {
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let (colour, depth) = match self.scene.intersect(&ray) {
+        let (colour, depth) = match self.scene.intersect_seen(&ray, self.reflected) {
             None => (self.escaped(ray.direction), MISS_DEPTH),
             Some(hit) => {
                 let surface = self.scene.surface(&ray, &hit);
@@ -212,6 +216,14 @@ impl<'a> Tracer<'a> {
             return colour;
         }
         fogged(self.scene, ray.origin, ray.direction, depth, colour)
+    }
+
+    /// [`Tracer::trace`] for a reflected ray.
+    fn trace_reflected(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
+        let was = std::mem::replace(&mut self.reflected, true);
+        let colour = self.trace(ray, level, weight, interiors);
+        self.reflected = was;
+        colour
     }
 
     /// The colour of a ray that hits nothing: the sky_sphere's layers over the background,
@@ -370,7 +382,7 @@ impl<'a> Tracer<'a> {
                     total_internal_reflection = true;
                     let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                     self.counts.reflected += 1;
-                    result += fade * self.trace(&mirror, level + 1, weight, interiors);
+                    result += fade * self.trace_reflected(&mirror, level + 1, weight, interiors);
                 } else {
                     let dir = (eta * d + (eta * cos_i - k.sqrt()) * n).normalize();
                     let refracted = scene.spawn(hit, ray.origin, dir);
@@ -431,9 +443,14 @@ impl<'a> Tracer<'a> {
         let finish = &layer.finish;
         let mut lit = pigment * finish.ambient * scene.ambient_light * att
             + pigment * finish.emission * att;
+        let object = scene.object(hit.object);
+        let double = object.sight().double_illuminate;
         for index in 0..scene.lights.len() {
+            if !object.lit_by(&scene.lights[index]) {
+                continue;
+            }
             let Some(sample) =
-                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0)
+                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0 || double)
             else {
                 continue;
             };
@@ -444,7 +461,7 @@ impl<'a> Tracer<'a> {
             } else {
                 0.0
             };
-            let mut light = self.lit(layer, colour, att, ray.direction, n, &sample, grain);
+            let mut light = self.lit(layer, colour, att, ray.direction, n, &sample, grain, double);
             if finish.irid.amount > 0.0 {
                 light *= scene.irid(finish, sample.direction, ray.direction, n, hit.point);
             }
@@ -481,7 +498,7 @@ impl<'a> Tracer<'a> {
         } else {
             rf.max.max_element().max(rf.min.max_element())
         };
-        let mut seen = self.trace(&reflected, level + 1, weight * bound, interiors);
+        let mut seen = self.trace_reflected(&reflected, level + 1, weight * bound, interiors);
         if layer.finish.irid.amount > 0.0 {
             let to = reflected.direction.normalize();
             seen *= scene.irid(&layer.finish, to, ray.direction, n, hit.point);
@@ -525,15 +542,17 @@ impl<'a> Tracer<'a> {
         n: DVec3,
         s: &LightSample,
         grain: f64,
+        double: bool,
     ) -> Rgb {
         let finish = &material.finish;
         let pigment = colour.rgb;
         let lc = s.colour;
         let mut result = Rgb::ZERO;
         let cos_nl = n.dot(s.direction);
-        if cos_nl >= 0.0 {
+        if cos_nl >= 0.0 || double {
+            // (`double_illuminate`: a light behind lights the surface as one in front.)
             if finish.diffuse > 0.0 {
-                let intensity = finish.diffuse * att * brilliance(cos_nl, finish.brilliance);
+                let intensity = finish.diffuse * att * brilliance(cos_nl.abs(), finish.brilliance);
                 result += pigment * lc * (intensity - grain);
             }
         } else if finish.diffuse_back > 0.0 {

@@ -233,34 +233,24 @@ impl Scene {
                         let shapes = bounds
                             .shapes
                             .iter()
-                            .map(|b| {
-                                let mesh_of = |m: &ir::Mesh| Arc::new(build_mesh(m));
-                                let meshes: HashMap<usize, Arc<TriangleMesh>> = match &b.shape {
-                                    ir::Shape::Mesh(m) => {
-                                        HashMap::from([(Arc::as_ptr(m) as usize, mesh_of(m))])
-                                    }
-                                    _ => HashMap::new(),
-                                };
-                                let (shape, transform) = build_shape(
-                                    &b.shape,
-                                    b.transform.as_ref().map(|t| t.matrix),
-                                    &meshes,
-                                    generator,
-                                );
-                                BoundShape {
-                                    shape,
-                                    transform: transform.map(ObjectTransform::new),
-                                }
-                            })
+                            .map(|b| bound_shape(&b.shape, b.transform.as_deref(), generator))
                             .collect();
                         (shapes, bounds.test_rays)
                     });
-                if back_material.is_some() || bounds.is_some() {
+                let sight = o.sight();
+                let light_group = o.extras.as_ref().and_then(|e| e.light_group.clone());
+                if back_material.is_some()
+                    || bounds.is_some()
+                    || sight != ir::Sight::default()
+                    || light_group.is_some()
+                {
                     let (bounds, test_rays) = bounds.unwrap_or_default();
                     object.extra = Some(Box::new(ObjectExtra {
                         back_material,
                         bounds,
                         test_rays,
+                        sight,
+                        light_group,
                     }));
                 }
                 let bounds = object.world_bounds();
@@ -289,6 +279,13 @@ impl Scene {
                     shadowless: l.shadowless,
                     fade: l.fade,
                     area: l.area.clone(),
+                    group: l.group,
+                    through: l.projected_through.as_ref().map(|parts| {
+                        parts
+                            .iter()
+                            .map(|p| bound_shape(&p.shape, p.transform.as_deref(), generator))
+                            .collect()
+                    }),
                 })
                 .collect(),
             objects,
@@ -319,6 +316,7 @@ impl Scene {
             index: None,
             scan_bounds: Vec::new(),
             any_transparent: false,
+            any_hidden: false,
             shadow_fades: false,
             bounded_last: false,
         };
@@ -345,6 +343,10 @@ impl Scene {
                 .any(|m| scene.materials[m.0 as usize].may_be_transparent())
         };
         scene.any_transparent = scene.objects.iter().any(|o| !o.no_shadow && see_through(o));
+        scene.any_hidden = scene.objects.iter().any(|o| {
+            let sight = o.sight();
+            sight.no_image || sight.no_reflection
+        });
         scene.shadow_fades = scene.objects.iter().any(|o| {
             !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
         });
@@ -625,6 +627,20 @@ fn build_text(text: &ir::Text) -> Text {
         text.thickness,
         text.glyphs.iter().map(|g| g.curves.iter().map(edge).collect()),
     )
+}
+
+/// A shape placed by `transform`, for ray tests outside the object index (`bounded_by`,
+/// `projected_through`).
+fn bound_shape(shape: &ir::Shape, transform: Option<&ir::Transform>, generator: u8) -> BoundShape {
+    let meshes: HashMap<usize, Arc<TriangleMesh>> = match shape {
+        ir::Shape::Mesh(m) => HashMap::from([(Arc::as_ptr(m) as usize, Arc::new(build_mesh(m)))]),
+        _ => HashMap::new(),
+    };
+    let (shape, transform) = build_shape(shape, transform.map(|t| t.matrix), &meshes, generator);
+    BoundShape {
+        shape,
+        transform: transform.map(ObjectTransform::new),
+    }
 }
 
 #[cfg(test)]

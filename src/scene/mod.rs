@@ -89,6 +89,9 @@ pub struct Scene {
     /// Whether any object that may let light through to a shadow ray has an interior that
     /// fades: shadow rays then walk their crossings in order (see [`Scene::transmittance`]).
     pub shadow_fades: bool,
+    /// Whether any object is hidden from some rays (`no_image`, `no_reflection`): only then
+    /// does the nearest-hit search look at the rays' kind.
+    pub any_hidden: bool,
 }
 
 /// The camera's four vectors.
@@ -121,6 +124,10 @@ pub struct Light {
     pub fade: Option<LightFade>,
     /// Soft-shadow grid.
     pub area: Option<AreaLight>,
+    /// `projected_through`: the shapes light must cross to reach a point.
+    pub through: Option<Box<[BoundShape]>>,
+    /// The `light_group` it lights alone.
+    pub group: Option<u32>,
 }
 
 /// The sky: pigments of the ray's direction, the last on top.
@@ -191,6 +198,10 @@ pub struct ObjectExtra {
     pub back_material: Option<MaterialId>,
     /// `bounded_by`: the shapes whose box bounds the object.
     pub bounds: Box<[BoundShape]>,
+    /// `no_image`, `no_reflection`, `double_illuminate`.
+    pub sight: crate::ir::Sight,
+    /// For an object in a `light_group`: which lights light it.
+    pub light_group: Option<crate::ir::LightGroup>,
     /// Whether a ray must also cross each bounding shape (or start inside it) to reach the
     /// object.
     pub test_rays: bool,
@@ -204,6 +215,15 @@ pub struct BoundShape {
 }
 
 impl BoundShape {
+    /// The nearest crossing of `ray` with the shape within the ray's range.
+    pub fn first_hit(&self, ray: &Ray) -> Option<f64> {
+        let local = match &self.transform {
+            None => *ray,
+            Some(t) => ray.transformed(&t.object_from_world),
+        };
+        self.shape.intersect(&local).first()
+    }
+
     /// POV-Ray's `Ray_In_Bound` for one bound: the ray (anywhere ahead) crosses it, or starts
     /// inside it.
     fn admits(&self, ray: &Ray) -> bool {
@@ -271,6 +291,29 @@ impl Object {
 
     /// Whether a ray may reach the object through its `bounded_by` shapes.
     #[inline]
+    /// `no_image`, `no_reflection`, `double_illuminate`.
+    pub fn sight(&self) -> crate::ir::Sight {
+        self.extra.as_ref().map_or_else(Default::default, |e| e.sight)
+    }
+
+    /// Whether `light` lights the object (a group's lights light only its members, whom
+    /// the other lights light only with `global_lights`).
+    pub fn lit_by(&self, light: &Light) -> bool {
+        let group = self.extra.as_ref().and_then(|e| e.light_group.as_ref());
+        match (light.group, group) {
+            (None, None) => true,
+            (None, Some(g)) => g.global_lights,
+            (Some(id), Some(g)) => g.groups.contains(&id),
+            (Some(_), None) => false,
+        }
+    }
+
+    /// Whether a ray that was (`reflected`) or was not reflected on its way sees the object.
+    fn seen_by(&self, reflected: bool) -> bool {
+        let sight = self.sight();
+        !(if reflected { sight.no_reflection } else { sight.no_image })
+    }
+
     fn admits(&self, ray: &Ray) -> bool {
         self.extra
             .as_ref()

@@ -10,6 +10,11 @@ impl Scene {
         &self.interiors[object.interior as usize]
     }
 
+    /// The object with id `id`.
+    pub fn object(&self, id: ObjectId) -> &Object {
+        &self.objects[id.0 as usize]
+    }
+
     /// The material with id `id`.
     pub fn material(&self, id: MaterialId) -> &Material {
         &self.materials[id.0 as usize]
@@ -29,9 +34,22 @@ impl Scene {
         }
     }
 
-    /// The nearest hit along `ray`.
+    /// The nearest hit along `ray`, of any object.
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.nearest(ray, None)
+    }
+
+    /// The nearest hit along a ray traced for the picture: one that was `reflected` on its
+    /// way, or not (a camera ray, or one through transparent objects only), which objects
+    /// with `no_reflection` or `no_image` hide from.
+    #[inline]
+    pub fn intersect_seen(&self, ray: &Ray, reflected: bool) -> Option<Hit> {
+        self.nearest(ray, self.any_hidden.then_some(reflected))
+    }
+
+    #[inline]
+    fn nearest(&self, ray: &Ray, reflected: Option<bool>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
         // Two hits within rounding of each other (a glass box standing on the floor plane: the
@@ -41,6 +59,9 @@ impl Scene {
         // leaves room for a tie just beyond it.
         let mut test = |i: u32, ray: &Ray| -> Option<f64> {
             let object = &self.objects[i as usize];
+            if reflected.is_some_and(|r| !object.seen_by(r)) {
+                return None;
+            }
             let (t, part) = Self::crossings(object, ray).first_part()?;
             if let Some(b) = &best {
                 let tied = (t - b.t).abs() <= TIE * b.t.abs();

@@ -183,6 +183,8 @@ pub enum NodeKind {
     ImageType,
     /// `gamma G` or `gamma srgb` in an image_map: the file's encoding.
     ImageGamma,
+    /// `looks_like { … }` or `projected_through { … }` in a light_source.
+    LooksLike,
     /// `mandel` or `julia` after `magnet N`.
     MagnetForm,
     /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
@@ -849,6 +851,7 @@ impl Lower {
             Rule::plane => NodeKind::Plane,
             Rule::box_shape => NodeKind::Box,
             Rule::object_ref => NodeKind::ObjectRef,
+            Rule::looks_like => NodeKind::LooksLike,
             Rule::cylinder => NodeKind::Cylinder,
             Rule::cone => NodeKind::Cone,
             Rule::disc => NodeKind::Disc,
@@ -1325,6 +1328,7 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_gamma
+            | kw_light_object
             | fractal_side
             | kw_image_channel
             | kw_all
@@ -1389,6 +1393,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_max_trace_level
             | kw_metallic
             | kw_no_image
+            | kw_no_radiosity
             | kw_no_reflection
             | kw_no_shadow
             | kw_normal
@@ -1435,6 +1440,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_torus
             | kw_triangle
             | kw_union
+            | kw_light_group
+            | kw_global_lights
             | kw_vertex_vectors
             | kw_spotlight
             | kw_parallel
