@@ -525,9 +525,11 @@ const SUPPORTED: &[&str] = &[
     "agate",
     "agate_turb",
     "all_intersections",
+    "altitude",
     "ambient",
     "ambient_light",
     "angle",
+    "aoi",
     "aperture",
     "append",
     "area_light",
@@ -821,6 +823,7 @@ const SUPPORTED: &[&str] = &[
     "sky",
     "sky_sphere",
     "slice",
+    "slope",
     "slope_map",
     "smooth",
     "smooth_triangle",
@@ -968,7 +971,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "density_file" | "object_pattern" | "slope" | "aoi" | "uv_mapping" | "material_map" => {
+        "density_file" | "object_pattern" | "uv_mapping" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "clipped_by"
@@ -995,8 +998,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         => {
             "this shape or shape item is not supported by trace yet"
         }
-        "altitude"
-        | "ratio"
+        "ratio"
         | "tile2" | "tiles" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }

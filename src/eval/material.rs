@@ -45,6 +45,66 @@ enum ImageRole {
     Bumps(Option<f64>),
 }
 
+impl Evaluator<'_> {
+    /// `slope V` or `slope { [point_at] V [, LOW, HIGH] [altitude A [, LOW, HIGH]] }`, as
+    /// POV-Ray's parser leaves it: ranges as (low, high − low), an empty range ignored with a
+    /// warning, the two directions normalised and weighted by their lengths.
+    fn slope(&mut self, item: &Node) -> Result<crate::pattern::Slope> {
+        let block = item.children.iter().find(|c| c.kind == NodeKind::SlopeBlock);
+        let (args, point_at) = match block {
+            Some(b) => (b.args.as_slice(), b.children.iter().any(|c| c.kind == NodeKind::SlopePointAt)),
+            None => (item.args.as_slice(), false),
+        };
+        let Some(first) = args.first() else {
+            return Err(Diagnostic::error("`slope` needs a direction: slope y", item.span));
+        };
+        let range = |ev: &mut Self, rest: &[crate::syntax::Expr], what: &str| -> Result<(f64, f64)> {
+            let low = rest.first().map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
+            let high = rest.get(1).map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
+            if high != 0.0 && high == low {
+                ev.warn(Diagnostic::warning(format!("zero {what} range, ignoring"), rest[1].span));
+                return Ok((0.0, 0.0));
+            }
+            Ok((low, high - low))
+        };
+        let direction = self.vec3(first)?;
+        let slope_range = range(self, &args[1..], "slope")?;
+        let (mut altitude, mut altitude_range) = (glam::DVec3::ZERO, (0.0, 0.0));
+        if let Some(alt) = block.and_then(|b| b.children.iter().find(|c| c.kind == NodeKind::SlopeAltitude)) {
+            if point_at {
+                return Err(Diagnostic::error("`altitude` cannot be used with `point_at` in a slope pattern", alt.word_span));
+            }
+            altitude = self.vec3(&alt.args[0])?;
+            altitude_range = range(self, &alt.args[1..], "gradient")?;
+        }
+        if point_at {
+            return Ok(crate::pattern::Slope {
+                direction,
+                point_at,
+                slope_range,
+                altitude,
+                altitude_range,
+                weights: (1.0, 0.0),
+            });
+        }
+        let (slope_len, altitude_len) = (direction.length(), altitude.length());
+        let total = slope_len + altitude_len;
+        if total == 0.0 {
+            return Err(Diagnostic::error("zero length for both slope and gradient", first.span));
+        }
+        let unit = |v: glam::DVec3, len: f64| if len != 0.0 { v / len } else { v };
+        let slope_weight = slope_len / total;
+        Ok(crate::pattern::Slope {
+            direction: unit(direction, slope_len),
+            point_at,
+            slope_range,
+            altitude: unit(altitude, altitude_len),
+            altitude_range,
+            weights: (slope_weight, 1.0 - slope_weight),
+        })
+    }
+}
+
 /// The checks POV-Ray makes when a pattern's block ends: a `pavement`'s sides, tiles and
 /// variant (its options then reduced as POV-Ray reduces them).
 fn check_pattern(pattern: &mut Pattern, span: crate::diag::Span) -> Result<()> {
@@ -663,6 +723,8 @@ impl Evaluator<'_> {
                 return Ok((PatternKind::Fractal(Box::new(f)), &args[rest + 1..]));
             }
             "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
+            "aoi" => PatternKind::Aoi,
+            "slope" => return Ok((PatternKind::Slope(Box::new(self.slope(item)?)), &[])),
             "agate" => PatternKind::Agate { turb: 1.0 },
             "average" => PatternKind::Average,
             "boxed" => PatternKind::Boxed,

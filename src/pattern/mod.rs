@@ -409,6 +409,29 @@ impl Pattern {
         self.wave.apply(self.raw(self.warp(p)))
     }
 
+    /// The value at pattern point `p` of `surface` (see [`Pattern::raw_on`]).
+    pub fn value_on(&self, p: DVec3, surface: &Surface) -> f64 {
+        self.wave.apply(self.raw_on(self.warp(p), surface))
+    }
+
+    /// The value before the wave at warped point `p` of `surface`: what [`Pattern::raw`]
+    /// gives, except for the patterns that look at the surface (`slope`, `aoi`), which give
+    /// 0 without one.
+    pub fn raw_on(&self, p: DVec3, surface: &Surface) -> f64 {
+        match &self.kind {
+            PatternKind::Slope(slope) => slope.value(p, surface),
+            PatternKind::Aoi if surface.normal == DVec3::ZERO => 0.0,
+            PatternKind::Aoi => {
+                let cos = surface
+                    .normal
+                    .normalize()
+                    .dot(surface.direction.normalize());
+                cos.clamp(-1.0, 1.0).acos() / PI
+            }
+            _ => self.raw(p),
+        }
+    }
+
     /// The point after the pattern's warps (its classic turbulence last, if it displaces).
     pub fn warp(&self, p: DVec3) -> DVec3 {
         let mut q = p;
@@ -472,6 +495,8 @@ impl Pattern {
             PatternKind::Fractal(f) => f.value([x, y, z]),
             PatternKind::Pavement(pv) => pv.value([x, y, z]),
             PatternKind::Tiling(n) => tiling::tiling(i32::from(*n), [x, y, z]),
+            // (Without a surface: POV-Ray's value when there is no intersection.)
+            PatternKind::Slope(_) | PatternKind::Aoi => 0.0,
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
             PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
             PatternKind::Cells => {
@@ -735,6 +760,77 @@ pub enum PatternKind {
     Pavement(pavement::Pavement),
     /// `tiling N` (1 to 27): POV-Ray's periodic and Penrose tilings of the x-z plane.
     Tiling(u8),
+    /// `slope`: the surface's steepness along a direction (or towards a point), optionally
+    /// mixed with the altitude along another.
+    Slope(Box<Slope>),
+    /// `aoi`: the angle between the surface's normal and the ray, 0 to 1 for 0 to 180°.
+    Aoi,
+}
+
+/// What a pattern may see of the surface besides its point (POV-Ray's intersection and ray):
+/// `slope`, `aoi` and `uv_mapping` use it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Surface {
+    /// The point, in the world.
+    pub point: DVec3,
+    /// The surface's unit normal there as the shape gives it (world space, not turned to
+    /// the ray); zero where there is no surface (functions, the sky, shadow rays).
+    pub normal: DVec3,
+    /// The ray's direction.
+    pub direction: DVec3,
+    /// The surface's (u, v) coordinates, where a uv-mapped texture asked for them.
+    pub uv: glam::DVec2,
+}
+
+/// `slope`'s parameters, as POV-Ray keeps them after parsing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Slope {
+    /// The unit direction whose steepness counts, or with `point_at` the point looked at.
+    pub direction: DVec3,
+    /// `point_at`: the slope towards a point.
+    pub point_at: bool,
+    /// `LOW, HIGH` after the direction, as (low, high − low); (0, 0) when not given.
+    pub slope_range: (f64, f64),
+    /// The unit altitude direction (zero without `altitude`).
+    pub altitude: DVec3,
+    /// `LOW, HIGH` after the altitude, as (low, high − low).
+    pub altitude_range: (f64, f64),
+    /// The weights of slope and altitude (their vectors' lengths, summing to 1).
+    pub weights: (f64, f64),
+}
+
+impl Slope {
+    /// The value at pattern point `p` on `surface` (0 without a surface, as in POV-Ray).
+    fn value(&self, p: DVec3, surface: &Surface) -> f64 {
+        if surface.normal == DVec3::ZERO {
+            return 0.0;
+        }
+        let toward = if self.point_at {
+            (self.direction - surface.point).normalize()
+        } else {
+            self.direction
+        };
+        let mut slope = surface.normal.dot(toward).clamp(-1.0, 1.0);
+        slope = (slope.asin() / PI * 2.0 + 1.0) * 0.5;
+        let scaled =
+            |v: f64, (low, span): (f64, f64)| if span != 0.0 { (v - low) / span } else { v };
+        slope = scaled(slope, self.slope_range);
+        let wrap = |v: f64| if v < 0.0 { 1.0 + v % 1.0 } else { v % 1.0 };
+        if self.weights.1 == 0.0 {
+            return if slope == 1.0 {
+                slope - EPSILON
+            } else {
+                wrap(slope)
+            };
+        }
+        let altitude = scaled(p.dot(self.altitude), self.altitude_range);
+        let v = self.weights.0 * slope + self.weights.1 * altitude;
+        if v - 1.0 < EPSILON && v >= 1.0 {
+            v - EPSILON
+        } else {
+            wrap(v)
+        }
+    }
 }
 
 /// `crackle`'s parameters.

@@ -292,7 +292,7 @@ impl<'a> Tracer<'a> {
         let Some(map) = &material.map else {
             return self.shade_layers(material, ray, t, hit, level, weight, interiors);
         };
-        map.blend(hit.texture_point, |entry, texture_point| {
+        map.blend(hit.texture_point, &hit.surface, |entry, texture_point| {
             let hit = &SurfaceHit {
                 texture_point,
                 ..*hit
@@ -404,7 +404,7 @@ impl<'a> Tracer<'a> {
             for layer in material.layers().take(layers).skip(1) {
                 // (What the layer above lets through.)
                 let (upper, upper_reflec, upper_colour) = previous;
-                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_at(hit.texture_point));
+                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_on(hit.texture_point, &hit.surface));
                 above *= filter_colour(&c);
                 if upper.finish.conserve_energy {
                     above *= (Rgb::ONE - upper_reflec).min(Rgb::ONE);
@@ -523,8 +523,8 @@ impl<'a> Tracer<'a> {
         let n = layer
             .normal
             .as_ref()
-            .map_or(raw, |normal| normal.perturb(hit.texture_point, raw));
-        let colour = layer.pigment.colour_at(hit.texture_point);
+            .map_or(raw, |normal| normal.perturb_on(hit.texture_point, raw, &hit.surface));
+        let colour = layer.pigment.colour_on(hit.texture_point, &hit.surface);
         let reflec = reflectivity(layer, &colour, -d.dot(n), fresnel_eta);
         (n, colour, reflec)
     }

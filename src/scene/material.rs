@@ -97,7 +97,7 @@ impl Material {
     /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {
         if let Some(m) = &self.map {
-            return m.blend(p, |e, at| e.filter_at(at));
+            return m.blend(p, &Default::default(), |e, at| e.filter_at(at));
         }
         self.layers()
             .map(|l| filter_colour(&l.pigment.colour_at(p)))
@@ -123,7 +123,12 @@ impl MaterialMap {
     /// textures: the entry the pattern's value picks, or the two around it weighted by the
     /// fraction between them, or for `average` every entry weighted by its value. `f` gets
     /// each entry and the point it is evaluated at (the pattern's warped point).
-    pub fn blend<'m>(&'m self, p: DVec3, mut f: impl FnMut(&'m Material, DVec3) -> Rgb) -> Rgb {
+    pub fn blend<'m>(
+        &'m self,
+        p: DVec3,
+        surface: &crate::pattern::Surface,
+        mut f: impl FnMut(&'m Material, DVec3) -> Rgb,
+    ) -> Rgb {
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         if let Some(elements) = &self.blob {
             return self.blob_blend(elements, q, p, f);
@@ -138,7 +143,7 @@ impl MaterialMap {
             }
             return sum / total;
         }
-        let v = self.pattern.wave.apply(self.pattern.raw(warped));
+        let v = self.pattern.wave.apply(self.pattern.raw_on(warped, surface));
         let (prev, cur, t) = pigment::search(&self.entries, v);
         let c = f(&self.entries[cur].1, at);
         if prev == cur {

@@ -353,6 +353,8 @@ pub struct SurfaceHit {
     pub material: MaterialId,
     /// The object hit.
     pub object: ObjectId,
+    /// What patterns may see of the surface (`slope`, `aoi`, `uv_mapping`).
+    pub surface: crate::pattern::Surface,
 }
 
 /// The world box around an object-space box (its eight corners transformed), padded a little.

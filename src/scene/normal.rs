@@ -8,7 +8,9 @@
 
 use crate::ir;
 use crate::noise::{dnoise, noise};
-use crate::pattern::{Pattern, PatternKind, cycloidal, facets_normal, quilt_cubic, quilt_offset};
+use crate::pattern::{
+    Pattern, PatternKind, Surface, cycloidal, facets_normal, quilt_cubic, quilt_offset,
+};
 use glam::{DMat3, DMat4, DVec3};
 
 /// POV-Ray's sampling directions for the slope of a pattern: a regular tetrahedron.
@@ -73,8 +75,15 @@ impl Normal {
         }
     }
 
-    /// The perturbed unit normal at world point `p`, for the unit normal `n` (facing the ray).
+    /// The perturbed unit normal at world point `p`, for the unit normal `n` (facing the ray),
+    /// off any surface.
     pub fn perturb(&self, p: DVec3, n: DVec3) -> DVec3 {
+        self.perturb_on(p, n, &Surface::default())
+    }
+
+    /// The perturbed unit normal at world point `p` of `surface`, for the unit normal `n`
+    /// (facing the ray).
+    pub fn perturb_on(&self, p: DVec3, n: DVec3, surface: &Surface) -> DVec3 {
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         let tp = self.pattern.warp(q);
         let unit = |v: DVec3| if self.no_bump_scale { v } else { v.normalize() };
@@ -87,17 +96,17 @@ impl Normal {
             n = if pattern.kind == crate::pattern::PatternKind::Average {
                 let total: f64 = map.iter().map(|(w, _)| w).sum();
                 map.iter()
-                    .map(|(w, e)| e.perturb(tp, n) * *w)
+                    .map(|(w, e)| e.perturb_on(tp, n, surface) * *w)
                     .fold(DVec3::ZERO, |a, b| a + b)
                     / total
             } else {
-                let v = pattern.wave.apply(pattern.raw(tp));
+                let v = pattern.wave.apply(pattern.raw_on(tp, surface));
                 let (prev, cur, t) = super::pigment::search(map, v);
-                let c = map[cur].1.perturb(tp, n);
+                let c = map[cur].1.perturb_on(tp, n, surface);
                 if prev == cur {
                     c
                 } else {
-                    map[prev].1.perturb(tp, n) * (1.0 - t) + c * t
+                    map[prev].1.perturb_on(tp, n, surface) * (1.0 - t) + c * t
                 }
             };
             return (self.to_world * unit(n)).normalize();

@@ -2,7 +2,7 @@
 
 use super::{Colour, Rgb};
 use crate::ir::{self, ImageMap};
-use crate::pattern::{Pattern, PatternKind};
+use crate::pattern::{Pattern, PatternKind, Surface};
 use glam::{DMat4, DVec3};
 use std::sync::Arc;
 
@@ -83,8 +83,13 @@ impl Pigment {
         }
     }
 
-    /// The colour at world point `p`.
+    /// The colour at world point `p`, off any surface.
     pub fn colour_at(&self, p: DVec3) -> Colour {
+        self.colour_on(p, &Surface::default())
+    }
+
+    /// The colour at world point `p` of `surface`.
+    pub fn colour_on(&self, p: DVec3, surface: &Surface) -> Colour {
         if let Kind::Solid(c) = &self.kind {
             return *c;
         }
@@ -99,22 +104,24 @@ impl Pigment {
                 let w = m.pattern.warp(q);
                 match &m.map {
                     Map::Colours(cs) => average(cs.iter().map(|(v, c)| (*v, *c))),
-                    Map::Pigments(ps) => average(ps.iter().map(|(v, p)| (*v, p.colour_at(w)))),
+                    Map::Pigments(ps) => {
+                        average(ps.iter().map(|(v, p)| (*v, p.colour_on(w, surface))))
+                    }
                 }
             }
             Kind::Pattern(m) => match &m.map {
-                Map::Colours(cs) => lookup(cs, m.pattern.value(q)),
+                Map::Colours(cs) => lookup(cs, m.pattern.value_on(q, surface)),
                 Map::Pigments(ps) => {
                     // The entries' pigments see the point in the pattern's space, after its
                     // warps (POV-Ray's Compute_Pigment for a pigment map).
                     let w = m.pattern.warp(q);
-                    let v = m.pattern.wave.apply(m.pattern.raw(w));
+                    let v = m.pattern.wave.apply(m.pattern.raw_on(w, surface));
                     let (prev, cur, t) = search(ps, v);
-                    let c1 = ps[cur].1.colour_at(w);
+                    let c1 = ps[cur].1.colour_on(w, surface);
                     if prev == cur {
                         c1
                     } else {
-                        blend(ps[prev].1.colour_at(w), c1, t)
+                        blend(ps[prev].1.colour_on(w, surface), c1, t)
                     }
                 }
             },

@@ -124,6 +124,12 @@ impl Scene {
             geometric_normal,
             material: object.side(normal, ray.direction),
             object: hit.object,
+            surface: crate::pattern::Surface {
+                point,
+                normal,
+                direction: ray.direction,
+                uv: glam::DVec2::ZERO,
+            },
         }
     }
 

@@ -185,6 +185,12 @@ pub enum NodeKind {
     ImageGamma,
     /// `looks_like { … }` or `projected_through { … }` in a light_source.
     LooksLike,
+    /// `slope { … }`: its direction (or point) and ranges.
+    SlopeBlock,
+    /// `point_at` in `slope { … }`.
+    SlopePointAt,
+    /// `altitude A [, LOW, HIGH]` in `slope { … }`.
+    SlopeAltitude,
     /// `mandel` or `julia` after `magnet N`.
     MagnetForm,
     /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
@@ -948,6 +954,9 @@ impl Lower {
             Rule::image_type => NodeKind::ImageType,
             Rule::image_gamma => NodeKind::ImageGamma,
             Rule::magnet_form => NodeKind::MagnetForm,
+            Rule::slope_block => NodeKind::SlopeBlock,
+            Rule::slope_point_at => NodeKind::SlopePointAt,
+            Rule::slope_altitude => NodeKind::SlopeAltitude,
             Rule::image_see_through => NodeKind::ImageSeeThrough,
             Rule::map_type => NodeKind::MapType,
             Rule::once => NodeKind::Once,
@@ -1328,6 +1337,7 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_gamma
+            | kw_altitude
             | kw_light_object
             | fractal_side
             | kw_image_channel
