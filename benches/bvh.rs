@@ -61,7 +61,14 @@ fn mesh(triangles: usize) -> &'static TriangleMesh {
         return m;
     }
     let (v, t) = terrain(triangles);
-    let m: &'static TriangleMesh = Box::leak(Box::new(TriangleMesh::new(v, t, vec![], vec![])));
+    let m: &'static TriangleMesh = Box::leak(Box::new(TriangleMesh::new(
+        v,
+        t,
+        vec![],
+        vec![],
+        vec![],
+        vec![],
+    )));
     cache.push((triangles, m));
     m
 }
@@ -136,7 +143,7 @@ fn build(bencher: Bencher, triangles: usize) {
     let (v, t) = terrain(triangles);
     bencher
         .with_inputs(|| (v.clone(), t.clone()))
-        .bench_values(|(v, t)| TriangleMesh::new(v, t, vec![], vec![]));
+        .bench_values(|(v, t)| TriangleMesh::new(v, t, vec![], vec![], vec![], vec![]));
 }
 
 #[divan::bench(args = sizes())]

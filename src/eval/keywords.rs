@@ -898,6 +898,9 @@ const SUPPORTED: &[&str] = &[
     "use_colour",
     "use_index",
     "utf8",
+    "uv_indices",
+    "uv_mapping",
+    "uv_vectors",
     "v",
     "v_steps",
     "val",
@@ -971,11 +974,11 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "density_file" | "object_pattern" | "uv_mapping" | "material_map" => {
+        "density_file" | "object_pattern" | "material_map" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "clipped_by"
-        | "split_union" | "cutaway_textures" | "uv_vectors" => LATER,
+        | "split_union" | "cutaway_textures" => LATER,
         "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
@@ -1009,7 +1012,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }
-        "texture_list" | "uv_indices" | "hierarchy" => {
+        "texture_list" | "hierarchy" => {
             "this object item is not supported by trace yet"
         }
         "area_illumination" => {

@@ -105,6 +105,44 @@ impl Evaluator<'_> {
     }
 }
 
+/// With `uv_mapping` among a block's items: the block made of the items after it (what sees
+/// the surface's (u, v, 0) instead of the point, as POV-Ray parses the rest of the block).
+fn after_uv_mapping(node: &Node) -> Option<Node> {
+    let i = node.children.iter().position(|c| c.kind == NodeKind::UvMapping)?;
+    Some(Node {
+        kind: node.kind,
+        span: node.span,
+        word: node.word.clone(),
+        word_span: node.word_span,
+        args: Vec::new(),
+        children: node.children[i + 1..].to_vec(),
+    })
+}
+
+impl Evaluator<'_> {
+    /// `texture` seen at the surface's (u, v, 0): a pattern of one texture, `uv_mapping`.
+    pub(super) fn uv_texture(&self, texture: Texture) -> Texture {
+        let mut outer = self.default_texture.clone();
+        outer.map = Some(Box::new(ir::TextureMap {
+            pattern: Pattern::new(PatternKind::UvMapping),
+            transform: None,
+            entries: vec![(0.0, texture)],
+        }));
+        outer
+    }
+}
+
+/// The texture a uv-mapped object's pigment, normal and finish go into: the one entry of a
+/// `uv_mapping` texture, else the texture itself.
+pub(super) fn uv_entry(texture: &mut Texture) -> &mut Texture {
+    let uv = texture.map.as_ref().is_some_and(|m| m.pattern.kind == PatternKind::UvMapping);
+    if uv {
+        &mut texture.map.as_mut().expect("a uv_mapping texture").entries[0].1
+    } else {
+        texture
+    }
+}
+
 /// The checks POV-Ray makes when a pattern's block ends: a `pavement`'s sides, tiles and
 /// variant (its options then reduced as POV-Ray reduces them).
 fn check_pattern(pattern: &mut Pattern, span: crate::diag::Span) -> Result<()> {
@@ -132,6 +170,10 @@ impl Evaluator<'_> {
     /// default texture; or a pattern of textures (`checker texture {…} texture {…}`,
     /// `gradient y texture_map {…}`).
     pub(super) fn texture(&mut self, node: &Node) -> Result<Texture> {
+        if let Some(inner) = after_uv_mapping(node) {
+            let inner = self.texture(&inner)?;
+            return Ok(self.uv_texture(inner));
+        }
         let mut texture = self.default_texture.clone();
         let mut list: Vec<(Texture, crate::diag::Span)> = Vec::new();
         let mut map: Option<(Vec<(f64, Texture)>, crate::diag::Span)> = None;
@@ -334,6 +376,16 @@ impl Evaluator<'_> {
 
     /// `pigment { [colour | Name | checker … | gradient … | image_map {…}] [color_map] transforms }`.
     pub(super) fn pigment(&mut self, node: &Node, mut pigment: Pigment) -> Result<Pigment> {
+        if let Some(inner) = after_uv_mapping(node) {
+            let inner = self.pigment(&inner, Pigment::solid(Colour::default()))?;
+            return Ok(Pigment {
+                kind: PigmentKind::Pattern(Box::new(PatternPigment {
+                    pattern: Pattern::new(PatternKind::UvMapping),
+                    map: PigmentMap::Pigments(vec![(0.0, inner)]),
+                })),
+                transform: None,
+            });
+        }
         if let Some(e) = node.args.first() {
             pigment = self.pigment_value(e, pigment)?;
         }
@@ -855,6 +907,12 @@ impl Evaluator<'_> {
     /// `normal { [Name] [PATTERN [amount]] modifiers transforms }`, starting from `base` (the
     /// texture's normal, if it has one).
     pub(super) fn normal(&mut self, node: &Node, base: Option<Box<ir::Normal>>) -> Result<ir::Normal> {
+        if let Some(inner) = after_uv_mapping(node) {
+            let inner = self.normal(&inner, None)?;
+            let mut normal = ir::Normal::new(Pattern::new(PatternKind::UvMapping), 0.0);
+            normal.map = Some(vec![(0.0, inner)]);
+            return Ok(normal);
+        }
         let mut normal: Option<ir::Normal> = base.map(|b| *b);
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {

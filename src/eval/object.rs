@@ -8,7 +8,7 @@ use super::{Evaluator, Result, Value, expr::type_error, value::Vector};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
 use crate::syntax::{Expr, ExprKind, Node, NodeKind};
-use glam::{DMat3, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 use std::sync::Arc;
 
 /// One shape of an object under construction.
@@ -60,6 +60,8 @@ pub struct ObjectValue {
     is_union: bool,
     /// `global_lights` given on a `light_group`.
     global_lights: bool,
+    /// `uv_mapping` before the object's texture: textures given after it see (u, v, 0).
+    uv_mapping: bool,
     /// `bounded_by`: the object's bounding shapes, in the world.
     bounds: Vec<ir::Bound>,
     /// Which object this is, for the queries of trace() and its kin (0: none yet).
@@ -154,6 +156,7 @@ impl ObjectValue {
             lights: Vec::new(),
             is_union: false,
             global_lights: false,
+            uv_mapping: false,
             bounds: Vec::new(),
             id: 0,
         }
@@ -169,6 +172,7 @@ impl ObjectValue {
             lights: Vec::new(),
             is_union: false,
             global_lights: false,
+            uv_mapping: false,
             bounds: Vec::new(),
             id: 0,
         }
@@ -366,7 +370,7 @@ impl Evaluator<'_> {
                     if !matches!(t.kind, NodeKind::Triangle | NodeKind::SmoothTriangle) {
                         return Err(Diagnostic::error("expected a triangle or smooth_triangle here", t.word_span));
                     }
-                    if let Some(m) = t.children.first() {
+                    if let Some(m) = t.children.iter().find(|c| c.kind != NodeKind::TriangleUv) {
                         return Err(Diagnostic::error(
                             "unsupported: modifiers on a triangle inside a mesh (not supported by trace yet)",
                             m.span,
@@ -892,8 +896,20 @@ impl Evaluator<'_> {
                     object.interior = v.interior;
                 }
             }
+            NodeKind::UvMapping => {
+                if object.texture.is_some() {
+                    return Err(Diagnostic::error(
+                        "`uv_mapping` must come before the object's texture",
+                        m.span,
+                    ));
+                }
+                object.uv_mapping = true;
+            }
             NodeKind::Texture => {
-                let texture = self.texture(m)?;
+                let mut texture = self.texture(m)?;
+                if object.uv_mapping {
+                    texture = self.uv_texture(texture);
+                }
                 self.set_texture(object, texture)?;
             }
             NodeKind::InteriorTexture => {
@@ -902,18 +918,18 @@ impl Evaluator<'_> {
             }
 
             NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
-                let mut texture = object
-                    .texture
-                    .take()
-                    .unwrap_or_else(|| self.default_texture.clone());
+                let mut texture = match object.texture.take() {
+                    Some(t) => t,
+                    None if object.uv_mapping => self.uv_texture(self.default_texture.clone()),
+                    None => self.default_texture.clone(),
+                };
+                let target = super::material::uv_entry(&mut texture);
                 match m.kind {
-                    NodeKind::Pigment => {
-                        texture.pigment = self.pigment(m, texture.pigment.clone())?
-                    }
+                    NodeKind::Pigment => target.pigment = self.pigment(m, target.pigment.clone())?,
                     NodeKind::Normal => {
-                        texture.normal = Some(Box::new(self.normal(m, texture.normal.take())?))
+                        target.normal = Some(Box::new(self.normal(m, target.normal.take())?))
                     }
-                    _ => texture.finish = self.shared_finish_block(m, &texture.finish)?,
+                    _ => target.finish = self.shared_finish_block(m, &target.finish)?,
                 }
                 object.texture = Some(texture);
             }
@@ -1125,6 +1141,33 @@ impl Evaluator<'_> {
         let base = mesh.vertices.len() as u32;
         mesh.vertices.extend(p.iter().map(|v| v.as_vec3()));
         mesh.triangles.push([base, base + 1, base + 2]);
+        // `uv_vectors UV1, UV2, UV3`; once any triangle has them, the others are at (0, 0).
+        let uv = node.children.iter().find(|c| c.kind == NodeKind::TriangleUv);
+        if uv.is_some() || !mesh.uv_indices.is_empty() {
+            let origin = |mesh: &mut Mesh| {
+                let i = mesh.uvs.iter().position(|v| *v == DVec2::ZERO);
+                i.unwrap_or_else(|| {
+                    mesh.uvs.push(DVec2::ZERO);
+                    mesh.uvs.len() - 1
+                }) as u32
+            };
+            if mesh.uv_indices.len() + 1 < mesh.triangles.len() {
+                let zero = origin(mesh);
+                mesh.uv_indices.resize(mesh.triangles.len() - 1, [zero; 3]);
+            }
+            let corners = match uv {
+                Some(uv) => {
+                    let base = mesh.uvs.len() as u32;
+                    for e in &uv.args {
+                        let v = self.uv(e)?;
+                        mesh.uvs.push(v);
+                    }
+                    [base, base + 1, base + 2]
+                }
+                None => [origin(mesh); 3],
+            };
+            mesh.uv_indices.push(corners);
+        }
         if normal_indices != FLAT || !mesh.normal_indices.is_empty() {
             // Keep normal_indices parallel to triangles once any triangle is smooth.
             mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
@@ -1189,9 +1232,11 @@ impl Evaluator<'_> {
         let vertex_node =
             section(NodeKind::VertexVectors, &mut i).expect("grammar requires vertex_vectors");
         let normal_node = section(NodeKind::NormalVectors, &mut i);
+        let uv_node = section(NodeKind::UvVectors, &mut i);
         let face_node =
             section(NodeKind::FaceIndices, &mut i).expect("grammar requires face_indices");
         let normal_index_node = section(NodeKind::NormalIndices, &mut i);
+        let uv_index_node = section(NodeKind::UvIndices, &mut i);
         let vertices = self.vector_list(vertex_node)?;
         let normals = match normal_node {
             Some(n) => self.vector_list(n)?,
@@ -1220,8 +1265,40 @@ impl Evaluator<'_> {
                 normal_index_node.map_or(node.word_span, |n| n.word_span),
             ));
         }
+        // `uv_vectors` and `uv_indices` (without indices, one uv per vertex takes the face
+        // indices, and a single uv serves every corner, as in POV-Ray).
+        let uvs = match uv_node {
+            Some(n) => {
+                let count = self.list_count(n)?;
+                let mut uvs = Vec::with_capacity(count);
+                for e in &n.args[1..] {
+                    uvs.push(self.uv(e)?);
+                }
+                uvs
+            }
+            None => Vec::new(),
+        };
+        let uv_faces = match uv_index_node {
+            Some(n) => {
+                let list = self.index_list(n, uvs.len())?;
+                if list.len() != faces.len() {
+                    return Err(Diagnostic::error("the number of uv indices must equal the number of faces", n.word_span));
+                }
+                list
+            }
+            None if uvs.is_empty() => Vec::new(),
+            None if uvs.len() == vertices.len() => faces.clone(),
+            None if uvs.len() == 1 => vec![[0; 3]; faces.len()],
+            None => {
+                return Err(Diagnostic::error(
+                    "mesh2 needs uv_indices unless it has one uv per vertex",
+                    uv_node.map_or(node.word_span, |n| n.word_span),
+                ));
+            }
+        };
         let (mut mesh, degenerate, dropped_smooth) =
-            assemble_mesh(&vertices, &normals, &faces, &normal_faces);
+            assemble_mesh(&vertices, &normals, &faces, &normal_faces, &uv_faces);
+        mesh.uvs = uvs;
         if degenerate + dropped_smooth > 0 {
             self.warn(Diagnostic::warning(
                 format!(
@@ -1259,6 +1336,7 @@ impl Evaluator<'_> {
             &data.normals,
             &data.faces,
             &data.normal_faces,
+            &[],
         );
         if degenerate + dropped_smooth > 0 {
             self.warn(Diagnostic::warning(
@@ -1422,6 +1500,7 @@ pub(super) fn assemble_mesh(
     normals: &[DVec3],
     faces: &[[u32; 3]],
     normal_faces: &[[u32; 3]],
+    uv_faces: &[[u32; 3]],
 ) -> (Mesh, usize, usize) {
     let mut mesh = Mesh {
         vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
@@ -1429,6 +1508,8 @@ pub(super) fn assemble_mesh(
         triangles: Vec::with_capacity(faces.len()),
         normal_indices: Vec::new(),
         inside_vector: None,
+        uvs: Vec::new(),
+        uv_indices: Vec::new(),
     };
     let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
     let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
@@ -1452,6 +1533,9 @@ pub(super) fn assemble_mesh(
             }
         }
         mesh.triangles.push(*face);
+        if let Some(uv) = uv_faces.get(k) {
+            mesh.uv_indices.push(*uv);
+        }
         if normal_index != FLAT || !mesh.normal_indices.is_empty() {
             mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);
             mesh.normal_indices.push(normal_index);

@@ -768,7 +768,7 @@ impl<'a> Evaluator<'a> {
                 Item::Word(w) => {
                     if w.word == "uv_vectors" {
                         return Err(Diagnostic::error(
-                            "unsupported: `uv_vectors` (UV mapping is not supported by trace yet)",
+                            "unsupported: `uv_vectors` of a bicubic_patch (its own uv corners are not supported by trace yet)",
                             w.span,
                         ));
                     }

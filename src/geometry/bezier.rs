@@ -121,7 +121,7 @@ pub fn patch_mesh(points: &Net, u_steps: u32, v_steps: u32, flatness: f64) -> Tr
     subdivide(points, points, (0.0, 1.0), (0.0, 1.0), 0, (u_steps, v_steps), flatness, &mut pieces);
     let n = pieces.vertices.len() as u32 / 3;
     let triangles: Vec<[u32; 3]> = (0..n).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
-    TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles)
+    TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles, Vec::new(), Vec::new())
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -77,6 +77,23 @@ impl super::shape::Surface for Cuboid {
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
         Some((self.min, self.max))
     }
+
+    /// POV-Ray's cube map: the six faces unfolded in a 4 × 3 cross, none mirrored seen from
+    /// outside.
+    fn uv(&self, p: DVec3, part: u32) -> Option<glam::DVec2> {
+        let q = (p - self.min) / (self.max - self.min);
+        let axis = (part as usize).min(2);
+        let high = p[axis] >= (self.min[axis] + self.max[axis]) * 0.5;
+        let (u, v) = match (axis, high) {
+            (0, false) => (q.z / 4.0, 1.0 / 3.0 + q.y / 3.0),
+            (0, true) => (3.0 / 4.0 - q.z / 4.0, 1.0 / 3.0 + q.y / 3.0),
+            (1, false) => (1.0 / 4.0 + q.x / 4.0, q.z / 3.0),
+            (1, true) => (1.0 / 4.0 + q.x / 4.0, 1.0 - q.z / 3.0),
+            (_, false) => (1.0 - q.x / 4.0, 1.0 / 3.0 + q.y / 3.0),
+            (_, true) => (1.0 / 4.0 + q.x / 4.0, 1.0 / 3.0 + q.y / 3.0),
+        };
+        Some(glam::DVec2::new(u, v))
+    }
 }
 
 #[cfg(test)]

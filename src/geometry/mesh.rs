@@ -25,6 +25,10 @@ pub struct TriangleMesh {
     /// Where each BVH primitive's group of triangles starts in `triangles` (plus the end).
     group_start: Vec<u32>,
     bvh: Bvh2,
+    /// `uv_vectors`: the corners' surface coordinates.
+    uvs: Vec<glam::DVec2>,
+    /// Per triangle (BVH order), indices into `uvs`; empty when the mesh has none.
+    uv_indices: Vec<[u32; 3]>,
     /// `inside_vector`, if given.
     pub inside_vector: Option<DVec3>,
     /// Bounding box in object space.
@@ -102,6 +106,8 @@ impl TriangleMesh {
         triangles: Vec<[u32; 3]>,
         normals: Vec<DVec3>,
         normal_indices: Vec<[u32; 3]>,
+        uvs: Vec<glam::DVec2>,
+        uv_indices: Vec<[u32; 3]>,
     ) -> TriangleMesh {
         let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
         for v in &vertices {
@@ -154,6 +160,7 @@ impl TriangleMesh {
         // Triangles in BVH order: group by group, as the BVH lists its primitives.
         let mut triangles_ordered = Vec::with_capacity(triangles.len());
         let mut normal_ordered = Vec::with_capacity(normal_indices.len());
+        let mut uv_ordered = Vec::with_capacity(uv_indices.len());
         let mut group_start = Vec::with_capacity(bvh.primitive_indices.len() + 1);
         for &g in &bvh.primitive_indices {
             group_start.push(triangles_ordered.len() as u32);
@@ -161,6 +168,9 @@ impl TriangleMesh {
                 triangles_ordered.push(triangles[k as usize]);
                 if !normal_indices.is_empty() {
                     normal_ordered.push(normal_indices[k as usize]);
+                }
+                if !uv_indices.is_empty() {
+                    uv_ordered.push(uv_indices[k as usize]);
                 }
             }
         }
@@ -172,6 +182,8 @@ impl TriangleMesh {
             normal_indices: normal_ordered,
             group_start,
             bvh,
+            uvs,
+            uv_indices: uv_ordered,
             inside_vector: None,
             bounds: (lo, hi),
         }
@@ -279,6 +291,26 @@ impl TriangleMesh {
         }
     }
 
+    /// The surface coordinates at `p` on `triangle`: its corners' `uv_vectors` weighted by
+    /// POV-Ray's barycentric weights (each corner's, from the distance to the opposite side);
+    /// (0, 0) without uv_vectors.
+    pub fn uv(&self, p: DVec3, triangle: u32) -> glam::DVec2 {
+        let Some(indices) = self.uv_indices.get(triangle as usize) else {
+            return glam::DVec2::ZERO;
+        };
+        let [a, b, c] = self.corners(triangle as usize);
+        // The weight of corner `p0`, with `p1` and `p2` the other two: the projection of the
+        // point onto the height from the side p1–p2 (1 at the corner, 0 on that side).
+        let weight = |p0: DVec3, p1: DVec3, p2: DVec3| {
+            let (side, adjacent) = (p2 - p1, p2 - p0);
+            let height = side * (adjacent.dot(side) / side.dot(side)) - adjacent;
+            1.0 + (p - p0).dot(height) / height.dot(height)
+        };
+        let w = [weight(a, b, c), weight(b, a, c), weight(c, a, b)];
+        let uv = indices.map(|i| self.uvs[i as usize]);
+        w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2]
+    }
+
     /// Whether a point is inside: only a mesh with an `inside_vector` has an inside (an odd
     /// number of crossings along that vector), as in POV-Ray.
     pub fn contains(&self, p: DVec3) -> bool {
@@ -318,6 +350,10 @@ impl super::shape::Surface for TriangleMesh {
     fn occludes(&self, ray: &Ray) -> bool {
         self.occluded(ray)
     }
+
+    fn uv(&self, p: DVec3, triangle: u32) -> Option<glam::DVec2> {
+        Some(TriangleMesh::uv(self, p, triangle))
+    }
 }
 
 #[cfg(test)]
@@ -349,7 +385,7 @@ mod tests {
             t.push([q[0], q[1], q[2]]);
             t.push([q[0], q[2], q[3]]);
         }
-        TriangleMesh::new(v, t, Vec::new(), Vec::new())
+        TriangleMesh::new(v, t, Vec::new(), Vec::new(), Vec::new(), Vec::new())
     }
 
     #[test]

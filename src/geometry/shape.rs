@@ -53,6 +53,13 @@ pub trait Surface {
     fn occludes(&self, ray: &Ray) -> bool {
         !self.intersect(ray).is_empty()
     }
+
+    /// The surface's (u, v) at object-space point `p` of part `part`, for `uv_mapping`;
+    /// `None` for shapes without coordinates of their own (POV-Ray then takes the world
+    /// point's x and y).
+    fn uv(&self, _p: DVec3, _part: u32) -> Option<glam::DVec2> {
+        None
+    }
 }
 
 /// A shape behind a pointer is the shape.
@@ -79,6 +86,9 @@ macro_rules! forward_surface {
             }
             fn occludes(&self, ray: &Ray) -> bool {
                 (**self).occludes(ray)
+            }
+            fn uv(&self, p: DVec3, part: u32) -> Option<glam::DVec2> {
+                (**self).uv(p, part)
             }
         }
     };
@@ -163,6 +173,14 @@ macro_rules! shapes {
                     $(Shape::$variant(s) => s.for_each_crossing(ray, &mut each),)*
                 }
                 counters::record(self.kind(), any);
+            }
+
+            /// The surface's (u, v) at object-space point `p` of part `part` (see
+            /// [`Surface::uv`]).
+            pub fn uv(&self, p: DVec3, part: u32) -> Option<glam::DVec2> {
+                match self {
+                    $(Shape::$variant(s) => s.uv(p, part),)*
+                }
             }
 
             /// Whether anything of the shape lies on the ray (counted).

@@ -60,6 +60,32 @@ impl super::shape::Surface for Sphere {
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
         Some((self.centre - self.radius.abs(), self.centre + self.radius.abs()))
     }
+
+    /// POV-Ray's sphere coordinates: u the longitude from +x towards +z (0 to 1), v the
+    /// latitude from the south pole (0) to the north (1).
+    fn uv(&self, p: DVec3, _part: u32) -> Option<glam::DVec2> {
+        let d = p - self.centre;
+        let len = d.length();
+        if len == 0.0 {
+            return Some(glam::DVec2::ZERO);
+        }
+        let d = d / len;
+        let v = 0.5 + d.y.asin() / std::f64::consts::PI;
+        let flat = d.x * d.x + d.z * d.z;
+        let u = if flat > 1e-10 {
+            let flat = flat.sqrt();
+            let theta = if d.z == 0.0 {
+                if d.x > 0.0 { 0.0 } else { std::f64::consts::PI }
+            } else {
+                let a = (d.x / flat).acos();
+                if d.z < 0.0 { std::f64::consts::TAU - a } else { a }
+            };
+            theta / std::f64::consts::TAU
+        } else {
+            0.0
+        };
+        Some(glam::DVec2::new(u, v))
+    }
 }
 
 #[cfg(test)]

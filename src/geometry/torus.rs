@@ -92,6 +92,16 @@ impl super::shape::Surface for Torus {
         let (a, b) = (self.major + self.minor, self.minor);
         Some((DVec3::new(-a, -b, -a), DVec3::new(a, b, a)))
     }
+
+    /// POV-Ray's torus coordinates: u around the y axis (decreasing from −x), v around the
+    /// tube.
+    fn uv(&self, p: DVec3, _part: u32) -> Option<glam::DVec2> {
+        use std::f64::consts::{PI, TAU};
+        let u = 1.0 - (p.z.atan2(p.x) + PI) / TAU;
+        let x = (p.x * p.x + p.z * p.z).sqrt() - self.major;
+        let v = (p.y.atan2(x) + PI) / TAU;
+        Some(glam::DVec2::new(u, v))
+    }
 }
 
 #[cfg(test)]

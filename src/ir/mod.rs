@@ -582,6 +582,11 @@ pub struct Mesh {
     pub normal_indices: Vec<[u32; 3]>,
     /// `inside_vector`: the direction used for inside tests, if given.
     pub inside_vector: Option<DVec3>,
+    /// `uv_vectors`: the surface coordinates the triangles' corners take (`uv_mapping`).
+    pub uvs: Vec<glam::DVec2>,
+    /// Per triangle, indices into `uvs`; empty when the mesh has none (every point is then at
+    /// (0, 0), as in POV-Ray).
+    pub uv_indices: Vec<[u32; 3]>,
 }
 
 /// The marker for a flat triangle in [`Mesh::normal_indices`].
@@ -596,14 +601,24 @@ impl std::fmt::Debug for Mesh {
         }
         let index_sum: u64 = self.triangles.iter().flatten().map(|&i| i as u64).sum();
         let smooth = self.normal_indices.iter().filter(|n| **n != FLAT).count();
-        f.debug_struct("Mesh")
-            .field("vertices", &self.vertices.len())
+        let mut d = f.debug_struct("Mesh");
+        d.field("vertices", &self.vertices.len())
             .field("triangles", &self.triangles.len())
             .field("smooth_triangles", &smooth)
             .field("vertex_checksum", &format_args!("{sum:.4}"))
             .field("index_checksum", &index_sum)
-            .field("inside_vector", &self.inside_vector)
-            .finish()
+            .field("inside_vector", &self.inside_vector);
+        if !self.uvs.is_empty() {
+            let uv_sum: f64 = self
+                .uvs
+                .iter()
+                .enumerate()
+                .map(|(i, v)| (i as f64 + 1.0) * (v.x + 2.0 * v.y))
+                .sum();
+            d.field("uvs", &self.uvs.len())
+                .field("uv_checksum", &format_args!("{uv_sum:.4}"));
+        }
+        d.finish()
     }
 }
 

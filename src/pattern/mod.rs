@@ -496,7 +496,7 @@ impl Pattern {
             PatternKind::Pavement(pv) => pv.value([x, y, z]),
             PatternKind::Tiling(n) => tiling::tiling(i32::from(*n), [x, y, z]),
             // (Without a surface: POV-Ray's value when there is no intersection.)
-            PatternKind::Slope(_) | PatternKind::Aoi => 0.0,
+            PatternKind::Slope(_) | PatternKind::Aoi | PatternKind::UvMapping => 0.0,
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
             PatternKind::Brick { size, mortar } => brick(p, *size, *mortar),
             PatternKind::Cells => {
@@ -765,6 +765,9 @@ pub enum PatternKind {
     Slope(Box<Slope>),
     /// `aoi`: the angle between the surface's normal and the ray, 0 to 1 for 0 to 180°.
     Aoi,
+    /// `uv_mapping`: no value of its own; its map's one entry sees the surface's (u, v, 0)
+    /// instead of the point.
+    UvMapping,
 }
 
 /// What a pattern may see of the surface besides its point (POV-Ray's intersection and ray):

@@ -612,6 +612,8 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
         mesh.triangles.clone(),
         mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
         mesh.normal_indices.clone(),
+        mesh.uvs.clone(),
+        mesh.uv_indices.clone(),
     );
     built.inside_vector = mesh.inside_vector;
     built

@@ -16,6 +16,8 @@ pub struct Material {
     pub map: Option<Box<MaterialMap>>,
     /// Whether light may pass through somewhere (asked for every shadow ray's candidates).
     see_through: bool,
+    /// Whether some pattern of it is uv-mapped.
+    uses_uv: bool,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -41,10 +43,13 @@ impl Material {
                         .entries
                         .iter()
                         .map(|(v, e)| {
-                            // The entries lie in the pattern's space: placed in the world.
+                            // The entries lie in the pattern's space: placed in the world
+                            // (a uv-mapped entry sees (u, v, 0) instead).
                             let mut e = e.clone();
                             if let Some(t) = &m.transform {
-                                e.transform(**t);
+                                if m.pattern.kind != crate::pattern::PatternKind::UvMapping {
+                                    e.transform(**t);
+                                }
                             }
                             (*v, Material::new(&e, scene))
                         })
@@ -53,7 +58,14 @@ impl Material {
             }),
             finish: Arc::clone(&t.finish),
             see_through: false,
+            uses_uv: false,
         };
+        m.uses_uv = m.layers().any(|l| {
+            l.pigment.uses_uv() || l.normal.as_ref().is_some_and(|n| n.uses_uv())
+        }) || m.map.as_ref().is_some_and(|map| {
+            map.pattern.kind == crate::pattern::PatternKind::UvMapping
+                || map.entries.iter().any(|(_, e)| e.uses_uv)
+        });
         m.see_through = match &m.map {
             Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
             None => m.layers().all(|l| l.pigment.may_be_transparent()),
@@ -80,6 +92,12 @@ impl Material {
         m.map = Some(Box::new(map));
         m.see_through = see_through;
         m
+    }
+
+    /// Whether some pattern of the material looks at the surface's (u, v) (`uv_mapping`):
+    /// only then does a hit work them out.
+    pub fn uses_uv(&self) -> bool {
+        self.uses_uv
     }
 
     /// The layers, top first.
@@ -129,6 +147,9 @@ impl MaterialMap {
         surface: &crate::pattern::Surface,
         mut f: impl FnMut(&'m Material, DVec3) -> Rgb,
     ) -> Rgb {
+        if self.pattern.kind == crate::pattern::PatternKind::UvMapping {
+            return f(&self.entries[0].1, surface.uv.extend(0.0));
+        }
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         if let Some(elements) = &self.blob {
             return self.blob_blend(elements, q, p, f);

@@ -291,6 +291,16 @@ impl Object {
 
     /// Whether a ray may reach the object through its `bounded_by` shapes.
     #[inline]
+    /// The surface's (u, v) at world point `p` of part `part` (`uv_mapping`): the shape's own
+    /// coordinates, or POV-Ray's default, the world point's x and y.
+    pub fn uv(&self, p: DVec3, part: u32) -> glam::DVec2 {
+        let local = match &self.transform {
+            None => p,
+            Some(t) => t.object_from_world.transform_point3(p),
+        };
+        self.shape.uv(local, part).unwrap_or(glam::DVec2::new(p.x, p.y))
+    }
+
     /// `no_image`, `no_reflection`, `double_illuminate`.
     pub fn sight(&self) -> crate::ir::Sight {
         self.extra.as_ref().map_or_else(Default::default, |e| e.sight)

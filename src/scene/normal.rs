@@ -47,6 +47,12 @@ pub struct Normal {
 }
 
 impl Normal {
+    /// Whether the normal (or one in its map) is uv-mapped.
+    pub fn uses_uv(&self) -> bool {
+        self.pattern.kind == PatternKind::UvMapping
+            || self.map.as_ref().is_some_and(|m| m.iter().any(|(_, n)| n.uses_uv()))
+    }
+
     /// The perturbation as placed by the IR, its pattern using noise generator `generator`
     /// unless it names its own.
     pub fn new(n: &ir::Normal, scene: crate::pattern::SceneDefaults) -> Normal {
@@ -84,6 +90,12 @@ impl Normal {
     /// The perturbed unit normal at world point `p` of `surface`, for the unit normal `n`
     /// (facing the ray).
     pub fn perturb_on(&self, p: DVec3, n: DVec3, surface: &Surface) -> DVec3 {
+        // `uv_mapping`: the entry perturbs at the surface's (u, v, 0), whatever moved the normal.
+        if self.pattern.kind == PatternKind::UvMapping {
+            if let Some(map) = &self.map {
+                return map[0].1.perturb_on(surface.uv.extend(0.0), n, surface).normalize();
+            }
+        }
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         let tp = self.pattern.warp(q);
         let unit = |v: DVec3| if self.no_bump_scale { v } else { v.normalize() };

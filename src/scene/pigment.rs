@@ -62,6 +62,17 @@ impl Pigment {
         }
     }
 
+    /// Whether the pigment (or one inside it) is uv-mapped.
+    pub fn uses_uv(&self) -> bool {
+        match &self.kind {
+            Kind::Pattern(m) => {
+                m.pattern.kind == PatternKind::UvMapping
+                    || matches!(&m.map, Map::Pigments(ps) if ps.iter().any(|(_, p)| p.uses_uv()))
+            }
+            _ => false,
+        }
+    }
+
     /// The colour everywhere, if the pigment is a solid colour.
     pub fn solid(&self) -> Option<Colour> {
         match &self.kind {
@@ -99,6 +110,11 @@ impl Pigment {
             .map_or(p, |m| m.transform_point3(p));
         match &self.kind {
             Kind::Solid(c) => *c,
+            // `uv_mapping`: the entry sees the surface's (u, v, 0), whatever moved the pigment.
+            Kind::Pattern(m) if m.pattern.kind == PatternKind::UvMapping => match &m.map {
+                Map::Pigments(ps) => ps[0].1.colour_on(surface.uv.extend(0.0), surface),
+                Map::Colours(cs) => cs[0].1,
+            },
             Kind::Pattern(m) if m.pattern.kind == PatternKind::Average => {
                 // POV-Ray's average: the entries weighted by their values.
                 let w = m.pattern.warp(q);

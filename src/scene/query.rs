@@ -117,18 +117,24 @@ impl Scene {
         if geometric_normal.dot(normal) < 0.0 {
             geometric_normal = -geometric_normal;
         }
+        let material = object.side(normal, ray.direction);
+        let uv = if self.material(material).uses_uv() {
+            object.uv(point, hit.part)
+        } else {
+            glam::DVec2::ZERO
+        };
         SurfaceHit {
             point,
             texture_point: point,
             normal,
             geometric_normal,
-            material: object.side(normal, ray.direction),
+            material,
             object: hit.object,
             surface: crate::pattern::Surface {
                 point,
                 normal,
                 direction: ray.direction,
-                uv: glam::DVec2::ZERO,
+                uv,
             },
         }
     }

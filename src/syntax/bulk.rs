@@ -1,8 +1,8 @@
 //! The fast path for big `mesh2` lists.
 //!
 //! A mesh2 of a million triangles is tens of megabytes of `<x, y, z>` text. Before the text
-//! goes to pest, the bodies of `vertex_vectors`, `normal_vectors`, `face_indices` and
-//! `normal_indices` that are nothing but a count and plain numeric 3-vectors are read here
+//! goes to pest, the bodies of `vertex_vectors`, `normal_vectors`, `face_indices`,
+//! `normal_indices` and `uv_indices` that are nothing but a count and plain numeric 3-vectors are read here
 //! directly into arrays, and blanked out of the copy pest parses (a marker byte, then spaces,
 //! so every other offset stays the same). Anything else in a body (an expression, a comment, a
 //! directive) leaves it to the grammar, so the meaning is the same either way.
@@ -39,11 +39,12 @@ pub struct Prescanned {
     pub lists: HashMap<usize, BulkList>,
 }
 
-const KEYWORDS: [&[u8]; 4] = [
+const KEYWORDS: [&[u8]; 5] = [
     b"vertex_vectors",
     b"normal_vectors",
     b"face_indices",
     b"normal_indices",
+    b"uv_indices",
 ];
 
 /// Reads the plain list bodies of `text`, which starts at byte `offset` of its file.

@@ -191,6 +191,14 @@ pub enum NodeKind {
     SlopePointAt,
     /// `altitude A [, LOW, HIGH]` in `slope { … }`.
     SlopeAltitude,
+    /// `uv_vectors { n, UV… }` of a mesh2.
+    UvVectors,
+    /// `uv_indices { n, <a, b, c>… }` of a mesh2.
+    UvIndices,
+    /// `uv_vectors UV1, UV2, UV3` of a mesh's triangle.
+    TriangleUv,
+    /// `uv_mapping` in a pigment, normal, texture or object.
+    UvMapping,
     /// `mandel` or `julia` after `magnet N`.
     MagnetForm,
     /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
@@ -892,6 +900,9 @@ impl Lower {
             Rule::normal_vectors => NodeKind::NormalVectors,
             Rule::face_indices => NodeKind::FaceIndices,
             Rule::normal_indices => NodeKind::NormalIndices,
+            Rule::mesh_uv_vectors => NodeKind::UvVectors,
+            Rule::uv_indices => NodeKind::UvIndices,
+            Rule::triangle_uv => NodeKind::TriangleUv,
             Rule::flag => NodeKind::Flag,
             Rule::translate => NodeKind::Translate,
             Rule::rotate => NodeKind::Rotate,
@@ -954,6 +965,7 @@ impl Lower {
             Rule::image_type => NodeKind::ImageType,
             Rule::image_gamma => NodeKind::ImageGamma,
             Rule::magnet_form => NodeKind::MagnetForm,
+            Rule::uv_mapping => NodeKind::UvMapping,
             Rule::slope_block => NodeKind::SlopeBlock,
             Rule::slope_point_at => NodeKind::SlopePointAt,
             Rule::slope_altitude => NodeKind::SlopeAltitude,
@@ -1337,6 +1349,9 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_gamma
+            | kw_uv_vectors
+            | kw_uv_indices
+            | kw_uv_mapping
             | kw_altitude
             | kw_light_object
             | fractal_side
