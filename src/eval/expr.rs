@@ -6,8 +6,8 @@ use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
 /// Functions whose value is a string (evaluated by `Evaluator::string`).
-pub(super) const STRING_FUNCTIONS: [&str; 7] =
-    ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr"];
+pub(super) const STRING_FUNCTIONS: [&str; 8] =
+    ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime"];
 
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
 const EQUALITY_TOLERANCE: f64 = 1e-10;
@@ -140,6 +140,14 @@ impl Evaluator<'_> {
             "image_width" => Value::Float(self.options.width as f64),
             "image_height" => Value::Float(self.options.height as f64),
             "version" => Value::Float(self.version.unwrap_or(3.7)),
+            "input_file_name" => Value::Str(self.input_file_name.clone()),
+            // Days since 2000-01-01 00:00 UTC (POV-Ray's clock for `datetime`).
+            "now" => {
+                let since_epoch = std::time::SystemTime::now()
+                    .duration_since(std::time::UNIX_EPOCH)
+                    .map_or(0.0, |d| d.as_secs_f64());
+                Value::Float((since_epoch - 946_684_800.0) / 86_400.0)
+            }
             _ => return Err(self.unknown_word(name, span)),
         })
     }

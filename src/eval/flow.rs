@@ -401,6 +401,23 @@ impl<'a> Evaluator<'a> {
 
     /// The string functions, by name (`name` is one of [`STRING_FUNCTIONS`]).
     fn string_call(&mut self, name: &str, args: &[syntax::Expr], span: Span) -> Result<String> {
+        if name == "datetime" {
+            if args.is_empty() || args.len() > 2 {
+                check_arity(name, 2, args.len(), span)?;
+            }
+            let days = self.float(&args[0])?;
+            let format = match args.get(1) {
+                Some(f) => {
+                    let f = self.string(f)?;
+                    if f.is_empty() {
+                        return Err(Diagnostic::error("empty format string", args[1].span));
+                    }
+                    f
+                }
+                None => "%Y-%m-%d %H:%M:%SZ".to_string(),
+            };
+            return Ok(super::datetime::format(days, &format));
+        }
         let arity = match name {
             "concat" => args.len().max(1),
             "chr" | "strupr" | "strlwr" => 1,

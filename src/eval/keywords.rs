@@ -736,6 +736,7 @@ const SUPPORTED: &[&str] = &[
     "normal_indices",
     "normal_map",
     "normal_vectors",
+    "now",
     "number_of_sides",
     "number_of_tiles",
     "number_of_waves",
@@ -1019,7 +1020,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this light_source item is not supported by trace yet"
         }
         "bokeh" => "this camera item is not supported by trace yet",
-        "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" | "now" => {
+        "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" => {
             "not supported by trace yet"
         }
         _ => return None,

@@ -9,6 +9,7 @@ mod expr;
 mod files;
 mod flow;
 mod function;
+mod datetime;
 mod heightfield;
 mod images;
 pub mod keywords;
@@ -197,7 +198,9 @@ pub fn evaluate(
         .map(|p| p.to_path_buf())
         .unwrap_or_default();
     let sandbox = sandbox::Sandbox::new(&scene_dir, &options.include_paths);
+    let input_file_name = sources.file(file).path.display().to_string();
     let mut ev = Evaluator::new(options, sandbox, sources, services);
+    ev.input_file_name = input_file_name;
     ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
@@ -344,6 +347,8 @@ pub(crate) struct Evaluator<'a> {
     next_medium: u32,
     /// The next `light_group`'s number.
     next_light_group: u32,
+    /// `input_file_name`: the scene file as named.
+    input_file_name: String,
     background: Rgb,
     default_texture: Texture,
     /// The interior of objects without one, shared by all of them.
@@ -404,6 +409,7 @@ impl<'a> Evaluator<'a> {
             objects: Vec::new(),
             next_medium: 0,
             next_light_group: 0,
+            input_file_name: String::new(),
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             default_interior: Default::default(),
