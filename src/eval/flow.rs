@@ -485,6 +485,10 @@ impl<'a> Evaluator<'a> {
         let nodes = self.macro_items(call)?;
         let mut object = None;
         let result = self.each_item(&nodes, &mut |ev, n| {
+            // An unsupported construct the macro leaves (`difference { … }`): named.
+            if n.kind == NodeKind::Unknown && super::keywords::reason(&n.word).is_some() {
+                return Err(ev.unknown_word(&n.word, n.word_span));
+            }
             if object.is_some() || !super::object::is_object(n.kind) {
                 return Err(Diagnostic::error(
                     "expected the macro to give exactly one object",

@@ -565,6 +565,20 @@ impl<'a> Evaluator<'a> {
 
     fn statement(&mut self, node: &Node) -> Result<()> {
         match node.kind {
+            // A declared object standing alone: placed, as POV-Ray does.
+            NodeKind::IdentRef => match self.lookup(node)? {
+                Value::Object(object) => self.place(*object, node.word_span)?,
+                other => {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "{} `{}` cannot stand alone here (only a declared object can)",
+                            other.kind_name(),
+                            node.word
+                        ),
+                        node.word_span,
+                    ));
+                }
+            },
             NodeKind::Default => {
                 self.each_item(&node.children, &mut |ev, child| {
                     match child.kind {
@@ -576,6 +590,10 @@ impl<'a> Evaluator<'a> {
                         NodeKind::Finish => {
                             let base = std::sync::Arc::clone(&ev.default_texture.finish);
                             ev.default_texture.finish = ev.shared_finish_block(child, &base)?;
+                        }
+                        NodeKind::Normal => {
+                            let base = ev.default_texture.normal.take();
+                            ev.default_texture.normal = Some(Box::new(ev.normal(child, base)?));
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),
                     }
@@ -672,6 +690,13 @@ impl<'a> Evaluator<'a> {
     pub(super) fn item_value(&mut self, node: &Node) -> Result<Value> {
         Ok(match node.kind {
             _ if object::is_object(node.kind) => Value::Object(Box::new(self.object(node)?)),
+            // A declared light: an object made of it (`object { L }` places it).
+            NodeKind::LightSource => {
+                let (light, looks) = self.light(node)?;
+                let mut object = looks.unwrap_or_else(object::ObjectValue::empty);
+                object.lights.push(light);
+                Value::Object(Box::new(object))
+            }
             NodeKind::Pigment => {
                 let base = self.default_texture.pigment.clone();
                 Value::Pigment(self.pigment(node, base)?)
@@ -922,6 +947,12 @@ impl<'a> Evaluator<'a> {
     /// A `light_source`, and its `looks_like` object (placed at the light, casting no
     /// shadow).
     fn light(&mut self, node: &Node) -> Result<(ir::Light, Option<object::ObjectValue>)> {
+        // `light_source { L transformations }` with a declared light `L`.
+        if let Some(syntax::ExprKind::Ident(name)) = node.args.first().map(|e| &e.kind) {
+            if let Some(Value::Object(o)) = self.env.get(name).cloned() {
+                return self.declared_light(node, *o);
+            }
+        }
         let position = self.vec3(&node.args[0])?;
         // A light without a colour is black (POV-Ray accepts it silently).
         let colour = match node.args.get(1) {
@@ -1138,6 +1169,43 @@ impl<'a> Evaluator<'a> {
             object.cast_no_shadow();
             object
         });
+        Ok((light, looks))
+    }
+
+    /// `light_source { L … }` with `L` a declared light (an object holding one light):
+    /// the light moved by the transformations that follow.
+    fn declared_light(
+        &mut self,
+        node: &Node,
+        mut object: object::ObjectValue,
+    ) -> Result<(ir::Light, Option<object::ObjectValue>)> {
+        let Some(light) = object.lights.pop().filter(|_| object.lights.is_empty()) else {
+            return Err(Diagnostic::error(
+                "a light_source takes a declared light here (not another object)",
+                node.args[0].span,
+            ));
+        };
+        if let Some(extra) = node.args.get(1) {
+            return Err(Diagnostic::error(
+                "unsupported: a colour after a declared light (give the light's colour where it is declared)",
+                extra.span,
+            ));
+        }
+        let mut moves = Transform::IDENTITY;
+        self.each_item(&node.children, &mut |ev, item| {
+            if !Self::is_transform(item) {
+                return Err(Diagnostic::error(
+                    format!("unsupported: `{}` on a declared light (only transformations may follow its name)", item.word),
+                    item.word_span,
+                ));
+            }
+            moves = moves.then(ev.transform(item)?);
+            Ok(())
+        })?;
+        object.lights.push(light);
+        object.transform(moves, false);
+        let light = object.lights.pop().expect("the light pushed above");
+        let looks = (!object.parts_is_empty()).then_some(object);
         Ok((light, looks))
     }
 

@@ -55,7 +55,7 @@ pub struct ObjectValue {
     /// below it); the object's interior comes after them.
     own_interiors: u32,
     /// Light sources inside a `union` (or an `object {}`): they move with it.
-    lights: Vec<ir::Light>,
+    pub(super) lights: Vec<ir::Light>,
     /// A union (its `hollow` goes only to members without their own).
     is_union: bool,
     /// `global_lights` given on a `light_group`.
@@ -162,7 +162,7 @@ impl ObjectValue {
         }
     }
 
-    fn empty() -> ObjectValue {
+    pub(super) fn empty() -> ObjectValue {
         ObjectValue {
             parts: Vec::new(),
             texture: None,
@@ -176,6 +176,11 @@ impl ObjectValue {
             bounds: Vec::new(),
             id: 0,
         }
+    }
+
+    /// Whether the object has no shapes (a light alone).
+    pub(super) fn parts_is_empty(&self) -> bool {
+        self.parts.is_empty()
     }
 
     /// Marks every part as casting no shadow (a light's `looks_like` object).

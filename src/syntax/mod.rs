@@ -1006,7 +1006,7 @@ impl Lower {
             Rule::colour_item => NodeKind::ColourItem,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
-            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word | Rule::spline_kind => {
+            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word | Rule::spline_kind | Rule::bare_name => {
                 NodeKind::IdentRef
             }
             Rule::array_value => NodeKind::Array,
@@ -1052,7 +1052,7 @@ impl Lower {
             node.args = pair.into_inner().filter(|p| is_expr(p.as_rule())).map(|p| self.expr(p)).collect();
             return node;
         }
-        if rule == Rule::item_ref {
+        if rule == Rule::item_ref || rule == Rule::bare_name {
             let mut inner = pair.into_inner();
             let name = inner.next().expect("item_ref starts with a name");
             node.word = name.as_str().to_string();
