@@ -709,6 +709,7 @@ const SUPPORTED: &[&str] = &[
     "map_type",
     "marble",
     "material",
+    "material_map",
     "matrix",
     "max",
     "max_extent",
@@ -869,6 +870,8 @@ const SUPPORTED: &[&str] = &[
     "threshold",
     "tiff",
     "tightness",
+    "tile2",
+    "tiles",
     "tiling",
     "tolerance",
     "toroidal",
@@ -975,7 +978,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "density_file" | "object_pattern" | "material_map" => {
+        "density_file" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "clipped_by"
@@ -1002,8 +1005,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         => {
             "this shape or shape item is not supported by trace yet"
         }
-        "ratio"
-        | "tile2" | "tiles" | "width" => {
+        "ratio" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
         "df3" => "file input/output is not supported by trace yet",

@@ -105,6 +105,58 @@ impl Evaluator<'_> {
     }
 }
 
+impl Evaluator<'_> {
+    /// `material_map { [TYPE] "file" [map_type N] [once] [interpolate N] texture {…}… }`: the
+    /// textures numbered 0, 1, … picked by the image's pixels (their palette index, or red).
+    fn material_map(&mut self, node: &Node) -> Result<ir::TextureMap> {
+        let image_node = Node {
+            kind: NodeKind::ImageMap,
+            span: node.span,
+            word: "material_map".to_string(),
+            word_span: node.word_span,
+            args: node.args.clone(),
+            children: node.children.iter().filter(|c| c.kind != NodeKind::Texture).cloned().collect(),
+        };
+        let read = self.image_map(&image_node)?;
+        let mut entries = Vec::new();
+        for t in node.children.iter().filter(|c| c.kind == NodeKind::Texture) {
+            entries.push((entries.len() as f64, self.texture(t)?));
+        }
+        if entries.is_empty() {
+            return Err(Diagnostic::error("a material_map needs at least one texture", node.word_span));
+        }
+        Ok(ir::TextureMap {
+            pattern: Pattern::new(PatternKind::MaterialIndex(Arc::new(read.image), entries.len() as u32)),
+            transform: None,
+            entries,
+        })
+    }
+}
+
+/// The `object` pattern's test: 1 inside the object, 0 outside.
+struct InsideTest(Box<dyn ir::ObjectQuery>);
+
+impl std::fmt::Debug for InsideTest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("InsideTest")
+    }
+}
+
+impl crate::func::Native for InsideTest {
+    fn params(&self) -> usize {
+        3
+    }
+
+    fn size(&self) -> usize {
+        1
+    }
+
+    fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
+        let inside = self.0.inside(glam::DVec3::new(args[0], args[1], args[2]));
+        [f64::from(u8::from(inside)), 0.0, 0.0, 0.0, 0.0]
+    }
+}
+
 /// With `uv_mapping` among a block's items: the block made of the items after it (what sees
 /// the surface's (u, v, 0) instead of the point, as POV-Ray parses the rest of the block).
 fn after_uv_mapping(node: &Node) -> Option<Node> {
@@ -255,9 +307,38 @@ impl Evaluator<'_> {
                 }
                 NodeKind::ImageMap | NodeKind::Unknown if item.word == "image_map" => {
                     return Err(Diagnostic::error(
-                        "unsupported: an `image_map` pattern of textures (material_map is not supported by trace yet)",
+                        "an `image_map` is a pigment: a texture picked by an image is a `material_map`",
                         item.word_span,
                     ));
+                }
+                NodeKind::MaterialMap => {
+                    texture.map = Some(Box::new(ev.material_map(item)?));
+                    pattern_span = Some(item.word_span);
+                }
+                NodeKind::Tiles => {
+                    // (A layered texture on either side.)
+                    let layered = |ev: &mut Self, nodes: &[Node]| -> Result<Texture> {
+                        let mut t: Option<Texture> = None;
+                        for n in nodes.iter().filter(|n| n.kind == NodeKind::Texture) {
+                            let top = ev.texture(n)?;
+                            t = Some(match t {
+                                Some(below) => layer(top, below),
+                                None => top,
+                            });
+                        }
+                        Ok(t.unwrap_or_else(|| ev.default_texture.clone()))
+                    };
+                    let first = item.children.iter().find(|c| c.kind == NodeKind::TilesFirst);
+                    let first = layered(ev, first.map_or(&[][..], |f| &f.children))?;
+                    let second = layered(ev, &item.children)?;
+                    texture.map = Some(Box::new(TextureMap {
+                        pattern: Pattern::new(PatternKind::Checker),
+                        transform: None,
+                        // (POV-Ray's tiles puts the first textures on checker's second
+                        // squares.)
+                        entries: vec![(0.0, second), (1.0, first)],
+                    }));
+                    pattern_span = Some(item.word_span);
                 }
                 _ => return Err(ev.unknown_item(item, "texture")),
             }
@@ -692,6 +773,21 @@ impl Evaluator<'_> {
         if let Some(f) = item.children.iter().find(|c| c.kind == NodeKind::Function) {
             return Ok((PatternKind::Function(self.function(f)?), args));
         }
+        // `object { OBJECT C0, C1 }`: inside or outside the object.
+        if let Some(o) = item.children.iter().find(|c| c.kind == NodeKind::ObjectPattern) {
+            let first = o.children.first().expect("the grammar gives the object");
+            let object = match first.kind {
+                NodeKind::IdentRef => match self.lookup(first)? {
+                    Value::Object(object) => *object,
+                    other => return Err(type_error("an object", &other, first.span)),
+                },
+                _ => self.object(first)?,
+            };
+            let parts = self.placed_parts(&object, first.span)?;
+            let query = (self.object_query)(parts);
+            let inside = crate::func::NativeRef(Arc::new(InsideTest(query)));
+            return Ok((PatternKind::Object(inside), &o.args));
+        }
         // `pigment_pattern { … }`: a pigment's grey.
         if let Some(p) = item.children.iter().find(|c| c.kind == NodeKind::PigmentPattern) {
             let pigment = self.pigment(p, Pigment::solid(Colour::default()))?;
@@ -836,7 +932,7 @@ impl Evaluator<'_> {
         let six = [red, green, blue, c(1.0, 1.0, 0.0), c(0.0, 1.0, 1.0), c(1.0, 0.0, 1.0)];
         // Discrete patterns: POV-Ray's default entries, keyed 0, 1, ….
         let list: Vec<(f64, Colour)> = match kind {
-            PatternKind::Checker => vec![(0.0, blue), (1.0, green)],
+            PatternKind::Checker | PatternKind::Object(_) => vec![(0.0, blue), (1.0, green)],
             PatternKind::Hexagon => vec![(0.0, blue), (1.0, green), (2.0, red)],
             PatternKind::Brick { .. } => vec![(0.0, c(0.5, 0.5, 0.5)), (1.0, c(0.6, 0.15, 0.15))],
             // (POV-Ray's tables key these 0, 1, 1, 1 …, but it picks a discrete pattern's
@@ -1487,8 +1583,13 @@ impl Evaluator<'_> {
                 }
             }
         }
-        // `use_index` on a palette image: bump heights are the pixels' indices.
-        let indices = if use_index && role == "bump_map" { picture.indices } else { None };
+        // `use_index` on a palette image: bump heights are the pixels' indices; a
+        // material_map picks its textures by them.
+        let indices = if use_index && role == "bump_map" || role == "material_map" {
+            picture.indices
+        } else {
+            None
+        };
         let image = ImageMap {
             file: file.clone(),
             width: picture.width,

@@ -249,6 +249,22 @@ impl ImageMap {
         sum.map(|s| s as f32)
     }
 
+    /// `material_map`: the texture number at pattern point `q`: the pixel's palette index,
+    /// else its red × 255 (truncated); 0 off a `once` image.
+    pub fn material(&self, q: DVec3) -> f64 {
+        let Some((u, y)) = self.pixel_coords(q) else {
+            return 0.0;
+        };
+        match &self.indices {
+            Some(indices) => {
+                let (w, h) = (self.width as usize, self.height as usize);
+                let (i, j) = ((u as usize).min(w - 1), (y as usize).min(h - 1));
+                f64::from(indices[j * w + i])
+            }
+            None => f64::from((self.texel(u, y)[0] * 255.0) as i32),
+        }
+    }
+
     /// The pixel at pattern point `q`, `None` off a `once` image.
     pub fn at(&self, q: DVec3) -> Option<[f32; 5]> {
         self.pixel_coords(q).map(|(u, y)| self.texel(u, y))

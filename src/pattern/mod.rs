@@ -366,7 +366,9 @@ impl Pattern {
             | PatternKind::Spiral2(_) => wave.shape = WaveShape::Triangle,
             // POV-Ray skips the frequency step for these (a `frequency` after the pattern
             // turns it back on).
-            PatternKind::Quilted { .. } | PatternKind::Image(..) => wave.frequency = 0.0,
+            PatternKind::Quilted { .. }
+            | PatternKind::Image(..)
+            | PatternKind::MaterialIndex(..) => wave.frequency = 0.0,
             _ if kind.list_len().is_some() => wave.frequency = 0.0,
             _ => {}
         }
@@ -495,6 +497,13 @@ impl Pattern {
             PatternKind::Fractal(f) => f.value([x, y, z]),
             PatternKind::Pavement(pv) => pv.value([x, y, z]),
             PatternKind::Tiling(n) => tiling::tiling(i32::from(*n), [x, y, z]),
+            PatternKind::Object(inside) => inside.0.eval(&[x, y, z], generator)[0],
+            PatternKind::MaterialIndex(image, textures) => {
+                // POV-Ray wraps a number above the count (the count itself is the last one).
+                let k = image.material(p);
+                let n = f64::from(*textures);
+                if k > n { k % n } else { k }
+            }
             // (Without a surface: POV-Ray's value when there is no intersection.)
             PatternKind::Slope(_) | PatternKind::Aoi | PatternKind::UvMapping => 0.0,
             PatternKind::Bozo | PatternKind::Bumps | PatternKind::Spotted => noise(p, generator),
@@ -765,6 +774,12 @@ pub enum PatternKind {
     Slope(Box<Slope>),
     /// `aoi`: the angle between the surface's normal and the ray, 0 to 1 for 0 to 180°.
     Aoi,
+    /// `material_map { image … }`: the number of the texture an image's pixel picks (its
+    /// palette index, else its red × 255; above the number of textures, modulo it), 0 off a
+    /// `once` image.
+    MaterialIndex(std::sync::Arc<image::ImageMap>, u32),
+    /// `object { … }`: 1 inside the object, 0 outside (two entries).
+    Object(crate::func::NativeRef),
     /// `uv_mapping`: no value of its own; its map's one entry sees the surface's (u, v, 0)
     /// instead of the point.
     UvMapping,
@@ -958,7 +973,7 @@ impl PatternKind {
     /// For a discrete pattern, how many entries its list has (its values are 0, 1, …).
     pub fn list_len(&self) -> Option<usize> {
         match self {
-            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
             PatternKind::Square => Some(4),
             PatternKind::Triangular => Some(6),

@@ -199,6 +199,14 @@ pub enum NodeKind {
     TriangleUv,
     /// `uv_mapping` in a pigment, normal, texture or object.
     UvMapping,
+    /// The `object { … }` pattern.
+    ObjectPattern,
+    /// `material_map { image textures }` in a texture.
+    MaterialMap,
+    /// `tiles { textures tile2 textures }` in a texture.
+    Tiles,
+    /// The textures before `tile2`.
+    TilesFirst,
     /// `mandel` or `julia` after `magnet N`.
     MagnetForm,
     /// `filter all F` or `filter I, F` (or `transmit`) in an image_map.
@@ -965,6 +973,10 @@ impl Lower {
             Rule::image_type => NodeKind::ImageType,
             Rule::image_gamma => NodeKind::ImageGamma,
             Rule::magnet_form => NodeKind::MagnetForm,
+            Rule::material_map => NodeKind::MaterialMap,
+            Rule::tiles => NodeKind::Tiles,
+            Rule::tiles_first => NodeKind::TilesFirst,
+            Rule::object_pattern => NodeKind::ObjectPattern,
             Rule::uv_mapping => NodeKind::UvMapping,
             Rule::slope_block => NodeKind::SlopeBlock,
             Rule::slope_point_at => NodeKind::SlopePointAt,
@@ -1349,6 +1361,9 @@ fn is_word(rule: Rule) -> bool {
         word | keyword
             | kw_adc_bailout
             | kw_gamma
+            | kw_material_map
+            | kw_tiles
+            | kw_tile2
             | kw_uv_vectors
             | kw_uv_indices
             | kw_uv_mapping
