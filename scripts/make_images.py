@@ -4,7 +4,8 @@ POV-Ray reads, made from examples/trace_logo.png (64x48) and examples/heights/hi
 logo.jpg (4:2:0 JPEG), logo.gif (non-interlaced, 256-colour palette), logo.tga, logo.ppm,
 logo.bmp, logo.tif, grey.pgm, hills.gif (palette height field: the index is the height),
 hills16.pgm (16-bit grey height field), ramp.hdr (Radiance RGBE, values up to 3) and
-sky.exr (a trace render of examples/mirrors.rt at 64x48, float channels).
+sky.exr (a trace render of examples/mirrors.rt at 64x48, float channels), and the DF3 voxel
+files blob8.df3 (8x8x8, 8-bit) and blob16.df3 (6x6x6, 16-bit).
 
 Usage: python3 scripts/make_images.py   (needs Pillow; the EXR needs a built trace)
 """
@@ -51,6 +52,16 @@ def main():
     )
     with open(out("ramp.hdr"), "wb") as f:
         f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (h, w) + pixels)
+    for name, n, bits in (("blob8.df3", 8, 8), ("blob16.df3", 6, 16)):
+        data = b""
+        for z in range(n):
+            for y in range(n):
+                for x in range(n):
+                    d = math.sqrt((x - n / 2 + 0.5) ** 2 + (y - n / 2 + 0.5) ** 2 + (z - n / 2 + 0.5) ** 2) / (n / 2)
+                    v = max(0.0, 1.0 - d) * (0.6 + 0.4 * math.sin(x * 1.3 + y * 0.7))
+                    data += bytes([int(v * 255)]) if bits == 8 else struct.pack(">H", int(v * 65535))
+        with open(out(name), "wb") as f:
+            f.write(struct.pack(">HHH", n, n, n) + data)
     trace = os.path.join(ROOT, "target", "release", "trace")
     if os.path.exists(trace):
         subprocess.run([trace, os.path.join(ROOT, "examples", "mirrors.rt"), "-o", out("sky.exr"),

@@ -606,8 +606,10 @@ const SUPPORTED: &[&str] = &[
     "default",
     "defined",
     "degrees",
+    "density_file",
     "dents",
     "deprecated",
+    "df3",
     "diffuse",
     "dimension_size",
     "dimensions",
@@ -978,9 +980,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "density_file" => {
-            "this pattern or pattern modifier is not supported by trace yet"
-        }
         "clipped_by"
         | "split_union" | "cutaway_textures" => LATER,
         "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
@@ -1008,7 +1007,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "ratio" | "width" => {
             "this pattern or pattern modifier is not supported by trace yet"
         }
-        "df3" => "file input/output is not supported by trace yet",
         "all" | "alpha" | "premultiplied" => {
             "this image_map item is not supported by trace yet"
         }

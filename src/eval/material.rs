@@ -22,7 +22,7 @@ fn brick_mortar(m: f64) -> f64 {
 }
 
 /// POV-Ray's bump amount when a normal pattern gives none.
-const DEFAULT_BUMP_SIZE: f64 = 0.5;
+pub(super) const DEFAULT_BUMP_SIZE: f64 = 0.5;
 
 /// A number as POV-Ray keeps it in single precision (map keys, some pattern parameters).
 fn single(v: f64) -> f64 {
@@ -872,6 +872,23 @@ impl Evaluator<'_> {
             }
             "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
             "aoi" => PatternKind::Aoi,
+            "density_file" => {
+                let df3 = matches!(args.first().map(|e| &e.kind), Some(crate::syntax::ExprKind::Ident(w)) if w == "df3");
+                let (true, Some(file_expr)) = (df3, args.get(1)) else {
+                    return Err(Diagnostic::error(
+                        "`density_file` reads a DF3 file: density_file df3 \"file.df3\"",
+                        item.span,
+                    ));
+                };
+                let name = self.string(file_expr)?;
+                let path = self.find_file(&name, "density file", file_expr.span)?;
+                let cannot = |e: &dyn std::fmt::Display| {
+                    Diagnostic::error(format!("cannot read density file {}: {e}", path.display()), file_expr.span)
+                };
+                let bytes = std::fs::read(&path).map_err(|e| cannot(&e))?;
+                let data = crate::pattern::density::parse(&name, &bytes).map_err(|e| cannot(&e))?;
+                return Ok((PatternKind::Density(Arc::new(data)), &args[2..]));
+            }
             "slope" => return Ok((PatternKind::Slope(Box::new(self.slope(item)?)), &[])),
             "agate" => PatternKind::Agate { turb: 1.0 },
             "average" => PatternKind::Average,
@@ -1021,7 +1038,7 @@ impl Evaluator<'_> {
                     // (A discrete pattern bumps by the slope of its entry number, as in POV-Ray;
                     // a list of normals after it is not read yet.)
                     let amount = match rest {
-                        [] => DEFAULT_BUMP_SIZE,
+                        [] => ev.default_bump_size,
                         [e] => ev.float(e)?,
                         [_, extra, ..] => {
                             return Err(Diagnostic::error(
@@ -1037,10 +1054,10 @@ impl Evaluator<'_> {
                     let (kind, amount) = match read.kind {
                         ImageRole::Bumps(size) => (
                             PatternKind::BumpMap(Arc::new(read.image)),
-                            size.unwrap_or(DEFAULT_BUMP_SIZE),
+                            size.unwrap_or(ev.default_bump_size),
                         ),
                         ImageRole::Pattern(use_) => {
-                            (PatternKind::Image(Arc::new(read.image), use_), DEFAULT_BUMP_SIZE)
+                            (PatternKind::Image(Arc::new(read.image), use_), ev.default_bump_size)
                         }
                         ImageRole::Colours => {
                             return Err(Diagnostic::error(
@@ -1197,6 +1214,13 @@ impl Evaluator<'_> {
                 }
             }
             "coords" | "size" => return Err(misplaced("facets")),
+            "interpolate" => {
+                let n = self.float(arg()?)?;
+                match &mut pattern.kind {
+                    PatternKind::Density(d) => Arc::make_mut(d).interpolation = n.max(0.0) as u32,
+                    _ => return Err(misplaced("density_file")),
+                }
+            }
             "exponent" => {
                 let e = arg()?;
                 let v = self.float(e)? as i32;

@@ -349,6 +349,8 @@ pub(crate) struct Evaluator<'a> {
     next_light_group: u32,
     /// `input_file_name`: the scene file as named.
     input_file_name: String,
+    /// The amount of a normal that gives none (`#default { normal { bump_size B } }`).
+    default_bump_size: f64,
     background: Rgb,
     default_texture: Texture,
     /// The interior of objects without one, shared by all of them.
@@ -410,6 +412,7 @@ impl<'a> Evaluator<'a> {
             next_medium: 0,
             next_light_group: 0,
             input_file_name: String::new(),
+            default_bump_size: material::DEFAULT_BUMP_SIZE,
             background: Rgb::ZERO,
             default_texture: Texture::default(),
             default_interior: Default::default(),
@@ -590,6 +593,16 @@ impl<'a> Evaluator<'a> {
                         NodeKind::Finish => {
                             let base = std::sync::Arc::clone(&ev.default_texture.finish);
                             ev.default_texture.finish = ev.shared_finish_block(child, &base)?;
+                        }
+                        // A default normal of `bump_size` alone: the amount of the normals
+                        // made after it (POV-Ray copies the default normal into each).
+                        NodeKind::Normal
+                            if child.children.iter().all(|c| c.kind == NodeKind::BumpSize)
+                                && !child.children.is_empty() =>
+                        {
+                            for c in &child.children {
+                                ev.default_bump_size = f64::from(ev.float(&c.args[0])? as f32);
+                            }
                         }
                         NodeKind::Normal => {
                             let base = ev.default_texture.normal.take();

@@ -12,6 +12,7 @@
 //! here or in a file of this module), and the keyword's arm in the evaluator's pattern table
 //! (`eval::material::pattern_kind`).
 
+pub mod density;
 pub mod fractal;
 pub mod image;
 pub mod pavement;
@@ -498,6 +499,7 @@ impl Pattern {
             PatternKind::Pavement(pv) => pv.value([x, y, z]),
             PatternKind::Tiling(n) => tiling::tiling(i32::from(*n), [x, y, z]),
             PatternKind::Object(inside) => inside.0.eval(&[x, y, z], generator)[0],
+            PatternKind::Density(d) => d.value(p),
             PatternKind::MaterialIndex(image, textures) => {
                 // POV-Ray wraps a number above the count (the count itself is the last one).
                 let k = image.material(p);
@@ -778,6 +780,8 @@ pub enum PatternKind {
     /// palette index, else its red × 255; above the number of textures, modulo it), 0 off a
     /// `once` image.
     MaterialIndex(std::sync::Arc<image::ImageMap>, u32),
+    /// `density_file df3 "file"`: a DF3 file's voxels over the unit cube.
+    Density(std::sync::Arc<density::DensityFile>),
     /// `object { … }`: 1 inside the object, 0 outside (two entries).
     Object(crate::func::NativeRef),
     /// `uv_mapping`: no value of its own; its map's one entry sees the surface's (u, v, 0)
