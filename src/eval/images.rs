@@ -260,7 +260,7 @@ fn png_details(path: &Path) -> Result<(Encoding, Option<Vec<u8>>), String> {
     let info = reader.info();
     let encoding = if info.srgb.is_some() {
         Encoding::Srgb
-    } else if let Some(g) = info.source_gamma {
+    } else if let Some(g) = info.gama_chunk.or(info.source_gamma) {
         Encoding::Power(1.0 / f64::from(g.into_value()))
     } else {
         Encoding::Srgb
@@ -326,11 +326,12 @@ impl Picture {
                 heights[z * w + x] = if let Some(indices) = &self.indices {
                     u16::from(indices[i]) * 256
                 } else if self.grey {
-                    (r * 65535.0f32) as u16
+                    (r * 65535.0f32) as i64 as u16
                 } else if self.deep {
                     super::heightfield::grey16([r, g, b].map(|c| (c * 65535.0).round() as u16))
                 } else {
-                    ((f64::from(r) * 256.0 + f64::from(g)) * 255.0) as u16
+                    // (Above 1, as in a float image, POV-Ray's 16-bit height wraps around.)
+                    ((f64::from(r) * 256.0 + f64::from(g)) * 255.0) as i64 as u16
                 };
             }
         }

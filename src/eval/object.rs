@@ -352,7 +352,7 @@ impl Evaluator<'_> {
             }
             NodeKind::Triangle | NodeKind::SmoothTriangle => {
                 let mut mesh = Mesh::default();
-                self.add_triangle(&mut mesh, node)?;
+                self.add_triangle(&mut mesh, node, false)?;
                 if mesh.triangles.is_empty() {
                     ObjectValue::empty()
                 } else {
@@ -381,7 +381,7 @@ impl Evaluator<'_> {
                             m.span,
                         ));
                     }
-                    ev.add_triangle(&mut mesh, t)
+                    ev.add_triangle(&mut mesh, t, true)
                 })?;
                 modifiers = self.inside_vector(&mut mesh, rest)?;
                 if mesh.triangles.is_empty() {
@@ -572,12 +572,12 @@ impl Evaluator<'_> {
         for light in &mut group.lights {
             light.group.get_or_insert(id);
         }
-        for part in &mut group.parts {
-            let lights = part.light_group.get_or_insert_with(|| ir::LightGroup {
-                groups: Vec::new(),
+        // (The members of a group inside see only that group's lights, as in POV-Ray.)
+        for part in group.parts.iter_mut().filter(|p| p.light_group.is_none()) {
+            part.light_group = Some(ir::LightGroup {
+                groups: vec![id],
                 global_lights: group.global_lights,
             });
-            lights.groups.push(id);
         }
     }
 
@@ -1128,7 +1128,9 @@ impl Evaluator<'_> {
 
     /// Appends a `triangle` or `smooth_triangle` node to a mesh (a degenerate one is dropped
     /// with a warning, as POV-Ray does).
-    fn add_triangle(&mut self, mesh: &mut Mesh, node: &Node) -> Result<()> {
+    /// (`in_mesh`: a mesh's member, which POV-Ray makes flat when its three normals are
+    /// equal; a stand-alone smooth triangle keeps them.)
+    fn add_triangle(&mut self, mesh: &mut Mesh, node: &Node, in_mesh: bool) -> Result<()> {
         let smooth = node.kind == NodeKind::SmoothTriangle;
         let step = if smooth { 2 } else { 1 };
         let mut p = [DVec3::ZERO; 3];
@@ -1140,7 +1142,7 @@ impl Evaluator<'_> {
             }
         }
         let normals = if smooth { Some(n) } else { None };
-        let Some(normal_indices) = self.triangle_normals(mesh, &p, normals, node.word_span) else {
+        let Some(normal_indices) = self.triangle_normals(mesh, &p, normals, in_mesh, node.word_span) else {
             return Ok(());
         };
         let base = mesh.vertices.len() as u32;
@@ -1188,6 +1190,7 @@ impl Evaluator<'_> {
         mesh: &mut Mesh,
         p: &[DVec3; 3],
         normals: Option<[DVec3; 3]>,
+        flatten_equal: bool,
         span: Span,
     ) -> Option<[u32; 3]> {
         let ng = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -1199,7 +1202,7 @@ impl Evaluator<'_> {
             return None;
         }
         let Some(n) = normals else { return Some(FLAT) };
-        match smooth_normals(ng, &n) {
+        match smooth_normals(ng, &n, flatten_equal) {
             SmoothNormals::Flat => Some(FLAT),
             SmoothNormals::Degenerate => {
                 self.warn(Diagnostic::warning(
@@ -1484,9 +1487,9 @@ enum SmoothNormals {
 
 /// POV-Ray's smooth-triangle rule: unit vertex normals, flat when all equal, degenerate when
 /// they are not all on the same side of the geometric normal `ng`.
-fn smooth_normals(ng: DVec3, n: &[DVec3; 3]) -> SmoothNormals {
+fn smooth_normals(ng: DVec3, n: &[DVec3; 3], flatten_equal: bool) -> SmoothNormals {
     let unit = n.map(|v| v.normalize_or_zero());
-    if unit[0] == unit[1] && unit[1] == unit[2] {
+    if flatten_equal && unit[0] == unit[1] && unit[1] == unit[2] {
         return SmoothNormals::Flat;
     }
     let sides = unit.map(|v| v.dot(ng));
@@ -1528,7 +1531,7 @@ pub(super) fn assemble_mesh(
         let mut normal_index = FLAT;
         if let Some(nf) = normal_faces.get(k) {
             let n = nf.map(|i| unit_normals[i as usize]);
-            match smooth_normals(ng, &n) {
+            match smooth_normals(ng, &n, true) {
                 SmoothNormals::Flat => {}
                 SmoothNormals::Degenerate => {
                     dropped_smooth += 1;

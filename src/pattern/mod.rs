@@ -795,8 +795,8 @@ pub enum PatternKind {
 pub struct Surface {
     /// The point, in the world.
     pub point: DVec3,
-    /// The surface's unit normal there as the shape gives it (world space, not turned to
-    /// the ray); zero where there is no surface (functions, the sky, shadow rays).
+    /// The surface's unit normal there as the shape gives it, turned to face the ray (world
+    /// space); zero where there is no surface (functions, the sky, shadow rays).
     pub normal: DVec3,
     /// The ray's direction.
     pub direction: DVec3,

@@ -132,7 +132,8 @@ impl Scene {
             object: hit.object,
             surface: crate::pattern::Surface {
                 point,
-                normal,
+                // (POV-Ray's slope and aoi see the normal turned to face the ray.)
+                normal: if normal.dot(ray.direction) > 0.0 { -normal } else { normal },
                 direction: ray.direction,
                 uv,
             },
