@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Renders the scenes of tests/unseen (written by someone who had not seen trace's code, using
-# POV-Ray's standard include files) with trace and POV-Ray 3.7 at 320x240 without
+# POV-Ray's standard include files; t1-t10 with the image files of tests/unseen/img) with
+# trace and POV-Ray 3.7 at 320x240 without
 # anti-aliasing, and prints each scene's mean FLIP. Needs povray and povray-includes.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -10,6 +11,7 @@ TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 # (From a copy: some scenes write data files beside themselves.)
 cp "$ROOT"/tests/unseen/*.pov "$TMP/"
+cp -r "$ROOT"/tests/unseen/img "$TMP/"
 cd "$TMP"
 echo "| scene | mean FLIP |"
 echo "|---|---:|"
