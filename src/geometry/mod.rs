@@ -269,6 +269,23 @@ impl Ray {
     }
 }
 
+/// POV-Ray's longitude of (x, z) for surface coordinates: the angle from +x towards +z as a
+/// fraction of a turn, 0 to 1; 0 where x² + z² ≤ 1e-10 (at a pole any value would do).
+pub fn longitude(x: f64, z: f64) -> f64 {
+    let flat = x * x + z * z;
+    if flat <= 1e-10 {
+        return 0.0;
+    }
+    let flat = flat.sqrt();
+    let theta = if z == 0.0 {
+        if x > 0.0 { 0.0 } else { std::f64::consts::PI }
+    } else {
+        let a = (x / flat).acos();
+        if z < 0.0 { std::f64::consts::TAU - a } else { a }
+    };
+    theta / std::f64::consts::TAU
+}
+
 /// Secondary-ray origin for a ray leaving the surface at `p` (geometric normal `ng`, either
 /// side) in direction `dir`: `p` pushed off the surface, to the side `dir` goes, by a distance
 /// proportional to the magnitude of the coordinates involved.

@@ -182,6 +182,18 @@ impl super::shape::Surface for Ovus {
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
         self.crossings(ray, f)
     }
+
+    /// POV-Ray's ovus coordinates: those of a sphere around the point half the top radius up
+    /// the axis.
+    fn uv(&self, p: DVec3, _part: u32) -> Option<glam::DVec2> {
+        let d = DVec3::new(p.x, p.y - self.top / 2.0, p.z);
+        let len = d.length();
+        if len == 0.0 {
+            return Some(glam::DVec2::ZERO);
+        }
+        let d = d / len;
+        Some(glam::DVec2::new(super::longitude(d.x, d.z), 0.5 + d.y.asin() / std::f64::consts::PI))
+    }
 }
 
 #[cfg(test)]

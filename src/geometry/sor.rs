@@ -201,6 +201,25 @@ impl super::shape::Surface for Sor {
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
         self.crossings(ray, f)
     }
+
+    /// POV-Ray's sor coordinates: u the longitude; v up the pieces (each an equal share of
+    /// 0 to 1, by height within it), and on the base and cap discs by the distance from the
+    /// axis (−1 to 0 and 1 to 2).
+    fn uv(&self, p: DVec3, part: u32) -> Option<glam::DVec2> {
+        let u = super::longitude(p.x, p.z);
+        let rho = (p.x * p.x + p.z * p.z).sqrt();
+        let n = self.pieces.len() as f64;
+        let v = match part {
+            BASE => rho / self.base2.sqrt() - 1.0,
+            CAP => -rho / self.cap2.sqrt() + 2.0,
+            _ => {
+                let i = (part - CURVE) as usize;
+                let s = &self.pieces[i];
+                (p.y - s.y1) / (s.y2 - s.y1) / n + i as f64 / n
+            }
+        };
+        Some(glam::DVec2::new(u, v))
+    }
 }
 
 #[cfg(test)]

@@ -71,19 +71,7 @@ impl super::shape::Surface for Sphere {
         }
         let d = d / len;
         let v = 0.5 + d.y.asin() / std::f64::consts::PI;
-        let flat = d.x * d.x + d.z * d.z;
-        let u = if flat > 1e-10 {
-            let flat = flat.sqrt();
-            let theta = if d.z == 0.0 {
-                if d.x > 0.0 { 0.0 } else { std::f64::consts::PI }
-            } else {
-                let a = (d.x / flat).acos();
-                if d.z < 0.0 { std::f64::consts::TAU - a } else { a }
-            };
-            theta / std::f64::consts::TAU
-        } else {
-            0.0
-        };
+        let u = super::longitude(d.x, d.z);
         Some(glam::DVec2::new(u, v))
     }
 }
