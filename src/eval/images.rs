@@ -193,10 +193,18 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
         decoded,
         D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_)
     );
+    let mut deep = deep;
     let mut has_alpha = decoded.color().has_alpha();
     let mut pixels: Vec<[f32; 4]> = decoded.into_rgba32f().pixels().map(|p| p.0).collect();
     match format {
         Some(image::ImageFormat::Hdr) => pixels.iter_mut().for_each(rgbe_midpoint),
+        // POV-Ray reads 16 bits a sample of a TIFF file as their high byte.
+        Some(image::ImageFormat::Tiff) if deep => {
+            for p in &mut pixels {
+                *p = p.map(|c| f32::from(((c * 65535.0).round() as u16) >> 8) / 255.0);
+            }
+            deep = false;
+        }
         // POV-Ray reads an EXR file's channels as half floats, whatever the file holds.
         Some(image::ImageFormat::OpenExr) => {
             for p in &mut pixels {

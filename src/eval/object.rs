@@ -351,7 +351,10 @@ impl Evaluator<'_> {
                 ObjectValue::single(Shape::Torus { major, minor })
             }
             NodeKind::Triangle | NodeKind::SmoothTriangle => {
-                let mut mesh = Mesh::default();
+                let mut mesh = Mesh {
+                    world_uv: true,
+                    ..Mesh::default()
+                };
                 self.add_triangle(&mut mesh, node, false)?;
                 if mesh.triangles.is_empty() {
                     ObjectValue::empty()
@@ -1518,6 +1521,7 @@ pub(super) fn assemble_mesh(
         inside_vector: None,
         uvs: Vec::new(),
         uv_indices: Vec::new(),
+        world_uv: false,
     };
     let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
     let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);

@@ -31,6 +31,9 @@ pub struct TriangleMesh {
     uv_indices: Vec<[u32; 3]>,
     /// `inside_vector`, if given.
     pub inside_vector: Option<DVec3>,
+    /// Without `uv_vectors`, POV-Ray's default coordinates (a stand-alone triangle's) instead
+    /// of (0, 0).
+    pub world_uv: bool,
     /// Bounding box in object space.
     pub bounds: (DVec3, DVec3),
 }
@@ -185,6 +188,7 @@ impl TriangleMesh {
             uvs,
             uv_indices: uv_ordered,
             inside_vector: None,
+            world_uv: false,
             bounds: (lo, hi),
         }
     }
@@ -352,7 +356,7 @@ impl super::shape::Surface for TriangleMesh {
     }
 
     fn uv(&self, p: DVec3, triangle: u32) -> Option<glam::DVec2> {
-        Some(TriangleMesh::uv(self, p, triangle))
+        (!self.world_uv || !self.uv_indices.is_empty()).then(|| TriangleMesh::uv(self, p, triangle))
     }
 }
 

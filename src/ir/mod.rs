@@ -587,6 +587,9 @@ pub struct Mesh {
     /// Per triangle, indices into `uvs`; empty when the mesh has none (every point is then at
     /// (0, 0), as in POV-Ray).
     pub uv_indices: Vec<[u32; 3]>,
+    /// A stand-alone `triangle` or `smooth_triangle`: its surface coordinates are POV-Ray's
+    /// default (the world point's x and y), not a mesh's (0, 0).
+    pub world_uv: bool,
 }
 
 /// The marker for a flat triangle in [`Mesh::normal_indices`].

@@ -616,6 +616,7 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
         mesh.uv_indices.clone(),
     );
     built.inside_vector = mesh.inside_vector;
+    built.world_uv = mesh.world_uv;
     built
 }
 
