@@ -112,9 +112,13 @@ impl Evaluator<'_> {
             }
             _ => Spline::new(SplineKind::Linear),
         };
-        if let Some(kind) = node.children.last() {
-            let named = SplineKind::named(&kind.word).expect("the grammar reads only spline kinds");
-            spline = spline.with_kind(named);
+        for item in &node.children {
+            match SplineKind::named(&item.word) {
+                Some(named) if item.kind == NodeKind::IdentRef => spline = spline.with_kind(named),
+                // (`#default { … }` among the entries: run where it stands, as POV-Ray does.)
+                _ if item.kind == NodeKind::Default => self.statement(item)?,
+                _ => return Err(self.unknown_item(item, "spline")),
+            }
         }
         if args.len() % 2 != 0 {
             return Err(Diagnostic::error(
