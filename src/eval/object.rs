@@ -68,6 +68,10 @@ pub struct ObjectValue {
     pub(super) id: u64,
 }
 
+/// The mark of a light standing directly in the `light_group` being read (its number is
+/// given when the group is complete).
+const OWN_GROUP: u32 = u32::MAX;
+
 /// Whether a node is a directive (run by `each_item` wherever it stands).
 pub(super) fn is_directive(kind: NodeKind) -> bool {
     use NodeKind::*;
@@ -413,7 +417,12 @@ impl Evaluator<'_> {
                 group.is_union = true;
                 self.each_item(&node.children, &mut |ev, item| {
                     let m = if item.kind == NodeKind::LightSource {
-                        let (light, looks) = ev.light(item)?;
+                        let (mut light, looks) = ev.light(item)?;
+                        if node.word == "light_group" {
+                            // (Marked as the group's own: a light inside a member union is a
+                            // global light, as in POV-Ray.)
+                            light.group = Some(OWN_GROUP);
+                        }
                         group.lights.push(light);
                         match looks {
                             Some(m) => m,
@@ -572,8 +581,8 @@ impl Evaluator<'_> {
     fn light_group(&mut self, group: &mut ObjectValue) {
         let id = self.next_light_group;
         self.next_light_group += 1;
-        for light in &mut group.lights {
-            light.group.get_or_insert(id);
+        for light in group.lights.iter_mut().filter(|l| l.group == Some(OWN_GROUP)) {
+            light.group = Some(id);
         }
         // (The members of a group inside see only that group's lights, as in POV-Ray.)
         for part in group.parts.iter_mut().filter(|p| p.light_group.is_none()) {
