@@ -1,16 +1,16 @@
 //! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
 
 use super::value::{MaterialValue, colour5, to_colour};
-use super::images::{Encoding, FileType};
+use super::images::ImageRole;
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
 use crate::pattern::fractal::{self, Fractal, FractalKind};
-use crate::pattern::image::{ImageUse, Interpolation, MapType};
+use crate::pattern::image::ImageUse;
 use crate::pattern::pavement;
 use crate::noise;
 use crate::pattern::{BlackHole, Mapping, MappingWarp};
 use crate::ir::{
-    self, Colour, ColourMap, ImageMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
+    self, Colour, ColourMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
     PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
 };
 use crate::syntax::{Node, NodeKind};
@@ -27,22 +27,6 @@ pub(super) const DEFAULT_BUMP_SIZE: f64 = 0.5;
 /// A number as POV-Ray keeps it in single precision (map keys, some pattern parameters).
 fn single(v: f64) -> f64 {
     f64::from(v as f32)
-}
-
-/// An image read for `image_map`, `image_pattern` or `bump_map`.
-struct ImageRead {
-    image: ImageMap,
-    kind: ImageRole,
-}
-
-/// What an image is read for.
-enum ImageRole {
-    /// `image_map`: its colours.
-    Colours,
-    /// `image_pattern`: a value pattern.
-    Pattern(ImageUse),
-    /// `bump_map`: heights, with the `bump_size` given inside.
-    Bumps(Option<f64>),
 }
 
 impl Evaluator<'_> {
@@ -101,34 +85,6 @@ impl Evaluator<'_> {
             altitude: unit(altitude, altitude_len),
             altitude_range,
             weights: (slope_weight, 1.0 - slope_weight),
-        })
-    }
-}
-
-impl Evaluator<'_> {
-    /// `material_map { [TYPE] "file" [map_type N] [once] [interpolate N] texture {…}… }`: the
-    /// textures numbered 0, 1, … picked by the image's pixels (their palette index, or red).
-    fn material_map(&mut self, node: &Node) -> Result<ir::TextureMap> {
-        let image_node = Node {
-            kind: NodeKind::ImageMap,
-            span: node.span,
-            word: "material_map".to_string(),
-            word_span: node.word_span,
-            args: node.args.clone(),
-            children: node.children.iter().filter(|c| c.kind != NodeKind::Texture).cloned().collect(),
-        };
-        let read = self.image_map(&image_node)?;
-        let mut entries = Vec::new();
-        for t in node.children.iter().filter(|c| c.kind == NodeKind::Texture) {
-            entries.push((entries.len() as f64, self.texture(t)?));
-        }
-        if entries.is_empty() {
-            return Err(Diagnostic::error("a material_map needs at least one texture", node.word_span));
-        }
-        Ok(ir::TextureMap {
-            pattern: Pattern::new(PatternKind::MaterialIndex(Arc::new(read.image), entries.len() as u32)),
-            transform: None,
-            entries,
         })
     }
 }
@@ -1462,175 +1418,6 @@ impl Evaluator<'_> {
             ));
         }
         Ok(ColourMap { entries })
-    }
-
-    /// `image_map { [png] "file" … }`, `image_pattern { … }` or `bump_map { … }`: the image
-    /// (the colours of an image_map decoded to working gamma; the others' numbers as the file
-    /// holds them, as POV-Ray reads them) and what it is for.
-    fn image_map(&mut self, node: &Node) -> Result<ImageRead> {
-        let file_expr = &node.args[0];
-        let file = &match self.eval(file_expr)? {
-            Value::Str(s) => s,
-            other => return Err(type_error("a file name (a string)", &other, file_expr.span)),
-        };
-        let role = node.word.as_str();
-        let (mut once, mut map_type, mut interpolation) = (false, MapType::Planar, Interpolation::Nearest);
-        let (mut use_, mut use_index, mut bump_size) = (ImageUse::Colour, false, None);
-        // (filter or transmit, the palette entry and where it is named, the amount)
-        type SeeThrough = (bool, Option<(i64, crate::diag::Span)>, f32);
-        let mut see_through: Vec<SeeThrough> = Vec::new();
-        let (mut file_type, mut type_span, mut gamma) = (None, file_expr.span, None);
-        self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::ImageType => {
-                    file_type = FileType::from_keyword(&item.word);
-                    type_span = item.span;
-                }
-                NodeKind::ImageGamma => {
-                    gamma = Some(match item.args.first() {
-                        None => Encoding::Srgb,
-                        Some(g) => {
-                            let g_value = ev.float(g)?;
-                            if g_value <= 0.0 {
-                                return Err(Diagnostic::error("gamma value must be positive", g.span));
-                            }
-                            Encoding::Power(g_value)
-                        }
-                    })
-                }
-                NodeKind::Once => once = true,
-                NodeKind::MapType => {
-                    let t = ev.float(&item.args[0])?;
-                    map_type = match t as i64 {
-                        1 => MapType::Spherical,
-                        2 => MapType::Cylindrical,
-                        5 => MapType::Torus,
-                        0 => MapType::Planar,
-                        // (POV-Ray refuses the others in an image_map, and maps planar elsewhere.)
-                        _ if role != "image_map" => MapType::Planar,
-                        _ => {
-                            return Err(Diagnostic::error(
-                                "invalid map_type: an image_map takes 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus)",
-                                item.args[0].span,
-                            ));
-                        }
-                    };
-                }
-                NodeKind::Interpolate => {
-                    let n = ev.float(&item.args[0])?;
-                    interpolation = match n as i64 {
-                        0 | 1 => Interpolation::Nearest,
-                        2 => Interpolation::Bilinear,
-                        3 => Interpolation::Bicubic,
-                        4 => Interpolation::NormalizedDistance,
-                        _ => {
-                            return Err(Diagnostic::error(
-                                "invalid interpolate value: 2 (bilinear), 3 (bicubic) or 4 (normalised distance)",
-                                item.args[0].span,
-                            ));
-                        }
-                    };
-                }
-                NodeKind::ImageSeeThrough if role == "image_map" => {
-                    let filter = item.word == "filter";
-                    let (index, value) = match item.args.as_slice() {
-                        [v] => (None, ev.float(v)?),
-                        [i, v] => (Some(((ev.float(i)? + 0.01) as i64, i.span)), ev.float(v)?),
-                        _ => unreachable!("the grammar gives one or two values"),
-                    };
-                    see_through.push((filter, index, value as f32));
-                }
-                NodeKind::ImageUse if role != "image_map" => match item.word.as_str() {
-                    "use_alpha" if role == "image_pattern" => use_ = ImageUse::Alpha,
-                    "use_alpha" => return Err(ev.unknown_item(item, role)),
-                    "use_index" => (use_, use_index) = (ImageUse::Colour, true),
-                    _ => (use_, use_index) = (ImageUse::Colour, false),
-                },
-                NodeKind::BumpSize if role == "bump_map" => {
-                    bump_size = Some(ev.float(&item.args[0])?)
-                }
-                _ => return Err(ev.unknown_item(item, role)),
-            }
-            Ok(())
-        })?;
-        let (_, picture) = self.read_image(file, file_type, type_span, file_expr.span)?;
-        // An image_map's colours are decoded to linear light (by the scene's `gamma`, else by
-        // the file's own encoding), then put in the working gamma; image_pattern and bump_map
-        // take the numbers as they are, unless the scene gives a `gamma`.
-        let working = self.assumed_gamma.unwrap_or(1.0);
-        let colours = role == "image_map";
-        let encoding = gamma.unwrap_or(picture.encoding);
-        let to_working = |v: f32| {
-            let v = f64::from(v);
-            let linear = match (colours, gamma) {
-                (false, None) => return v as f32,
-                (true, None) if encoding == Encoding::AsWorking => return v as f32,
-                _ => encoding.decode(v),
-            };
-            (if working == 1.0 || !colours { linear } else { linear.powf(1.0 / working) }) as f32
-        };
-        let mut pixels: Vec<[f32; 5]> = picture
-            .pixels
-            .iter()
-            .map(|p| [to_working(p[0]), to_working(p[1]), to_working(p[2]), 0.0, 1.0 - p[3]])
-            .collect();
-        // `filter`/`transmit`: a palette image's entries take them (all, or one by index);
-        // another image adds `all`'s amount to every pixel, as POV-Ray does.
-        for (filter, index, value) in see_through {
-            let channel = if filter { 3 } else { 4 };
-            match (&picture.indices, index) {
-                (Some(indices), index) => {
-                    if let Some((i, span)) = index {
-                        if !(0..256).contains(&i) {
-                            return Err(Diagnostic::error(
-                                format!("palette entry {i} is out of range for this image"),
-                                span,
-                            ));
-                        }
-                    }
-                    for (px, &k) in pixels.iter_mut().zip(indices) {
-                        if index.is_none_or(|(i, _)| i == i64::from(k)) {
-                            px[channel] = value;
-                        }
-                    }
-                }
-                (None, None) => pixels.iter_mut().for_each(|px| px[channel] += value),
-                (None, Some((_, span))) => {
-                    return Err(Diagnostic::error(
-                        format!(
-                            "`{} N, V` sets a palette entry: this image has no palette (use `{} all V`)",
-                            if filter { "filter" } else { "transmit" },
-                            if filter { "filter" } else { "transmit" },
-                        ),
-                        span,
-                    ));
-                }
-            }
-        }
-        // `use_index` on a palette image: bump heights are the pixels' indices; a
-        // material_map picks its textures by them.
-        let indices = if use_index && role == "bump_map" || role == "material_map" {
-            picture.indices
-        } else {
-            None
-        };
-        let image = ImageMap {
-            file: file.clone(),
-            width: picture.width,
-            height: picture.height,
-            pixels,
-            indices,
-            has_alpha: picture.has_alpha,
-            once,
-            map_type,
-            interpolation,
-        };
-        let kind = match role {
-            "image_map" => ImageRole::Colours,
-            "image_pattern" => ImageRole::Pattern(use_),
-            _ => ImageRole::Bumps(bump_size),
-        };
-        Ok(ImageRead { image, kind })
     }
 
     /// `finish { [Name] items }` applied to `base`, shared with an equal finish made before.
