@@ -162,6 +162,18 @@ impl super::shape::Surface for Lathe {
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
         self.crossings(ray, f)
     }
+
+    /// POV-Ray's lathe coordinates: u the longitude, v the spline parameter along the whole
+    /// profile (segment index plus the parameter within it, over the number of segments).
+    fn uv(&self, p: DVec3, part: u32) -> Option<DVec2> {
+        let u = super::longitude(p.x, p.z);
+        let rho = (p.x * p.x + p.z * p.z).sqrt();
+        let s = &self.segments[part as usize];
+        let t = s.nearest(DVec2::new(rho, p.y), self.degree);
+        let t = if at(&s.u, t) < 0.0 { s.nearest(DVec2::new(-rho, p.y), self.degree) } else { t };
+        let v = (t + part as f64) / self.segments.len() as f64;
+        Some(DVec2::new(u, v.min(1.0)))
+    }
 }
 
 #[cfg(test)]
