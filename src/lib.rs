@@ -68,10 +68,13 @@ stages! {
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;
 
-pub use eval::{DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
+pub use eval::{Clock, DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
-pub use render::{Antialias, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed};
+pub use render::{
+    Antialias, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
+    request_stop, stop_requested,
+};
 pub use syntax::{MAX_NESTING, is_identifier};
 
 /// POV-Ray 3.7's reserved words, each with what trace does with it, as the Markdown table of
@@ -106,6 +109,8 @@ pub struct Loaded {
     pub warnings: Vec<String>,
     /// What the scene's `#debug` directives printed.
     pub debug_output: String,
+    /// A key of the texts read (the scene and its includes): equal texts, equal keys.
+    pub sources_key: u64,
 }
 
 /// Errors of the whole pipeline.
@@ -178,6 +183,7 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
                 .map(|w| w.render(&sources))
                 .collect(),
             debug_output: evaluated.debug_output,
+            sources_key: sources.key(),
         }),
         Err(diagnostic) => Err(Error::Scene(LoadError {
             diagnostic,
@@ -204,6 +210,7 @@ pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Er
 pub fn render_to_file(
     scene: ir::Scene,
     options: &RenderOptions,
+    layout: &film::Layout,
     path: &Path,
 ) -> Result<RenderStats, Error> {
     let pool = render::thread_pool(options)?;
@@ -211,9 +218,15 @@ pub fn render_to_file(
     let built = pool.install(|| scene::Scene::build_owned(scene));
     let build_time = start.elapsed();
     let mut bands = render::Bands::new(&built, options, &pool);
-    film::write_streamed(path, options.width, options.height, options.threads, || {
-        bands.next_band()
-    })?;
+    let region = options.region();
+    film::write_streamed(
+        path,
+        region.width(),
+        region.height(),
+        layout,
+        options.threads,
+        || bands.next_band(),
+    )?;
     let mut stats = bands.stats;
     stats.build_time = build_time;
     Ok(stats)

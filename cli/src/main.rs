@@ -2,11 +2,20 @@
 //!
 //! Exit codes: 0 success, 1 render or I/O failure, 2 bad scene or bad arguments.
 
-use clap::{Args, Parser, Subcommand};
+mod job;
+mod parts;
+mod povray;
+mod progress;
+
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
-use trace::{Antialias, Error, LoadOptions, RenderOptions};
+use trace::film::Region;
+use trace::{Error, LoadOptions, RenderOptions};
 
 /// Counts memory against `--max-memory`, so running out ends with a message and exit 1.
 #[global_allocator]
@@ -30,35 +39,73 @@ struct Cli {
 
 #[derive(Args, Debug)]
 struct RenderArgs {
-    /// Scene file (.rt or .pov).
-    #[arg(required = true)]
+    /// Scene file (.rt or .pov). POV-Ray's switches (`+W320 +H240 -A +UA +KFF10 …`), its
+    /// `Key=Value` options and INI files (`render.ini`, `render.ini[Section]`) may stand beside
+    /// trace's options, which win where both are given (docs/command-line.md).
     scene: Option<PathBuf>,
-    /// Output image; the extension picks the format: .exr (linear float) or .png (8-bit sRGB).
-    #[arg(short, long, required = true)]
+    /// Output image; the extension picks the format: .png (8 or 16-bit sRGB), .exr (linear
+    /// float), .ppm. Default: the scene's name beside it with POV-Ray's type (+F), .png.
+    #[arg(short, long)]
     output: Option<PathBuf>,
-    /// Image width in pixels.
-    #[arg(long, default_value_t = 800, value_parser = clap::value_parser!(u32).range(1..=65536))]
-    width: u32,
-    /// Image height in pixels.
-    #[arg(long, default_value_t = 600, value_parser = clap::value_parser!(u32).range(1..=65536))]
-    height: u32,
+    /// Image width in pixels [default: 800].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    width: Option<u32>,
+    /// Image height in pixels [default: 600].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    height: Option<u32>,
     /// Anti-aliasing: `off` (one ray per pixel centre, POV-Ray -A) or a threshold (POV-Ray
-    /// +A<threshold> -J; 0 supersamples every pixel).
-    #[arg(long, default_value = "0.3", value_parser = parse_aa)]
-    aa: AaSetting,
+    /// +A<threshold> -J; 0 supersamples every pixel) [default: 0.3].
+    #[arg(long, value_parser = parse_aa)]
+    aa: Option<AaSetting>,
     /// Anti-aliasing depth, 1..=9 (POV-Ray +R): the grid size per axis for method 1, the
-    /// number of levels for method 2.
-    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=9))]
-    aa_depth: u32,
+    /// number of levels for method 2 [default: 3].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=9))]
+    aa_depth: Option<u32>,
     /// Anti-aliasing method (POV-Ray +AM): 1, a grid in pixels that differ from a neighbour;
-    /// 2, corners shared between pixels, squares split where their corners differ.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=2))]
-    aa_method: u32,
+    /// 2, corners shared between pixels, squares split where their corners differ [default: 1].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=2))]
+    aa_method: Option<u32>,
+    /// Render only this rectangle of the image, X0,Y0,X1,Y1 in pixels (ends exclusive): a
+    /// part of the image, with the same pixels as the whole render, that `trace merge`
+    /// assembles with the other parts (POV-Ray's +SC +EC +SR +ER map onto it).
+    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_region)]
+    region: Option<trace::film::Region>,
+    /// An alpha channel: the background (where it is transparent) and what shows it through
+    /// transparent objects (POV-Ray +UA).
+    #[arg(long)]
+    alpha: bool,
+    /// Bits per channel of a PNG or PPM: 8 or 16 (POV-Ray +FN16).
+    #[arg(long, value_parser = clap::value_parser!(u8).range(8..=16))]
+    bits: Option<u8>,
+    /// Declare a float identifier before the scene is read, NAME=VALUE (repeatable; POV-Ray's
+    /// Declare=NAME=VALUE).
+    #[arg(long, value_name = "NAME=VALUE", value_parser = parse_declare)]
+    declare: Vec<(String, f64)>,
+    /// The clock of a still image (POV-Ray +K).
+    #[arg(long)]
+    clock: Option<f64>,
+    /// Render an animation's frames FIRST..LAST (POV-Ray +KFI +KFF): each output is numbered
+    /// as POV-Ray numbers it (anim01.png …).
+    #[arg(long, value_name = "FIRST..LAST", value_parser = parse_range::<i64>)]
+    frames: Option<(i64, i64)>,
+    /// The clock from the first frame to the last [default: 0..1] (POV-Ray +KI +KF).
+    #[arg(long, value_name = "C0..C1", value_parser = parse_range::<f64>)]
+    clock_range: Option<(f64, f64)>,
+    /// Render only frames A..B of the animation (POV-Ray +SF +EF).
+    #[arg(long, value_name = "A..B", value_parser = parse_range::<i64>)]
+    subset: Option<(i64, i64)>,
+    /// A cyclic animation: the frame after the last is at the final clock (POV-Ray +KC).
+    #[arg(long)]
+    cyclic: bool,
+    /// Continue an interrupted render: keep the rows the output already holds and render the
+    /// rest (POV-Ray +C).
+    #[arg(long = "continue")]
+    continue_trace: bool,
     /// Worker threads for parsing big files, building and rendering (default: one per core).
     /// The image is the same for any count.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
-    /// Print nothing but errors and warnings.
+    /// Print nothing but errors and warnings (no progress line).
     #[arg(short, long)]
     quiet: bool,
     /// Print render statistics (rays by kind, samples, time per phase).
@@ -76,6 +123,41 @@ struct RenderArgs {
     /// Most memory trace may use, e.g. 512M or 8G (default: the memory available at start).
     #[arg(long, value_name = "SIZE", value_parser = parse_memory)]
     max_memory: Option<usize>,
+}
+
+fn parse_region(s: &str) -> Result<trace::film::Region, String> {
+    let v: Vec<u32> = s
+        .split(',')
+        .map(|n| n.trim().parse().ok())
+        .collect::<Option<_>>()
+        .ok_or_else(|| format!("expected X0,Y0,X1,Y1 in pixels, found `{s}`"))?;
+    let [x0, y0, x1, y1] = v[..] else {
+        return Err(format!("expected X0,Y0,X1,Y1 in pixels, found `{s}`"));
+    };
+    Ok(trace::film::Region { x0, y0, x1, y1 })
+}
+
+fn parse_declare(s: &str) -> Result<(String, f64), String> {
+    let (name, value) = s
+        .split_once('=')
+        .ok_or_else(|| format!("expected NAME=VALUE, found `{s}`"))?;
+    if !trace::is_identifier(name) {
+        return Err(format!("`{name}` is not an identifier"));
+    }
+    let value = value
+        .parse()
+        .map_err(|_| format!("expected a number after `{name}=`, found `{value}`"))?;
+    Ok((name.to_string(), value))
+}
+
+fn parse_range<T: std::str::FromStr>(s: &str) -> Result<(T, T), String> {
+    let (a, b) = s
+        .split_once("..")
+        .ok_or_else(|| format!("expected A..B, found `{s}`"))?;
+    match (a.trim().parse(), b.trim().parse()) {
+        (Ok(a), Ok(b)) => Ok((a, b)),
+        _ => Err(format!("expected A..B (two numbers), found `{s}`")),
+    }
 }
 
 fn parse_memory(s: &str) -> Result<usize, String> {
@@ -112,6 +194,17 @@ enum Command {
         #[arg(long)]
         diff: Option<PathBuf>,
     },
+    /// Assemble parts of an image rendered with --region (or POV-Ray's +SC +EC +SR +ER) into
+    /// the whole image: the parts must come from the same scene and settings and tile it
+    /// exactly (or tile a rectangle of it, which gives a bigger part).
+    Merge {
+        /// The image to write (the parts' format).
+        #[arg(short, long)]
+        output: PathBuf,
+        /// The parts.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+    },
     /// Convert a mesh file (OBJ or PLY) to a POV-Ray include declaring it as a mesh2, so a
     /// scene using trace's `mesh_file` extension can be rendered by POV-Ray too.
     Convert {
@@ -126,23 +219,50 @@ enum Command {
     },
 }
 
+/// Whether a render is running (a first Ctrl-C then stops it and writes what is done).
+static RENDERING: AtomicBool = AtomicBool::new(false);
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    // An interrupted write leaves no temporary file behind.
+    // A first Ctrl-C during a render stops it and writes the rows finished (a part that
+    // `--continue` completes); another, or one at any other time, ends at once, leaving no
+    // temporary file behind.
     let _ = ctrlc::set_handler(|| {
+        if RENDERING.load(Ordering::SeqCst) && !trace::stop_requested() {
+            trace::request_stop();
+            eprintln!(
+                "\ntrace: stopping: writing the rows finished (Ctrl-C again to quit at once)"
+            );
+            return;
+        }
         trace::output::interrupt();
         eprintln!("trace: interrupted");
         std::process::exit(130);
     });
-    let result = match cli.command {
-        #[cfg(feature = "flip")]
-        Some(Command::Compare {
-            reference,
-            test,
-            diff,
-        }) => compare(&reference, &test, diff.as_deref()),
-        Some(Command::Convert { mesh, output, name }) => convert(&mesh, &output, name),
-        None => render(&cli.render),
+    let args: Vec<String> = std::env::args_os()
+        .skip(1)
+        .map(|a| a.to_string_lossy().into_owned())
+        .collect();
+    let result = match args.first().map(String::as_str) {
+        Some("compare" | "convert" | "merge" | "help") | None => {
+            let cli = Cli::parse_from(std::iter::once("trace".to_string()).chain(args));
+            run(cli, povray::PovSettings::default())
+        }
+        _ => {
+            let command = Cli::command();
+            let takes_value = |long: &str| {
+                command
+                    .get_arguments()
+                    .find(|a| a.get_long() == Some(long))
+                    .is_some_and(|a| a.get_action().takes_values())
+            };
+            match povray::split(args, takes_value) {
+                Ok((own, pov)) => {
+                    let cli = Cli::parse_from(std::iter::once("trace".to_string()).chain(own));
+                    run(cli, pov)
+                }
+                Err(e) => Err(usage(e)),
+            }
+        }
     };
     match result {
         // (The work ended while an interrupt was being handled: the handler's code.)
@@ -152,6 +272,20 @@ fn main() -> ExitCode {
             eprintln!("{}", failure.message);
             ExitCode::from(failure.code)
         }
+    }
+}
+
+fn run(cli: Cli, pov: povray::PovSettings) -> Result<(), Failure> {
+    match cli.command {
+        #[cfg(feature = "flip")]
+        Some(Command::Compare {
+            reference,
+            test,
+            diff,
+        }) => compare(&reference, &test, diff.as_deref()),
+        Some(Command::Merge { output, parts }) => merge(&output, &parts),
+        Some(Command::Convert { mesh, output, name }) => convert(&mesh, &output, name),
+        None => render(&cli.render, pov),
     }
 }
 
@@ -182,53 +316,92 @@ fn usage(message: String) -> Failure {
     }
 }
 
-fn render(args: &RenderArgs) -> Result<(), Failure> {
-    let (Some(scene_path), Some(output)) = (&args.scene, &args.output) else {
-        return Err(usage("a scene and -o OUTPUT are required".into()));
-    };
-    if trace::film::Format::of(output).is_none() {
-        return Err(usage(format!(
-            "{}: unknown output format (use .exr or .png)",
-            output.display()
-        )));
-    }
-    trace::output::check_writable(output).map_err(|e| Failure {
-        message: format!("error: cannot write {}: {e}", output.display()),
+fn io_failure(message: String) -> Failure {
+    Failure {
+        message: format!("error: {message}"),
         code: 1,
-    })?;
+    }
+}
+
+fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
+    let own = job::Own {
+        scene: args.scene.clone(),
+        output: args.output.clone(),
+        width: args.width,
+        height: args.height,
+        aa: args.aa.map(|a| match a {
+            AaSetting::Off => None,
+            AaSetting::Threshold(t) => Some(t),
+        }),
+        aa_depth: args.aa_depth,
+        aa_method: args.aa_method,
+        threads: args.threads,
+        include_paths: args.include_path.clone(),
+        declares: args.declare.clone(),
+        region: args.region,
+        alpha: args.alpha,
+        bits: args.bits,
+        clock: args.clock,
+        frames: args.frames,
+        clocks: args.clock_range,
+        subset: args.subset,
+        cyclic: args.cyclic,
+        continue_trace: args.continue_trace,
+    };
+    let job = job::resolve(own, pov).map_err(usage)?;
+    for warning in &job.warnings {
+        eprintln!("warning: {warning}");
+    }
     let memory = args
         .max_memory
         .or_else(trace::memory::available)
         .unwrap_or(usize::MAX);
     trace::memory::set_limit(memory);
-    let film_bytes = trace::bytes_needed(args.width, args.height);
+    let film_bytes = trace::bytes_needed(job.width, job.height);
     if film_bytes > memory {
-        return Err(Failure {
-            message: format!(
-                "error: a {}x{} image needs about {} of memory, more than the limit of {} (--max-memory)",
-                args.width,
-                args.height,
-                trace::memory::format_size(film_bytes),
-                trace::memory::format_size(memory)
-            ),
-            code: 1,
-        });
+        return Err(io_failure(format!(
+            "a {}x{} image needs about {} of memory, more than the limit of {} (--max-memory)",
+            job.width,
+            job.height,
+            trace::memory::format_size(film_bytes),
+            trace::memory::format_size(memory)
+        )));
     }
+    for frame in &job.frames {
+        trace::output::check_writable(&frame.output)
+            .map_err(|e| io_failure(format!("cannot write {}: {e}", frame.output.display())))?;
+    }
+    let animated = job.frames.len() > 1;
+    for frame in &job.frames {
+        if animated && !args.quiet {
+            eprintln!(
+                "trace: frame {} (clock {}) → {}",
+                frame.clock.frame,
+                frame.clock.clock,
+                frame.output.display()
+            );
+        }
+        render_frame(args, &job, frame)?;
+        if trace::stop_requested() {
+            break;
+        }
+    }
+    Ok(())
+}
+
+/// Renders one frame into its output (or the rest of it, continuing).
+fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result<(), Failure> {
     let start = Instant::now();
     let load_options = LoadOptions {
-        width: args.width,
-        height: args.height,
-        // POV-Ray's standard include folder last, as POV-Ray's configuration has it.
-        include_paths: args
-            .include_path
-            .iter()
-            .cloned()
-            .chain(trace::standard_include_folder())
-            .collect(),
-        threads: args.threads.map(|t| t as usize),
+        width: job.width,
+        height: job.height,
+        include_paths: job.include_paths.clone(),
+        threads: job.threads.map(|t| t as usize),
         max_steps: args.max_steps,
+        clock: frame.clock,
+        declares: job.declares.clone(),
     };
-    let loaded = trace::load(scene_path, &load_options)?;
+    let loaded = trace::load(&job.scene, &load_options)?;
     if !args.quiet {
         eprint!("{}", loaded.debug_output);
     }
@@ -236,53 +409,151 @@ fn render(args: &RenderArgs) -> Result<(), Failure> {
         eprint!("{warning}");
     }
     let parsed = Instant::now();
-    let antialias = match args.aa {
-        AaSetting::Off => Antialias::Off,
-        AaSetting::Threshold(threshold) if args.aa_method == 2 => Antialias::Recursive {
-            threshold,
-            depth: args.aa_depth,
-        },
-        AaSetting::Threshold(threshold) => Antialias::Adaptive {
-            threshold,
-            depth: args.aa_depth,
-        },
+    let full = Region::full(job.width, job.height);
+    let wanted = job.region.unwrap_or(full);
+    // A key of the scene as read and of the settings that change pixels: parts merge only
+    // with parts of the same key.
+    let key = parts::key(loaded.sources_key, job, frame);
+    let mut region = wanted;
+    let mut kept: Option<PathBuf> = None;
+    if job.continue_trace && frame.output.exists() {
+        match parts::continuation(&frame.output, wanted, (job.width, job.height), &key)
+            .map_err(usage)?
+        {
+            None => {
+                if !args.quiet {
+                    eprintln!("trace: {} is complete", frame.output.display());
+                }
+                return Ok(());
+            }
+            Some(rest) => {
+                region = rest;
+                kept = Some(frame.output.clone());
+            }
+        }
+    }
+    let note = |r: Region| {
+        trace::film::Part {
+            width: job.width,
+            height: job.height,
+            region: r,
+            key: key.clone(),
+        }
+        .note()
     };
+    let layout = trace::film::Layout {
+        alpha: job.alpha,
+        bits: job.bits,
+        aovs: Vec::new(),
+        note: (region != full).then(|| note(region)),
+    };
+    let progress = Arc::new(trace::Progress::default());
     let options = RenderOptions {
-        width: args.width,
-        height: args.height,
-        antialias,
-        threads: args.threads.map(|t| t as usize),
+        width: job.width,
+        height: job.height,
+        antialias: job.antialias,
+        threads: job.threads.map(|t| t as usize),
+        region: Some(region),
+        progress: Some(progress.clone()),
+        alpha: job.alpha,
     };
-    let stats = trace::render_to_file(loaded.scene, &options, output)?;
+    // Rendered beside the output, then moved (or cut, if stopped) into place: the output
+    // only ever holds whole images and parts.
+    let rendered = parts::scratch_path(&frame.output);
+    RENDERING.store(true, Ordering::SeqCst);
+    let meter = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
+        progress::Meter::start(
+            progress.clone(),
+            u64::from(region.width()) * u64::from(region.height()),
+        )
+    });
+    let result = trace::render_to_file(loaded.scene, &options, &layout, &rendered.0);
+    drop(meter);
+    RENDERING.store(false, Ordering::SeqCst);
+    let stats = result?;
+    let done = stats.stopped.unwrap_or(region.height());
+    let finished = Region {
+        y1: region.y0 + done,
+        ..region
+    };
+    parts::settle(
+        &rendered.0,
+        region,
+        finished,
+        &note,
+        kept.as_deref(),
+        &frame.output,
+    )
+    .map_err(io_failure)?;
     if stats.non_finite > 0 {
         eprintln!(
             "warning: {} pixels overflowed to NaN or infinity (extreme values in the scene, such as a colour component of 1e300) and are written black",
             stats.non_finite
         );
     }
-    let done = Instant::now();
+    let end = Instant::now();
     if args.stats {
         // Tracing and writing interleave (each band is written as it is finished): the
         // write time is what the render took beyond building and tracing.
-        let write = (done - parsed).saturating_sub(stats.build_time + stats.trace_time);
+        let write = (end - parsed).saturating_sub(stats.build_time + stats.trace_time);
         eprint!(
             "{}",
             stats_block(
-                args,
+                (region.width(), region.height()),
                 &stats,
                 [parsed - start, stats.build_time, stats.trace_time, write]
             )
         );
     }
+    if let Some(rows) = stats.stopped {
+        if rows == 0 && kept.is_none() {
+            eprintln!(
+                "trace: stopped before a row was finished: {} is unchanged",
+                frame.output.display()
+            );
+        } else {
+            eprintln!(
+                "trace: stopped after {rows} of {} rows: {} holds the rows finished (the same command with --continue renders the rest)",
+                region.height(),
+                frame.output.display()
+            );
+        }
+        return Err(Failure {
+            message: "trace: render stopped".into(),
+            code: 130,
+        });
+    }
     if !args.quiet {
         eprintln!(
-            "trace: wrote {} ({}x{}) in {:.2} s",
-            output.display(),
-            args.width,
-            args.height,
-            (done - start).as_secs_f64()
+            "trace: wrote {} ({}x{}{}) in {:.2} s",
+            frame.output.display(),
+            job.width,
+            job.height,
+            match (region != full, kept.is_some()) {
+                (_, true) => format!(", rows {} to {} added", region.y0, region.y1),
+                (true, false) => format!(", region {region}"),
+                _ => String::new(),
+            },
+            (end - start).as_secs_f64()
         );
     }
+    Ok(())
+}
+
+fn merge(output: &std::path::Path, parts: &[PathBuf]) -> Result<(), Failure> {
+    let paths: Vec<&std::path::Path> = parts.iter().map(PathBuf::as_path).collect();
+    let merged = trace::film::merge(&paths, output).map_err(usage)?;
+    eprintln!(
+        "trace: wrote {} ({}x{}{}) from {} parts",
+        output.display(),
+        merged.width,
+        merged.height,
+        match merged.part() {
+            Some(p) => format!(", still a part: region {}", p.region),
+            None => String::new(),
+        },
+        parts.len()
+    );
     Ok(())
 }
 
@@ -314,15 +585,19 @@ fn convert(
 
 /// POV-Ray-style statistics: resolution, rays by kind, intersection tests by shape, and the
 /// time of each phase (parse, build, trace, write).
-fn stats_block(args: &RenderArgs, r: &trace::RenderStats, phases: [Duration; 4]) -> String {
+fn stats_block(
+    (width, height): (u32, u32),
+    r: &trace::RenderStats,
+    phases: [Duration; 4],
+) -> String {
     use std::fmt::Write;
     let line = "-".repeat(76);
     let c = &r.counts;
-    let pixels = u64::from(args.width) * u64::from(args.height);
+    let pixels = u64::from(width) * u64::from(height);
     let rays = c.camera + c.reflected + c.transmitted + c.shadow;
     let mut out = String::new();
     let _ = writeln!(out, "Render Statistics");
-    let _ = writeln!(out, "Image Resolution {} x {}", args.width, args.height);
+    let _ = writeln!(out, "Image Resolution {width} x {height}");
     let _ = writeln!(out, "{line}");
     let _ = writeln!(
         out,

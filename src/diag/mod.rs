@@ -86,6 +86,18 @@ pub struct SourceMap {
 }
 
 impl SourceMap {
+    /// A key of the texts read (FNV-1a over each file's text, in the order read): equal
+    /// sources give equal keys wherever they lie on the disk.
+    pub fn key(&self) -> u64 {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        for f in &self.files {
+            for &b in f.text.as_bytes().iter().chain(&[0xff]) {
+                h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+            }
+        }
+        h
+    }
+
     /// Adds a file and returns its id.
     pub fn add(&mut self, path: &Path, text: String) -> FileId {
         self.files.push(SourceFile {

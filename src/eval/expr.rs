@@ -134,9 +134,14 @@ impl Evaluator<'_> {
             "v" => Value::Vector(Vector::new(&[0.0, 1.0])),
             "true" | "yes" | "on" => Value::Float(1.0),
             "false" | "no" | "off" => Value::Float(0.0),
-            // A still (POV-Ray's values without animation options).
-            "clock" | "clock_on" | "clock_delta" | "frame_number" | "initial_clock"
-            | "final_clock" | "initial_frame" | "final_frame" => Value::Float(0.0),
+            "clock" => Value::Float(self.options.clock.clock),
+            "clock_on" => Value::Float(f64::from(u8::from(self.options.clock.on))),
+            "clock_delta" => Value::Float(self.options.clock.delta),
+            "frame_number" => Value::Float(self.options.clock.frame as f64),
+            "initial_frame" => Value::Float(self.options.clock.frames.0 as f64),
+            "final_frame" => Value::Float(self.options.clock.frames.1 as f64),
+            "initial_clock" => Value::Float(self.options.clock.clocks.0),
+            "final_clock" => Value::Float(self.options.clock.clocks.1),
             "image_width" => Value::Float(self.options.width as f64),
             "image_height" => Value::Float(self.options.height as f64),
             "version" => Value::Float(self.version.unwrap_or(3.7)),

@@ -45,6 +45,60 @@ pub struct LoadOptions {
     /// Most evaluation steps a scene may take, all together: statements and block items run,
     /// loop passes, and macro calls (one step per 16 bytes of the macro's body).
     pub max_steps: u64,
+    /// The animation clock (`clock`, `frame_number` and friends).
+    pub clock: Clock,
+    /// Identifiers declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
+    pub declares: Vec<(String, f64)>,
+}
+
+/// The animation values a scene reads (POV-Ray's `clock`, `clock_delta`, `clock_on`,
+/// `frame_number`, `initial_frame`, `final_frame`, `initial_clock`, `final_clock`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Clock {
+    /// `clock`: the frame's clock value.
+    pub clock: f64,
+    /// `clock_delta`: the clock's step from one frame to the next.
+    pub delta: f64,
+    /// `clock_on`: whether this is a frame of an animation.
+    pub on: bool,
+    /// `frame_number`.
+    pub frame: i64,
+    /// `initial_frame` and `final_frame`.
+    pub frames: (i64, i64),
+    /// `initial_clock` and `final_clock`.
+    pub clocks: (f64, f64),
+}
+
+impl Clock {
+    /// A still image with `clock` at `value` (POV-Ray's values without animation options: the
+    /// frame numbers and clock bounds are 0, and `clock_on` says whether a clock was given).
+    pub fn still(value: Option<f64>) -> Clock {
+        Clock {
+            clock: value.unwrap_or(0.0),
+            delta: 0.0,
+            on: value.is_some(),
+            frame: 0,
+            frames: (0, 0),
+            clocks: (0.0, 0.0),
+        }
+    }
+
+    /// Frame `frame` of an animation of frames `first..=last` whose clock runs from `c0` to
+    /// `c1` (POV-Ray: evenly, the last frame at `c1`; `cyclic`, the frame after the last at
+    /// `c1`, and `final_frame` one more).
+    pub fn frame(frame: i64, (first, last): (i64, i64), (c0, c1): (f64, f64), cyclic: bool) -> Clock {
+        let last = if cyclic { last + 1 } else { last };
+        let steps = (last - first).max(1) as f64;
+        let delta = (c1 - c0) / steps;
+        Clock {
+            clock: c0 + delta * (frame - first) as f64,
+            delta,
+            on: true,
+            frame,
+            frames: (first, last),
+            clocks: (c0, c1),
+        }
+    }
 }
 
 /// The default of [`LoadOptions::max_steps`]: under a minute of evaluation on every loop
@@ -86,6 +140,8 @@ impl Default for LoadOptions {
             include_paths: Vec::new(),
             threads: None,
             max_steps: DEFAULT_MAX_STEPS,
+            clock: Clock::still(None),
+            declares: Vec::new(),
         }
     }
 }
@@ -201,6 +257,9 @@ pub fn evaluate(
     let input_file_name = sources.file(file).path.display().to_string();
     let mut ev = Evaluator::new(options, sandbox, sources, services);
     ev.input_file_name = input_file_name;
+    for (name, value) in &options.declares {
+        ev.env.insert(name.clone(), value::Value::Float(*value));
+    }
     ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
     ev.finish()
 }
@@ -352,6 +411,7 @@ pub(crate) struct Evaluator<'a> {
     /// The amount of a normal that gives none (`#default { normal { bump_size B } }`).
     default_bump_size: f64,
     background: Rgb,
+    background_alpha: f64,
     default_texture: Texture,
     /// The interior of objects without one, shared by all of them.
     default_interior: std::sync::Arc<ir::Interior>,
@@ -414,6 +474,7 @@ impl<'a> Evaluator<'a> {
             input_file_name: String::new(),
             default_bump_size: material::DEFAULT_BUMP_SIZE,
             background: Rgb::ZERO,
+            background_alpha: 0.0,
             default_texture: Texture::default(),
             default_interior: Default::default(),
             finishes: HashMap::new(),
@@ -634,6 +695,7 @@ impl<'a> Evaluator<'a> {
                     .ok_or_else(|| expr::type_error("a colour", &v, node.args[0].span))?;
                 // Without alpha output POV-Ray stores rgb·(1 − transmit) and ignores filter.
                 self.background = Rgb::new(c[0], c[1], c[2]) * (1.0 - c[4]);
+                self.background_alpha = 1.0 - c[4];
             }
             NodeKind::GlobalSettings => self.global_settings(node)?,
             NodeKind::SkySphere => self.sky_sphere = Some(self.sky_sphere(node)?),
@@ -1383,6 +1445,7 @@ impl<'a> Evaluator<'a> {
                 lights: self.lights,
                 objects: self.objects,
                 background: self.background,
+                background_alpha: self.background_alpha,
                 sky_sphere: self.sky_sphere,
                 fogs: self.fogs,
                 settings: self.settings,

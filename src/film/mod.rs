@@ -6,188 +6,15 @@
 //! each as it comes (PNG rows and EXR scanline blocks), so memory follows the band, not the
 //! image.
 
+mod raster;
+mod write;
+
+pub use raster::{Part, Raster, Region, merge};
+pub use write::{Format, Layout, NOTE_KEY, Rows, write_streamed};
+
 use std::borrow::Cow;
-use std::io::Write;
 use std::path::{Path, PathBuf};
-
-/// Consecutive finished rows of an image, starting at row `y0`: `pixels` holds whole rows,
-/// left to right, top row first (its length is a multiple of the image width).
-#[derive(Clone, Debug)]
-pub struct Rows<'a> {
-    /// The first row.
-    pub y0: u32,
-    /// The rows' pixels (linear values).
-    pub pixels: Cow<'a, [[f32; 3]]>,
-}
-
-/// Rows handed out one at a time from bands that arrive in order.
-struct RowFeed<'a, F> {
-    width: usize,
-    next_band: F,
-    band: Rows<'a>,
-}
-
-impl<'a, F: FnMut() -> Option<Rows<'a>>> RowFeed<'a, F> {
-    fn new(width: u32, next_band: F) -> Self {
-        RowFeed {
-            width: width as usize,
-            next_band,
-            band: Rows {
-                y0: 0,
-                pixels: Cow::Borrowed(&[]),
-            },
-        }
-    }
-
-    /// Row `y`, which is the row asked for last or a later one; black if the bands end
-    /// before it (they do not, for a renderer that covers the image).
-    fn row(&mut self, y: u32) -> &[[f32; 3]] {
-        let rows_in = |band: &Rows| (band.pixels.len() / self.width.max(1)) as u32;
-        while y >= self.band.y0 + rows_in(&self.band) {
-            match (self.next_band)() {
-                Some(band) => self.band = band,
-                None => {
-                    self.band = Rows {
-                        y0: y,
-                        pixels: Cow::Owned(vec![[0.0; 3]; self.width]),
-                    };
-                }
-            }
-        }
-        let start = (y - self.band.y0) as usize * self.width;
-        &self.band.pixels[start..start + self.width]
-    }
-}
-
-/// Writes a `width` × `height` image whose rows come from `next_band`, in bands of any height,
-/// top first; the extension of `path` picks the format. Only the current band and the
-/// encoder's buffers are held. EXR blocks are compressed on all cores unless `threads` is
-/// `Some(1)` (the file is the same).
-pub fn write_streamed<'a>(
-    path: &Path,
-    width: u32,
-    height: u32,
-    threads: Option<usize>,
-    next_band: impl FnMut() -> Option<Rows<'a>>,
-) -> Result<(), ImageError> {
-    let format = Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
-    let tmp = crate::output::TempFile::new(path);
-    let feed = RowFeed::new(width, next_band);
-    match format {
-        Format::Exr => write_exr(tmp.path(), width, height, threads != Some(1), feed),
-        Format::Png => write_png(tmp.path(), width, height, feed),
-    }
-    .map_err(|e| e.naming(path))?;
-    tmp.persist().map_err(|source| ImageError::Io {
-        path: path.to_path_buf(),
-        source,
-    })
-}
-
-/// An EXR of linear float RGB, zip-compressed in blocks of 16 scanlines, top first: the
-/// header is the one the exr crate makes for such an image, and the blocks are filled row by
-/// row from `feed` in file order (then compressed on all cores if `parallel`).
-fn write_exr<'a>(
-    path: &Path,
-    width: u32,
-    height: u32,
-    parallel: bool,
-    mut feed: RowFeed<'a, impl FnMut() -> Option<Rows<'a>>>,
-) -> Result<(), ImageError> {
-    use exr::block::UncompressedBlock;
-    use exr::block::writer::ChunksWriter;
-    use exr::prelude::*;
-    let format = |e: exr::error::Error| ImageError::Format {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    };
-    let shape = Image::from_encoded_channels(
-        (width as usize, height as usize),
-        Encoding::SMALL_LOSSLESS,
-        SpecificChannels::rgb(|_: Vec2<usize>| (0.0_f32, 0.0_f32, 0.0_f32)),
-    );
-    let headers = shape.write().infer_meta_data();
-    // Which of r, g, b each channel of the file holds (the file lists them by name: B, G, R).
-    let component: Vec<usize> = headers[0]
-        .channels
-        .list
-        .iter()
-        .map(|c| match c.name.to_string().as_str() {
-            "R" => 0,
-            "G" => 1,
-            _ => 2,
-        })
-        .collect();
-    let channels = headers[0].channels.clone();
-    let out =
-        std::io::BufWriter::new(
-            std::fs::File::create(path).map_err(|source| ImageError::Io {
-                path: path.to_path_buf(),
-                source,
-            })?,
-        );
-    exr::block::write(out, headers, true, |meta, chunks| {
-        let blocks = meta.collect_ordered_block_data(|block| {
-            UncompressedBlock::collect_block_data_from_lines(&channels, block, |line| {
-                let (x0, y) = (line.location.position.x(), line.location.position.y());
-                let c = component[line.location.channel];
-                let row = &feed.row(y as u32)[x0..x0 + line.location.sample_count];
-                line.write_samples(|i| row[i][c])
-                    .expect("a line holds sample_count samples");
-            })
-        });
-        let chunks = chunks.on_progress(|_| {});
-        if parallel {
-            chunks.compress_all_blocks_parallel(&meta, blocks)
-        } else {
-            chunks.compress_all_blocks_sequential(&meta, blocks)
-        }
-    })
-    .map_err(format)
-}
-
-/// An 8-bit sRGB PNG (POV-Ray's rounding, see [`Film::to_srgb8`]), written row by row with
-/// the settings of the image crate's encoder (balanced compression, adaptive filter).
-fn write_png<'a>(
-    path: &Path,
-    width: u32,
-    height: u32,
-    mut feed: RowFeed<'a, impl FnMut() -> Option<Rows<'a>>>,
-) -> Result<(), ImageError> {
-    let io = |source| ImageError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let format = |e: png::EncodingError| ImageError::Format {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    };
-    let out = std::io::BufWriter::new(std::fs::File::create(path).map_err(io)?);
-    let mut encoder = png::Encoder::new(out, width, height);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_compression(png::Compression::Balanced);
-    encoder.set_filter(png::Filter::Adaptive);
-    let mut writer = encoder.write_header().map_err(format)?;
-    let mut stream = writer.stream_writer().map_err(format)?;
-    let mut bytes = Vec::with_capacity(3 * width as usize);
-    for y in 0..height {
-        bytes.clear();
-        bytes.extend(feed.row(y).iter().flat_map(|p| p.map(srgb8)));
-        stream.write_all(&bytes).map_err(io)?;
-    }
-    stream.finish().map_err(format)?;
-    writer.finish().map_err(format)
-}
-
-/// A linear value as an 8-bit sRGB byte, as POV-Ray writes PNGs: `floor(255·srgb(v) + 0.5)`
-/// of the value clamped to [0, 1]. POV-Ray's values are exact doubles; the film's single
-/// precision can put an exact tie a hair below it (`Gray30` of a scene without gamma, 0.3,
-/// is 76.5 and POV-Ray writes 77), so a tie within the film's precision rounds up as there.
-fn srgb8(v: f32) -> u8 {
-    const FILM_PRECISION: f64 = 1e-5;
-    (255.0 * linear_to_srgb((v as f64).clamp(0.0, 1.0)) + 0.5 + FILM_PRECISION).floor() as u8
-}
+use write::srgb8;
 
 /// A linear-light RGB image, top row first.
 #[derive(Clone, Debug, PartialEq)]
@@ -220,7 +47,7 @@ pub enum ImageError {
         message: String,
     },
     /// An extension other than .exr or .png.
-    #[error("{0}: unknown image format (use .exr or .png)")]
+    #[error("{0}: unknown image format (use .exr, .png or .ppm)")]
     UnknownFormat(PathBuf),
     /// Images of different sizes cannot be compared.
     #[error("image sizes differ: {0}x{1} and {2}x{3}")]
@@ -229,7 +56,7 @@ pub enum ImageError {
 
 impl ImageError {
     /// The same error about `path` (a failure writing a temporary file names the target).
-    fn naming(self, path: &Path) -> ImageError {
+    pub(crate) fn naming(self, path: &Path) -> ImageError {
         match self {
             ImageError::Io { source, .. } => ImageError::Io {
                 path: path.to_path_buf(),
@@ -240,26 +67,6 @@ impl ImageError {
                 message,
             },
             other => other,
-        }
-    }
-}
-
-/// Image file formats.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Format {
-    /// OpenEXR, linear float RGB.
-    Exr,
-    /// PNG, 8-bit sRGB.
-    Png,
-}
-
-impl Format {
-    /// The format a path's extension names.
-    pub fn of(path: &Path) -> Option<Format> {
-        match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
-            "exr" => Some(Format::Exr),
-            "png" => Some(Format::Png),
-            _ => None,
         }
     }
 }
@@ -329,12 +136,15 @@ impl Film {
     ) -> Result<(), ImageError> {
         let mut whole = Some(Rows {
             y0: 0,
-            pixels: Cow::Borrowed(&self.pixels),
+            values: Cow::Borrowed(self.pixels.as_flattened()),
         });
-        write_streamed(path, self.width, self.height, threads, || whole.take())
+        let layout = Layout::default();
+        write_streamed(path, self.width, self.height, &layout, threads, || {
+            whole.take()
+        })
     }
 
-    /// Reads an EXR (any RGB(A) layer, half or float) or PNG (sRGB-decoded) image.
+    /// Reads an EXR (any RGB(A) layer, half or float), PNG or PPM (sRGB-decoded) image.
     pub fn read(path: &Path) -> Result<Film, ImageError> {
         let format =
             Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
@@ -357,7 +167,7 @@ impl Film {
                 .map_err(|e| fmt_err(e.to_string()))?;
                 Ok(image.layer_data.channel_data.pixels)
             }
-            Format::Png => {
+            Format::Png | Format::Ppm => {
                 let img = image::ImageReader::open(path)
                     .map_err(|source| ImageError::Io {
                         path: path.to_path_buf(),
@@ -477,13 +287,14 @@ mod tests {
             let (whole, banded) = (dir.join(format!("whole-{name}")), dir.join(name));
             film.write(&whole).unwrap();
             let mut y0 = 0;
-            write_streamed(&banded, w, h, Some(1), || {
+            write_streamed(&banded, w, h, &Layout::default(), Some(1), || {
                 (y0 < h).then(|| {
                     let rows = 5.min(h - y0);
                     let start = (y0 * w) as usize;
                     let band = Rows {
                         y0,
-                        pixels: film.pixels[start..start + (rows * w) as usize]
+                        values: film.pixels[start..start + (rows * w) as usize]
+                            .as_flattened()
                             .to_vec()
                             .into(),
                     };

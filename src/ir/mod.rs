@@ -58,6 +58,9 @@ pub struct Scene {
     /// Colour of rays that hit nothing (`background { color C }`), already multiplied by
     /// `1 − transmit` as POV-Ray does without alpha output.
     pub background: Rgb,
+    /// The background's opacity in an alpha channel, `1 − transmit` (0 without a background
+    /// statement: POV-Ray's default background is transparent).
+    pub background_alpha: f64,
     /// `sky_sphere { pigment … }`: the colour of escaped rays by direction, over the
     /// background.
     pub sky_sphere: Option<SkySphere>,

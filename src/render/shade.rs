@@ -43,6 +43,11 @@ impl RayCounts {
         self.shadow += o.shadow;
         self.depth_limited += o.depth_limited;
     }
+
+    /// Rays traced of every kind.
+    pub fn total(&self) -> u64 {
+        self.camera + self.reflected + self.transmitted + self.shadow
+    }
 }
 
 /// The interiors a ray is inside, in the order it entered them (POV-Ray's interior list).
@@ -157,6 +162,9 @@ pub struct Tracer<'a> {
     /// Whether the ray being traced was reflected on its way (objects with `no_reflection`
     /// hide from it, those with `no_image` from the others).
     reflected: bool,
+    /// How much of the last ray traced saw the transparent background straight through
+    /// (0 to 1): one minus its alpha (POV-Ray's transmit of the traced colour, +UA).
+    pub see_through: f64,
 }
 
 /// grey(c) = 0.297 r + 0.589 g + 0.114 b (POV-Ray's luminance weights).
@@ -191,6 +199,7 @@ impl<'a> Tracer<'a> {
             counts: RayCounts::default(),
             area_cache: Vec::new(),
             reflected: false,
+            see_through: 0.0,
         }
     }
 
@@ -199,13 +208,20 @@ impl<'a> Tracer<'a> {
     /// past `max_trace_level` or below `adc_bailout` return black, as in POV-Ray.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
         if level > self.scene.max_trace_level || weight < self.scene.adc_bailout {
+            self.see_through = 0.0;
             return Rgb::ZERO;
         }
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
         let (colour, depth) = match self.scene.intersect_seen(&ray, self.reflected) {
-            None => (self.escaped(ray.direction), MISS_DEPTH),
+            None => {
+                self.see_through = match self.scene.sky_sphere {
+                    None => 1.0 - self.scene.background_alpha,
+                    Some(_) => 0.0,
+                };
+                (self.escaped(ray.direction), MISS_DEPTH)
+            }
             Some(hit) => {
                 let surface = self.scene.surface(&ray, &hit);
                 let colour = self.shade(&ray, hit.t, &surface, level, weight, interiors);
@@ -361,6 +377,8 @@ impl<'a> Tracer<'a> {
         // level), refracted otherwise (by the top layer's normal); no secondary ray leaves a
         // ray already at max_trace_level.
         let mut total_internal_reflection = false;
+        // (What of the background shows through, by the layers' filter.)
+        let mut see_through = 0.0;
         let wants_transmission =
             filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout;
         if wants_transmission && level >= scene.max_trace_level {
@@ -373,6 +391,7 @@ impl<'a> Tracer<'a> {
                 let through = scene.spawn(hit, ray.origin, d);
                 self.counts.transmitted += 1;
                 result += fade * self.trace(&through, level, w, &crossing.after) * filter;
+                see_through = self.see_through * grey(filter);
             } else {
                 // Heckbert's refraction, c = −D·N with N facing the ray.
                 let k = 1.0 + eta * eta * (cos_i * cos_i - 1.0);
@@ -388,6 +407,7 @@ impl<'a> Tracer<'a> {
                     let refracted = scene.spawn(hit, ray.origin, dir);
                     self.counts.transmitted += 1;
                     result += fade * self.trace(&refracted, level + 1, w, &crossing.after) * filter;
+                    see_through = self.see_through * grey(filter);
                 }
             }
         }
@@ -420,6 +440,7 @@ impl<'a> Tracer<'a> {
                 result += self.mirror(layer, n_l, reflec, w, ctx);
             }
         }
+        self.see_through = see_through.clamp(0.0, 1.0);
         result
     }
 

@@ -292,6 +292,7 @@ impl Scene {
             materials,
             interiors,
             background: ir.background,
+            background_alpha: ir.background_alpha,
             sky_sphere: ir.sky_sphere.as_ref().map(|s| SkySphere {
                 pigments: s
                     .pigments
@@ -680,6 +681,7 @@ mod tests {
                 medium: 0,
             }],
             background: Rgb::ZERO,
+            background_alpha: 0.0,
             sky_sphere: None,
             fogs: vec![],
             settings: ir::Settings::default(),

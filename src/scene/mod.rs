@@ -57,6 +57,8 @@ pub struct Scene {
     pub interiors: Vec<Interior>,
     /// Colour of escaped rays.
     pub background: Rgb,
+    /// The background's opacity in an alpha channel.
+    pub background_alpha: f64,
     /// `sky_sphere`: the colour of escaped rays by direction.
     pub sky_sphere: Option<SkySphere>,
     /// Fogs with a positive distance (POV-Ray skips the others).

@@ -19,6 +19,7 @@ pub fn object_query(objects: Vec<ir::Object>) -> Box<dyn ir::ObjectQuery> {
         lights: Vec::new(),
         objects,
         background: ir::Rgb::ZERO,
+        background_alpha: 0.0,
         sky_sphere: None,
         fogs: Vec::new(),
         settings: ir::Settings::default(),

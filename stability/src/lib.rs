@@ -726,6 +726,7 @@ pub fn scale_invariance(k: f64, shift: f64, width: u32, height: u32) -> Count {
             height,
             antialias: trace::Antialias::Off,
             threads: None,
+            ..Default::default()
         };
         trace::render(&loaded.scene, &render_options)
             .expect("renders")
@@ -767,6 +768,7 @@ fn render_built(
         height,
         antialias: trace::Antialias::Off,
         threads,
+        ..Default::default()
     };
     let pool = trace::render::thread_pool(&options).expect("a thread pool");
     trace::render::render(scene, &options, &pool).film
@@ -1097,6 +1099,7 @@ pub fn pane_stack(n: u32, max_trace_level: Option<u32>, width: u32, height: u32)
         height,
         antialias: trace::Antialias::Off,
         threads: None,
+        ..Default::default()
     };
     let pool = trace::render::thread_pool(&options).expect("a thread pool");
     let rendered = trace::render::render(&scene, &options, &pool);

@@ -146,6 +146,7 @@ fn output_is_identical_for_one_and_two_threads() {
             height: 72,
             antialias,
             threads: Some(threads),
+            ..Default::default()
         };
         trace::render(&scene, &options).expect("renders").film
     };
@@ -178,6 +179,7 @@ fn adaptive_antialiasing_supersamples_only_where_colours_differ() {
         height: 40,
         antialias: aa,
         threads: Some(1),
+        ..Default::default()
     };
     let rendered = trace::render(&scene, &options).expect("renders");
     assert_eq!(rendered.stats.samples, 40 * 40);

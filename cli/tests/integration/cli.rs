@@ -114,6 +114,7 @@ fn aa_method_2_renders_as_the_library_does() {
             depth: 3,
         },
         threads: None,
+        ..Default::default()
     };
     let expected = trace::render(&scene, &options).expect("renders").film;
     assert_eq!(trace::Film::read(&out).expect("readable"), expected);

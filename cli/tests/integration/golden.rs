@@ -30,6 +30,7 @@ fn check(
         height: 240,
         antialias,
         threads: None,
+        ..Default::default()
     };
     let actual = trace::render(&loaded.scene, &render)
         .map_err(|e| e.to_string())?

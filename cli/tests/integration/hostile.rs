@@ -228,6 +228,7 @@ fn a_negative_brilliance_renders_without_nan() {
         height: 24,
         antialias: trace::Antialias::Off,
         threads: None,
+        ..Default::default()
     };
     let film = trace::render(&scene, &options).expect("renders").film;
     assert_eq!(film.non_finite_pixels(), 0);
@@ -421,7 +422,9 @@ fn an_interrupted_write_leaves_no_temporary_file() {
             .args(["--width", "160", "--height", "120", "--aa", "0", "--quiet"])
             .spawn()
             .expect("runs");
-        let tmp = dir.join(format!(".img.png.{}.tmp", child.id()));
+        // (The render goes to a scratch file beside the output, written through its own
+        // temporary file.)
+        let tmp = dir.join(format!("..img.png.{0}.partial.png.{0}.tmp", child.id()));
         let made = Command::new("mkfifo").arg(&tmp).status().expect("mkfifo");
         assert!(made.success());
         // The writer blocks opening the FIFO; wait until the render is done and it does.
@@ -436,10 +439,15 @@ fn an_interrupted_write_leaves_no_temporary_file() {
             std::thread::sleep(std::time::Duration::from_millis(100));
             waited += 1;
         }
-        Command::new("kill")
-            .args([format!("-{signal}"), child.id().to_string()])
-            .status()
-            .expect("kill");
+        // The first signal asks the render to stop and write what it finished; the writer
+        // being stuck, a second one ends it at once.
+        for _ in 0..2 {
+            Command::new("kill")
+                .args([format!("-{signal}"), child.id().to_string()])
+                .status()
+                .expect("kill");
+            std::thread::sleep(std::time::Duration::from_millis(300));
+        }
         let status = child.wait().unwrap();
         assert_eq!(status.code(), Some(130), "SIG{signal}");
         assert!(!tmp.exists(), "SIG{signal} left {}", tmp.display());

@@ -44,6 +44,7 @@ pub fn render_text(
         height,
         antialias,
         threads: None,
+        ..Default::default()
     };
     trace::render(&scene, &options).expect("renders").film
 }

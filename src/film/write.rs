@@ -1,0 +1,358 @@
+//! Image files written row by row: EXR (float channels), PNG (8 or 16-bit sRGB, with alpha)
+//! and PPM (8 or 16-bit sRGB). Rows arrive as interleaved linear values, `Layout::channels`
+//! a pixel: red, green, blue, then alpha if asked for, then the AOV channels.
+
+use super::{ImageError, linear_to_srgb};
+use std::borrow::Cow;
+use std::io::Write;
+use std::path::Path;
+
+/// Image file formats.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// OpenEXR, linear float channels.
+    Exr,
+    /// PNG, 8 or 16-bit sRGB (alpha straight, not premultiplied).
+    Png,
+    /// PPM (binary P6), 8 or 16-bit sRGB.
+    Ppm,
+}
+
+impl Format {
+    /// The format a path's extension names.
+    pub fn of(path: &Path) -> Option<Format> {
+        match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
+            "exr" => Some(Format::Exr),
+            "png" => Some(Format::Png),
+            "ppm" => Some(Format::Ppm),
+            _ => None,
+        }
+    }
+
+    /// The extension a file of this format gets.
+    pub fn extension(self) -> &'static str {
+        match self {
+            Format::Exr => "exr",
+            Format::Png => "png",
+            Format::Ppm => "ppm",
+        }
+    }
+}
+
+/// What a pixel of an output file holds besides its colour, and the note it carries.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    /// An alpha channel (PNG and EXR).
+    pub alpha: bool,
+    /// Bits per channel of PNG and PPM files: 8 or 16.
+    pub bits: u8,
+    /// Names of the EXR channels after R, G, B (and A): the AOVs.
+    pub aovs: Vec<String>,
+    /// A text stored in the file's metadata (trace's record of a part of an image).
+    pub note: Option<String>,
+}
+
+impl Default for Layout {
+    fn default() -> Layout {
+        Layout {
+            alpha: false,
+            bits: 8,
+            aovs: Vec::new(),
+            note: None,
+        }
+    }
+}
+
+impl Layout {
+    /// Values a pixel of the rows holds.
+    pub fn channels(&self) -> usize {
+        3 + usize::from(self.alpha) + self.aovs.len()
+    }
+}
+
+/// The name of the metadata entry holding [`Layout::note`] (a PNG tEXt keyword, an EXR
+/// attribute, a PPM comment's prefix).
+pub const NOTE_KEY: &str = "trace-part";
+
+/// Consecutive finished rows of an image, starting at row `y0`: `values` holds whole rows,
+/// left to right, top row first, each pixel `Layout::channels` values.
+#[derive(Clone, Debug)]
+pub struct Rows<'a> {
+    /// The first row.
+    pub y0: u32,
+    /// The rows' values (linear).
+    pub values: Cow<'a, [f32]>,
+}
+
+/// Rows handed out one at a time from bands that arrive in order.
+pub(super) struct RowFeed<'a, F> {
+    /// Values a row holds.
+    row_len: usize,
+    next_band: F,
+    band: Rows<'a>,
+}
+
+impl<'a, F: FnMut() -> Option<Rows<'a>>> RowFeed<'a, F> {
+    pub(super) fn new(row_len: usize, next_band: F) -> Self {
+        RowFeed {
+            row_len,
+            next_band,
+            band: Rows {
+                y0: 0,
+                values: Cow::Borrowed(&[]),
+            },
+        }
+    }
+
+    /// Row `y`, which is the row asked for last or a later one; zero if the bands end before
+    /// it (they do not, for a renderer that covers the image, unless it was stopped).
+    pub(super) fn row(&mut self, y: u32) -> &[f32] {
+        let rows_in = |band: &Rows| (band.values.len() / self.row_len.max(1)) as u32;
+        while y >= self.band.y0 + rows_in(&self.band) {
+            match (self.next_band)() {
+                Some(band) => self.band = band,
+                None => {
+                    self.band = Rows {
+                        y0: y,
+                        values: Cow::Owned(vec![0.0; self.row_len]),
+                    };
+                }
+            }
+        }
+        let start = (y - self.band.y0) as usize * self.row_len;
+        &self.band.values[start..start + self.row_len]
+    }
+}
+
+/// Writes a `width` × `height` image whose rows come from `next_band`, in bands of any height,
+/// top first; the extension of `path` picks the format. Only the current band and the
+/// encoder's buffers are held. EXR blocks are compressed on all cores unless `threads` is
+/// `Some(1)` (the file is the same).
+pub fn write_streamed<'a>(
+    path: &Path,
+    width: u32,
+    height: u32,
+    layout: &Layout,
+    threads: Option<usize>,
+    next_band: impl FnMut() -> Option<Rows<'a>>,
+) -> Result<(), ImageError> {
+    let format = Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
+    let tmp = crate::output::TempFile::new(path);
+    let mut feed = RowFeed::new(width as usize * layout.channels(), next_band);
+    let file = std::fs::File::create(tmp.path()).map_err(|source| ImageError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let out = std::io::BufWriter::new(file);
+    let size = (width, height);
+    match format {
+        Format::Exr => {
+            let mut names = vec!["R".to_string(), "G".into(), "B".into()];
+            if layout.alpha {
+                names.push("A".into());
+            }
+            names.extend(layout.aovs.iter().cloned());
+            let mut row = |y: u32, values: &mut Vec<f32>| values.extend_from_slice(feed.row(y));
+            write_exr(
+                out,
+                size,
+                &names,
+                layout.note.as_deref(),
+                threads != Some(1),
+                &mut row,
+            )
+        }
+        Format::Png => write_png(out, size, layout, &mut |y, bytes| {
+            encode_row(feed.row(y), layout, true, bytes)
+        }),
+        Format::Ppm => write_ppm(out, size, layout, &mut |y, bytes| {
+            encode_row(feed.row(y), layout, false, bytes)
+        }),
+    }
+    .map_err(|e| e.naming(path))?;
+    tmp.persist().map_err(|source| ImageError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
+/// A row of linear values as PNG or PPM samples: sRGB colour, linear alpha (PNG only, with
+/// the colour straight), 8 or 16 bits big-endian.
+fn encode_row(row: &[f32], layout: &Layout, with_alpha: bool, bytes: &mut Vec<u8>) {
+    let c = layout.channels();
+    for px in row.chunks_exact(c) {
+        let mut put = |v: f64| match layout.bits {
+            16 => bytes.extend_from_slice(&quantise(v, 65535.0).to_be_bytes()),
+            _ => bytes.push(quantise(v, 255.0) as u8),
+        };
+        // (PNG's alpha is straight: the premultiplied colour over its alpha.)
+        let alpha = if layout.alpha { px[3] as f64 } else { 1.0 };
+        let straight = if with_alpha && alpha > 0.0 {
+            1.0 / alpha
+        } else {
+            1.0
+        };
+        for &v in &px[..3] {
+            put(linear_to_srgb((v as f64 * straight).clamp(0.0, 1.0)));
+        }
+        if layout.alpha && with_alpha {
+            put(alpha.clamp(0.0, 1.0));
+        }
+    }
+}
+
+/// `floor(max·v + 0.5)`, as POV-Ray rounds; an exact tie within the film's single precision
+/// rounds up as there (POV-Ray's values are exact doubles: `Gray30` of a scene without gamma,
+/// 0.3, is 76.5 and POV-Ray writes 77).
+fn quantise(v: f64, max: f64) -> u16 {
+    const FILM_PRECISION: f64 = 1e-5;
+    (max * v + 0.5 + FILM_PRECISION).floor().clamp(0.0, max) as u16
+}
+
+/// An 8-bit sRGB byte of a linear value, as [`encode_row`] writes it.
+pub(super) fn srgb8(v: f32) -> u8 {
+    quantise(linear_to_srgb((v as f64).clamp(0.0, 1.0)), 255.0) as u8
+}
+
+/// An EXR of float channels `names` (sorted in the file as EXR asks), zip-compressed in blocks
+/// of 16 scanlines, top first, filled from `row(y)` (interleaved values in `names`' order) in
+/// file order, then compressed on all cores if `parallel`.
+pub(super) fn write_exr(
+    out: impl Write + std::io::Seek,
+    (width, height): (u32, u32),
+    names: &[String],
+    note: Option<&str>,
+    parallel: bool,
+    row: &mut dyn FnMut(u32, &mut Vec<f32>),
+) -> Result<(), ImageError> {
+    use exr::block::UncompressedBlock;
+    use exr::block::writer::ChunksWriter;
+    use exr::meta::Headers;
+    use exr::meta::header::Header;
+    use exr::prelude::*;
+    let format = |e: exr::error::Error| ImageError::Format {
+        path: Default::default(),
+        message: e.to_string(),
+    };
+    let mut order: Vec<usize> = (0..names.len()).collect();
+    order.sort_by(|&a, &b| names[a].as_bytes().cmp(names[b].as_bytes()));
+    let channels: Vec<ChannelDescription> = order
+        .iter()
+        .map(|&i| ChannelDescription::named(names[i].as_str(), SampleType::F32))
+        .collect();
+    let encoding = Encoding::SMALL_LOSSLESS;
+    let mut header = Header::new(
+        Text::from(""),
+        (width as usize, height as usize),
+        SmallVec::from_vec(channels),
+    )
+    .with_encoding(
+        encoding.compression,
+        exr::meta::BlockDescription::ScanLines,
+        encoding.line_order,
+    );
+    if let Some(note) = note {
+        header
+            .own_attributes
+            .other
+            .insert(Text::from(NOTE_KEY), AttributeValue::Text(Text::from(note)));
+    }
+    let headers: Headers = SmallVec::from_vec(vec![header]);
+    let channel_list = headers[0].channels.clone();
+    let stride = names.len();
+    // (Each row is asked for once a channel: the last one is kept.)
+    let (mut values, mut last) = (Vec::new(), None);
+    exr::block::write(out, headers, true, |meta, chunks| {
+        let blocks = meta.collect_ordered_block_data(|block| {
+            UncompressedBlock::collect_block_data_from_lines(&channel_list, block, |line| {
+                let (x0, y) = (line.location.position.x(), line.location.position.y());
+                let c = order[line.location.channel];
+                if last != Some(y) {
+                    values.clear();
+                    row(y as u32, &mut values);
+                    last = Some(y);
+                }
+                line.write_samples(|i| values[(x0 + i) * stride + c])
+                    .expect("a line holds sample_count samples");
+            })
+        });
+        let chunks = chunks.on_progress(|_| {});
+        if parallel {
+            chunks.compress_all_blocks_parallel(&meta, blocks)
+        } else {
+            chunks.compress_all_blocks_sequential(&meta, blocks)
+        }
+    })
+    .map_err(format)
+}
+
+/// A PNG with the settings of the image crate's encoder (balanced compression, adaptive
+/// filter), RGB or RGBA, 8 or 16 bits, rows from `row(y, bytes)`.
+pub(super) fn write_png(
+    out: impl Write,
+    (width, height): (u32, u32),
+    layout: &Layout,
+    row: &mut dyn FnMut(u32, &mut Vec<u8>),
+) -> Result<(), ImageError> {
+    let format = |e: png::EncodingError| ImageError::Format {
+        path: Default::default(),
+        message: e.to_string(),
+    };
+    let mut encoder = png::Encoder::new(out, width, height);
+    encoder.set_color(if layout.alpha {
+        png::ColorType::Rgba
+    } else {
+        png::ColorType::Rgb
+    });
+    encoder.set_depth(if layout.bits == 16 {
+        png::BitDepth::Sixteen
+    } else {
+        png::BitDepth::Eight
+    });
+    encoder.set_compression(png::Compression::Balanced);
+    encoder.set_filter(png::Filter::Adaptive);
+    if let Some(note) = &layout.note {
+        encoder
+            .add_text_chunk(NOTE_KEY.into(), note.clone())
+            .map_err(format)?;
+    }
+    let mut writer = encoder.write_header().map_err(format)?;
+    let mut stream = writer.stream_writer().map_err(format)?;
+    let mut bytes = Vec::new();
+    for y in 0..height {
+        bytes.clear();
+        row(y, &mut bytes);
+        stream.write_all(&bytes).map_err(|source| ImageError::Io {
+            path: Default::default(),
+            source,
+        })?;
+    }
+    stream.finish().map_err(format)?;
+    writer.finish().map_err(format)
+}
+
+/// A binary PPM (P6), 8 or 16 bits, with the note as a comment.
+pub(super) fn write_ppm(
+    mut out: impl Write,
+    (width, height): (u32, u32),
+    layout: &Layout,
+    row: &mut dyn FnMut(u32, &mut Vec<u8>),
+) -> Result<(), ImageError> {
+    let io = |source| ImageError::Io {
+        path: Default::default(),
+        source,
+    };
+    let max = if layout.bits == 16 { 65535 } else { 255 };
+    let note = match &layout.note {
+        Some(n) => format!("# {NOTE_KEY}: {n}\n"),
+        None => String::new(),
+    };
+    write!(out, "P6\n{note}{width} {height}\n{max}\n").map_err(io)?;
+    let mut bytes = Vec::new();
+    for y in 0..height {
+        bytes.clear();
+        row(y, &mut bytes);
+        out.write_all(&bytes).map_err(io)?;
+    }
+    out.flush().map_err(io)
+}
