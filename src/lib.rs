@@ -72,7 +72,7 @@ pub use eval::{Clock, DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
 pub use render::{
-    Antialias, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
+    Antialias, Aov, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
     request_stop, stop_requested,
 };
 pub use syntax::{MAX_NESTING, is_identifier};

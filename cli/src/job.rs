@@ -21,6 +21,7 @@ pub struct Job {
     pub bits: u8,
     pub region: Option<Region>,
     pub continue_trace: bool,
+    pub aovs: Vec<trace::Aov>,
     pub frames: Vec<Frame>,
     pub warnings: Vec<String>,
 }
@@ -55,6 +56,7 @@ pub struct Own {
     pub subset: Option<(i64, i64)>,
     pub cyclic: bool,
     pub continue_trace: bool,
+    pub aovs: Vec<trace::Aov>,
 }
 
 /// Resolves the settings: trace's own first, then POV-Ray's, then the defaults (800 × 600,
@@ -188,6 +190,9 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         }
     }
 
+    if !own.aovs.is_empty() && format != Format::Exr {
+        return Err("AOV layers need an EXR output (-o NAME.exr or +FE)".into());
+    }
     let frames = frames(&own, &pov, &output)?;
     Ok(Job {
         scene,
@@ -201,6 +206,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         bits,
         region: region.filter(|r| *r != Region::full(width, height)),
         continue_trace: own.continue_trace || pov.continue_trace.unwrap_or(false),
+        aovs: own.aovs.clone(),
         frames,
         warnings,
     })

@@ -74,6 +74,11 @@ struct RenderArgs {
     /// transparent objects (POV-Ray +UA).
     #[arg(long)]
     alpha: bool,
+    /// AOV layers in the EXR, of what each pixel's centre ray first meets: `depth` (Z),
+    /// `normal` (Ns.X/Y/Z, world-space shading normal), `albedo` (Albedo.R/G/B, the
+    /// pigment's colour), `object` (ObjectID, from 1 in scene order), comma-separated.
+    #[arg(long, value_name = "LAYERS", value_delimiter = ',', value_parser = parse_aov)]
+    aov: Vec<trace::Aov>,
     /// Bits per channel of a PNG or PPM: 8 or 16 (POV-Ray +FN16).
     #[arg(long, value_parser = clap::value_parser!(u8).range(8..=16))]
     bits: Option<u8>,
@@ -135,6 +140,11 @@ fn parse_region(s: &str) -> Result<trace::film::Region, String> {
         return Err(format!("expected X0,Y0,X1,Y1 in pixels, found `{s}`"));
     };
     Ok(trace::film::Region { x0, y0, x1, y1 })
+}
+
+fn parse_aov(s: &str) -> Result<trace::Aov, String> {
+    trace::Aov::named(s.trim())
+        .ok_or_else(|| format!("unknown AOV `{s}` (depth, normal, albedo, object)"))
 }
 
 fn parse_declare(s: &str) -> Result<(String, f64), String> {
@@ -347,6 +357,7 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
         subset: args.subset,
         cyclic: args.cyclic,
         continue_trace: args.continue_trace,
+        aovs: args.aov.clone(),
     };
     let job = job::resolve(own, pov).map_err(usage)?;
     for warning in &job.warnings {
@@ -444,7 +455,12 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
     let layout = trace::film::Layout {
         alpha: job.alpha,
         bits: job.bits,
-        aovs: Vec::new(),
+        aovs: job
+            .aovs
+            .iter()
+            .flat_map(|a| a.channels())
+            .map(|c| c.to_string())
+            .collect(),
         note: (region != full).then(|| note(region)),
     };
     let progress = Arc::new(trace::Progress::default());
@@ -456,6 +472,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         region: Some(region),
         progress: Some(progress.clone()),
         alpha: job.alpha,
+        aovs: job.aovs.clone(),
     };
     // Rendered beside the output, then moved (or cut, if stopped) into place: the output
     // only ever holds whole images and parts.

@@ -9,8 +9,15 @@ use trace::film::{Part, Raster, Region};
 /// only with parts of the same key.
 pub fn key(sources: u64, job: &Job, frame: &Frame) -> String {
     let settings = format!(
-        "{} {} {:?} {:?} {:?} {} {}",
-        job.width, job.height, job.antialias, frame.clock, job.declares, job.alpha, job.bits
+        "{} {} {:?} {:?} {:?} {} {} {:?}",
+        job.width,
+        job.height,
+        job.antialias,
+        frame.clock,
+        job.declares,
+        job.alpha,
+        job.bits,
+        job.aovs
     );
     let mut h = sources;
     for b in settings.bytes() {

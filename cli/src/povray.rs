@@ -390,7 +390,11 @@ fn switch(arg: &str, pov: &mut PovSettings) -> Result<(), String> {
         "GP",
     ];
     let Some(name) = NAMES.iter().find(|n| upper.starts_with(**n)) else {
-        let known: Vec<&str> = OPTIONS.iter().map(|o| o.0).filter(|s| !s.is_empty()).collect();
+        let known: Vec<&str> = OPTIONS
+            .iter()
+            .map(|o| o.0)
+            .filter(|s| !s.is_empty())
+            .collect();
         return Err(format!(
             "unknown POV-Ray switch `{arg}` (trace reads {}; docs/command-line.md)",
             known.join(", ")

@@ -86,6 +86,46 @@ pub struct RenderOptions {
     /// the pixel is the transparent background seen straight through; the colour is
     /// premultiplied by it (a transparent background adds nothing).
     pub alpha: bool,
+    /// Layers after the colour (and alpha) of what each pixel's centre ray first meets.
+    pub aovs: Vec<Aov>,
+}
+
+/// An arbitrary output value layer: what the camera ray through a pixel's centre first meets,
+/// for denoisers and compositing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Aov {
+    /// Distance along the ray (`Z`; infinite where it meets nothing).
+    Depth,
+    /// World-space shading normal facing the camera (`Ns.X`, `Ns.Y`, `Ns.Z`, as pbrt names
+    /// it).
+    Normal,
+    /// The surface's pigment colour, linear (`Albedo.R`, `Albedo.G`, `Albedo.B`).
+    Albedo,
+    /// The object's number in scene order from 1, 0 for none (`ObjectID`).
+    Object,
+}
+
+impl Aov {
+    /// The EXR channels of this layer.
+    pub fn channels(self) -> &'static [&'static str] {
+        match self {
+            Aov::Depth => &["Z"],
+            Aov::Normal => &["Ns.X", "Ns.Y", "Ns.Z"],
+            Aov::Albedo => &["Albedo.R", "Albedo.G", "Albedo.B"],
+            Aov::Object => &["ObjectID"],
+        }
+    }
+
+    /// The layer a name (`depth`, `normal`, `albedo`, `object`) names.
+    pub fn named(name: &str) -> Option<Aov> {
+        match name {
+            "depth" => Some(Aov::Depth),
+            "normal" => Some(Aov::Normal),
+            "albedo" => Some(Aov::Albedo),
+            "object" => Some(Aov::Object),
+            _ => None,
+        }
+    }
 }
 
 impl Default for RenderOptions {
@@ -102,6 +142,7 @@ impl Default for RenderOptions {
             region: None,
             progress: None,
             alpha: false,
+            aovs: Vec::new(),
         }
     }
 }
@@ -289,7 +330,8 @@ impl<'a> Bands<'a> {
             return None;
         }
         let w = region.width() as usize;
-        let stride = 3 + usize::from(options.alpha);
+        let extra = aov_values(&options.aovs);
+        let stride = 3 + usize::from(options.alpha) + extra;
         let mut values = vec![0.0_f32; stride * w * (y1 - y0) as usize];
         for b in blocks.iter().flatten() {
             for (k, value) in b.pixels.iter().enumerate() {
@@ -306,6 +348,10 @@ impl<'a> Bands<'a> {
                 values[at..at + 3].copy_from_slice(&v);
                 if options.alpha {
                     values[at + 3] = (1.0 - value.w).clamp(0.0, 1.0) as f32;
+                }
+                if extra > 0 {
+                    let from = k * extra;
+                    values[at + stride - extra..at + stride].copy_from_slice(&b.aov[from..from + extra]);
                 }
             }
             self.stats.counts.add(&b.counts);
@@ -327,7 +373,7 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
     let mut bands = Bands::new(scene, options, pool);
     while let Some(band) = bands.next_band() {
         let start = band.y0 as usize * region.width() as usize;
-        let stride = 3 + usize::from(options.alpha);
+        let stride = 3 + usize::from(options.alpha) + aov_values(&options.aovs);
         let pixels = band.values.chunks_exact(stride).map(|v| [v[0], v[1], v[2]]);
         for (dst, v) in film.pixels[start..].iter_mut().zip(pixels) {
             *dst = v;
@@ -423,12 +469,51 @@ fn output_value(c: Rgb, gamma: Gamma) -> [f32; 3] {
     [out(c.x), out(c.y), out(c.z)]
 }
 
+/// Values a pixel's AOV layers hold.
+fn aov_values(aovs: &[Aov]) -> usize {
+    aovs.iter().map(|a| a.channels().len()).sum()
+}
+
+/// The AOV values of the pixels of a block, row by row (not counted as camera rays: they
+/// are the centre rays again).
+fn block_aovs(
+    tracer: &mut Tracer,
+    options: &RenderOptions,
+    xs: std::ops::Range<u32>,
+    ys: std::ops::Range<u32>,
+) -> Vec<f32> {
+    if options.aovs.is_empty() {
+        return Vec::new();
+    }
+    let mut out = Vec::with_capacity(xs.len() * ys.len() * aov_values(&options.aovs));
+    for y in ys {
+        for x in xs.clone() {
+            let ray = camera_ray(tracer.scene, options.width, options.height, x as f64, y as f64);
+            let (depth, n, albedo, object) = match ray {
+                Some(ray) => tracer.first_hit(&ray),
+                None => (f64::INFINITY, glam::DVec3::ZERO, Rgb::ZERO, 0),
+            };
+            for aov in &options.aovs {
+                match aov {
+                    Aov::Depth => out.push(depth as f32),
+                    Aov::Normal => out.extend([n.x, n.y, n.z].map(|v| v as f32)),
+                    Aov::Albedo => out.extend([albedo.x, albedo.y, albedo.z].map(|v| v as f32)),
+                    Aov::Object => out.push(object as f32),
+                }
+            }
+        }
+    }
+    out
+}
+
 /// One rendered block.
 struct BlockResult {
     x0: u32,
     y0: u32,
     width: u32,
     pixels: Vec<Px>,
+    /// The AOV values of each pixel, in order.
+    aov: Vec<f32>,
     counts: RayCounts,
     tests: counters::Tests,
     samples: u64,
@@ -682,10 +767,11 @@ fn render_block(
         }
         pixels
     };
-    let result = |pixels, tracer: Tracer, samples| BlockResult {
+    let result = |pixels, mut tracer: Tracer, samples| BlockResult {
         x0,
         y0,
         width: x1 - x0,
+        aov: block_aovs(&mut tracer, options, x0..x1, y0..y1),
         pixels,
         counts: tracer.counts,
         tests: counters::take(),

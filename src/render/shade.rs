@@ -167,6 +167,15 @@ pub struct Tracer<'a> {
     pub see_through: f64,
 }
 
+/// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
+/// blended as their light is).
+fn albedo(material: &Material, hit: &SurfaceHit, point: DVec3) -> Rgb {
+    match &material.map {
+        None => material.pigment.colour_on(point, &hit.surface).rgb,
+        Some(map) => map.blend(point, &hit.surface, |entry, p| albedo(entry, hit, p)),
+    }
+}
+
 /// grey(c) = 0.297 r + 0.589 g + 0.114 b (POV-Ray's luminance weights).
 fn grey(c: Rgb) -> f64 {
     0.297 * c.x + 0.589 * c.y + 0.114 * c.z
@@ -232,6 +241,23 @@ impl<'a> Tracer<'a> {
             return colour;
         }
         fogged(self.scene, ray.origin, ray.direction, depth, colour)
+    }
+
+    /// What a camera ray first meets, for AOV layers: its distance, the shading normal turned
+    /// to face the ray, the surface's pigment colour (its top layer; a pattern of materials
+    /// blended as it blends their light), and the object's number from 1 (all zero where the
+    /// ray meets nothing; the distance is then infinite).
+    pub fn first_hit(&mut self, ray: &Ray) -> (f64, DVec3, Rgb, u32) {
+        let mut ray = *ray;
+        ray.tmax = ray.tmax.min(MAX_DISTANCE);
+        let Some(hit) = self.scene.intersect_seen(&ray, false) else {
+            return (f64::INFINITY, DVec3::ZERO, Rgb::ZERO, 0);
+        };
+        let surface = self.scene.surface(&ray, &hit);
+        let n = if surface.normal.dot(ray.direction) > 0.0 { -surface.normal } else { surface.normal };
+        let material = self.scene.material(surface.material);
+        let albedo = albedo(material, &surface, surface.texture_point);
+        (hit.t, n, albedo, surface.object.0 + 1)
     }
 
     /// [`Tracer::trace`] for a reflected ray.
