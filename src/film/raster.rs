@@ -168,6 +168,30 @@ impl Raster {
         }
     }
 
+    /// The value of channel `name` (R, G, B, A or an AOV's channel) at pixel (x, y): as
+    /// stored (0 to 1 for PNG and PPM samples, straight colour; linear floats for EXR).
+    pub fn sample(&self, x: u32, y: u32, name: &str) -> Option<f32> {
+        let p = (y as usize * self.width as usize + x as usize) * self.stride();
+        match &self.samples {
+            Samples::Floats { data, names } => {
+                let c = names.iter().position(|n| n == name)?;
+                data.get(p + c).copied()
+            }
+            Samples::Bytes { data, .. } => {
+                let c = ["R", "G", "B", "A"].iter().position(|n| *n == name)?;
+                if c == 3 && !self.layout.alpha {
+                    return None;
+                }
+                Some(match self.layout.bits {
+                    16 => {
+                        u16::from_be_bytes([data[p + 2 * c], data[p + 2 * c + 1]]) as f32 / 65535.0
+                    }
+                    _ => data[p + c] as f32 / 255.0,
+                })
+            }
+        }
+    }
+
     /// The part of an image this file records, if it is one.
     pub fn part(&self) -> Option<Part> {
         self.layout.note.as_deref().and_then(Part::parse)

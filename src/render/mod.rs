@@ -323,17 +323,25 @@ impl<'a> Bands<'a> {
                 .collect()
         });
         let y0 = (first * BLOCK_SIZE).max(region.y0);
-        let y1 = (last * BLOCK_SIZE).min(region.y1);
+        let mut y1 = (last * BLOCK_SIZE).min(region.y1);
         if blocks.iter().any(Option::is_none) {
-            self.stats.stopped = Some(y0 - region.y0);
-            self.stats.trace_time += start.elapsed();
-            return None;
+            // Stopped: the band keeps its leading rows of blocks that were all finished.
+            let whole_rows = blocks
+                .chunks(columns as usize)
+                .take_while(|row| row.iter().all(Option::is_some))
+                .count() as u32;
+            y1 = ((first + whole_rows) * BLOCK_SIZE).clamp(y0, region.y1);
+            self.stats.stopped = Some(y1 - region.y0);
+            if y1 == y0 {
+                self.stats.trace_time += start.elapsed();
+                return None;
+            }
         }
         let w = region.width() as usize;
         let extra = aov_values(&options.aovs);
         let stride = 3 + usize::from(options.alpha) + extra;
         let mut values = vec![0.0_f32; stride * w * (y1 - y0) as usize];
-        for b in blocks.iter().flatten() {
+        for b in blocks.iter().flatten().filter(|b| b.y0 < y1) {
             for (k, value) in b.pixels.iter().enumerate() {
                 let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
                 if x < region.x0 || x >= region.x1 || y < y0 || y >= y1 {

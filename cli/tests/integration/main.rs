@@ -10,6 +10,7 @@ mod ir_snapshots;
 mod keywords;
 mod layers;
 mod parsing;
+mod povray_cli;
 
 use std::path::{Path, PathBuf};
 
