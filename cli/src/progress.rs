@@ -20,11 +20,11 @@ impl Meter {
         let thread = std::thread::spawn(move || {
             let start = Instant::now();
             while !stop.load(Relaxed) {
-                std::thread::sleep(Duration::from_millis(200));
                 let pixels = progress.pixels.load(Relaxed);
                 let rays = progress.rays.load(Relaxed);
                 eprint!("\r\x1b[K{}", line(pixels, total, rays, start.elapsed()));
                 let _ = std::io::stderr().flush();
+                std::thread::park_timeout(Duration::from_millis(200));
             }
             eprint!("\r\x1b[K");
         });
@@ -39,6 +39,7 @@ impl Drop for Meter {
     fn drop(&mut self) {
         self.done.store(true, Relaxed);
         if let Some(t) = self.thread.take() {
+            t.thread().unpark();
             let _ = t.join();
         }
     }

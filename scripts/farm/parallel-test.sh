@@ -9,9 +9,9 @@
 # (b) frames: a 4-frame animation rendered by one `trace` run, then one job per frame
 #     (+KFI1 +KFF4 +SFn +EFn) on 2 workers: the same file names (anim1.png .. anim4.png) and
 #     the same bytes; frame n must also equal a still at clock (n-1)/3.
-# (c) transfer: the ssh recipe (--basefile, --return, --cleanup) with two stand-in hosts
-#     (a fake ssh that runs each "host" in its own folder) for a 10-frame animation with
-#     padded names (anim01.png .. anim10.png). Skipped when rsync is missing.
+# (c) transfer: the ssh recipes (--basefile, --return, --cleanup) with two stand-in hosts
+#     (a fake ssh that runs each "host" in its own folder): a 10-frame animation with padded
+#     names (anim01.png .. anim10.png), and the 4 strips merged. Skipped without rsync.
 # Exits non-zero if any check fails.
 set -euo pipefail
 
@@ -113,7 +113,7 @@ for n in 1 2 3 4; do
     same "k$n.png" "single/anim$n.png" "frame $n = still at clock $clock"
 done
 
-echo "(c) frames over \"ssh\": --basefile, --return, --cleanup on 2 stand-in hosts"
+echo "(c) frames and strips over \"ssh\": --basefile, --return, --cleanup on 2 stand-in hosts"
 if ! command -v rsync >/dev/null 2>&1; then
     echo "  skipped: GNU parallel transfers files with rsync, which is not installed"
 else
@@ -136,12 +136,19 @@ EOF
     cp anim.pov single10/
     "$TRACE" single10/anim.pov +W$W +H$H +KFI1 +KFF10 -q
     cp anim.pov ssh-run/
-    (cd ssh-run && seq -w 1 10 | "${PAR[@]}" --ssh "$WORK/bin/fakessh" -S 1/host1,1/host2 \
+    (cd ssh-run && seq -f %02g 1 10 | "${PAR[@]}" --ssh "$WORK/bin/fakessh" -S 1/host1,1/host2 \
         --basefile anim.pov --return anim{}.png --cleanup \
         "$TRACE" anim.pov +W$W +H$H +KFI1 +KFF10 +SF{} +EF{} -q)
-    for n in $(seq -w 1 10); do
+    for n in $(seq -f %02g 1 10); do
         same "ssh-run/anim$n.png" "single10/anim$n.png" "returned anim$n.png = frame $n of one run"
     done
+    mkdir ssh-tiles
+    cp anim.pov ssh-tiles/
+    (cd ssh-tiles && strips $H 4 | "${PAR[@]}" --ssh "$WORK/bin/fakessh" -S 1/host1,1/host2 \
+        --colsep ' ' --basefile anim.pov --return big-{#}.png --cleanup \
+        "$TRACE" anim.pov +W$W +H$H --region 0,{1},$W,{2} -o big-{#}.png -q)
+    "$TRACE" merge -o ssh-tiles/big.png ssh-tiles/big-*.png 2>&1 | sed 's/^/  /'
+    same ssh-tiles/big.png whole.png "returned strips merged = whole render"
     used=$(find hosts -mindepth 1 -maxdepth 1 -type d | wc -l)
     if [[ $used -eq 2 ]]; then ok "both hosts were used"; else fail "$used hosts used, 2 expected"; fi
     left=$(find hosts -type f | wc -l)

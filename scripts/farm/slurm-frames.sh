@@ -12,7 +12,7 @@
 # finished, exits with 130, and the task requeues itself; the next run continues the frame
 # (+C, trace's --continue). A frame already complete is not rendered again.
 #
-# TRACE=/path/to/trace overrides the trace on PATH. The folder of OUTPUT must exist.
+# TRACE=/path/to/trace overrides the trace on PATH.
 #SBATCH --job-name=trace-frames
 #SBATCH --array=1-100
 #SBATCH --cpus-per-task=8
@@ -34,6 +34,7 @@ output=$3
 shift 3
 frame=${SLURM_ARRAY_TASK_ID:?run this with sbatch --array}
 trace=${TRACE:-trace}
+mkdir -p "$(dirname "$output")"
 
 # Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's
 # free memory, not the job's limit). Options given after OUTPUT win.

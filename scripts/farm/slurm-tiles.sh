@@ -15,7 +15,7 @@
 # finished, exits with 130, and the task requeues itself; the next run continues the strip
 # (+C, trace's --continue).
 #
-# TRACE=/path/to/trace overrides the trace on PATH. The folder of the parts must exist.
+# TRACE=/path/to/trace overrides the trace on PATH.
 #SBATCH --job-name=trace-tiles
 #SBATCH --cpus-per-task=8
 #SBATCH --mem=8G
@@ -51,6 +51,7 @@ if [[ $i -ge $strips || $y0 -ge $y1 ]]; then
     exit 2
 fi
 part="${parts%.*}-$i.${parts##*.}"
+mkdir -p "$(dirname "$part")"
 echo "strip $i of $strips: rows $y0 to $y1 -> $part"
 
 # Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's

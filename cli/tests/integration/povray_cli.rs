@@ -216,6 +216,44 @@ fn regions_merge_into_the_whole_image_byte_for_byte() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// On a terminal, a progress line; not with --quiet.
+#[cfg(unix)]
+#[test]
+fn a_terminal_shows_progress() {
+    let dir = scratch("progress");
+    std::fs::write(
+        dir.join("s.pov"),
+        SCENE.replace("rgb 1 }\nplane", "rgb 1 area_light x, z, 6, 6 }\nplane"),
+    )
+    .unwrap();
+    let command = format!(
+        "{} s.pov -o p.png --width 200 --height 150 --aa 0 --threads 1",
+        env!("CARGO_BIN_EXE_trace")
+    );
+    // `script` runs the command on a pseudo-terminal and copies what it shows.
+    let Ok(out) = Command::new("script")
+        .current_dir(&dir)
+        .args(["-qec", &command, "/dev/null"])
+        .output()
+    else {
+        eprintln!("no `script` here: skipped");
+        return;
+    };
+    let shown = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{shown}");
+    assert!(
+        shown.contains("pixels), ") && shown.contains("rays/s"),
+        "{shown}"
+    );
+    let quiet = Command::new("script")
+        .current_dir(&dir)
+        .args(["-qec", &format!("{command} --quiet"), "/dev/null"])
+        .output()
+        .unwrap();
+    assert!(!String::from_utf8_lossy(&quiet.stdout).contains("rays/s"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// POV-Ray's +UA, pixel for pixel: a transparent default background, straight colour in PNG.
 #[test]
 fn alpha_is_povrays() {
@@ -336,6 +374,30 @@ fn animation_frames_are_povrays() {
     );
     assert!(dir.join("anim09.png").exists() && dir.join("anim10.png").exists());
     assert!(!dir.join("anim08.png").exists());
+    // The frames are POV-Ray's frames.
+    run(
+        &dir,
+        &[
+            scene,
+            "+W64",
+            "+H48",
+            "-A",
+            "+KFI1",
+            "+KFF10",
+            "+SF9",
+            "+EF10",
+            "+Oframe.png",
+            "-q",
+        ],
+    );
+    for n in ["09", "10"] {
+        let ours = trace::Film::read(&dir.join(format!("frame{n}.png"))).unwrap();
+        let theirs =
+            trace::Film::read(&crate::root().join(format!("tests/povray_cli/anim.povray{n}.png")))
+                .unwrap();
+        let c = trace::film::compare(&theirs, &ours).unwrap();
+        assert!(c.mean_flip < 0.001, "frame {n}: mean FLIP {}", c.mean_flip);
+    }
     let out = run(
         &dir,
         &[
