@@ -53,12 +53,64 @@ pub fn peak() -> usize {
 }
 
 /// The memory this machine can give a process now: `MemAvailable` from `/proc/meminfo`
-/// (physical memory not in use, counting caches that can be dropped), if known.
+/// (physical memory not in use, counting caches that can be dropped), or less if the
+/// process's control group (a container's, a Slurm job's) leaves less room under its limit.
 pub fn available() -> Option<usize> {
     let info = std::fs::read_to_string("/proc/meminfo").ok()?;
     let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
     let kib: usize = line.split_whitespace().nth(1)?.parse().ok()?;
-    kib.checked_mul(1024)
+    let machine = kib.checked_mul(1024)?;
+    let cgroups = std::fs::read_to_string("/proc/self/cgroup").unwrap_or_default();
+    Some(
+        match cgroup_room(&cgroups, |p| std::fs::read_to_string(p).ok()) {
+            Some(room) => machine.min(room),
+            None => machine,
+        },
+    )
+}
+
+/// The room left under the memory limit of the control group `/proc/self/cgroup` names
+/// (version 2: `memory.max` less `memory.current`; version 1: `memory.limit_in_bytes` less
+/// `memory.usage_in_bytes`), `None` without a limit. `read` reads a file under /sys.
+fn cgroup_room(cgroups: &str, read: impl Fn(&str) -> Option<String>) -> Option<usize> {
+    let number = |text: Option<String>| -> Option<usize> { text?.trim().parse().ok() };
+    // A limit this large is no limit (version 1 writes "unlimited" as 2^63 less a page).
+    let limited = |limit: usize| limit < 1 << 60;
+    for line in cgroups.lines() {
+        let mut fields = line.splitn(3, ':');
+        let (Some(id), Some(controllers), Some(path)) =
+            (fields.next(), fields.next(), fields.next())
+        else {
+            continue;
+        };
+        let path = path.trim_end_matches('/');
+        let (limit, usage) = if id == "0" && controllers.is_empty() {
+            let dir = format!("/sys/fs/cgroup{path}");
+            (format!("{dir}/memory.max"), format!("{dir}/memory.current"))
+        } else if controllers.split(',').any(|c| c == "memory") {
+            // (Inside a container the group's own folder is the mount's root.)
+            let dir = if read(&format!(
+                "/sys/fs/cgroup/memory{path}/memory.limit_in_bytes"
+            ))
+            .is_some()
+            {
+                format!("/sys/fs/cgroup/memory{path}")
+            } else {
+                "/sys/fs/cgroup/memory".to_string()
+            };
+            (
+                format!("{dir}/memory.limit_in_bytes"),
+                format!("{dir}/memory.usage_in_bytes"),
+            )
+        } else {
+            continue;
+        };
+        if let Some(limit) = number(read(&limit)).filter(|&l| limited(l)) {
+            let usage = number(read(&usage)).unwrap_or(0);
+            return Some(limit.saturating_sub(usage));
+        }
+    }
+    None
 }
 
 /// Parses a size such as `512M`, `8G`, `1.5G` or a plain number of bytes.
@@ -220,6 +272,37 @@ unsafe impl GlobalAlloc for Limited {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_control_group_limit_bounds_the_memory_available() {
+        let files = |entries: &'static [(&'static str, &'static str)]| {
+            move |p: &str| {
+                entries
+                    .iter()
+                    .find(|(k, _)| *k == p)
+                    .map(|(_, v)| v.to_string())
+            }
+        };
+        // Version 2: a Slurm job's or a container's group.
+        let v2 = files(&[
+            ("/sys/fs/cgroup/job/memory.max", "1073741824\n"),
+            ("/sys/fs/cgroup/job/memory.current", "73741824\n"),
+        ]);
+        assert_eq!(cgroup_room("0::/job\n", v2), Some(1_000_000_000));
+        let unlimited = files(&[("/sys/fs/cgroup/memory.max", "max\n")]);
+        assert_eq!(cgroup_room("0::/\n", unlimited), None);
+        // Version 1, inside a container (the group's folder is the mount's root).
+        let v1 = files(&[
+            ("/sys/fs/cgroup/memory/memory.limit_in_bytes", "2000\n"),
+            ("/sys/fs/cgroup/memory/memory.usage_in_bytes", "500\n"),
+        ]);
+        assert_eq!(cgroup_room("4:memory:/docker/abc\n0::/\n", v1), Some(1500));
+        let v1_unlimited = files(&[(
+            "/sys/fs/cgroup/memory/memory.limit_in_bytes",
+            "9223372036854771712",
+        )]);
+        assert_eq!(cgroup_room("4:memory:/x\n", v1_unlimited), None);
+    }
 
     #[test]
     fn sizes_parse_with_binary_units() {

@@ -251,7 +251,9 @@ fn frames(own: &Own, pov: &PovSettings, output: &Path) -> Result<Vec<Frame>, Str
         Some(f) => f,
         None => (pov.frames.0.unwrap_or(1), pov.frames.1.unwrap_or(1)),
     };
-    if first == last {
+    // (POV-Ray: frames 0..0 or 1..1 make a still; any other single frame is an animation of
+    // one frame, whose clock POV-Ray makes NaN and trace the initial clock.)
+    if first == last && (first == 0 || first == 1) {
         return Ok(vec![Frame {
             clock: Clock::still(own.clock.or(pov.clock)),
             output: output.to_path_buf(),

@@ -9,9 +9,10 @@
 # (b) frames: a 4-frame animation rendered by one `trace` run, then one job per frame
 #     (+KFI1 +KFF4 +SFn +EFn) on 2 workers: the same file names (anim1.png .. anim4.png) and
 #     the same bytes; frame n must also equal a still at clock (n-1)/3.
-# (c) transfer: the ssh recipes (--basefile, --return, --cleanup) with two stand-in hosts
-#     (a fake ssh that runs each "host" in its own folder): a 10-frame animation with padded
-#     names (anim01.png .. anim10.png), and the 4 strips merged. Skipped without rsync.
+# (c) ssh: the recipes for other machines with two stand-in hosts (a fake ssh that runs each
+#     "host" in its own folder): a 10-frame animation with padded names (anim01.png ..
+#     anim10.png) in a shared folder (--workdir) and sent back (--basefile, --return,
+#     --cleanup), and the 4 strips sent back and merged. Skipped without rsync.
 # Exits non-zero if any check fails.
 set -euo pipefail
 
@@ -113,7 +114,7 @@ for n in 1 2 3 4; do
     same "k$n.png" "single/anim$n.png" "frame $n = still at clock $clock"
 done
 
-echo "(c) frames and strips over \"ssh\": --basefile, --return, --cleanup on 2 stand-in hosts"
+echo "(c) frames and strips over \"ssh\" on 2 stand-in hosts: --workdir, or --basefile --return --cleanup"
 if ! command -v rsync >/dev/null 2>&1; then
     echo "  skipped: GNU parallel transfers files with rsync, which is not installed"
 else
@@ -135,6 +136,14 @@ EOF
     export FAKE_HOSTS="$WORK/hosts"
     cp anim.pov single10/
     "$TRACE" single10/anim.pov +W$W +H$H +KFI1 +KFF10 -q
+    # A shared folder: --workdir runs every job in the same folder (as an NFS mount would).
+    mkdir shared
+    cp anim.pov shared/
+    (cd shared && seq -f %02g 1 10 | "${PAR[@]}" --ssh "$WORK/bin/fakessh" -S 1/host1,1/host2 \
+        --workdir "$PWD" "$TRACE" anim.pov +W$W +H$H +KFI1 +KFF10 +SF{} +EF{} -q)
+    for n in $(seq -f %02g 1 10); do
+        same "shared/anim$n.png" "single10/anim$n.png" "shared folder: anim$n.png = frame $n of one run"
+    done
     cp anim.pov ssh-run/
     (cd ssh-run && seq -f %02g 1 10 | "${PAR[@]}" --ssh "$WORK/bin/fakessh" -S 1/host1,1/host2 \
         --basefile anim.pov --return anim{}.png --cleanup \

@@ -6,7 +6,7 @@
 #
 # Task N renders frame N of the animation 1..FINAL_FRAME (+KFI1 +KFF<FINAL> +SF<N> +EF<N>), so
 # its clock and its file name (frames/anim007.png) are those of the whole animation. Give
-# FINAL_FRAME even when you submit only some frames again (--array=7,42).
+# the same FINAL_FRAME when you submit only some frames again (--array=7,42).
 #
 # Before the time limit Slurm sends SIGTERM (--signal below): trace writes the rows it
 # finished, exits with 130, and the task requeues itself; the next run continues the frame
@@ -14,7 +14,6 @@
 #
 # TRACE=/path/to/trace overrides the trace on PATH.
 #SBATCH --job-name=trace-frames
-#SBATCH --array=1-100
 #SBATCH --cpus-per-task=8
 #SBATCH --mem=4G
 #SBATCH --time=02:00:00
@@ -39,8 +38,10 @@ mkdir -p "$(dirname "$output")"
 # Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's
 # free memory, not the job's limit). Options given after OUTPUT win.
 limits=()
+step=(--ntasks=1)
 if [[ -n ${SLURM_CPUS_PER_TASK-} ]]; then
     limits+=(+WT"$SLURM_CPUS_PER_TASK")
+    step+=(--cpus-per-task="$SLURM_CPUS_PER_TASK")   # (srun of Slurm 22.05 does not inherit it)
 fi
 if [[ -n ${SLURM_MEM_PER_NODE-} && " $* " != *" --max-memory"* ]]; then
     limits+=(--max-memory "$((SLURM_MEM_PER_NODE * 9 / 10))M")
@@ -48,7 +49,7 @@ fi
 
 # srun makes trace a job step, so the --signal above reaches it.
 status=0
-srun --ntasks=1 "$trace" "$scene" +KFI1 +KFF"$final" +SF"$frame" +EF"$frame" +C \
+srun "${step[@]}" "$trace" "$scene" +KFI1 +KFF"$final" +SF"$frame" +EF"$frame" +C \
     -o "$output" ${limits[@]+"${limits[@]}"} "$@" || status=$?
 
 if [[ $status -eq 130 ]]; then

@@ -57,8 +57,10 @@ echo "strip $i of $strips: rows $y0 to $y1 -> $part"
 # Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's
 # free memory, not the job's limit). Options given after PARTS win.
 limits=()
+step=(--ntasks=1)
 if [[ -n ${SLURM_CPUS_PER_TASK-} ]]; then
     limits+=(+WT"$SLURM_CPUS_PER_TASK")
+    step+=(--cpus-per-task="$SLURM_CPUS_PER_TASK")   # (srun of Slurm 22.05 does not inherit it)
 fi
 if [[ -n ${SLURM_MEM_PER_NODE-} && " $* " != *" --max-memory"* ]]; then
     limits+=(--max-memory "$((SLURM_MEM_PER_NODE * 9 / 10))M")
@@ -66,7 +68,7 @@ fi
 
 # srun makes trace a job step, so the --signal above reaches it.
 status=0
-srun --ntasks=1 "$trace" "$scene" +W"$width" +H"$height" --region "0,$y0,$width,$y1" +C \
+srun "${step[@]}" "$trace" "$scene" +W"$width" +H"$height" --region "0,$y0,$width,$y1" +C \
     -o "$part" ${limits[@]+"${limits[@]}"} "$@" || status=$?
 
 if [[ $status -eq 130 ]]; then

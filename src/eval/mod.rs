@@ -88,8 +88,7 @@ impl Clock {
     /// `c1`, and `final_frame` one more).
     pub fn frame(frame: i64, (first, last): (i64, i64), (c0, c1): (f64, f64), cyclic: bool) -> Clock {
         let last = if cyclic { last + 1 } else { last };
-        let steps = (last - first).max(1) as f64;
-        let delta = (c1 - c0) / steps;
+        let delta = if last > first { (c1 - c0) / (last - first) as f64 } else { 0.0 };
         Clock {
             clock: c0 + delta * (frame - first) as f64,
             delta,

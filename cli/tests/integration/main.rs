@@ -3,6 +3,7 @@
 mod analytic;
 mod cli;
 mod errors;
+mod farm;
 mod fuzz_replay;
 mod golden;
 mod hostile;
