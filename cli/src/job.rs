@@ -147,7 +147,9 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
                 .to_string_lossy()
                 .into_owned();
             if pov.output.as_deref() == Some(Path::new("-")) {
-                return Err("+O- (the image on standard output) is not supported: give a file name".into());
+                return Err(
+                    "+O- (the image on standard output) is not supported: give a file name".into(),
+                );
             }
             let o = match pov.output.clone() {
                 Some(o) if o.as_os_str().to_string_lossy().ends_with('/') => {

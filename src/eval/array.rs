@@ -3,6 +3,8 @@
 //!
 //! As in POV-Ray, an array is a value: `#declare B = A;` copies it, subscripts truncate toward
 //! zero, every element has the same type, and reading an element never assigned is an error.
+//! An element may be an array (`array[2] { array[2] {1, 2}, array[3] {3, 4, 5} }`), read and
+//! assigned with more subscripts (`A[1][2]`).
 
 use super::Evaluator;
 use super::value::{Array, Value};
@@ -80,6 +82,7 @@ impl Evaluator<'_> {
                 (Some(inner), n) if n > 1 => self.array_init(inner, &dims[1..], out)?,
                 (None, 1) => {
                     let value = match elem.children.first() {
+                        Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
                         Some(item) => self.item_value(item)?,
                         None => self.eval(&elem.args[0])?,
                     };
@@ -108,13 +111,15 @@ impl Evaluator<'_> {
         Ok(())
     }
 
-    /// The row-major position of the element `name[subscripts…]`.
-    fn element_position(&mut self, name: &str, name_span: Span, subs: &[&Expr]) -> Result<usize> {
+    /// The row-major position of the element `name[subscripts…]` in each array along the way:
+    /// an array's element may itself be an array, subscripted further (`A[1][2]` of an array
+    /// of arrays).
+    fn element_path(&mut self, name: &str, name_span: Span, subs: &[&Expr]) -> Result<Vec<usize>> {
         let mut indices = Vec::with_capacity(subs.len());
         for sub in subs {
             indices.push((self.float(sub)?.trunc(), sub.span));
         }
-        let array = match self.env.get(name) {
+        let mut array = match self.env.get(name) {
             Some(Value::Array(a)) => a,
             Some(other) => {
                 return Err(Diagnostic::error(
@@ -124,34 +129,63 @@ impl Evaluator<'_> {
             }
             None => return Err(self.unknown_word(name, name_span)),
         };
-        if indices.len() != array.dims.len() {
-            let last = indices.last().map_or(name_span, |(_, s)| *s);
-            return Err(Diagnostic::error(
-                format!(
-                    "`{name}` has {} dimension(s), {} subscript(s) given",
-                    array.dims.len(),
-                    indices.len()
-                ),
-                Span {
-                    start: name_span.start,
-                    ..last
-                },
-            ));
-        }
-        let mut pos = 0usize;
-        for ((i, span), &d) in indices.iter().zip(&array.dims) {
-            if *i < 0.0 || *i >= d as f64 {
+        let mut path = Vec::new();
+        let mut rest = &indices[..];
+        loop {
+            let n = array.dims.len();
+            if rest.len() < n {
+                let last = rest.last().map_or(name_span, |(_, s)| *s);
                 return Err(Diagnostic::error(
                     format!(
-                        "array subscript {i} out of range: this dimension of `{name}` runs from 0 to {}",
-                        d - 1
+                        "`{name}` has {} dimension(s), {} subscript(s) given",
+                        array.dims.len(),
+                        rest.len()
                     ),
-                    *span,
+                    Span {
+                        start: name_span.start,
+                        ..last
+                    },
                 ));
             }
-            pos = pos * d + *i as usize;
+            let mut pos = 0usize;
+            for ((i, span), &d) in rest[..n].iter().zip(&array.dims) {
+                if *i < 0.0 || *i >= d as f64 {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "array subscript {i} out of range: this dimension of `{name}` runs from 0 to {}",
+                            d - 1
+                        ),
+                        *span,
+                    ));
+                }
+                pos = pos * d + *i as usize;
+            }
+            path.push(pos);
+            rest = &rest[n..];
+            let Some((_, span)) = rest.first() else {
+                return Ok(path);
+            };
+            array = match &array.items[pos] {
+                Some(Value::Array(inner)) => inner,
+                Some(other) => {
+                    return Err(Diagnostic::error(
+                        format!(
+                            "`{name}` has {} dimension(s), {} subscript(s) given (its element is {}, not an array)",
+                            array.dims.len(),
+                            indices.len(),
+                            other.kind_name()
+                        ),
+                        *span,
+                    ));
+                }
+                None => {
+                    return Err(Diagnostic::error(
+                        "this array element has not been given a value",
+                        *span,
+                    ));
+                }
+            };
         }
-        Ok(pos)
     }
 
     /// `A[i]…` in an expression.
@@ -180,16 +214,16 @@ impl Evaluator<'_> {
         subs: &[&Expr],
         span: Span,
     ) -> Result<Value> {
-        let pos = self.element_position(name, name_span, subs)?;
+        let path = self.element_path(name, name_span, subs)?;
         match self.env.get(name) {
-            Some(Value::Array(a)) => match &a.items[pos] {
+            Some(Value::Array(a)) => match slot(a, &path) {
                 Some(v) => Ok(v.clone()),
                 None => Err(Diagnostic::error(
                     "this array element has not been given a value",
                     span,
                 )),
             },
-            _ => unreachable!("element_position checked that `{name}` is an array"),
+            _ => unreachable!("element_path checked that `{name}` is an array"),
         }
     }
 
@@ -209,11 +243,11 @@ impl Evaluator<'_> {
     /// POV-Ray).
     pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
         let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
-        let pos = self.element_position(&node.word, node.word_span, &subs)?;
+        let path = self.element_path(&node.word, node.word_span, &subs)?;
         let Some(Value::Array(array)) = self.env.get(&node.word) else {
-            unreachable!("element_position checked that the name is an array");
+            unreachable!("element_path checked that the name is an array");
         };
-        Ok(array.items[pos].is_some())
+        Ok(slot(array, &path).is_some())
     }
 
     /// `#declare A[i]… = value`.
@@ -224,10 +258,11 @@ impl Evaluator<'_> {
         value: Value,
     ) -> Result<()> {
         let exprs: Vec<&Expr> = subs.iter().map(|s| &s.args[0]).collect();
-        let pos = self.element_position(&name.word, name.span, &exprs)?;
+        let path = self.element_path(&name.word, name.span, &exprs)?;
         let Some(Value::Array(array)) = self.env.get_mut(&name.word) else {
-            unreachable!("element_position checked that the name is an array");
+            unreachable!("element_path checked that the name is an array");
         };
+        let (array, pos) = slot_mut(array, &path);
         if let Some(existing) = array.items.iter().flatten().next() {
             let span = Span {
                 end: subs.last().map_or(name.span.end, |s| s.span.end),
@@ -254,6 +289,10 @@ impl Evaluator<'_> {
             ));
         }
         let dims = match &args[0].kind {
+            ExprKind::Index(..) => match self.index_expr(&args[0])? {
+                Value::Array(a) => a.dims.clone(),
+                other => return Err(super::expr::type_error("an array", &other, args[0].span)),
+            },
             ExprKind::Ident(id) => match self.env.get(id) {
                 Some(Value::Array(a)) => a.dims.clone(),
                 Some(other) => {
@@ -281,6 +320,32 @@ impl Evaluator<'_> {
         }
         Ok(dims[n as usize - 1] as f64)
     }
+}
+
+/// The element slot `path` (from [`Evaluator::element_path`]) leads to.
+fn slot<'a>(array: &'a Array, path: &[usize]) -> &'a Option<Value> {
+    let (last, inner) = path.split_last().expect("a path has a position");
+    let mut a = array;
+    for &p in inner {
+        let Some(Value::Array(next)) = &a.items[p] else {
+            unreachable!("element_path walked through arrays only");
+        };
+        a = next;
+    }
+    &a.items[*last]
+}
+
+/// [`slot`], to assign to, with the array holding it.
+fn slot_mut<'a>(array: &'a mut Array, path: &[usize]) -> (&'a mut Array, usize) {
+    let (last, inner) = path.split_last().expect("a path has a position");
+    let mut a = array;
+    for &p in inner {
+        let Some(Value::Array(next)) = &mut a.items[p] else {
+            unreachable!("element_path walked through arrays only");
+        };
+        a = next;
+    }
+    (a, *last)
 }
 
 /// POV-Ray keeps one type per array: an element of another kind is an error.
