@@ -6,6 +6,7 @@
 
 mod ahead;
 pub mod bulk;
+pub mod chosen;
 mod plain;
 
 mod grammar {
