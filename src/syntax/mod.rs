@@ -807,6 +807,9 @@ fn describe(rule: Rule) -> Option<&'static str> {
             "an object modifier"
         }
         rbrace => "`}`",
+        kw_face_indices => {
+            "`face_indices` (a mesh2's lists come in POV-Ray's order: vertex_vectors, normal_vectors, uv_vectors, face_indices, normal_indices, uv_indices)"
+        }
         _ => return None,
     })
 }
