@@ -7,7 +7,8 @@
 //! than `v_steps`, unless its 16 control points lie closer than `flatness` to the plane of its
 //! corners; each piece is two triangles split along its (u0, v0)–(u1, v1) diagonal, shaded by
 //! blending the exact surface normals at their corners (a corner where the surface has no
-//! normal, as at a pole, takes POV-Ray's <1, 0, 0>).
+//! normal, as at a pole, takes POV-Ray's <1, 0, 0>). Its uv coordinates (for `uv_mapping`) are
+//! the patch's parameters interpolated across each triangle, v first, as POV-Ray's.
 
 use super::TriangleMesh;
 use glam::DVec3;
@@ -108,11 +109,12 @@ fn normal_at(p: &Net, u: f64, v: f64) -> DVec3 {
     }
 }
 
-/// The triangles of a patch: corners, each with the patch's normal there.
+/// The triangles of a patch: corners, each with the patch's normal and uv there.
 #[derive(Default)]
 struct Pieces {
     vertices: Vec<DVec3>,
     normals: Vec<DVec3>,
+    uvs: Vec<glam::DVec2>,
 }
 
 /// The mesh POV-Ray renders for the patch with control points `points` (u index first).
@@ -121,7 +123,7 @@ pub fn patch_mesh(points: &Net, u_steps: u32, v_steps: u32, flatness: f64) -> Tr
     subdivide(points, points, (0.0, 1.0), (0.0, 1.0), 0, (u_steps, v_steps), flatness, &mut pieces);
     let n = pieces.vertices.len() as u32 / 3;
     let triangles: Vec<[u32; 3]> = (0..n).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
-    TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles, Vec::new(), Vec::new())
+    TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles.clone(), pieces.uvs, triangles)
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -181,6 +183,8 @@ fn leaf(whole: &Net, q: &Net, (u0, u1): (f64, f64), (v0, v1): (f64, f64), mesh: 
         for (p, u, v) in [a, b, c] {
             mesh.vertices.push(p);
             mesh.normals.push(normal_at(whole, u, v));
+            // (POV-Ray's uv of a patch: the second parameter first.)
+            mesh.uvs.push(glam::DVec2::new(v, u));
         }
     }
 }

@@ -263,6 +263,11 @@ impl super::shape::Surface for Parametric {
         (n, n)
     }
 
+    /// POV-Ray's parametric uv: the (u, v) of the hit, in the parameters' own range.
+    fn uv(&self, _: DVec3, part: u32) -> Option<DVec2> {
+        Some(self.decode(part))
+    }
+
     /// POV-Ray's parametric has no inside.
     fn contains(&self, _: DVec3) -> bool {
         false
