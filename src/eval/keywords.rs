@@ -667,6 +667,7 @@ const SUPPORTED: &[&str] = &[
     "hdr",
     "height_field",
     "hexagon",
+    "hf_gray_16",
     "hollow",
     "hypercomplex",
     "if",
@@ -986,7 +987,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }
-        "hf_gray_16" | "max_intersections"
+        "max_intersections"
         | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }

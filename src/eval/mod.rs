@@ -870,6 +870,9 @@ impl<'a> Evaluator<'a> {
                     }
                     ev.noise_generator = Some(n as u8);
                 }
+                // `hf_gray_16 [on|off]`: POV-Ray 3.7 writes the same PNG with or without it
+                // (8 or 16-bit RGB, measured), so it has nothing to change here.
+                _ if item.word == "hf_gray_16" => {}
                 _ => return Err(ev.unknown_item(item, "global_settings")),
             }
             Ok(())
