@@ -15,11 +15,62 @@
 //! alone and is reported as CSG is (outside trace's subset, with its position); otherwise the
 //! block is a union. Only this form (a CSG keyword in the `#if` branch, `union` in the
 //! `#else` branch) is rewritten.
+//!
+//! Also a lone `#`, which POV-Ray passes over (see [`lone_hashes`]).
 
 const CSG: [&str; 4] = ["merge", "intersection", "difference", "union"];
 
-/// The text with each such choice rewritten, or `None` if it has none.
+/// The text with each such choice rewritten, and each lone `#` blanked, or `None` if it has
+/// neither.
 pub fn rewrite(text: &str) -> Option<String> {
+    match lone_hashes(text) {
+        Some(blanked) => Some(choices(&blanked).unwrap_or(blanked)),
+        None => choices(text),
+    }
+}
+
+/// A `#` that starts no directive (the next thing after it is not a word: `look_at <0, 2, 0>#`
+/// before a `}`, as a POV-Ray sample scene has it) is nothing to POV-Ray; it is blanked here
+/// (outside strings and comments), or `None` if the text has none.
+fn lone_hashes(text: &str) -> Option<String> {
+    let b = text.as_bytes();
+    let mut out: Option<Vec<u8>> = None;
+    let mut i = 0;
+    while i < b.len() {
+        match b[i] {
+            b'"' => {
+                i += 1;
+                while i < b.len() && b[i] != b'"' {
+                    i += if b[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'*') => {
+                i += 2;
+                while i + 1 < b.len() && !(b[i] == b'*' && b[i + 1] == b'/') {
+                    i += 1;
+                }
+                i += 1;
+            }
+            b'#' => {
+                let next = skip_space(b, i + 1);
+                if !b.get(next).is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                    out.get_or_insert_with(|| b.to_vec())[i] = b' ';
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    out.map(|o| String::from_utf8(o).expect("an ASCII byte replaced by a space"))
+}
+
+/// The text with each keyword choice rewritten, or `None` if it has none.
+fn choices(text: &str) -> Option<String> {
     if !text.contains("#else") {
         return None;
     }
@@ -122,5 +173,15 @@ mod tests {
         );
         assert_eq!(super::rewrite("#if (A) union { #else merge { #end"), None);
         assert_eq!(super::rewrite("#if (A) sphere { 0, 1 } #else box { 0, 1 } #end"), None);
+    }
+
+    #[test]
+    fn a_lone_hash_is_blanked_outside_strings_and_comments() {
+        let text = "camera { look_at <0, 2, 0>#\n }\n# declare A = \"#\"; // #\n/* # */ #1";
+        assert_eq!(
+            super::rewrite(text).unwrap(),
+            "camera { look_at <0, 2, 0> \n }\n# declare A = \"#\"; // #\n/* # */  1"
+        );
+        assert_eq!(super::rewrite("#declare A = 1;"), None);
     }
 }
