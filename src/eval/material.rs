@@ -1382,7 +1382,11 @@ impl Evaluator<'_> {
             return found;
         }
         let mut entries = Vec::new();
-        for entry in &node.children {
+        // (Directives among the entries run where they stand.)
+        self.each_item(&node.children, &mut |ev, entry| {
+            if entry.kind != NodeKind::MapEntry {
+                return Err(ev.unknown_item(entry, "color_map"));
+            }
             // `[v C]`, or the old range form `[v1, v2 C1 C2]`, which is `[v1 C1] [v2 C2]`.
             let points = match entry.args.as_slice() {
                 [v, c] => vec![(v, c)],
@@ -1391,9 +1395,9 @@ impl Evaluator<'_> {
             };
             for (value_expr, colour_expr) in points {
                 // (POV-Ray keeps map keys in single precision.)
-                let value = single(self.float(value_expr)?);
-                let v = self.eval(colour_expr)?;
-                self.warn_bare_colour(&v, colour_expr.span, "in a color_map entry");
+                let value = single(ev.float(value_expr)?);
+                let v = ev.eval(colour_expr)?;
+                ev.warn_bare_colour(&v, colour_expr.span, "in a color_map entry");
                 let colour = to_colour(
                     colour5(&v).ok_or_else(|| type_error("a colour", &v, colour_expr.span))?,
                 );
@@ -1403,14 +1407,15 @@ impl Evaluator<'_> {
                 {
                     // POV-Ray renders such a map without a word; its lookup (which trace
                     // follows) makes the result easy to misread, so say how it is read.
-                    self.warn(Diagnostic::warning(
+                    ev.warn(Diagnostic::warning(
                         "color_map value smaller than the one before: as in POV-Ray, a value at or above the last entry takes the last colour, and any other blends the first key not below it, scanning from the start, with the entry before",
                         value_expr.span,
                     ));
                 }
                 entries.push((value, colour));
             }
-        }
+            Ok(())
+        })?;
         if entries.is_empty() {
             return Err(Diagnostic::error(
                 "color_map has no entries",
