@@ -28,10 +28,13 @@ def main():
     rows, reasons = [], collections.Counter()
     for rel in scenes:
         folder, name = os.path.split(os.path.join(base, rel))
+        # An animation (its INI beside it names the frames): both renderers render its first
+        # frame, with the INI's frame and clock range (POV-Ray's switches, read by both).
+        switches, suffix = animation(os.path.join(folder, name[:-4] + ".ini"))
         t0 = time.time()
         try:
             p = subprocess.run([trace, name, "-o", "t.exr", "--width", "320", "--height", "240", "--aa", "off", "-q",
-                                "-L", INCLUDE], cwd=folder, capture_output=True, text=True, timeout=60)
+                                "-L", INCLUDE] + switches, cwd=folder, capture_output=True, text=True, timeout=60)
             code, message = p.returncode, next((l for l in p.stderr.splitlines() if l.startswith("error")), "")
         except subprocess.TimeoutExpired:
             code, message = -1, "timeout"
@@ -41,9 +44,10 @@ def main():
         if code == 0:
             t0 = time.time()
             subprocess.run(["povray", "+I" + name, "+Op.exr", "+FE", "+W320", "+H240", "-D", "-GA", "-A", "-J",
-                            "+L" + INCLUDE], cwd=folder, capture_output=True, timeout=300)
+                            "+L" + INCLUDE] + switches, cwd=folder, capture_output=True, timeout=300)
             row["povray_s"] = f"{time.time() - t0:.2f}"
-            c = subprocess.run([trace, "compare", "p.exr", "t.exr"], cwd=folder, capture_output=True, text=True)
+            c = subprocess.run([trace, "compare", f"p{suffix}.exr", f"t{suffix}.exr"], cwd=folder,
+                               capture_output=True, text=True)
             for line in c.stdout.splitlines():
                 if line.startswith("mean FLIP"):
                     row["flip"] = line.split()[-1]
@@ -72,13 +76,42 @@ def main():
     shutil.rmtree(work)
 
 
+def animation(ini):
+    """POV-Ray switches rendering the first frame of the animation `ini` describes, and the
+    frame number its output names get (`+KFI1 +KFF33` → "01"); none for a still."""
+    if not os.path.exists(ini):
+        return [], ""
+    keys = {}
+    for line in open(ini, errors="replace"):
+        line = line.split(";")[0].strip()
+        if "=" in line:
+            k, v = line.split("=", 1)
+            keys[k.strip().lower()] = v.strip()
+    try:
+        first, last = int(keys.get("initial_frame", 1)), int(keys.get("final_frame", 1))
+    except ValueError:
+        return [], ""
+    if first == last:
+        return [], ""
+    cyclic = keys.get("cyclic_animation", "off").lower() in ("on", "true", "yes", "1")
+    switches = [f"+KFI{first}", f"+KFF{last}", f"+SF{first}", f"+EF{first}"]
+    for key, switch in (("initial_clock", "+KI"), ("final_clock", "+KF")):
+        if key in keys:
+            switches.append(switch + keys[key])
+    if cyclic:
+        switches.append("+KC")
+    digits = len(str(last + 1 if cyclic else last))
+    return switches, f"{first:0{digits}d}"
+
+
 def write_report(path, rows, rendered, passing, reasons):
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
     lines = [
         "# POV-Ray's sample scenes in trace",
         "",
         f"Made by `scripts/corpus.py` on {time.strftime('%Y-%m-%d')} (trace commit `{commit}`): every `*.pov` of",
-        "Debian's `povray-examples` rendered by trace at 320×240 without anti-aliasing",
+        "Debian's `povray-examples` rendered by trace at 320×240 without anti-aliasing (an animation,",
+        "whose INI beside it names its frames, at its first frame, by POV-Ray's switches `+KFI +KFF +SF +EF`)",
         "(`--aa off -L /usr/share/povray-3.7/include`, from the scene's folder); the ones it renders are",
         "rendered by POV-Ray 3.7 with the same settings (`+FE -A -J`) and compared (mean FLIP, RMSE).",
         "Raw results: `docs/corpus.csv`.",
