@@ -35,8 +35,8 @@ frame=${SLURM_ARRAY_TASK_ID:?run this with sbatch --array}
 trace=${TRACE:-trace}
 mkdir -p "$(dirname "$output")"
 
-# Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's
-# free memory, not the job's limit). Options given after OUTPUT win.
+# Threads from --cpus-per-task; --max-memory a little below --mem (trace also bounds itself
+# by the job's control group; this leaves room for the rest). Options given after OUTPUT win.
 limits=()
 step=(--ntasks=1)
 if [[ -n ${SLURM_CPUS_PER_TASK-} ]]; then

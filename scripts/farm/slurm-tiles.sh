@@ -54,8 +54,8 @@ part="${parts%.*}-$i.${parts##*.}"
 mkdir -p "$(dirname "$part")"
 echo "strip $i of $strips: rows $y0 to $y1 -> $part"
 
-# Threads from --cpus-per-task; --max-memory from --mem (trace otherwise reads the node's
-# free memory, not the job's limit). Options given after PARTS win.
+# Threads from --cpus-per-task; --max-memory a little below --mem (trace also bounds itself
+# by the job's control group; this leaves room for the rest). Options given after PARTS win.
 limits=()
 step=(--ntasks=1)
 if [[ -n ${SLURM_CPUS_PER_TASK-} ]]; then
