@@ -758,6 +758,7 @@ impl<'a> Evaluator<'a> {
     /// `bicubic_patch { type T [flatness F] [u_steps U] [v_steps V] P00, P01, … P33 }`.
     fn bicubic_patch(&mut self, node: &Node) -> Result<Shape> {
         let (mut kind, mut flatness, mut steps) = (None, 0.0, [0u32, 0]);
+        let mut uv_corners = None;
         let mut points = Vec::new();
         let items = items(node);
         let mut i = 0;
@@ -767,10 +768,17 @@ impl<'a> Evaluator<'a> {
                 Item::Value(e) => points.push(self.vec3(e)?),
                 Item::Word(w) => {
                     if w.word == "uv_vectors" {
-                        return Err(Diagnostic::error(
-                            "unsupported: `uv_vectors` of a bicubic_patch (its own uv corners are not supported by trace yet)",
-                            w.span,
-                        ));
+                        let mut corners = [[0.0; 2]; 4];
+                        for corner in &mut corners {
+                            let Some(Item::Value(e)) = items.get(i) else {
+                                return Err(Diagnostic::error("`uv_vectors` takes 4 uv vectors", w.span));
+                            };
+                            i += 1;
+                            let v = self.vec3(e)?;
+                            *corner = [v.x, v.y];
+                        }
+                        uv_corners = (corners != [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).then_some(corners);
+                        continue;
                     }
                     let Some(Item::Value(e)) = items.get(i) else {
                         return Err(Diagnostic::error(format!("`{}` needs a value", w.word), w.span));
@@ -805,6 +813,7 @@ impl<'a> Evaluator<'a> {
             u_steps: steps[0],
             v_steps: steps[1],
             flatness,
+            uv_corners,
         })))
     }
 

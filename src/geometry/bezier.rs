@@ -118,9 +118,28 @@ struct Pieces {
 }
 
 /// The mesh POV-Ray renders for the patch with control points `points` (u index first).
-pub fn patch_mesh(points: &Net, u_steps: u32, v_steps: u32, flatness: f64) -> TriangleMesh {
+/// `uv_corners` map the patch's unit square of (v, u) bilinearly to its uv (POV-Ray's
+/// `uv_vectors`); trace maps the triangles' corners and interpolates across each triangle,
+/// where POV-Ray maps each point: the same when the corners form a parallelogram (the map is
+/// then affine), a hair off otherwise.
+pub fn patch_mesh(
+    points: &Net,
+    u_steps: u32,
+    v_steps: u32,
+    flatness: f64,
+    uv_corners: Option<[[f64; 2]; 4]>,
+) -> TriangleMesh {
     let mut pieces = Pieces::default();
     subdivide(points, points, (0.0, 1.0), (0.0, 1.0), 0, (u_steps, v_steps), flatness, &mut pieces);
+    if let Some(st) = uv_corners {
+        let st = st.map(|c| glam::DVec2::new(c[0], c[1]));
+        for p in &mut pieces.uvs {
+            // (POV-Ray's Compute_Texture_UV: along the first coordinate, then the second.)
+            let low = st[0] + p.x * (st[1] - st[0]);
+            let high = st[3] + p.x * (st[2] - st[3]);
+            *p = low + p.y * (high - low);
+        }
+    }
     let n = pieces.vertices.len() as u32 / 3;
     let triangles: Vec<[u32; 3]> = (0..n).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
     TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles.clone(), pieces.uvs, triangles)

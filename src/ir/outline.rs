@@ -448,6 +448,9 @@ pub struct BicubicPatch {
     pub v_steps: u32,
     /// A piece whose control points lie this close to a plane is not halved further.
     pub flatness: f64,
+    /// `uv_vectors C0 C1 C2 C3`: the uv corners the patch's unit square maps to (bilinearly),
+    /// when not POV-Ray's default (0, 0), (1, 0), (1, 1), (0, 1).
+    pub uv_corners: Option<[[f64; 2]; 4]>,
 }
 
 /// `julia_fractal { <c> [quaternion|hypercomplex] [sqr|cube] [max_iteration N] [precision P]

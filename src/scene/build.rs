@@ -596,7 +596,7 @@ fn build_shape(
             // distance, and its corner normals are world normals).
             let m = transform.unwrap_or(DMat4::IDENTITY);
             let points = b.points.map(|row| row.map(|p| m.transform_point3(p)));
-            let mesh = crate::geometry::bezier::patch_mesh(&points, b.u_steps, b.v_steps, b.flatness);
+            let mesh = crate::geometry::bezier::patch_mesh(&points, b.u_steps, b.v_steps, b.flatness, b.uv_corners);
             (Shape::Mesh(Arc::new(mesh)), None)
         }
         ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
