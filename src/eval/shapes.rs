@@ -108,10 +108,25 @@ impl<'a> Evaluator<'a> {
                 let v = ev.eval(&item.args[0])?;
                 values.push(value_expr(v, item.args[0].span, at)?);
                 Ok(())
+            } else if let Some(v) = ev.bare_number(item) {
+                // A declared float or vector named alone (`#declare P = B[J]; P`).
+                values.push(value_expr(v, item.word_span, at)?);
+                Ok(())
             } else {
                 other(ev, item)
             }
         })
+    }
+
+    /// The value of a name standing alone as an item, if it names a float, vector or colour.
+    fn bare_number(&self, item: &Node) -> Option<Value> {
+        if !item.args.is_empty() || !item.children.is_empty() || item.word.is_empty() {
+            return None;
+        }
+        match self.env.get(&item.word)? {
+            v @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_)) => Some(v.clone()),
+            _ => None,
+        }
     }
 
     /// A shape node whose values include directives (`#while` loops making points), with the
