@@ -1066,6 +1066,30 @@ impl Evaluator<'_> {
                 span,
             ));
         }
+        // Fresh light groups for this instance: two `object { G }` of one declared
+        // light_group each light their own members, as in POV-Ray.
+        let mut fresh: Vec<(u32, u32)> = Vec::new();
+        let mut renumber = |id: u32, next: &mut u32| match fresh.iter().find(|(old, _)| *old == id) {
+            Some(&(_, new)) => new,
+            None => {
+                let new = *next;
+                *next += 1;
+                fresh.push((id, new));
+                new
+            }
+        };
+        for light in &mut object.lights {
+            if let Some(g) = light.group.filter(|&g| g != OWN_GROUP) {
+                light.group = Some(renumber(g, &mut self.next_light_group));
+            }
+        }
+        for part in &mut object.parts {
+            if let Some(group) = &mut part.light_group {
+                for g in &mut group.groups {
+                    *g = renumber(*g, &mut self.next_light_group);
+                }
+            }
+        }
         self.lights.append(&mut object.lights);
         // Fresh media for this instance (two `object { U }` of one declared union do not
         // share interiors: POV-Ray copies them with the object).
