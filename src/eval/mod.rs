@@ -1244,6 +1244,7 @@ impl<'a> Evaluator<'a> {
         let looks = looks.map(|(mut object, after)| {
             object.transform(after, false);
             object.cast_no_shadow();
+            object.outside_light_groups();
             object
         });
         Ok((light, looks))

@@ -192,6 +192,17 @@ impl ObjectValue {
         self.parts.iter_mut().for_each(|p| p.no_shadow = true);
     }
 
+    /// Keeps every part out of the light groups around it (a light's `looks_like` object: in
+    /// a `light_group`, POV-Ray lights it by the lights outside every group, not the group's).
+    pub(super) fn outside_light_groups(&mut self) {
+        for p in self.parts.iter_mut().filter(|p| p.light_group.is_none()) {
+            p.light_group = Some(ir::LightGroup {
+                groups: Vec::new(),
+                global_lights: true,
+            });
+        }
+    }
+
     /// Applies a transformation to the geometry and to every texture already attached.
     /// Applies a transformation; `scale` tells that it is a `scale` modifier (which makes
     /// POV-Ray normalise a smooth triangle's vertex normals).
