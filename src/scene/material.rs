@@ -18,6 +18,8 @@ pub struct Material {
     see_through: bool,
     /// Whether some pattern of it is uv-mapped.
     uses_uv: bool,
+    /// Whether some pattern of it sees more of the surface than the point (uv, slope, aoi).
+    uses_surface: bool,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -59,6 +61,7 @@ impl Material {
             finish: Arc::clone(&t.finish),
             see_through: false,
             uses_uv: false,
+            uses_surface: false,
         };
         m.uses_uv = m.layers().any(|l| {
             l.pigment.uses_uv() || l.normal.as_ref().is_some_and(|n| n.uses_uv())
@@ -66,6 +69,12 @@ impl Material {
             map.pattern.kind == crate::pattern::PatternKind::UvMapping
                 || map.entries.iter().any(|(_, e)| e.uses_uv)
         });
+        m.uses_surface = m.uses_uv
+            || m.layers().any(|l| l.pigment.uses_surface())
+            || m.map.as_ref().is_some_and(|map| {
+                matches!(map.pattern.kind, crate::pattern::PatternKind::Slope(_) | crate::pattern::PatternKind::Aoi)
+                    || map.entries.iter().any(|(_, e)| e.uses_surface)
+            });
         m.see_through = match &m.map {
             Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
             None => m.layers().all(|l| l.pigment.may_be_transparent()),
@@ -109,6 +118,22 @@ impl Material {
     /// a pattern of materials).
     pub fn may_be_transparent(&self) -> bool {
         self.see_through
+    }
+
+    /// Whether the material's colour depends on more of the surface than the point (uv
+    /// mapping, slope, aoi): a shadow ray then works the surface out where it crosses it.
+    pub fn uses_surface(&self) -> bool {
+        self.uses_surface
+    }
+
+    /// [`Material::filter_at`] seen on `surface`.
+    pub fn filter_on(&self, p: DVec3, surface: &crate::pattern::Surface) -> Rgb {
+        if let Some(m) = &self.map {
+            return m.blend(p, surface, |e, at| e.filter_on(at, surface));
+        }
+        self.layers()
+            .map(|l| filter_colour(&l.pigment.colour_on(p, surface)))
+            .fold(Rgb::ONE, |a, b| a * b)
     }
 
     /// What the surface lets through at `p`: the product over the layers of

@@ -73,6 +73,18 @@ impl Pigment {
         }
     }
 
+    /// Whether the pigment (or one inside it) is a slope or aoi pattern: its colour depends on
+    /// the surface's normal and the ray, not only the point.
+    pub fn uses_surface(&self) -> bool {
+        match &self.kind {
+            Kind::Pattern(m) => {
+                matches!(m.pattern.kind, PatternKind::Slope(_) | PatternKind::Aoi)
+                    || matches!(&m.map, Map::Pigments(ps) if ps.iter().any(|(_, p)| p.uses_surface()))
+            }
+            _ => false,
+        }
+    }
+
     /// The colour everywhere, if the pigment is a solid colour.
     pub fn solid(&self) -> Option<Colour> {
         match &self.kind {

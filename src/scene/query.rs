@@ -232,6 +232,24 @@ impl Scene {
         self.material(object.side(normal, ray.direction))
     }
 
+    /// What object `i` lets through where `ray` crosses it at `t` on `part` (its surface
+    /// worked out, as for a camera ray's hit, where the material's patterns see more than the
+    /// point: uv mapping, slope, aoi).
+    fn crossing_filter(&self, i: u32, ray: &Ray, t: f64, part: u32) -> Rgb {
+        let object = &self.objects[i as usize];
+        let material = self.crossing_material(object, ray, t, part);
+        if !material.uses_surface() {
+            return material.filter_at(ray.at(t));
+        }
+        let hit = Hit {
+            t,
+            object: ObjectId(i),
+            part,
+        };
+        let s = self.surface(ray, &hit);
+        self.material(s.material).filter_on(s.point, &s.surface)
+    }
+
     /// Multiplies `through` by the filter colour at each crossing of a transparent object
     /// with a shadow ray (the order of crossings does not matter when no interior fades).
     fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
@@ -242,7 +260,7 @@ impl Scene {
         object
             .shape
             .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
-                *through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
+                *through *= self.crossing_filter(i, ray, t, part);
             });
     }
 
@@ -283,7 +301,7 @@ impl Scene {
             let (mut through, mut last_t) = (Rgb::ONE, 0.0);
             for &(t, i, part) in crossings.iter() {
                 let object = &self.objects[i as usize];
-                through *= self.crossing_material(object, ray, t, part).filter_at(ray.at(t));
+                through *= self.crossing_filter(i, ray, t, part);
                 match media.iter().position(|&m| m == object.medium) {
                     Some(k) => {
                         let interior = self.interior(object);
