@@ -238,6 +238,14 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
             has_alpha |= transparent;
             interlaced = gif_interlaced;
         }
+        Some(image::ImageFormat::Bmp) => {
+            if let Some(alphas) = bmp_alpha(path, w, h)? {
+                for (p, a) in pixels.iter_mut().zip(alphas) {
+                    p[3] = a;
+                }
+                has_alpha = true;
+            }
+        }
         _ => {}
     }
     Ok(Picture {
@@ -267,6 +275,38 @@ fn rgbe_midpoint(p: &mut [f32; 4]) {
 }
 
 /// A PNG's encoding (its `sRGB` or `gAMA` chunk) and, for a palette file, each pixel's index.
+/// The alpha of each pixel (top row first) of a 32-bit uncompressed BMP: POV-Ray reads the
+/// fourth byte of every pixel as its alpha (the image crate, as the format's specification
+/// has it, ignores it). `None` for any other BMP.
+fn bmp_alpha(path: &Path, w: u32, h: u32) -> Result<Option<Vec<f32>>, String> {
+    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
+    let u32_at = |i: usize| bytes.get(i..i + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| u16::from_le_bytes([b[0], b[1]]));
+    let (Some(offset), Some(info), Some(height), Some(depth), Some(compression)) =
+        (u32_at(10), u32_at(14), u32_at(22), u16_at(28), u32_at(30))
+    else {
+        return Ok(None);
+    };
+    // (The old OS/2 header has no 32-bit form; BI_RGB is compression 0.)
+    if info < 40 || depth != 32 || compression != 0 {
+        return Ok(None);
+    }
+    let top_down = (height as i32) < 0;
+    let (w, h) = (w as usize, h as usize);
+    let start = offset as usize;
+    let Some(data) = bytes.get(start..start + 4 * w * h) else {
+        return Ok(None);
+    };
+    let mut alphas = vec![0.0f32; w * h];
+    for row in 0..h {
+        let y = if top_down { row } else { h - 1 - row };
+        for x in 0..w {
+            alphas[y * w + x] = f32::from(data[4 * (row * w + x) + 3]) / 255.0;
+        }
+    }
+    Ok(Some(alphas))
+}
+
 fn png_details(path: &Path) -> Result<(Encoding, Option<Vec<u8>>), String> {
     let file = std::io::BufReader::new(std::fs::File::open(path).map_err(|e| e.to_string())?);
     let mut decoder = png::Decoder::new(file);

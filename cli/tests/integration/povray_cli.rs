@@ -530,3 +530,33 @@ fn a_stopped_render_continues_to_the_whole_image() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A 32-bit BMP's alpha, as POV-Ray reads it (the image crate ignores it), pixel for pixel.
+#[test]
+fn a_32_bit_bmp_has_povrays_alpha() {
+    let dir = scratch("bmp");
+    let folder = crate::root().join("tests/povray_cli");
+    let out = dir.join("bmp.png");
+    let out = out.to_str().unwrap();
+    let scene = folder.join("bmp_alpha.pov");
+    let status = trace()
+        .current_dir(&folder)
+        .args([scene.to_str().unwrap(), "+W8", "+H8", "-A", "-o", out, "-q"])
+        .status()
+        .expect("runs");
+    assert!(status.success());
+    let ours = Raster::read(Path::new(out)).unwrap();
+    let povray = Raster::read(&folder.join("bmp_alpha.povray.png")).unwrap();
+    for y in 0..8 {
+        for x in 0..8 {
+            for c in ["R", "G", "B"] {
+                assert_eq!(
+                    ours.sample(x, y, c),
+                    povray.sample(x, y, c),
+                    "({x}, {y}) {c}"
+                );
+            }
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
