@@ -358,8 +358,9 @@ impl<'a> Tracer<'a> {
     ) -> Rgb {
         let scene = self.scene;
         let d = ray.direction;
-        // Shade the side facing the ray (decided by the geometric normal).
-        let facing = if hit.geometric_normal.dot(d) > 0.0 {
+        // Shade the side facing the ray (decided by the shading normal, as POV-Ray decides it:
+        // a smooth triangle seen at a grazing angle may face away by its smooth normal).
+        let facing = if hit.normal.dot(d) > 0.0 {
             -1.0
         } else {
             1.0
