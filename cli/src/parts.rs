@@ -3,7 +3,7 @@
 
 use crate::job::{Frame, Job};
 use std::path::{Path, PathBuf};
-use trace::film::{Part, Raster, Region};
+use trace::film::{Raster, Region};
 
 /// A key of the scene's sources and of every setting that changes the pixels: parts merge
 /// only with parts of the same key.
@@ -101,28 +101,16 @@ pub fn settle(
     if finished.height() == 0 {
         return Ok(());
     }
-    let part = if finished != asked {
+    if finished != asked {
         let mut cut = Raster::read(rendered)
             .map_err(|e| e.to_string())?
             .rows(0, finished.height());
         cut.layout.note = Some(note(finished));
         cut.write(rendered).map_err(|e| e.to_string())?;
-        Some(finished)
-    } else {
-        None
-    };
+    }
     match kept {
         None => std::fs::rename(rendered, output).map_err(io),
-        Some(kept) => {
-            // (A part of the part continued, merged with it.)
-            let _ = part;
-            trace::film::merge(&[kept, rendered], output).map(|_| ())
-        }
+        // (The rows rendered, a part of the region continued, merged after the rows kept.)
+        Some(kept) => trace::film::merge(&[kept, rendered], output).map(|_| ()),
     }
-}
-
-/// Parses a part's note (for messages).
-#[allow(dead_code)]
-pub fn part_of(path: &Path) -> Option<Part> {
-    Raster::read(path).ok()?.part()
 }
