@@ -374,6 +374,14 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.texture(body),
+            |ev, e| match ev.eval(e)? {
+                Value::Texture(t) => Ok(t),
+                Value::Pigment(p) => Ok(Texture {
+                    pigment: p,
+                    ..ev.default_texture.clone()
+                }),
+                other => Err(type_error("a texture", &other, e.span)),
+            },
         )
     }
 
@@ -387,14 +395,28 @@ impl Evaluator<'_> {
         average: bool,
         declared: impl Fn(Value) -> std::result::Result<Vec<(f64, T)>, Box<Value>>,
         mut entry: impl FnMut(&mut Self, &Node) -> Result<T>,
+        mut named: impl FnMut(&mut Self, &crate::syntax::Expr) -> Result<T>,
     ) -> Result<Vec<(f64, T)>> {
         if let Some(found) = self.declared_map(node, what, declared) {
             return found;
         }
         let mut entries = Vec::new();
-        for e in &node.children {
+        // (Directives among the entries run where they stand; an entry a directive leaves
+        // is read as `[v VALUE]`, the value a declared one or a colour: `[I/2 T1]`.)
+        self.each_item(&node.children, &mut |ev, e| {
+            if e.kind != NodeKind::MapEntry {
+                return Err(ev.unknown_item(e, what));
+            }
+            if e.children.is_empty() {
+                let [v, value] = e.args.as_slice() else {
+                    return Err(Diagnostic::error(format!("a {what} entry made by a directive takes a value and a declared entry"), e.span));
+                };
+                let v = single(ev.float(v)?);
+                entries.push((v, named(ev, value)?));
+                return Ok(());
+            }
             let value = match e.args.first() {
-                Some(v) => single(self.float(v)?),
+                Some(v) => single(ev.float(v)?),
                 None if average => 1.0,
                 None => {
                     return Err(Diagnostic::error(
@@ -403,8 +425,9 @@ impl Evaluator<'_> {
                     ));
                 }
             };
-            entries.push((value, entry(self, &e.children[0])?));
-        }
+            entries.push((value, entry(ev, &e.children[0])?));
+            Ok(())
+        })?;
         if entries.is_empty() {
             return Err(Diagnostic::error(format!("{what} has no entries"), node.word_span));
         }
@@ -1313,6 +1336,7 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.pigment(body, Pigment::solid(Colour::default())),
+            |ev, e| ev.pigment_value(e, Pigment::solid(Colour::default())),
         )
     }
 
@@ -1328,6 +1352,10 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.normal(body, None),
+            |ev, e| match ev.eval(e)? {
+                Value::Normal(n) => Ok(n),
+                other => Err(type_error("a normal", &other, e.span)),
+            },
         )
     }
 
