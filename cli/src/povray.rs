@@ -377,19 +377,90 @@ fn file_type(t: char) -> Result<(), String> {
     }
 }
 
-/// One switch (`+W320`, `-A`, `+KFI1`), case-insensitive; `+` turns a flag on, `-` off.
+/// POV-Ray's switches and the INI options they set, longest names first (`+KFI` before `+KF`
+/// before `+K`): a switch with a value passes it on (`+W320` is `Width=320`); a flag passes
+/// `+` as on and `-` as off (`+UA` is `Output_Alpha=on`).
+const SWITCHES: &[(&str, &str, bool)] = &[
+    ("KFI", "initial_frame", true),
+    ("KFF", "final_frame", true),
+    ("KC", "cyclic_animation", false),
+    ("KI", "initial_clock", true),
+    ("KF", "final_clock", true),
+    ("K", "clock", true),
+    ("AM", "sampling_method", true),
+    ("AG", "antialias_gamma", true),
+    ("SC", "start_column", true),
+    ("SR", "start_row", true),
+    ("SF", "subset_start_frame", true),
+    ("SP", "preview_start_size", true),
+    ("EC", "end_column", true),
+    ("ER", "end_row", true),
+    ("EF", "subset_end_frame", true),
+    ("EP", "preview_end_size", true),
+    ("UA", "output_alpha", false),
+    ("UD", "draw_vistas", false),
+    ("UL", "light_buffer", false),
+    ("UR", "remove_bounds", false),
+    ("UV", "vista_buffer", false),
+    ("WT", "work_threads", true),
+    ("W", "width", true),
+    ("H", "height", true),
+    ("R", "antialias_depth", true),
+    ("J", "jitter", false),
+    ("I", "input_file_name", true),
+    ("O", "output_file_name", true),
+    ("L", "library_path", true),
+    ("C", "continue_trace", false),
+    ("D", "display", false),
+    ("V", "verbose", false),
+    ("P", "pause_when_done", false),
+    ("X", "test_abort", false),
+    ("Q", "quality", true),
+    ("BS", "render_block_size", true),
+    ("MB", "bounding", false),
+    ("MV", "version", true),
+    ("GA", "all_console", false),
+    ("GD", "debug_console", false),
+    ("GF", "fatal_console", false),
+    ("GR", "render_console", false),
+    ("GS", "statistic_console", false),
+    ("GW", "warning_console", false),
+    ("GP", "all_console", false),
+];
+
+/// One switch (`+W320`, `-A`, `+KFI1`), case-insensitive, read as the INI option it stands for.
 fn switch(arg: &str, pov: &mut PovSettings) -> Result<(), String> {
     let on = arg.starts_with('+');
     let body = &arg[1..];
     let upper = body.to_ascii_uppercase();
-    // Longest names first: `+KFI` before `+KF` before `+K`.
-    const NAMES: &[&str] = &[
-        "KFI", "KFF", "KC", "KI", "KF", "K", "AM", "AG", "A", "SC", "SR", "SF", "SP", "EC", "ER",
-        "EF", "EP", "UA", "UD", "UL", "UR", "UV", "WT", "W", "H", "R", "J", "I", "O", "L", "C",
-        "D", "V", "P", "X", "Q", "F", "BS", "MB", "MV", "GA", "GD", "GF", "GR", "GS", "GW", "GI",
-        "GP",
-    ];
-    let Some(name) = NAMES.iter().find(|n| upper.starts_with(**n)) else {
+    let bad = |e: String| format!("`{arg}`: {e}");
+    let flag = if on { "on" } else { "off" };
+    // `+A[t]`, `-A[t]`: on or off, and the threshold if given; `+AM`, `+AG` come from the table.
+    if upper.starts_with('A') && !upper.starts_with("AM") && !upper.starts_with("AG") {
+        option("antialias", flag, pov).map_err(bad)?;
+        return match &body[1..] {
+            "" => Ok(()),
+            t => option("antialias_threshold", t, pov).map_err(bad),
+        };
+    }
+    // `+F[type][bits]`: the output type and its bits per colour.
+    if let Some(rest) = upper.strip_prefix('F') {
+        if !on && rest.is_empty() {
+            return Err(format!("{arg}: trace always writes its image"));
+        }
+        if let Some(t) = rest.get(..1) {
+            option("output_file_type", t, pov).map_err(bad)?;
+            if rest.len() > 1 {
+                option("bits_per_color", &rest[1..], pov).map_err(bad)?;
+            }
+        }
+        return Ok(());
+    }
+    if upper.starts_with("GI") {
+        return Err(format!("{arg}: trace does not write INI files"));
+    }
+    let Some(&(name, key, takes_value)) = SWITCHES.iter().find(|(n, ..)| upper.starts_with(n))
+    else {
         let known: Vec<&str> = OPTIONS
             .iter()
             .map(|o| o.0)
@@ -401,79 +472,24 @@ fn switch(arg: &str, pov: &mut PovSettings) -> Result<(), String> {
         ));
     };
     let value = &body[name.len()..];
-    let bad = |e: String| format!("`{arg}`: {e}");
-    let num = |v: &str| number::<f64>(v).map_err(bad);
-    let int = |v: &str| number::<i64>(v).map_err(bad);
-    match *name {
-        "W" => pov.width = Some(number(value).map_err(bad)?),
-        "H" => pov.height = Some(number(value).map_err(bad)?),
-        "A" => {
-            pov.antialias = Some(on);
-            if !value.is_empty() {
-                pov.threshold = Some(num(value)?);
-            }
-        }
-        "AM" => pov.aa_method = Some(number(value).map_err(bad)?),
-        "R" => pov.aa_depth = Some(number(value).map_err(bad)?),
-        "J" => {
-            if on {
-                pov.warnings.push(format!(
-                    "{arg}: trace samples POV-Ray's grid without jitter (its own sampler is to come)"
-                ));
-            }
-        }
-        "I" => pov.scene = Some(PathBuf::from(value)),
-        "O" => pov.output = Some(PathBuf::from(value)),
-        "L" => pov.library_paths.push(PathBuf::from(value)),
-        "SC" => pov.columns.0 = Some(num(value)?),
-        "EC" => pov.columns.1 = Some(num(value)?),
-        "SR" => pov.rows.0 = Some(num(value)?),
-        "ER" => pov.rows.1 = Some(num(value)?),
-        "K" => pov.clock = Some(num(value)?),
-        "KFI" => pov.frames.0 = Some(int(value)?),
-        "KFF" => pov.frames.1 = Some(int(value)?),
-        "KI" => pov.clocks.0 = Some(num(value)?),
-        "KF" => pov.clocks.1 = Some(num(value)?),
-        "KC" => pov.cyclic = Some(on),
-        "SF" => pov.subset.0 = Some(num(value)?),
-        "EF" => pov.subset.1 = Some(num(value)?),
-        "UA" => pov.alpha = Some(on),
-        "WT" => pov.threads = Some(number(value).map_err(bad)?),
-        "C" => pov.continue_trace = Some(on),
-        "F" => {
-            if !on && value.is_empty() {
-                return Err(format!("{arg}: trace always writes its image"));
-            }
-            let mut chars = value.chars();
-            if let Some(t) = chars.next() {
-                let t = t.to_ascii_uppercase();
-                file_type(t).map_err(bad)?;
-                pov.file_type = Some(t);
-                let bits = chars.as_str();
-                if !bits.is_empty() {
-                    pov.bits = Some(number(bits).map_err(bad)?);
-                }
-            }
-        }
-        "Q" => {
-            if !value.is_empty() && num(value)? < 9.0 {
-                pov.warnings.push(format!(
-                    "{arg}: trace renders at full quality (POV-Ray's 9)"
-                ));
-            }
-        }
-        "D" => {
-            if on {
-                pov.warnings
-                    .push(format!("{arg}: trace shows no preview window"));
-            }
-        }
-        "SP" | "EP" | "UD" | "UL" | "UR" | "UV" | "AG" | "V" | "P" | "X" | "BS" | "MB" | "MV"
-        | "GA" | "GD" | "GF" | "GR" | "GS" | "GW" | "GP" => {}
-        "GI" => return Err(format!("{arg}: trace does not write INI files")),
-        _ => unreachable!("every name in NAMES has an arm"),
+    if !takes_value {
+        return option(key, flag, pov).map_err(bad);
     }
-    Ok(())
+    // (`+Q` without a value, and the other value switches accepted without effect, read nothing.)
+    if value.is_empty()
+        && matches!(
+            key,
+            "quality"
+                | "render_block_size"
+                | "version"
+                | "preview_start_size"
+                | "preview_end_size"
+                | "antialias_gamma"
+        )
+    {
+        return Ok(());
+    }
+    option(key, value, pov).map_err(bad)
 }
 
 #[cfg(test)]

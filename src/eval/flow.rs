@@ -745,7 +745,7 @@ impl<'a> Evaluator<'a> {
                 item.args[0].span,
             )
         })?;
-        let text = syntax::chosen::rewrite(&text).unwrap_or(text);
+        let text = syntax::lexical::rewrite(&text).unwrap_or(text);
         let file = self.sources.add(&path, text);
         let helpers = self.options.parse_helpers();
         let statements = syntax::statements(self.sources.file(file).text.clone(), file, helpers)

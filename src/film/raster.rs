@@ -304,7 +304,10 @@ impl Raster {
 }
 
 fn read_png(path: &Path, bytes: &[u8]) -> Result<Raster, ImageError> {
-    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    // (No decoder limit of its own: a merged image is as big as the render it equals, and
+    // trace's memory cap, `--max-memory`, bounds it.)
+    let limits = png::Limits { bytes: usize::MAX };
+    let mut decoder = png::Decoder::new_with_limits(std::io::Cursor::new(bytes), limits);
     decoder.set_transformations(png::Transformations::IDENTITY);
     let mut reader = decoder.read_info().map_err(|e| format_error(path, e))?;
     let info = reader.info();
@@ -397,8 +400,16 @@ fn read_ppm(path: &Path, bytes: &[u8]) -> Result<Raster, ImageError> {
     let (width, height, max) = (num(&fields[1])?, num(&fields[2])?, num(&fields[3])?);
     let bits = if max > 255 { 16 } else { 8 };
     let bpp = 3 * usize::from(bits / 8);
-    let len = width as usize * height as usize * bpp;
-    let data = bytes.get(at..at + len).ok_or_else(bad)?.to_vec();
+    // (The header's size is checked against the bytes there are before anything is made.)
+    let len = (width as usize)
+        .checked_mul(height as usize)
+        .and_then(|n| n.checked_mul(bpp))
+        .ok_or_else(bad)?;
+    let data = at
+        .checked_add(len)
+        .and_then(|end| bytes.get(at..end))
+        .ok_or_else(bad)?
+        .to_vec();
     Ok(Raster {
         width,
         height,

@@ -6,7 +6,7 @@
 
 mod ahead;
 pub mod bulk;
-pub mod chosen;
+pub mod lexical;
 mod plain;
 
 mod grammar {

@@ -1,3 +1,6 @@
+//! What POV-Ray's token reader accepts and trace's grammar does not, rewritten in the text with
+//! every byte position kept (so errors still point at the file as written).
+//!
 //! An object keyword chosen by a directive, as shapes.inc writes it:
 //!
 //! ```text
