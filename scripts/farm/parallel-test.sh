@@ -124,7 +124,8 @@ shift
 [[ ${1-} == -- ]] && shift
 home="$FAKE_HOSTS/${host#*@}"
 mkdir -p "$home"
-cd "$home" && HOME="$home" exec bash -c "$*"
+# A real ssh login sets SHELL to the login shell; GNU parallel's remote side needs it.
+cd "$home" && HOME="$home" SHELL="$(command -v bash)" exec bash -c "$*"
 EOF
     chmod +x bin/fakessh
     export FAKE_HOSTS="$WORK/hosts"
