@@ -46,7 +46,7 @@ for scene in "$@"; do
         if [ "$mode" = off ]; then
             targs=(--aa off); pargs=(-A -J)
         else
-            targs=(--aa 0.0 --aa-depth 3); pargs=(+A0.0 +R3 -J)
+            targs=(--aa 0.0 --aa-depth 3 --aa-method 1); pargs=(+A0.0 +R3 -J)
         fi
         tout="$TMP/$name.$mode.trace.exr"
         pout="$TMP/$name.$mode.pov.exr"

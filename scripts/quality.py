@@ -1,16 +1,22 @@
 #!/usr/bin/env python3
 """Speed against accuracy: trace and POV-Ray 3.7 over their anti-aliasing settings.
 
-For each chart scene (six examples and two scenes of the speed table), both renderers render a converged reference (anti-aliasing method 1,
-threshold 0, depth 8: 65 samples in every pixel, no jitter) and a sweep of quality settings
-(no anti-aliasing; thresholds 0.3, 0.1 and 0 at several depths; method 2 too, in both). Each
-image is compared with *its own renderer's* reference (mean FLIP and RMSE), so the curves show
-sampling error against time; the FLIP between the two references (the renderers' remaining
-difference) is recorded beside them. Times are end-to-end wall times in the same run.
+For each chart scene (seven examples and two scenes of the speed table), both renderers render a
+reference converged further than any setting of the sweep: trace with its own sampler
+(method 3, threshold 0, up to 256 stratified samples in every pixel, area lights sampled over
+their whole surface), POV-Ray with method 1 at threshold 0, depth 9 and jitter (82 jittered
+samples in every pixel). Then a sweep of quality settings: no anti-aliasing; methods 1 and 2
+at thresholds 0.3, 0.1 and 0 and several depths (without jitter, as trace's methods 1 and 2
+match POV-Ray's); POV-Ray's method 1 with jitter, its default; trace's method 3. Each image is
+compared with *its own renderer's* reference (mean FLIP and RMSE), so the curves show sampling
+error against time; the FLIP between the two references (the renderers' remaining difference)
+is recorded beside them. Times are end-to-end wall times in the same run.
 
-Writes docs/quality.csv (every render), docs/quality.md (references and best points) and
+Writes docs/quality.csv (every render), docs/quality.md (references, each renderer at its
+default settings, and the first time each renderer reaches FLIP 0.01 and 0.005) and
 docs/quality.svg (one log-log panel per scene: error against time, a curve per renderer and
-method; docs/quality.png too when rsvg-convert is installed). Usage: scripts/quality.py [SCENE ...]   (env: WIDTH, HEIGHT; default 320x240)
+method; docs/quality.png too when rsvg-convert is installed). At a size other than 320x240 the
+files are docs/quality-WxH.*. Usage: scripts/quality.py [SCENE ...]   (env: WIDTH, HEIGHT)
 """
 import csv
 import math
@@ -23,12 +29,23 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TRACE = os.path.join(ROOT, "target", "release", "trace")
 WIDTH = int(os.environ.get("WIDTH", 320))
 HEIGHT = int(os.environ.get("HEIGHT", 240))
-SCENES = ["basic_spheres", "mirrors", "glass", "lights", "meshes", "transparent", "speed:spheres", "speed:terrain"]
-REFERENCE = ("0.0", "8")
+SCENES = ["area_glass_metal", "basic_spheres", "mirrors", "glass", "lights", "meshes", "transparent", "speed:spheres",
+          "speed:terrain"]
+TRACE_REFERENCE = ("3", "0.0", "7")
+POV_REFERENCE = ("1", "0.0", "9", True)
+# (method, threshold, depth); method 1 without a threshold is no anti-aliasing.
 TRACE_SWEEP = [("1", "off", None), ("1", "0.3", "3"), ("1", "0.1", "3"), ("1", "0.0", "2"), ("1", "0.0", "3"), ("1", "0.0", "4"),
-               ("1", "0.0", "6"), ("2", "0.3", "3"), ("2", "0.1", "3"), ("2", "0.0", "3")]
-POV_SWEEP = [("1", None, None), ("1", "0.3", "3"), ("1", "0.1", "3"), ("1", "0.0", "2"), ("1", "0.0", "3"),
-             ("1", "0.0", "4"), ("1", "0.0", "6"), ("2", "0.3", "3"), ("2", "0.1", "3"), ("2", "0.0", "3")]
+               ("1", "0.0", "6"), ("2", "0.3", "3"), ("2", "0.1", "3"), ("2", "0.0", "3"),
+               ("3", "0.5", "2"), ("3", "0.3", "3"), ("3", "0.1", "3"), ("3", "0.1", "4"), ("3", "0.03", "4"), ("3", "0.0", "3"),
+               ("3", "0.0", "4"), ("3", "0.0", "5")]
+# (method, threshold, depth, jitter)
+POV_SWEEP = [("1", None, None, False), ("1", "0.3", "3", False), ("1", "0.1", "3", False), ("1", "0.0", "2", False),
+             ("1", "0.0", "3", False), ("1", "0.0", "4", False), ("1", "0.0", "6", False), ("2", "0.3", "3", False),
+             ("2", "0.1", "3", False), ("2", "0.0", "3", False),
+             ("1", "0.3", "3", True), ("1", "0.1", "3", True), ("1", "0.0", "3", True), ("1", "0.0", "5", True)]
+# Each renderer's settings when none are given: trace's default, and POV-Ray's +A0.3 +R3 +AM1 +J1.
+TRACE_DEFAULT = ("3", "0.3", "3")
+POV_DEFAULT = ("1", "0.3", "3", True)
 
 
 def timed(cmd, cwd):
@@ -38,19 +55,27 @@ def timed(cmd, cwd):
     return float([l for l in p.stderr.splitlines() if l.startswith("TIME ")][-1].split()[1])
 
 
-def trace_render(scene, out, aa, depth, method="1"):
-    cmd = [TRACE, scene, "-o", out, "--width", str(WIDTH), "--height", str(HEIGHT), "--quiet", "--aa", aa]
+def trace_render(scene, out, method, aa, depth):
+    cmd = [TRACE, scene, "-o", out, "--width", str(WIDTH), "--height", str(HEIGHT), "--quiet", "--aa", aa,
+           "--aa-method", method]
     if depth:
         cmd += ["--aa-depth", depth]
-    if method != "1":
-        cmd += ["--aa-method", method]
     return timed(cmd, os.path.dirname(scene))
 
 
-def pov_render(scene, out, method, threshold, depth):
-    cmd = ["povray", "+I" + os.path.basename(scene), "+O" + out, "+FE", "+W%d" % WIDTH, "+H%d" % HEIGHT, "-D", "-GA", "-J"]
+def trace_setting(method, aa, depth):
+    return "--aa %s%s --aa-method %s" % (aa, " --aa-depth " + depth if depth else "", method)
+
+
+def pov_render(scene, out, method, threshold, depth, jitter):
+    cmd = ["povray", "+I" + os.path.basename(scene), "+O" + out, "+FE", "+W%d" % WIDTH, "+H%d" % HEIGHT, "-D", "-GA"]
     cmd += ["-A"] if threshold is None else ["+A" + threshold, "+R" + depth, "+AM" + method]
+    cmd += ["+J"] if jitter else ["-J"]
     return timed(cmd, os.path.dirname(scene))
+
+
+def pov_setting(method, threshold, depth, jitter):
+    return "-A" if threshold is None else "+AM%s +A%s +R%s %s" % (method, threshold, depth, "+J" if jitter else "-J")
 
 
 def compare(ref, test):
@@ -63,9 +88,10 @@ def chart(rows, path):
     cols = 3
     pw, ph, gap_x, gap_y, left, top = 260, 200, 70, 70, 60, 40
     w = left + cols * (pw + gap_x)
-    h = top + math.ceil(len(scenes) / cols) * (ph + gap_y) + 40
+    h = top + math.ceil(len(scenes) / cols) * (ph + gap_y) + 50
     styles = {"trace, method 1": ("#d62728", ""), "trace, method 2": ("#ff7f0e", "9,3,2,3"),
-              "POV-Ray, method 1": ("#1f77b4", "6,4"), "POV-Ray, method 2": ("#2ca02c", "2,3")}
+              "trace, method 3": ("#8b0000", ""), "POV-Ray, method 1": ("#1f77b4", "6,4"),
+              "POV-Ray, method 1 + jitter": ("#17becf", "6,4"), "POV-Ray, method 2": ("#2ca02c", "2,3")}
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">' % (w, h),
            '<rect width="100%" height="100%" fill="white"/>',
            '<text x="%d" y="20" text-anchor="middle" font-size="14">mean FLIP against each renderer\'s converged image, against end-to-end time (log-log), %d×%d</text>' % (w / 2, WIDTH, HEIGHT)]
@@ -102,9 +128,9 @@ def chart(rows, path):
                            % (" ".join("%.1f,%.1f" % (sx(s), sy(e)) for s, e in env), colour, dash))
             for s, e in series:
                 out.append('<circle cx="%.1f" cy="%.1f" r="2.5" fill="%s"/>' % (sx(s), sy(e), colour))
-    ly = h - 18
     for i, (curve, (colour, dash)) in enumerate(styles.items()):
-        lx = left + i * 220
+        lx = left + (i % 3) * 300
+        ly = h - 30 + (i // 3) * 16
         out.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2" stroke-dasharray="%s"/><text x="%d" y="%d">%s</text>'
                    % (lx, ly, lx + 30, ly, colour, dash, lx + 36, ly + 4, curve))
     out.append("</svg>")
@@ -132,46 +158,60 @@ def main():
                 scene = os.path.join(ROOT, "examples", name + ".rt")
             t_ref = os.path.join(tmp, name + ".tref.exr")
             p_ref = os.path.join(tmp, name + ".pref.exr")
-            tt = trace_render(scene, t_ref, *REFERENCE)
-            pt = pov_render(scene, p_ref, "1", *REFERENCE)
+            tt = trace_render(scene, t_ref, *TRACE_REFERENCE)
+            pt = pov_render(scene, p_ref, *POV_REFERENCE)
             cross, _ = compare(p_ref, t_ref)
             refs.append((name, tt, pt, cross))
             print("%-14s references: trace %.2f s, POV-Ray %.2f s, FLIP between them %.4f" % (name, tt, pt, cross), flush=True)
             for method, aa, depth in TRACE_SWEEP:
                 out = os.path.join(tmp, "t.exr")
-                s = trace_render(scene, out, aa, depth, method)
+                s = trace_render(scene, out, method, aa, depth)
                 f, r = compare(t_ref, out)
-                setting = "--aa %s%s%s" % (aa, " --aa-depth " + depth if depth else "", " --aa-method 2" if method == "2" else "")
-                rows.append({"scene": name, "curve": "trace, method %s" % method, "setting": setting,
+                rows.append({"scene": name, "curve": "trace, method %s" % method, "setting": trace_setting(method, aa, depth),
                              "seconds": "%.3f" % s, "flip": "%.6f" % f, "rmse": "%.6f" % r})
-            for method, threshold, depth in POV_SWEEP:
+            for method, threshold, depth, jitter in POV_SWEEP:
                 out = os.path.join(tmp, "p.exr")
-                s = pov_render(scene, out, method, threshold, depth)
+                s = pov_render(scene, out, method, threshold, depth, jitter)
                 f, r = compare(p_ref, out)
-                setting = "-A" if threshold is None else "+AM%s +A%s +R%s" % (method, threshold, depth)
-                rows.append({"scene": name, "curve": "POV-Ray, method %s" % method, "setting": setting,
+                curve = "POV-Ray, method %s%s" % (method, " + jitter" if jitter else "")
+                rows.append({"scene": name, "curve": curve, "setting": pov_setting(method, threshold, depth, jitter),
                              "seconds": "%.3f" % s, "flip": "%.6f" % f, "rmse": "%.6f" % r})
     docs = os.path.join(ROOT, "docs")
-    with open(os.path.join(docs, "quality.csv"), "w", newline="") as fh:
+    stem = "quality" if (WIDTH, HEIGHT) == (320, 240) else "quality-%dx%d" % (WIDTH, HEIGHT)
+    with open(os.path.join(docs, stem + ".csv"), "w", newline="") as fh:
         wr = csv.DictWriter(fh, fieldnames=list(rows[0]))
         wr.writeheader()
         wr.writerows(rows)
-    lines = ["| scene | reference: trace (s) | reference: POV-Ray (s) | FLIP between references | trace at FLIP ≤ 0.01 | POV-Ray at FLIP ≤ 0.01 |",
-             "|---|---:|---:|---:|---|---|"]
+    def row(name, setting):
+        return next(r for r in rows if r["scene"] == name and r["setting"] == setting)
+
+    lines = ["Each renderer at its default settings (trace: `%s`; POV-Ray: `%s`), %d×%d; FLIP against the renderer's own reference." % (
+                 trace_setting(*TRACE_DEFAULT), pov_setting(*POV_DEFAULT), WIDTH, HEIGHT), "",
+             "| scene | trace (s) | trace FLIP | POV-Ray (s) | POV-Ray FLIP | POV-Ray / trace time | trace's error no higher |",
+             "|---|---:|---:|---:|---:|---:|---|"]
+    for name, _, _, _ in refs:
+        t, p = row(name, trace_setting(*TRACE_DEFAULT)), row(name, pov_setting(*POV_DEFAULT))
+        lines.append("| %s | %s | %.4f | %s | %.4f | %.2f× | %s |" % (
+            name, t["seconds"], float(t["flip"]), p["seconds"], float(p["flip"]), float(p["seconds"]) / float(t["seconds"]),
+            "yes" if float(t["flip"]) <= float(p["flip"]) else "no"))
+    lines += ["", "The first time each renderer reaches mean FLIP 0.01 and 0.005 against its own reference (any setting of the sweep).", "",
+              "| scene | reference: trace (s) | reference: POV-Ray (s) | FLIP between references | trace at FLIP ≤ 0.01 | POV-Ray at FLIP ≤ 0.01 | trace at FLIP ≤ 0.005 | POV-Ray at FLIP ≤ 0.005 |",
+              "|---|---:|---:|---:|---|---|---|---|"]
     for name, tt, pt, cross in refs:
-        def best(curve_prefix):
-            ok = [r for r in rows if r["scene"] == name and r["curve"].startswith(curve_prefix) and float(r["flip"]) <= 0.01]
+        def best(curve_prefix, limit):
+            ok = [r for r in rows if r["scene"] == name and r["curve"].startswith(curve_prefix) and float(r["flip"]) <= limit]
             if not ok:
                 return "—"
             r = min(ok, key=lambda r: float(r["seconds"]))
             return "%s s (`%s`, FLIP %.4f)" % (r["seconds"], r["setting"], float(r["flip"]))
-        lines.append("| %s | %.2f | %.2f | %.4f | %s | %s |" % (name, tt, pt, cross, best("trace"), best("POV-Ray")))
-    with open(os.path.join(docs, "quality.md"), "w") as fh:
+        lines.append("| %s | %.2f | %.2f | %.4f | %s | %s | %s | %s |" % (
+            name, tt, pt, cross, best("trace", 0.01), best("POV-Ray", 0.01), best("trace", 0.005), best("POV-Ray", 0.005)))
+    with open(os.path.join(docs, stem + ".md"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
-    chart(rows, os.path.join(docs, "quality.svg"))
+    chart(rows, os.path.join(docs, stem + ".svg"))
     # A PNG copy when librsvg's converter is installed (apt-get install librsvg2-bin).
     if subprocess.run(["sh", "-c", "command -v rsvg-convert"], capture_output=True).returncode == 0:
-        subprocess.run(["rsvg-convert", os.path.join(docs, "quality.svg"), "-o", os.path.join(docs, "quality.png")], check=True)
+        subprocess.run(["rsvg-convert", os.path.join(docs, stem + ".svg"), "-o", os.path.join(docs, stem + ".png")], check=True)
     print("\n".join(lines))
 
 

@@ -196,7 +196,7 @@ def main():
             name = "%s_%d" % (family, size)
             make(os.path.join(tmp, name + ".pov"))
             tt, tm = run([TRACE, name + ".pov", "-o", name + ".t.exr", "--width", str(WIDTH), "--height", str(HEIGHT),
-                          "--aa", "0.3", "--aa-depth", "3", "--quiet"], tmp)
+                          "--aa", "0.3", "--aa-depth", "3", "--aa-method", "1", "--quiet"], tmp)
             pt, pm = run(["povray", "+I" + name + ".pov", "+O" + name + ".p.exr", "+FE", "+W%d" % WIDTH, "+H%d" % HEIGHT,
                           "-D", "-GA", "+A0.3", "+R3", "-J"], tmp)
             f = flip(os.path.join(tmp, name + ".p.exr"), os.path.join(tmp, name + ".t.exr"))

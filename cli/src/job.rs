@@ -14,6 +14,8 @@ pub struct Job {
     pub width: u32,
     pub height: u32,
     pub antialias: trace::Antialias,
+    /// Method 3 draws area-light points from each pixel's sequence.
+    pub sampled_lights: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -44,6 +46,8 @@ pub struct Own {
     pub aa: Option<Option<f64>>,
     pub aa_depth: Option<u32>,
     pub aa_method: Option<u32>,
+    /// `--area-lights sampled`.
+    pub sampled_lights: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -60,7 +64,8 @@ pub struct Own {
 }
 
 /// Resolves the settings: trace's own first, then POV-Ray's, then the defaults (800 × 600,
-/// anti-aliasing threshold 0.3 at depth 3, method 1, PNG).
+/// anti-aliasing threshold 0.3 at depth 3, method 3 — method 1 when POV-Ray's jitter is
+/// turned off, as a POV-Ray command line asking for its exact grid does — PNG).
 pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
     let mut scene = own
         .scene
@@ -94,14 +99,26 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
             "the anti-aliasing depth must be 1 to 9, not {depth}"
         ));
     }
-    let method = own.aa_method.or(pov.aa_method).unwrap_or(1);
+    let mut warnings = pov.warnings.clone();
+    let default_method = if pov.jitter == Some(false) { 1 } else { 3 };
+    let method = own.aa_method.or(pov.aa_method).unwrap_or(default_method);
+    if pov.jitter == Some(true) && method != 3 {
+        warnings.push(format!(
+            "Jitter: trace's method {method} samples POV-Ray's grid without jitter (method 3, \
+             trace's own sampler, is the default)"
+        ));
+    }
+    if own.sampled_lights && !matches!(threshold.map(|_| method), Some(3)) {
+        return Err("--area-lights sampled needs anti-aliasing method 3 (--aa-method 3)".into());
+    }
     let antialias = match (threshold, method) {
         (None, _) => trace::Antialias::Off,
         (Some(threshold), 1) => trace::Antialias::Adaptive { threshold, depth },
         (Some(threshold), 2) => trace::Antialias::Recursive { threshold, depth },
+        (Some(threshold), 3) => trace::Antialias::Sampled { threshold, depth },
         (Some(_), m) => {
             return Err(format!(
-                "anti-aliasing method {m}: trace has POV-Ray's methods 1 and 2 (method 3 is to come)"
+                "anti-aliasing method {m}: trace has POV-Ray's methods 1 and 2 and its own method 3"
             ));
         }
     };
@@ -175,7 +192,6 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         Some(b) => return Err(format!("{b} bits per colour: trace writes 8 or 16")),
     };
     let alpha = own.alpha || pov.alpha.unwrap_or(false);
-    let mut warnings = pov.warnings.clone();
     if alpha && format == Format::Ppm {
         warnings.push("a PPM file has no alpha channel: written without it".into());
     }
@@ -204,6 +220,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         width,
         height,
         antialias,
+        sampled_lights: own.sampled_lights,
         threads: own.threads.or(pov.threads),
         include_paths,
         declares,

@@ -58,13 +58,20 @@ struct RenderArgs {
     #[arg(long, value_parser = parse_aa)]
     aa: Option<AaSetting>,
     /// Anti-aliasing depth, 1..=9 (POV-Ray +R): the grid size per axis for method 1, the
-    /// number of levels for method 2 [default: 3].
+    /// number of levels for method 2, at most 4·2^(depth−1) samples for method 3
+    /// [default: 3].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=9))]
     aa_depth: Option<u32>,
     /// Anti-aliasing method (POV-Ray +AM): 1, a grid in pixels that differ from a neighbour;
-    /// 2, corners shared between pixels, squares split where their corners differ [default: 1].
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=2))]
+    /// 2, corners shared between pixels, squares split where their corners differ; 3, trace's
+    /// own sampler: stratified samples in pixels that differ from a neighbour until their
+    /// estimated error is small [default: 3; 1 with POV-Ray's -J].
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=3))]
     aa_method: Option<u32>,
+    /// Area lights: `grid`, POV-Ray's grid of points; `sampled` (method 3 only), points
+    /// anywhere on the light from each pixel's sample sequence.
+    #[arg(long, value_enum, default_value_t = AreaLights::Grid)]
+    area_lights: AreaLights,
     /// Render only this rectangle of the image, X0,Y0,X1,Y1 in pixels (ends exclusive): a
     /// part of the image, with the same pixels as the whole render, that `trace merge`
     /// assembles with the other parts (POV-Ray's +SC +EC +SR +ER map onto it).
@@ -179,6 +186,15 @@ fn parse_memory(s: &str) -> Result<usize, String> {
 enum AaSetting {
     Off,
     Threshold(f64),
+}
+
+/// How area lights are sampled (`--area-lights`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum AreaLights {
+    /// POV-Ray's grid of points.
+    Grid,
+    /// Points drawn from each pixel's sample sequence (method 3).
+    Sampled,
 }
 
 fn parse_aa(s: &str) -> Result<AaSetting, String> {
@@ -345,6 +361,7 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
         }),
         aa_depth: args.aa_depth,
         aa_method: args.aa_method,
+        sampled_lights: args.area_lights == AreaLights::Sampled,
         threads: args.threads,
         include_paths: args.include_path.clone(),
         declares: args.declare.clone(),
@@ -468,6 +485,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         width: job.width,
         height: job.height,
         antialias: job.antialias,
+        sampled_lights: job.sampled_lights,
         threads: job.threads.map(|t| t as usize),
         region: Some(region),
         progress: Some(progress.clone()),

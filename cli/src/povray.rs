@@ -15,6 +15,8 @@ pub struct PovSettings {
     pub threshold: Option<f64>,
     pub aa_depth: Option<u32>,
     pub aa_method: Option<u32>,
+    /// `Jitter` / `+J`: on or off, if given.
+    pub jitter: Option<bool>,
     pub library_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
     /// `Start_Column`, `End_Column`, `Start_Row`, `End_Row` as given (pixels from 1, or
@@ -46,11 +48,15 @@ pub const OPTIONS: &[(&str, &str, &str)] = &[
         "anti-aliasing on (threshold t, default 0.3) or off",
     ),
     ("+R", "Antialias_Depth", "anti-aliasing depth"),
-    ("+AM", "Sampling_Method", "anti-aliasing method 1 or 2"),
+    (
+        "+AM",
+        "Sampling_Method",
+        "anti-aliasing method 1, 2 or 3 (trace's own sampler)",
+    ),
     (
         "+J / -J",
         "Jitter, Jitter_Amount",
-        "accepted; trace samples POV-Ray's grid without jitter (warning when on)",
+        "off (`-J`) makes method 1 the default, for POV-Ray's exact grid; on, the default stays method 3 (trace's own sampler); methods 1 and 2 never jitter (warning)",
     ),
     ("+I", "Input_File_Name", "the scene"),
     (
@@ -248,14 +254,7 @@ fn option(key: &str, value: &str, pov: &mut PovSettings) -> Result<(), String> {
         "antialias_threshold" => pov.threshold = Some(number(v)?),
         "antialias_depth" => pov.aa_depth = Some(number(v)?),
         "sampling_method" => pov.aa_method = Some(number(v)?),
-        "jitter" => {
-            if boolean(v)? {
-                pov.warnings.push(
-                    "Jitter: trace samples POV-Ray's grid without jitter (its own sampler is to come)"
-                        .into(),
-                );
-            }
-        }
+        "jitter" => pov.jitter = Some(boolean(v)?),
         "input_file_name" => pov.scene = Some(PathBuf::from(v)),
         "output_file_name" => pov.output = Some(PathBuf::from(v)),
         "library_path" => pov.library_paths.push(PathBuf::from(v)),

@@ -34,6 +34,11 @@ fn smooth_step(lo: f64, hi: f64, p: f64) -> f64 {
     }
 }
 
+/// Method 3: points of an area light a pixel's first sample looks at, and how many if they
+/// do not all agree.
+const AREA_FIRST_POINTS: u32 = 4;
+const AREA_FIRST_POINTS_MOST: u32 = 16;
+
 /// A hash of a point and two grid indices to [−½, ½)², for deterministic area-light jitter:
 /// the same point always gets the same offsets, whatever thread shades it.
 fn jitter(p: DVec3, u: u32, v: u32) -> (f64, f64) {
@@ -102,9 +107,10 @@ impl Tracer<'_> {
         }
         if !light.shadowless {
             let visible = match &light.area {
-                Some(area) if area.size1 * area.size2 > 1 => {
-                    self.area_visibility(light, area, hit, from)
-                }
+                Some(area) if area.size1 * area.size2 > 1 => match self.light_stream {
+                    Some((seed, n)) => self.area_sampled(light, index, area, hit, from, (seed, n)),
+                    None => self.area_visibility(light, area, hit, from),
+                },
                 _ => {
                     let mut shadow = scene.spawn(hit, from, direction);
                     shadow.tmax = reach.unwrap_or_else(|| shadow_length(light, &shadow, distance));
@@ -122,6 +128,67 @@ impl Tracer<'_> {
             colour,
             highlights: !light.shadowless,
         })
+    }
+
+    /// The visibility of an area light from points drawn from the pixel's sequence (method 3):
+    /// sample `n` of the pixel whose seed is `seed` (a stream of its own for each light) picks
+    /// points anywhere on the light, so that the pixel's samples together cover it evenly and
+    /// converge on the whole light rather than on its grid.
+    fn area_sampled(
+        &mut self,
+        light: &Light,
+        index: usize,
+        area: &AreaLight,
+        hit: &SurfaceHit,
+        from: DVec3,
+        (seed, n): (u32, u32),
+    ) -> Rgb {
+        let (a1, a2) = grid_axes(light, area, hit.point);
+        let light_seed = super::sampler::stream_seed(seed, index as u32 + 1);
+        // The pixel's centre sample (the only one most pixels take) looks at 4 points of the
+        // light, and at 16 if they disagree; sample n ≥ 1 at one more point, point 16 + n − 1
+        // of the light's sequence, so that all of a pixel's points together are a prefix of
+        // it.
+        let (start, first, most) = if n == 0 {
+            (0, AREA_FIRST_POINTS, AREA_FIRST_POINTS_MOST)
+        } else {
+            (AREA_FIRST_POINTS_MOST + n - 1, 1, 1)
+        };
+        let mut ray_at = |i: u32| {
+            let (mut s1, mut s2) = super::sampler::offset(light_seed, start + i);
+            if area.size1 == 1 {
+                s1 = 0.0;
+            }
+            if area.size2 == 1 {
+                s2 = 0.0;
+            }
+            let (s1, s2) = if area.circular || area.orient {
+                square_to_disc(s1, s2)
+            } else {
+                (s1, s2)
+            };
+            let point = light.position + a1 * s1 + a2 * s2;
+            let to = point - hit.point;
+            let mut shadow = self.scene.spawn(hit, from, to / to.length());
+            shadow.tmax = (point - shadow.origin).length();
+            self.counts.shadow += 1;
+            self.scene.transmittance(&shadow)
+        };
+        let mut sum = Rgb::ZERO;
+        let mut seen = None;
+        let mut agree = true;
+        for i in 0..first {
+            let v = ray_at(i);
+            agree &= *seen.get_or_insert(v) == v;
+            sum += v;
+        }
+        if agree || most <= first {
+            return sum / f64::from(first);
+        }
+        for i in first..most {
+            sum += ray_at(i);
+        }
+        sum / f64::from(most)
     }
 
     /// The average visibility (0..1 per channel) of an area light's grid from `hit`, by POV-Ray's

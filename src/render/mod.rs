@@ -6,6 +6,7 @@
 //! the same for any number of threads.
 
 mod lights;
+mod sampler;
 mod shade;
 
 pub use shade::RayCounts;
@@ -64,7 +65,25 @@ pub enum Antialias {
         /// Subdivision depth (1..=9): at most `depth − 1` splits.
         depth: u32,
     },
+    /// trace's own sampler (method 3): every pixel takes one sample at its centre; a pixel
+    /// whose centre differs from one of its eight neighbours' by at least `threshold` takes
+    /// stratified samples from a scrambled Sobol sequence seeded by the pixel, 4, then 8,
+    /// 16, … until the estimated error of their mean (half the difference of the means of
+    /// the two halves, in the comparison encoding) is below `threshold` ×
+    /// [`SAMPLED_TOLERANCE`], or it has taken 4·2^(depth−1). The pixel is the mean of the
+    /// centre and those samples.
+    Sampled {
+        /// Colour-difference threshold (as for [`Antialias::Adaptive`]); 0 samples every
+        /// pixel to the most.
+        threshold: f64,
+        /// Sample budget (1..=9): at most 4·2^(depth−1) samples per pixel (16 at 3).
+        depth: u32,
+    },
 }
+
+/// Method 3 stops sampling a pixel when its estimated error falls below the threshold times
+/// this.
+pub const SAMPLED_TOLERANCE: f64 = 0.1;
 
 /// How to render.
 #[derive(Clone, Debug)]
@@ -88,6 +107,10 @@ pub struct RenderOptions {
     pub alpha: bool,
     /// Layers after the colour (and alpha) of what each pixel's centre ray first meets.
     pub aovs: Vec<Aov>,
+    /// With method 3 ([`Antialias::Sampled`]): area lights take their points from each
+    /// pixel's sequence, anywhere on the light (converging on the whole light as a pixel's
+    /// samples grow), instead of POV-Ray's grid. Ignored by the other methods.
+    pub sampled_lights: bool,
 }
 
 /// An arbitrary output value layer: what the camera ray through a pixel's centre first meets,
@@ -143,6 +166,7 @@ impl Default for RenderOptions {
             progress: None,
             alpha: false,
             aovs: Vec::new(),
+            sampled_lights: false,
         }
     }
 }
@@ -747,6 +771,87 @@ fn differ(a: Rgb, b: Rgb, threshold: f64) -> bool {
     (a - b).abs().element_sum() >= threshold
 }
 
+/// The pixels of a block (row by row) with method 3 ([`Antialias::Sampled`]): centre samples
+/// for the block and a one-pixel border (traced again by the neighbouring block: the same
+/// rays), then stratified samples in the pixels that differ from a neighbour. (A first
+/// sample at the first point of the pixel's sequence instead of its centre was tried: it
+/// turns moiré into noise, but on smooth shading its error is the gradient's across the
+/// pixel, and the chart's scenes came out worse: basic_spheres 0.0093 against 0.0042.)
+fn sampled_pixels(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    options: &RenderOptions,
+    (xs, ys): (std::ops::Range<u32>, std::ops::Range<u32>),
+    (threshold, depth): (f64, u32),
+    samples: &mut u64,
+) -> Vec<Px> {
+    let (w, h) = (options.width, options.height);
+    let gamma = tracer.scene.gamma;
+    let (gx0, gy0) = (xs.start.saturating_sub(1), ys.start.saturating_sub(1));
+    let (gx1, gy1) = ((xs.end + 1).min(w), (ys.end + 1).min(h));
+    let gw = (gx1 - gx0) as usize;
+    let at = |x: u32, y: u32| (y - gy0) as usize * gw + (x - gx0) as usize;
+    let mut centre = Vec::with_capacity(gw * (gy1 - gy0) as usize);
+    for y in gy0..gy1 {
+        for x in gx0..gx1 {
+            if options.sampled_lights {
+                tracer.light_stream = Some((sampler::pixel_seed(x, y, 0), 0));
+            }
+            let v = sample(tracer, camera_interiors, w, h, x as f64, y as f64);
+            centre.push((v, aa_encoded(v.truncate(), gamma)));
+        }
+    }
+    *samples += centre.len() as u64;
+    let tolerance = threshold * SAMPLED_TOLERANCE;
+    let most = sampler::max_samples(depth);
+    let mut encoded: Vec<Rgb> = Vec::with_capacity(most as usize);
+    let mut pixels = Vec::with_capacity(xs.len() * ys.len());
+    for y in ys {
+        for x in xs.clone() {
+            let (value, e) = centre[at(x, y)];
+            // The eight neighbours inside the image.
+            let flagged = (y.saturating_sub(1)..(y + 2).min(h)).any(|ny| {
+                (x.saturating_sub(1)..(x + 2).min(w))
+                    .any(|nx| (nx, ny) != (x, y) && differ(centre[at(nx, ny)].1, e, threshold))
+            });
+            if !flagged {
+                pixels.push(value);
+                continue;
+            }
+            let seed = sampler::pixel_seed(x, y, 0);
+            // The centre sample counts in the mean, not in the error estimate.
+            let (mut n, mut batch, mut sum) = (0u32, 4u32, value);
+            encoded.clear();
+            loop {
+                while n < batch {
+                    let (dx, dy) = sampler::offset(seed, n);
+                    if options.sampled_lights {
+                        tracer.light_stream = Some((seed, n + 1));
+                    }
+                    let v = sample(tracer, camera_interiors, w, h, x as f64 + dx, y as f64 + dy);
+                    sum += v;
+                    encoded.push(aa_encoded(v.truncate(), gamma));
+                    n += 1;
+                }
+                if n >= most {
+                    break;
+                }
+                let half = encoded.len() / 2;
+                let mean = |e: &[Rgb]| e.iter().fold(Rgb::ZERO, |s, &v| s + v) / half as f64;
+                let error = (mean(&encoded[..half]) - mean(&encoded[half..])).abs().element_sum() / 2.0;
+                if error < tolerance {
+                    break;
+                }
+                batch = (2 * batch).min(most);
+            }
+            *samples += u64::from(n);
+            pixels.push(sum / f64::from(n + 1));
+        }
+    }
+    tracer.light_stream = None;
+    pixels
+}
+
 /// Renders the block whose top-left pixel is (x0, y0), with POV-Ray's method-1 logic: the
 /// row above and the column left of the block are traced (centre samples) for comparison
 /// and count as already supersampled.
@@ -814,6 +919,18 @@ fn render_block(
             return result(pixels, tracer, corners.samples);
         }
         Antialias::Adaptive { threshold, depth } => (threshold, depth),
+        Antialias::Sampled { threshold, depth } => {
+            let mut samples = 0;
+            let pixels = sampled_pixels(
+                &mut tracer,
+                &camera_interiors,
+                options,
+                (x0..x1, y0..y1),
+                (threshold, depth),
+                &mut samples,
+            );
+            return result(pixels, tracer, samples);
+        }
     };
 
     // Local grid with one extra row above and one extra column on the left.
@@ -931,6 +1048,10 @@ mod tests {
                 threshold: 0.1,
                 depth: 3,
             },
+            Antialias::Sampled {
+                threshold: 0.1,
+                depth: 3,
+            },
         ] {
             let options = RenderOptions {
                 width: w,
@@ -954,6 +1075,61 @@ mod tests {
                 assert!(pixels == whole.film.pixels, "{antialias:?}, {rows} rows of blocks");
                 assert_eq!(bands.stats.samples, whole.stats.samples);
                 assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+            }
+        }
+    }
+
+    /// Method 3 (with an area light, whose points it draws from each pixel's sequence) gives
+    /// the same pixels for any thread count and any region, and spends more samples where
+    /// the picture changes.
+    #[test]
+    fn method_3_is_the_same_for_any_threads_and_region() {
+        let (w, h) = (90, 70);
+        let text = SCENE.replace(
+            "light_source { <4, 8, -5>, rgb 1 }",
+            "light_source { <4, 8, -5>, rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 4, 4 adaptive 1 }",
+        );
+        let options = crate::LoadOptions {
+            width: w,
+            height: h,
+            ..crate::LoadOptions::default()
+        };
+        let loaded = crate::load_str(std::path::Path::new("m3.rt"), text, &options).expect("loads");
+        let scene = Scene::build(&loaded.scene);
+        let render_with = |threads: usize, region: Option<Region>| {
+            let options = RenderOptions {
+                width: w,
+                height: h,
+                antialias: Antialias::Sampled {
+                    threshold: 0.2,
+                    depth: 3,
+                },
+                threads: Some(threads),
+                region,
+                ..RenderOptions::default()
+            };
+            let pool = thread_pool(&options).expect("a pool");
+            render(&scene, &options, &pool)
+        };
+        let one = render_with(1, None);
+        let two = render_with(2, None);
+        assert!(one.film.pixels == two.film.pixels, "1 and 2 threads");
+        assert_eq!(one.stats.samples, two.stats.samples);
+        assert_eq!(one.stats.counts.shadow, two.stats.counts.shadow);
+        // More than one sample a pixel on average, fewer than the most.
+        let per_pixel = one.stats.samples as f64 / f64::from(w * h);
+        assert!(per_pixel > 1.2 && per_pixel < 8.0, "{per_pixel} samples a pixel");
+        for region in [
+            Region { x0: 0, y0: 32, x1: 90, y1: 64 },
+            Region { x0: 17, y0: 5, x1: 61, y1: 70 },
+        ] {
+            let part = render_with(2, Some(region));
+            for y in region.y0..region.y1 {
+                for x in region.x0..region.x1 {
+                    let whole = one.film.pixels[(y * w + x) as usize];
+                    let here = part.film.pixels[((y - region.y0) * region.width() + x - region.x0) as usize];
+                    assert_eq!(whole, here, "pixel ({x}, {y}) of region {region:?}");
+                }
             }
         }
     }

@@ -165,6 +165,9 @@ pub struct Tracer<'a> {
     /// How much of the last ray traced saw the transparent background straight through
     /// (0 to 1): one minus its alpha (POV-Ray's transmit of the traced colour, +UA).
     pub see_through: f64,
+    /// The camera sample being traced, as (pixel seed, sample number), when method 3 draws
+    /// area-light positions from the pixel's sequence instead of POV-Ray's grid.
+    pub(super) light_stream: Option<(u32, u32)>,
 }
 
 /// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
@@ -209,6 +212,7 @@ impl<'a> Tracer<'a> {
             area_cache: Vec::new(),
             reflected: false,
             see_through: 0.0,
+            light_stream: None,
         }
     }
 

@@ -72,7 +72,7 @@ fn unknown_output_format_exits_2() {
 
 #[test]
 fn bad_arguments_exit_2() {
-    for bad in [["--aa", "sometimes"], ["--aa-method", "3"]] {
+    for bad in [["--aa", "sometimes"], ["--aa-method", "4"]] {
         let output = trace()
             .args(["examples/basic_spheres.rt", "-o", "x.png"])
             .args(bad)
@@ -83,41 +83,59 @@ fn bad_arguments_exit_2() {
 }
 
 #[test]
-fn aa_method_2_renders_as_the_library_does() {
-    let dir = temp_dir("method2");
-    let out = dir.join("m2.exr");
-    let status = trace()
-        .args(["examples/mirrors.rt", "-o"])
-        .arg(&out)
-        .args([
-            "--width",
-            "48",
-            "--height",
-            "36",
-            "--aa",
-            "0.1",
-            "--aa-method",
+fn aa_methods_2_and_3_render_as_the_library_does() {
+    let dir = temp_dir("methods");
+    for (method, antialias) in [
+        (
             "2",
-            "--quiet",
-        ])
-        .current_dir(crate::root())
-        .status()
-        .expect("runs");
-    assert!(status.success());
-    let text = std::fs::read_to_string(crate::root().join("examples/mirrors.rt")).unwrap();
-    let scene = crate::load_text(&text, 48, 36);
-    let options = trace::RenderOptions {
-        width: 48,
-        height: 36,
-        antialias: trace::Antialias::Recursive {
-            threshold: 0.1,
-            depth: 3,
-        },
-        threads: None,
-        ..Default::default()
-    };
-    let expected = trace::render(&scene, &options).expect("renders").film;
-    assert_eq!(trace::Film::read(&out).expect("readable"), expected);
+            trace::Antialias::Recursive {
+                threshold: 0.1,
+                depth: 3,
+            },
+        ),
+        (
+            "3",
+            trace::Antialias::Sampled {
+                threshold: 0.1,
+                depth: 3,
+            },
+        ),
+    ] {
+        let out = dir.join(format!("m{method}.exr"));
+        let status = trace()
+            .args(["examples/mirrors.rt", "-o"])
+            .arg(&out)
+            .args([
+                "--width",
+                "48",
+                "--height",
+                "36",
+                "--aa",
+                "0.1",
+                "--aa-method",
+                method,
+                "--quiet",
+            ])
+            .current_dir(crate::root())
+            .status()
+            .expect("runs");
+        assert!(status.success());
+        let text = std::fs::read_to_string(crate::root().join("examples/mirrors.rt")).unwrap();
+        let scene = crate::load_text(&text, 48, 36);
+        let options = trace::RenderOptions {
+            width: 48,
+            height: 36,
+            antialias,
+            threads: None,
+            ..Default::default()
+        };
+        let expected = trace::render(&scene, &options).expect("renders").film;
+        assert_eq!(
+            trace::Film::read(&out).expect("readable"),
+            expected,
+            "method {method}"
+        );
+    }
 }
 
 #[test]
