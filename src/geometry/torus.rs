@@ -34,6 +34,52 @@ impl Torus {
         ]
     }
 
+    /// Calls `f` with each distance in the ray's range where it meets the torus, nearest
+    /// first, until `f` returns true; returns whether it did. The quartic is solved only over
+    /// the part of the ray inside the bounding sphere (radius R + r), the slab |y| ≤ r and the
+    /// ray's own range, and formed at that part's start (its coefficients grow with the
+    /// distance from the torus).
+    fn each_root(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) -> bool {
+        let (big, small) = (self.major, self.minor);
+        let length = ray.direction.length();
+        let d = ray.direction / length;
+        let bound = big + small;
+        let along = ray.origin.dot(d);
+        let perpendicular = ray.origin - along * d;
+        let h2 = bound * bound - perpendicular.length_squared();
+        if h2 < 0.0 {
+            return false;
+        }
+        let h = h2.sqrt();
+        let (mut lo, mut hi) = (-along - h, -along + h);
+        // The ray's range, in unit-direction distances.
+        lo = lo.max(ray.tmin * length);
+        hi = hi.min(ray.tmax * length);
+        // The slab |y| ≤ r.
+        if d.y != 0.0 {
+            let (a, b) = ((-small - ray.origin.y) / d.y, (small - ray.origin.y) / d.y);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        } else if ray.origin.y.abs() > small {
+            return false;
+        }
+        let margin = 1e-9 * bound;
+        // (NaN bounds, from a degenerate ray, are a miss.)
+        if lo.is_nan() || hi.is_nan() || lo > hi + 2.0 * margin {
+            return false;
+        }
+        let shift = lo.max(0.0).min(hi.max(0.0));
+        let c = self.quartic(ray.origin + shift * d, d);
+        let roots = roots_in(&c, 4, (lo - shift) - margin, (hi - shift) + margin);
+        for &s in roots.as_slice() {
+            let t = (shift + s) / length;
+            if ray.contains(t) && f(t) {
+                return true;
+            }
+        }
+        false
+    }
+
     /// Outward normal (not unit length) at `p`.
     pub fn normal(&self, p: DVec3) -> DVec3 {
         let g = p.length_squared() - self.major * self.major - self.minor * self.minor;
@@ -47,34 +93,16 @@ impl super::shape::Surface for Torus {
 
     #[inline]
     fn intersect(&self, ray: &Ray) -> Crossings {
-        let (big, small) = (self.major, self.minor);
-        let length = ray.direction.length();
-        let d = ray.direction / length;
-        // Bounding sphere, radius R + r.
-        let bound = big + small;
-        let f = ray.origin.dot(d);
-        let perpendicular = ray.origin - f * d;
-        let h2 = bound * bound - perpendicular.length_squared();
-        if h2 < 0.0 {
-            return Crossings::NONE;
-        }
-        let h = h2.sqrt();
-        let (enter, exit) = (-f - h, -f + h);
-        if exit < 0.0 {
-            return Crossings::NONE;
-        }
-        let shift = enter.max(0.0);
-        let c = self.quartic(ray.origin + shift * d, d);
-        let margin = 1e-9 * bound;
-        let roots = roots_in(&c, 4, (enter - shift) - margin, (exit - shift) + margin);
         let mut out = Crossings::NONE;
-        for &s in roots.as_slice() {
-            let t = (shift + s) / length;
-            if ray.contains(t) {
-                out.push(t, 0);
-            }
-        }
+        self.each_root(ray, |t| {
+            out.push(t, 0);
+            false
+        });
         out
+    }
+
+    fn occludes(&self, ray: &Ray) -> bool {
+        self.each_root(ray, |_| true)
     }
 
     #[inline]

@@ -139,6 +139,36 @@ impl ObjectIndex {
         self.bvh
             .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, k| f(self.bounded[k]));
     }
+
+    /// Visits every bounded object in a leaf whose box `keep(min, max)` keeps, descending only
+    /// into nodes it keeps (the node boxes hold their objects' boxes, rounded outward).
+    pub fn each_kept(&self, keep: impl Fn(glam::DVec3, glam::DVec3) -> bool, mut f: impl FnMut(u32)) {
+        let nodes = &self.bvh.nodes;
+        let Some(root) = nodes.first() else { return };
+        let kept = |n: &obvhs::bvh2::node::Bvh2Node| {
+            let a = n.aabb();
+            keep(a.min.as_dvec3(), a.max.as_dvec3())
+        };
+        let mut stack = vec![0u32];
+        if !kept(root) {
+            return;
+        }
+        while let Some(i) = stack.pop() {
+            let node = &nodes[i as usize];
+            if node.is_leaf() {
+                let first = node.first_index as usize;
+                for k in first..first + node.prim_count as usize {
+                    f(self.bounded[k]);
+                }
+                continue;
+            }
+            for child in [node.first_index, node.first_index + 1] {
+                if kept(&nodes[child as usize]) {
+                    stack.push(child);
+                }
+            }
+        }
+    }
 }
 
 /// A number in [0, 1) that differs from one `k` to the next (a 32-bit integer hash).

@@ -319,6 +319,7 @@ impl Scene {
             any_transparent: false,
             any_hidden: false,
             shadow_fades: false,
+            cull_shadow_rays: true,
             bounded_last: false,
         };
         // POV-Ray tests objects in scene order when there are fewer than three objects and

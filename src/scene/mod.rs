@@ -26,7 +26,7 @@ pub use crate::ir::{
 };
 pub use material::{Material, filter_colour};
 pub use normal::Normal;
-pub use query::interior_fade;
+pub use query::{ShadowHull, interior_fade};
 pub use pigment::{Pigment, pigment_function};
 pub use probe::object_query;
 
@@ -91,6 +91,9 @@ pub struct Scene {
     /// Whether any object that may let light through to a shadow ray has an interior that
     /// fades: shadow rays then walk their crossings in order (see [`Scene::transmittance`]).
     pub shadow_fades: bool,
+    /// Whether area lights first find what may block their shadow rays (on; off only to
+    /// test that the pictures are the same without).
+    pub cull_shadow_rays: bool,
     /// Whether any object is hidden from some rays (`no_image`, `no_reflection`): only then
     /// does the nearest-hit search look at the rays' kind.
     pub any_hidden: bool,

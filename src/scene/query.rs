@@ -140,6 +140,58 @@ impl Scene {
         }
     }
 
+    /// The objects that could meet a shadow ray running from near `hull`'s apex to any point
+    /// of its base (the unbounded objects it does not exclude, and the bounded ones whose box
+    /// it does not exclude), appended to `out`. The apex lies on object `from`: a plane
+    /// cannot meet a shadow ray leaving its own surface (the ray starts off it, on the side
+    /// it travels to), so a plane `from` is left out.
+    pub fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>) {
+        let own_plane = |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
+        match &self.index {
+            Some(index) => {
+                let objects = &self.objects;
+                out.extend(
+                    (index.unbounded.iter().copied())
+                        .filter(|&i| !own_plane(i) && !hull.excludes_unbounded(&objects[i as usize])),
+                );
+                index.each_kept(|lo, hi| !hull.excludes(lo, hi), |i| out.push(i));
+            }
+            None => {
+                for (i, b) in self.scan_bounds.iter().enumerate() {
+                    let kept = match b {
+                        Some((lo, hi)) => !hull.excludes(*lo, *hi),
+                        None => !own_plane(i as u32) && !hull.excludes_unbounded(&self.objects[i]),
+                    };
+                    if kept {
+                        out.push(i as u32);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether some object of `candidates` can let light through to a shadow ray (then only
+    /// [`Scene::transmittance`] tells what reaches the light).
+    pub fn any_filters_shadows(&self, candidates: &[u32]) -> bool {
+        candidates.iter().any(|&i| self.filters_shadows(i))
+    }
+
+    /// Whether an opaque object among `candidates` blocks the shadow ray: when no candidate
+    /// filters shadows ([`Scene::any_filters_shadows`]) and every object the ray can meet is
+    /// a candidate, the ray's transmittance is 0 if so and 1 if not.
+    pub fn blocked_among(&self, ray: &Ray, candidates: &[u32]) -> bool {
+        let inv = ray.direction.recip();
+        candidates.iter().any(|&i| {
+            let object = &self.objects[i as usize];
+            // (A scene with a top-level index keeps no boxes per object: the shape decides.)
+            let bounds = self.scan_bounds.get(i as usize).copied().flatten();
+            !object.no_shadow
+                && may_hit(bounds, ray, inv)
+                && object.admits(ray)
+                && object.shape.occludes(&Self::local_ray(object, ray))
+        })
+    }
+
     /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
     /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
     /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
@@ -379,3 +431,117 @@ fn may_hit(bounds: Option<(DVec3, DVec3)>, ray: &Ray, inv: DVec3) -> bool {
     near.partial_cmp(&far) != Some(std::cmp::Ordering::Greater)
 }
 
+
+/// The convex region that every shadow ray from near an apex (a shading point) to a point of
+/// a parallelogram (an area light's extent) runs through: the pyramid on the parallelogram,
+/// as five planes. Objects whose boxes lie wholly outside one plane cannot shadow the point
+/// from any point of the light.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowHull {
+    /// Unit normals pointing inward, and each plane's offset (n·x + d ≥ 0 inside).
+    planes: [(DVec3, f64); 5],
+    /// Slack for the rays' origins (moved off the surface) and rounding.
+    margin: f64,
+    /// The apex and the base's corners.
+    vertices: [DVec3; 5],
+}
+
+impl ShadowHull {
+    /// The hull from `apex` to the parallelogram `corners` (in order around it); `None` when
+    /// it is degenerate (the apex in the parallelogram's plane, or a parallelogram of no
+    /// area), where nothing may be culled.
+    pub fn new(apex: DVec3, corners: [DVec3; 4]) -> Option<ShadowHull> {
+        let scale = corners
+            .iter()
+            .fold(apex.abs().max_element(), |m, c| m.max(c.abs().max_element()));
+        let margin = 1e-7 * (1.0 + scale);
+        let plane = |n: DVec3, through: DVec3, inside: DVec3| -> Option<(DVec3, f64)> {
+            let length = n.length();
+            if length.is_nan() || length <= 1e-12 * (1.0 + scale * scale) {
+                return None;
+            }
+            let n = n / length;
+            let n = if n.dot(inside - through) < 0.0 { -n } else { n };
+            // The inside point must be clearly inside, or the plane is not a face.
+            (n.dot(inside - through) > margin).then_some((n, -n.dot(through)))
+        };
+        let base = plane(
+            (corners[1] - corners[0]).cross(corners[3] - corners[0]),
+            corners[0],
+            apex,
+        )?;
+        let mut planes = [base; 5];
+        for k in 0..4 {
+            let (a, b) = (corners[k], corners[(k + 1) % 4]);
+            planes[k + 1] = plane((a - apex).cross(b - apex), apex, corners[(k + 2) % 4])?;
+        }
+        let vertices = [apex, corners[0], corners[1], corners[2], corners[3]];
+        Some(ShadowHull {
+            planes,
+            margin,
+            vertices,
+        })
+    }
+
+    /// Whether the unbounded `object` cannot meet a ray inside the hull: a plane with every
+    /// vertex of the hull clearly on one side of it (tested in the object's space, where its
+    /// rays are).
+    fn excludes_unbounded(&self, object: &Object) -> bool {
+        let Shape::Plane(plane) = &object.shape else {
+            return false;
+        };
+        let local = self.vertices.map(|v| match &object.transform {
+            None => v,
+            Some(t) => t.object_from_world.transform_point3(v),
+        });
+        let scale = local.iter().fold(plane.distance.abs(), |m, v| m.max(v.abs().max_element()));
+        let margin = 1e-7 * (1.0 + scale);
+        let side = local.map(|v| plane.normal.dot(v) - plane.distance);
+        side.iter().all(|&s| s > margin) || side.iter().all(|&s| s < -margin)
+    }
+
+    /// Whether the box [lo, hi] lies wholly outside the hull (by more than the margin) on one
+    /// of its planes.
+    pub fn excludes(&self, lo: DVec3, hi: DVec3) -> bool {
+        self.planes.iter().any(|&(n, d)| {
+            // The box corner farthest along the inward normal.
+            let far = DVec3::select(n.cmpge(DVec3::ZERO), hi, lo);
+            n.dot(far) + d < -self.margin
+        })
+    }
+}
+
+#[cfg(test)]
+mod hull_tests {
+    use super::*;
+
+    fn hull() -> ShadowHull {
+        // Apex at the origin, a 2 × 2 light at height 4.
+        let c = |x: f64, z: f64| DVec3::new(x, 4.0, z);
+        ShadowHull::new(DVec3::ZERO, [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)]).expect("solid")
+    }
+
+    #[test]
+    fn boxes_outside_the_pyramid_are_excluded_and_boxes_on_it_are_not() {
+        let h = hull();
+        let b = |lo: [f64; 3], hi: [f64; 3]| h.excludes(DVec3::from(lo), DVec3::from(hi));
+        // On the axis, touching a side, around the apex, around the light: kept.
+        assert!(!b([-0.1, 1.0, -0.1], [0.1, 1.2, 0.1]));
+        assert!(!b([0.45, 1.9, -0.1], [0.6, 2.1, 0.1]));
+        assert!(!b([-0.1, -0.1, -0.1], [0.1, 0.1, 0.1]));
+        assert!(!b([-2.0, 3.9, -2.0], [2.0, 4.1, 2.0]));
+        // Beside the pyramid, below the apex, above the light: excluded.
+        assert!(b([0.8, 1.0, -0.1], [1.0, 1.2, 0.1]));
+        assert!(b([-0.1, -1.0, -0.1], [0.1, -0.5, 0.1]));
+        assert!(b([-0.1, 4.5, -0.1], [0.1, 5.0, 0.1]));
+    }
+
+    #[test]
+    fn a_flat_hull_is_none() {
+        let c = |x: f64, z: f64| DVec3::new(x, 0.0, z);
+        let corners = [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)];
+        assert!(ShadowHull::new(DVec3::new(3.0, 0.0, 0.0), corners).is_none());
+        let line = [c(-1.0, 0.0), c(1.0, 0.0), c(1.0, 0.0), c(-1.0, 0.0)];
+        assert!(ShadowHull::new(DVec3::new(0.0, 2.0, 0.0), line).is_none());
+    }
+}
