@@ -326,3 +326,67 @@ fn frames(own: &Own, pov: &PovSettings, output: &Path) -> Result<Vec<Frame>, Str
         })
         .collect())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The anti-aliasing a command line resolves to, with the warnings.
+    fn resolved(pov_args: &[&str], own: Own) -> Result<(trace::Antialias, Vec<String>), String> {
+        let args = pov_args.iter().map(|s| s.to_string()).collect();
+        let (_, pov) = crate::povray::split(args, |_| false)?;
+        let own = Own {
+            scene: Some(PathBuf::from("s.pov")),
+            ..own
+        };
+        resolve(own, pov).map(|job| (job.antialias, job.warnings))
+    }
+
+    #[test]
+    fn method_3_is_the_default_and_minus_j_asks_for_method_1() {
+        let sampled = trace::Antialias::Sampled {
+            threshold: 0.3,
+            depth: 3,
+        };
+        let adaptive = trace::Antialias::Adaptive {
+            threshold: 0.3,
+            depth: 3,
+        };
+        assert_eq!(resolved(&[], Own::default()).unwrap().0, sampled);
+        assert_eq!(resolved(&["+A0.3"], Own::default()).unwrap().0, sampled);
+        assert_eq!(
+            resolved(&["+J"], Own::default()).unwrap(),
+            (sampled, vec![])
+        );
+        assert_eq!(resolved(&["-J"], Own::default()).unwrap().0, adaptive);
+        assert_eq!(
+            resolved(&["+A0.3", "+R3", "-J"], Own::default()).unwrap().0,
+            adaptive
+        );
+        // An explicit method wins over -J; jitter asked of method 1 is warned about.
+        let own3 = Own {
+            aa_method: Some(3),
+            ..Own::default()
+        };
+        assert_eq!(resolved(&["-J"], own3).unwrap().0, sampled);
+        let (aa, warnings) = resolved(&["+AM1", "+J"], Own::default()).unwrap();
+        assert_eq!(aa, adaptive);
+        assert!(
+            warnings.iter().any(|w| w.contains("Jitter")),
+            "{warnings:?}"
+        );
+    }
+
+    #[test]
+    fn sampled_area_lights_need_method_3() {
+        let own = |method| Own {
+            aa_method: method,
+            sampled_lights: true,
+            ..Own::default()
+        };
+        assert!(resolved(&[], own(None)).is_ok());
+        let e = resolved(&[], own(Some(1))).unwrap_err();
+        assert!(e.contains("method 3"), "{e}");
+        assert!(resolved(&["-A"], own(None)).is_err());
+    }
+}
