@@ -16,6 +16,8 @@ pub struct Job {
     pub antialias: trace::Antialias,
     /// Method 3 draws area-light points from each pixel's sequence.
     pub sampled_lights: bool,
+    /// Method 3 draws focal blur's lens points from each pixel's sequence.
+    pub sampled_blur: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -48,6 +50,8 @@ pub struct Own {
     pub aa_method: Option<u32>,
     /// `--area-lights sampled`.
     pub sampled_lights: bool,
+    /// `--focal-blur sampled`.
+    pub sampled_blur: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -108,8 +112,15 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
              trace's own sampler, is the default)"
         ));
     }
-    if own.sampled_lights && !matches!(threshold.map(|_| method), Some(3)) {
-        return Err("--area-lights sampled needs anti-aliasing method 3 (--aa-method 3)".into());
+    for (asked, option) in [
+        (own.sampled_lights, "--area-lights sampled"),
+        (own.sampled_blur, "--focal-blur sampled"),
+    ] {
+        if asked && !matches!(threshold.map(|_| method), Some(3)) {
+            return Err(format!(
+                "{option} needs anti-aliasing method 3 (--aa-method 3)"
+            ));
+        }
     }
     let antialias = match (threshold, method) {
         (None, _) => trace::Antialias::Off,
@@ -221,6 +232,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         height,
         antialias,
         sampled_lights: own.sampled_lights,
+        sampled_blur: own.sampled_blur,
         threads: own.threads.or(pov.threads),
         include_paths,
         declares,

@@ -68,10 +68,14 @@ struct RenderArgs {
     /// estimated error is small [default: 3; 1 with POV-Ray's -J].
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=3))]
     aa_method: Option<u32>,
-    /// Area lights: `grid`, POV-Ray's grid of points; `sampled` (method 3 only), points
+    /// Area lights: `pov`, POV-Ray's grid of points; `sampled` (method 3 only), points
     /// anywhere on the light from each pixel's sample sequence.
-    #[arg(long, value_enum, default_value_t = AreaLights::Grid)]
-    area_lights: AreaLights,
+    #[arg(long, value_enum, default_value_t = Sampling::Pov)]
+    area_lights: Sampling,
+    /// Focal blur: `pov`, POV-Ray's adaptive batches of lens rays for every sample;
+    /// `sampled` (method 3 only), lens points from each pixel's sample sequence.
+    #[arg(long, value_enum, default_value_t = Sampling::Pov)]
+    focal_blur: Sampling,
     /// Render only this rectangle of the image, X0,Y0,X1,Y1 in pixels (ends exclusive): a
     /// part of the image, with the same pixels as the whole render, that `trace merge`
     /// assembles with the other parts (POV-Ray's +SC +EC +SR +ER map onto it).
@@ -188,11 +192,11 @@ enum AaSetting {
     Threshold(f64),
 }
 
-/// How area lights are sampled (`--area-lights`).
+/// How area lights and focal blur are sampled (`--area-lights`, `--focal-blur`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-enum AreaLights {
-    /// POV-Ray's grid of points.
-    Grid,
+enum Sampling {
+    /// POV-Ray's way: the area light's grid, the blur's batches of lens rays.
+    Pov,
     /// Points drawn from each pixel's sample sequence (method 3).
     Sampled,
 }
@@ -361,7 +365,8 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
         }),
         aa_depth: args.aa_depth,
         aa_method: args.aa_method,
-        sampled_lights: args.area_lights == AreaLights::Sampled,
+        sampled_lights: args.area_lights == Sampling::Sampled,
+        sampled_blur: args.focal_blur == Sampling::Sampled,
         threads: args.threads,
         include_paths: args.include_path.clone(),
         declares: args.declare.clone(),
@@ -486,6 +491,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         height: job.height,
         antialias: job.antialias,
         sampled_lights: job.sampled_lights,
+        sampled_blur: job.sampled_blur,
         threads: job.threads.map(|t| t as usize),
         region: Some(region),
         progress: Some(progress.clone()),

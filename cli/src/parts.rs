@@ -9,11 +9,12 @@ use trace::film::{Raster, Region};
 /// only with parts of the same key.
 pub fn key(sources: u64, job: &Job, frame: &Frame) -> String {
     let settings = format!(
-        "{} {} {:?} {} {:?} {:?} {} {} {:?}",
+        "{} {} {:?} {} {} {:?} {:?} {} {} {:?}",
         job.width,
         job.height,
         job.antialias,
         job.sampled_lights,
+        job.sampled_blur,
         frame.clock,
         job.declares,
         job.alpha,

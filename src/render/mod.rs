@@ -111,6 +111,10 @@ pub struct RenderOptions {
     /// pixel's sequence, anywhere on the light (converging on the whole light as a pixel's
     /// samples grow), instead of POV-Ray's grid. Ignored by the other methods.
     pub sampled_lights: bool,
+    /// With method 3: focal blur looks through lens points drawn from each pixel's sequence
+    /// (the pixel's sampling decides how many) instead of POV-Ray's adaptive batches. Ignored
+    /// by the other methods.
+    pub sampled_blur: bool,
 }
 
 /// An arbitrary output value layer: what the camera ray through a pixel's centre first meets,
@@ -167,6 +171,7 @@ impl Default for RenderOptions {
             alpha: false,
             aovs: Vec::new(),
             sampled_lights: false,
+            sampled_blur: false,
         }
     }
 }
@@ -701,7 +706,9 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
         let colour = trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));
         return colour.extend(tracer.see_through);
     };
-    let c = &scene.camera;
+    if let Some(stream) = tracer.lens_stream {
+        return lens_sampled(tracer, camera_interiors, (w, h), (x, y), blur, stream);
+    }
     let seed = (313.0 * x + 11.0) as i32 + (311.0 * y + 17.0) as i32;
     let (mut n, mut level) = (0usize, 0usize);
     let (mut s1, mut s2) = ([0.0f64; 4], [0.0f64; 4]);
@@ -712,19 +719,8 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
         level += 1;
         for _ in 0..batch.min(max - n) {
             let (dx, dy) = crate::scene::blur::Blur::subpixel(seed, n as i32);
-            let ray = camera_ray(scene, w, h, x + dx, y + dy).map(|ray| {
-                // The direction to the image plane (POV-Ray's unnormalised one for the
-                // perspective camera), carried to the sharp plane; the ray leaves the lens.
-                let to_plane = match c.projection {
-                    Projection::Perspective => {
-                        let axis = c.direction.normalize();
-                        ray.direction * (c.direction.length() / ray.direction.dot(axis))
-                    }
-                    _ => ray.direction,
-                };
-                let defl = blur.lens(n, x + dx + 0.5, y + dy - 0.5);
-                Ray::new(c.location + defl, (to_plane * blur.focal_ratio - defl).normalize())
-            });
+            let ray = camera_ray(scene, w, h, x + dx, y + dy)
+                .map(|ray| through_lens(scene, blur, ray, blur.lens(n, x + dx + 0.5, y + dy - 0.5)));
             tracer.counts.camera += 1;
             let (colour, t) = match ray {
                 Some(_) => (trace_primary(tracer, camera_interiors, ray), 0.0),
@@ -745,6 +741,57 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
     }
     sum / n as f64
 }
+
+/// The ray of focal blur for the pinhole ray `ray`, leaving the lens at offset `defl`: the
+/// direction to the image plane (POV-Ray's unnormalised one for the perspective camera),
+/// carried to the sharp plane.
+fn through_lens(scene: &Scene, blur: &crate::scene::blur::Blur, ray: Ray, defl: glam::DVec3) -> Ray {
+    let c = &scene.camera;
+    let to_plane = match c.projection {
+        Projection::Perspective => {
+            let axis = c.direction.normalize();
+            ray.direction * (c.direction.length() / ray.direction.dot(axis))
+        }
+        _ => ray.direction,
+    };
+    Ray::new(c.location + defl, (to_plane * blur.focal_ratio - defl).normalize())
+}
+
+/// Method 3's focal blur (`sampled_blur`): sample `n` of the pixel whose seed is `seed` looks
+/// through points of the lens drawn from the pixel's lens stream — 4 for the centre sample,
+/// one for each further sample, so that a pixel's lens points together are a prefix of the
+/// stream — instead of POV-Ray's batches; the pixel's own sampling decides how many it takes.
+fn lens_sampled(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    (w, h): (u32, u32),
+    (x, y): (f64, f64),
+    blur: &crate::scene::blur::Blur,
+    (seed, n): (u32, u32),
+) -> Px {
+    let scene = tracer.scene;
+    let (start, count) = if n == 0 {
+        (0, LENS_FIRST_POINTS)
+    } else {
+        (LENS_FIRST_POINTS + n - 1, 1)
+    };
+    let lens_seed = sampler::stream_seed(seed, sampler::LENS_STREAM);
+    let mut sum = Px::ZERO;
+    for i in start..start + count {
+        let (u, v) = sampler::offset(lens_seed, i);
+        // The lens disc of radius ½ (as POV-Ray's lens grid), scaled by the blur's radius.
+        let (du, dv) = sampler::square_to_disc(u, v);
+        let defl = blur.radius * (du * blur.x_perp - dv * blur.y_perp);
+        tracer.counts.camera += 1;
+        let ray = camera_ray(scene, w, h, x, y).map(|ray| through_lens(scene, blur, ray, defl));
+        let colour = trace_primary(tracer, camera_interiors, ray);
+        sum += colour.extend(tracer.see_through);
+    }
+    sum / f64::from(count)
+}
+
+/// Method 3 with sampled focal blur: lens points the centre sample looks through.
+const LENS_FIRST_POINTS: u32 = 4;
 
 /// Traces a camera ray, which starts inside the objects that contain its origin (black where
 /// the projection has no ray, as in POV-Ray).
@@ -794,9 +841,9 @@ fn sampled_pixels(
     let mut centre = Vec::with_capacity(gw * (gy1 - gy0) as usize);
     for y in gy0..gy1 {
         for x in gx0..gx1 {
-            if options.sampled_lights {
-                tracer.light_stream = Some((sampler::pixel_seed(x, y, 0), 0));
-            }
+            let seed = sampler::pixel_seed(x, y, 0);
+            tracer.light_stream = options.sampled_lights.then_some((seed, 0));
+            tracer.lens_stream = options.sampled_blur.then_some((seed, 0));
             let v = sample(tracer, camera_interiors, w, h, x as f64, y as f64);
             centre.push((v, aa_encoded(v.truncate(), gamma)));
         }
@@ -825,9 +872,8 @@ fn sampled_pixels(
             loop {
                 while n < batch {
                     let (dx, dy) = sampler::offset(seed, n);
-                    if options.sampled_lights {
-                        tracer.light_stream = Some((seed, n + 1));
-                    }
+                    tracer.light_stream = options.sampled_lights.then_some((seed, n + 1));
+                    tracer.lens_stream = options.sampled_blur.then_some((seed, n + 1));
                     let v = sample(tracer, camera_interiors, w, h, x as f64 + dx, y as f64 + dy);
                     sum += v;
                     encoded.push(aa_encoded(v.truncate(), gamma));
@@ -849,6 +895,7 @@ fn sampled_pixels(
         }
     }
     tracer.light_stream = None;
+    tracer.lens_stream = None;
     pixels
 }
 
@@ -1079,56 +1126,66 @@ mod tests {
         }
     }
 
-    /// Method 3 (with an area light, whose points it draws from each pixel's sequence) gives
-    /// the same pixels for any thread count and any region, and spends more samples where
-    /// the picture changes.
+    /// Method 3 (with an area light and focal blur, whose points it draws from each pixel's
+    /// sequence) gives the same pixels for any thread count and any region, and spends more
+    /// samples where the picture changes.
     #[test]
     fn method_3_is_the_same_for_any_threads_and_region() {
         let (w, h) = (90, 70);
-        let text = SCENE.replace(
+        let lit = SCENE.replace(
             "light_source { <4, 8, -5>, rgb 1 }",
             "light_source { <4, 8, -5>, rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 4, 4 adaptive 1 }",
         );
-        let options = crate::LoadOptions {
-            width: w,
-            height: h,
-            ..crate::LoadOptions::default()
-        };
-        let loaded = crate::load_str(std::path::Path::new("m3.rt"), text, &options).expect("loads");
-        let scene = Scene::build(&loaded.scene);
-        let render_with = |threads: usize, region: Option<Region>| {
-            let options = RenderOptions {
+        let blurred = lit.replace(
+            "look_at <0, 0.5, 0> }",
+            "look_at <0, 0.5, 0> focal_point <1.2, 0.7, 1> aperture 0.4 blur_samples 8 }",
+        );
+        // (Samples a pixel on average: more than one, fewer than the most; the blur's noise
+        // sends nearly every pixel on.)
+        for (text, per_pixel_range) in [(lit, 1.2..8.0), (blurred, 4.0..17.0)] {
+            let options = crate::LoadOptions {
                 width: w,
                 height: h,
-                antialias: Antialias::Sampled {
-                    threshold: 0.2,
-                    depth: 3,
-                },
-                threads: Some(threads),
-                region,
-                ..RenderOptions::default()
+                ..crate::LoadOptions::default()
             };
-            let pool = thread_pool(&options).expect("a pool");
-            render(&scene, &options, &pool)
-        };
-        let one = render_with(1, None);
-        let two = render_with(2, None);
-        assert!(one.film.pixels == two.film.pixels, "1 and 2 threads");
-        assert_eq!(one.stats.samples, two.stats.samples);
-        assert_eq!(one.stats.counts.shadow, two.stats.counts.shadow);
-        // More than one sample a pixel on average, fewer than the most.
-        let per_pixel = one.stats.samples as f64 / f64::from(w * h);
-        assert!(per_pixel > 1.2 && per_pixel < 8.0, "{per_pixel} samples a pixel");
-        for region in [
-            Region { x0: 0, y0: 32, x1: 90, y1: 64 },
-            Region { x0: 17, y0: 5, x1: 61, y1: 70 },
-        ] {
-            let part = render_with(2, Some(region));
-            for y in region.y0..region.y1 {
-                for x in region.x0..region.x1 {
-                    let whole = one.film.pixels[(y * w + x) as usize];
-                    let here = part.film.pixels[((y - region.y0) * region.width() + x - region.x0) as usize];
-                    assert_eq!(whole, here, "pixel ({x}, {y}) of region {region:?}");
+            let loaded = crate::load_str(std::path::Path::new("m3.rt"), text, &options).expect("loads");
+            let scene = Scene::build(&loaded.scene);
+            let render_with = |threads: usize, region: Option<Region>| {
+                let options = RenderOptions {
+                    width: w,
+                    height: h,
+                    antialias: Antialias::Sampled {
+                        threshold: 0.2,
+                        depth: 3,
+                    },
+                    threads: Some(threads),
+                    region,
+                    sampled_lights: true,
+                    sampled_blur: true,
+                    ..RenderOptions::default()
+                };
+                let pool = thread_pool(&options).expect("a pool");
+                render(&scene, &options, &pool)
+            };
+            let one = render_with(1, None);
+            let two = render_with(2, None);
+            assert!(one.film.pixels == two.film.pixels, "1 and 2 threads");
+            assert_eq!(one.stats.samples, two.stats.samples);
+            assert_eq!(one.stats.counts.shadow, two.stats.counts.shadow);
+            let per_pixel = one.stats.samples as f64 / f64::from(w * h);
+            assert!(per_pixel_range.contains(&per_pixel), "{per_pixel} samples a pixel");
+            for region in [
+                Region { x0: 0, y0: 32, x1: 90, y1: 64 },
+                Region { x0: 17, y0: 5, x1: 61, y1: 70 },
+            ] {
+                let part = render_with(2, Some(region));
+                for y in region.y0..region.y1 {
+                    for x in region.x0..region.x1 {
+                        let whole = one.film.pixels[(y * w + x) as usize];
+                        let here =
+                            part.film.pixels[((y - region.y0) * region.width() + x - region.x0) as usize];
+                        assert_eq!(whole, here, "pixel ({x}, {y}) of region {region:?}");
+                    }
                 }
             }
         }

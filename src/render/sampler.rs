@@ -34,6 +34,25 @@ pub(super) fn stream_seed(seed: u32, stream: u32) -> u32 {
     mix(seed ^ mix(stream.wrapping_mul(0x68e3_1da4)))
 }
 
+/// The stream of lens points (area lights take streams 1, 2, … by their index + 1).
+pub(super) const LENS_STREAM: u32 = u32::MAX;
+
+/// Shirley and Chiu's concentric map of the square [−½, ½)² onto the disc of radius ½: equal
+/// areas to equal areas, strata kept compact.
+pub(super) fn square_to_disc(u: f64, v: f64) -> (f64, f64) {
+    use std::f64::consts::FRAC_PI_4;
+    let (a, b) = (2.0 * u, 2.0 * v);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, FRAC_PI_4 * (b / a))
+    } else {
+        (b, 2.0 * FRAC_PI_4 - FRAC_PI_4 * (a / b))
+    };
+    (0.5 * r * phi.cos(), 0.5 * r * phi.sin())
+}
+
 /// Point `i` of the two-dimensional Sobol sequence, as 32-bit fractions.
 fn sobol(i: u32) -> (u32, u32) {
     let x = i.reverse_bits();

@@ -168,6 +168,8 @@ pub struct Tracer<'a> {
     /// The camera sample being traced, as (pixel seed, sample number), when method 3 draws
     /// area-light positions from the pixel's sequence instead of POV-Ray's grid.
     pub(super) light_stream: Option<(u32, u32)>,
+    /// The same for focal blur's lens points (method 3 with `sampled_blur`).
+    pub(super) lens_stream: Option<(u32, u32)>,
     /// The objects that may block the shadow rays to the area light being sampled.
     pub(super) blockers: Vec<u32>,
 }
@@ -215,6 +217,7 @@ impl<'a> Tracer<'a> {
             reflected: false,
             see_through: 0.0,
             light_stream: None,
+            lens_stream: None,
             blockers: Vec::new(),
         }
     }
