@@ -180,6 +180,14 @@ pub fn write_streamed<'a>(
 /// the colour straight), 8 or 16 bits big-endian.
 fn encode_row(row: &[f32], layout: &Layout, with_alpha: bool, bytes: &mut Vec<u8>) {
     let c = layout.channels();
+    if layout.bits == 8 && !(layout.alpha && with_alpha) {
+        // The common case, by table: the same bytes as below.
+        let table = srgb8_table();
+        for px in row.chunks_exact(c) {
+            bytes.extend(px[..3].iter().map(|&v| table.byte(v)));
+        }
+        return;
+    }
     for px in row.chunks_exact(c) {
         let mut put = |v: f64| match layout.bits {
             16 => bytes.extend_from_slice(&quantise(v, 65535.0).to_be_bytes()),
@@ -212,6 +220,40 @@ fn quantise(v: f64, max: f64) -> u16 {
 /// An 8-bit sRGB byte of a linear value, as [`encode_row`] writes it.
 pub(super) fn srgb8(v: f32) -> u8 {
     quantise(linear_to_srgb((v as f64).clamp(0.0, 1.0)), 255.0) as u8
+}
+
+/// [`srgb8`] by table: `thresholds[k]` is the least linear value whose byte exceeds k, so a
+/// value's byte is the number of thresholds at or below it (a binary search instead of a
+/// power per channel; the PNG writer spent half its time in `powf`).
+struct Srgb8Table {
+    thresholds: [f32; 255],
+}
+
+impl Srgb8Table {
+    fn byte(&self, v: f32) -> u8 {
+        self.thresholds.partition_point(|&t| t <= v) as u8
+    }
+}
+
+fn srgb8_table() -> &'static Srgb8Table {
+    static TABLE: std::sync::OnceLock<Srgb8Table> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut thresholds = [0.0f32; 255];
+        for (k, t) in thresholds.iter_mut().enumerate() {
+            // The least non-negative f32 (ordered as its bits) whose byte exceeds k.
+            let (mut lo, mut hi) = (0u32, 1.0f32.to_bits());
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if usize::from(srgb8(f32::from_bits(mid))) > k {
+                    hi = mid;
+                } else {
+                    lo = mid + 1;
+                }
+            }
+            *t = f32::from_bits(lo);
+        }
+        Srgb8Table { thresholds }
+    })
 }
 
 /// An EXR of float channels `names` (sorted in the file as EXR asks), zip-compressed in blocks
@@ -355,4 +397,37 @@ pub(super) fn write_ppm(
         out.write_all(&bytes).map_err(io)?;
     }
     out.flush().map_err(io)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_srgb_table_gives_the_bytes_of_the_formula() {
+        let table = srgb8_table();
+        let check = |v: f32| assert_eq!(table.byte(v), srgb8(v), "{v:e} ({:#x})", v.to_bits());
+        // Every 997th float from 0 to 1, each threshold and the float below it, and the rest.
+        for bits in (0..=1.0f32.to_bits()).step_by(997) {
+            check(f32::from_bits(bits));
+        }
+        for &t in &table.thresholds {
+            check(t);
+            check(f32::from_bits(t.to_bits() - 1));
+        }
+        for v in [
+            -1.0,
+            -0.0,
+            0.0,
+            1.0,
+            1.5,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            1e-30,
+            0.5,
+        ] {
+            check(v);
+        }
+    }
 }
