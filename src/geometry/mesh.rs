@@ -1,5 +1,5 @@
-//! Triangle meshes: vertices, triangles, optional vertex normals, and a BVH (obvhs `CwBvh`,
-//! converted from a `Bvh2`) over the triangles. A mesh is built once and shared by all its instances, which intersect
+//! Triangle meshes: vertices, triangles, optional vertex normals, and a BVH (obvhs `Bvh2`)
+//! over the triangles. A mesh is built once and shared by all its instances, which intersect
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
@@ -7,7 +7,7 @@ use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
-use obvhs::cwbvh::CwBvh;
+use obvhs::bvh2::Bvh2;
 use obvhs::ray::{Ray as BvhRay, RayHit};
 use std::time::Duration;
 
@@ -24,7 +24,7 @@ pub struct TriangleMesh {
     normal_indices: Vec<[u32; 3]>,
     /// Where each BVH primitive's group of triangles starts in `triangles` (plus the end).
     group_start: Vec<u32>,
-    bvh: CwBvh,
+    bvh: Bvh2,
     /// `uv_vectors`: the corners' surface coordinates.
     uvs: Vec<glam::DVec2>,
     /// Per triangle (BVH order), indices into `uvs`; empty when the mesh has none.
@@ -158,13 +158,8 @@ impl TriangleMesh {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::very_fast_build()
         };
-        let bvh2 = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
+        let bvh = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
         drop(boxes);
-        // Traversed as a compressed 8-wide BVH (one group a leaf): on the bvh benchmark's
-        // terrains its rays ran 15-45 % faster than the binary tree's (leaves of 3 groups, or
-        // single triangles, were no faster), for twice the build time.
-        let bvh = obvhs::cwbvh::bvh2_to_cwbvh::bvh2_to_cwbvh(&bvh2, 1, true, false);
-        drop(bvh2);
         // Triangles in BVH order: group by group, as the BVH lists its primitives.
         let mut triangles_ordered = Vec::with_capacity(triangles.len());
         let mut normal_ordered = Vec::with_capacity(normal_indices.len());
