@@ -1191,6 +1191,72 @@ mod tests {
         }
     }
 
+    /// A pixel of method 3 at threshold 0 converges on the pixel's true average: on a
+    /// straight edge (white beyond the line n·p = 0.3, n at 30°, one unit a pixel), its mean
+    /// error against the exact covered area falls with the sample budget and ends small.
+    #[test]
+    fn method_3_converges_on_an_edge() {
+        let n = 24u32;
+        let text = format!(
+            "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 }}\n\
+             camera {{ orthographic location <0, 0, -5> look_at <0, 0, 0> right x*{n} up y*{n} }}\n\
+             background {{ rgb 0 }}\n\
+             box {{ <0, -100, -1>, <100, 100, 1> rotate z*30 translate <0.3*cos(pi/6), 0.3*sin(pi/6), 0> \
+                    pigment {{ rgb 1 }} finish {{ ambient 1 diffuse 0 }} }}\n"
+        );
+        let options = crate::LoadOptions {
+            width: n,
+            height: n,
+            ..crate::LoadOptions::default()
+        };
+        let loaded = crate::load_str(std::path::Path::new("edge.rt"), text, &options).expect("loads");
+        let scene = Scene::build(&loaded.scene);
+        // The covered fraction of pixel (i, j), by a 256 × 256 grid of points.
+        let (c, s) = (std::f64::consts::FRAC_PI_6.cos(), std::f64::consts::FRAC_PI_6.sin());
+        let exact = |i: u32, j: u32| {
+            let (x0, y0) = (f64::from(i) - f64::from(n) / 2.0, f64::from(n) / 2.0 - f64::from(j));
+            let mut inside = 0;
+            for a in 0..256 {
+                for b in 0..256 {
+                    let (x, y) = (x0 + (f64::from(a) + 0.5) / 256.0, y0 - (f64::from(b) + 0.5) / 256.0);
+                    inside += usize::from(c * x + s * y > 0.3);
+                }
+            }
+            inside as f64 / 65536.0
+        };
+        let error = |antialias| {
+            let options = RenderOptions {
+                width: n,
+                height: n,
+                antialias,
+                threads: Some(1),
+                ..RenderOptions::default()
+            };
+            let pool = thread_pool(&options).expect("a pool");
+            let film = render(&scene, &options, &pool).film;
+            // The mean error over the pixels the edge crosses.
+            let (mut sum, mut count) = (0.0, 0);
+            for j in 0..n {
+                for i in 0..n {
+                    let truth = exact(i, j);
+                    if truth > 0.0 && truth < 1.0 {
+                        sum += (f64::from(film.pixels[(j * n + i) as usize][0]) - truth).abs();
+                        count += 1;
+                    }
+                }
+            }
+            sum / f64::from(count)
+        };
+        // (Measured: 0.020 at depth 3, 0.0096 at 5, 0.0043 at 7; method 1's grid, with a
+        // like number of samples, 0.018 at depth 4 (17), 0.010 at 6 (37), 0.0049 at 8 (65): on
+        // a straight edge a regular grid does as well, the nets win where a pattern is finer
+        // than the pixels and the grid aliases, as on the chart's scenes.)
+        let coarse = error(Antialias::Sampled { threshold: 0.0, depth: 3 });
+        let fine = error(Antialias::Sampled { threshold: 0.0, depth: 7 });
+        assert!(fine < 0.006, "method 3 at depth 7: mean error {fine}");
+        assert!(fine < coarse / 3.0, "depth 7 {fine} against depth 3 {coarse}");
+    }
+
     #[test]
     fn a_band_holds_whole_rows_of_blocks_within_the_pixel_budget() {
         assert_eq!(band_block_rows(640, BAND_PIXELS), 25);
