@@ -174,6 +174,31 @@ impl Tracer<'_> {
         kind
     }
 
+    /// What reaches `hit` (seen from `from`) from the point at offsets (s1, s2) in [−½, ½]²
+    /// along the light's axes `a1`, `a2` (mapped to the disc for circular and oriented lights),
+    /// one shadow ray whose possible blockers are `blockers`.
+    fn visibility_of(
+        &mut self,
+        light: &Light,
+        area: &AreaLight,
+        (a1, a2): (DVec3, DVec3),
+        (s1, s2): (f64, f64),
+        (hit, from): (&SurfaceHit, DVec3),
+        blockers: Blockers,
+    ) -> Rgb {
+        let (s1, s2) = if area.circular || area.orient {
+            square_to_disc(s1, s2)
+        } else {
+            (s1, s2)
+        };
+        let point = light.position + a1 * s1 + a2 * s2;
+        let to = point - hit.point;
+        let mut shadow = self.scene.spawn(hit, from, to / to.length());
+        shadow.tmax = (point - shadow.origin).length();
+        self.counts.shadow += 1;
+        self.shadow_through(&shadow, blockers)
+    }
+
     /// What reaches the end of a shadow ray whose possible blockers are `blockers`.
     fn shadow_through(&self, shadow: &Ray, blockers: Blockers) -> Rgb {
         match blockers {
@@ -222,17 +247,7 @@ impl Tracer<'_> {
             if area.size2 == 1 {
                 s2 = 0.0;
             }
-            let (s1, s2) = if area.circular || area.orient {
-                square_to_disc(s1, s2)
-            } else {
-                (s1, s2)
-            };
-            let point = light.position + a1 * s1 + a2 * s2;
-            let to = point - hit.point;
-            let mut shadow = self.scene.spawn(hit, from, to / to.length());
-            shadow.tmax = (point - shadow.origin).length();
-            self.counts.shadow += 1;
-            self.shadow_through(&shadow, blockers)
+            self.visibility_of(light, area, (a1, a2), (s1, s2), (hit, from), blockers)
         };
         let mut sum = Rgb::ZERO;
         let mut seen = None;
@@ -296,18 +311,7 @@ impl Tracer<'_> {
             } else {
                 0.0
             };
-            let (s1, s2) = if area.circular || area.orient {
-                square_to_disc(s1, s2)
-            } else {
-                (s1, s2)
-            };
-            let point = light.position + a1 * s1 + a2 * s2;
-            let to = point - hit.point;
-            let distance = to.length();
-            let mut shadow = tracer.scene.spawn(hit, from, to / distance);
-            shadow.tmax = (point - shadow.origin).length();
-            tracer.counts.shadow += 1;
-            let c = tracer.shadow_through(&shadow, blockers);
+            let c = tracer.visibility_of(light, area, (a1, a2), (s1, s2), (hit, from), blockers);
             tracer.area_cache[k] = Some(c);
             c
         };
