@@ -116,7 +116,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         (own.sampled_lights, "--area-lights sampled"),
         (own.sampled_blur, "--focal-blur sampled"),
     ] {
-        if asked && !matches!(threshold.map(|_| method), Some(3)) {
+        if asked && (threshold.is_none() || method != 3) {
             return Err(format!(
                 "{option} needs anti-aliasing method 3 (--aa-method 3)"
             ));

@@ -496,34 +496,43 @@ mod tests {
             sphere { <1.4, 0.8, 0.5>, 0.8 pigment { rgbf <0.9, 1, 0.9, 0.7> } }\n\
             sphere { <-0.2, 0.4, 1.4>, 0.4 pigment { rgb <0.2, 0.4, 0.9> } }\n";
         let (w, h) = (64, 48);
-        let options = crate::LoadOptions {
-            width: w,
-            height: h,
-            ..crate::LoadOptions::default()
-        };
-        let loaded = crate::load_str(std::path::Path::new("cull.rt"), text.into(), &options).expect("loads");
-        let scene = crate::scene::Scene::build(&loaded.scene);
-        let mut uncut = crate::scene::Scene::build(&loaded.scene);
-        uncut.cull_shadow_rays = false;
-        for antialias in [
-            Antialias::Off,
-            Antialias::Adaptive { threshold: 0.1, depth: 3 },
-            Antialias::Sampled { threshold: 0.1, depth: 3 },
-        ] {
-            for sampled_lights in [false, true] {
-                let options = RenderOptions {
-                    width: w,
-                    height: h,
-                    antialias,
-                    sampled_lights,
-                    threads: Some(1),
-                    ..RenderOptions::default()
-                };
-                let pool = thread_pool(&options).expect("a pool");
-                let culled = render(&scene, &options, &pool);
-                let every_ray = render(&uncut, &options, &pool);
-                assert!(culled.film.pixels == every_ray.film.pixels, "{antialias:?}, sampled {sampled_lights}");
-                assert!(culled.stats.counts.shadow < every_ray.stats.counts.shadow);
+        // The same scene with a row of small spheres more: enough objects for a top-level
+        // BVH, whose nodes the pyramid then culls.
+        let row: String = (0..8)
+            .map(|k| format!("sphere {{ <{}, 0.15, 2.5>, 0.15 pigment {{ rgb 0.7 }} }}\n", f64::from(k) * 0.5 - 2.0))
+            .collect();
+        for (text, indexed) in [(text.to_string(), false), (format!("{text}{row}"), true)] {
+            let options = crate::LoadOptions {
+                width: w,
+                height: h,
+                ..crate::LoadOptions::default()
+            };
+            let loaded = crate::load_str(std::path::Path::new("cull.rt"), text, &options).expect("loads");
+            let scene = crate::scene::Scene::build(&loaded.scene);
+            let mut uncut = crate::scene::Scene::build(&loaded.scene);
+            uncut.cull_shadow_rays = false;
+            assert_eq!(scene.has_index(), indexed);
+            for antialias in [
+                Antialias::Off,
+                Antialias::Adaptive { threshold: 0.1, depth: 3 },
+                Antialias::Sampled { threshold: 0.1, depth: 3 },
+            ] {
+                for sampled_lights in [false, true] {
+                    let options = RenderOptions {
+                        width: w,
+                        height: h,
+                        antialias,
+                        sampled_lights,
+                        threads: Some(1),
+                        ..RenderOptions::default()
+                    };
+                    let pool = thread_pool(&options).expect("a pool");
+                    let culled = render(&scene, &options, &pool);
+                    let every_ray = render(&uncut, &options, &pool);
+                    let what = format!("{antialias:?}, sampled {sampled_lights}, index {}", scene.has_index());
+                    assert!(culled.film.pixels == every_ray.film.pixels, "{what}");
+                    assert!(culled.stats.counts.shadow < every_ray.stats.counts.shadow, "{what}");
+                }
             }
         }
     }

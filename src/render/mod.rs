@@ -776,6 +776,7 @@ fn lens_sampled(
         (LENS_FIRST_POINTS + n - 1, 1)
     };
     let lens_seed = sampler::stream_seed(seed, sampler::LENS_STREAM);
+    let pinhole = camera_ray(scene, w, h, x, y);
     let mut sum = Px::ZERO;
     for i in start..start + count {
         let (u, v) = sampler::offset(lens_seed, i);
@@ -783,7 +784,7 @@ fn lens_sampled(
         let (du, dv) = sampler::square_to_disc(u, v);
         let defl = blur.radius * (du * blur.x_perp - dv * blur.y_perp);
         tracer.counts.camera += 1;
-        let ray = camera_ray(scene, w, h, x, y).map(|ray| through_lens(scene, blur, ray, defl));
+        let ray = pinhole.map(|ray| through_lens(scene, blur, ray, defl));
         let colour = trace_primary(tracer, camera_interiors, ray);
         sum += colour.extend(tracer.see_through);
     }

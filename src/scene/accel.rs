@@ -149,25 +149,32 @@ impl ObjectIndex {
             let a = n.aabb();
             keep(a.min.as_dvec3(), a.max.as_dvec3())
         };
-        let mut stack = vec![0u32];
         if !kept(root) {
             return;
         }
-        while let Some(i) = stack.pop() {
-            let node = &nodes[i as usize];
-            if node.is_leaf() {
-                let first = node.first_index as usize;
-                for k in first..first + node.prim_count as usize {
-                    f(self.bounded[k]);
-                }
-                continue;
-            }
-            for child in [node.first_index, node.first_index + 1] {
-                if kept(&nodes[child as usize]) {
-                    stack.push(child);
-                }
-            }
+        // (Called for every shading point under an area light: the stack is kept per thread.)
+        thread_local! {
+            static STACK: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
         }
+        STACK.with_borrow_mut(|stack| {
+            stack.clear();
+            stack.push(0);
+            while let Some(i) = stack.pop() {
+                let node = &nodes[i as usize];
+                if node.is_leaf() {
+                    let first = node.first_index as usize;
+                    for k in first..first + node.prim_count as usize {
+                        f(self.bounded[k]);
+                    }
+                    continue;
+                }
+                for child in [node.first_index, node.first_index + 1] {
+                    if kept(&nodes[child as usize]) {
+                        stack.push(child);
+                    }
+                }
+            }
+        });
     }
 }
 
