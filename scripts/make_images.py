@@ -3,7 +3,8 @@
 POV-Ray reads, made from examples/trace_logo.png (64x48) and examples/heights/hills8.png:
 logo.jpg (4:2:0 JPEG), logo.gif (non-interlaced, 256-colour palette), logo.tga, logo.ppm,
 logo.bmp, logo.tif, grey.pgm, hills.gif (palette height field: the index is the height),
-hills16.pgm (16-bit grey height field), ramp.hdr (Radiance RGBE, values up to 3) and
+hills16.pgm (16-bit grey height field) and hills16.pot (the same heights as Fractint's POT
+file: a GIF twice as wide, high bytes left, low bytes right), ramp.hdr (Radiance RGBE, values up to 3) and
 sky.exr (a trace render of examples/mirrors.rt at 64x48, float channels), and the DF3 voxel
 files blob8.df3 (8x8x8, 8-bit) and blob16.df3 (6x6x6, 16-bit).
 
@@ -26,6 +27,20 @@ def rgbe(r, g, b):
     return bytes([int(r * s), int(g * s), int(b * s), e + 128])
 
 
+def pot(grey16, path):
+    """Writes a 16-bit grey image as a POT file: palette indices, the left half each pixel's
+    high byte, the right half its low byte (the palette, a grey ramp, is not used)."""
+    w, h = grey16.size
+    im = Image.new("P", (2 * w, h))
+    im.putpalette(bytes(i for i in range(256) for _ in range(3)))
+    for y in range(h):
+        for x in range(w):
+            v = grey16.getpixel((x, y))
+            im.putpixel((x, y), v >> 8)
+            im.putpixel((x + w, y), v & 255)
+    im.save(path, format="GIF", optimize=False, interlace=False)
+
+
 def main():
     os.makedirs(OUT, exist_ok=True)
     out = lambda name: os.path.join(OUT, name)
@@ -44,6 +59,7 @@ def main():
     data = b"".join(struct.pack(">H", hills16.getpixel((x, y))) for y in range(h) for x in range(w))
     with open(out("hills16.pgm"), "wb") as f:
         f.write(b"P5\n%d %d\n65535\n" % (w, h) + data)
+    pot(hills16, out("hills16.pot"))
     w, h = 64, 48
     pixels = b"".join(
         rgbe(3.0 * x / w, 2.0 * y / h, 0.5 + 0.5 * math.sin(x * 0.3 + y * 0.2))

@@ -646,6 +646,14 @@ impl<'a> Evaluator<'a> {
         let Some(m) = self.macros.get(name).cloned() else {
             return Err(self.unknown_word(name, span));
         };
+        let split;
+        let args = match self.split_after_macro_items(args, m.params.len()) {
+            Some(s) => {
+                split = s;
+                &split[..]
+            }
+            None => args,
+        };
         if args.len() != m.params.len() {
             return Err(Diagnostic::error(
                 format!(
@@ -694,6 +702,33 @@ impl<'a> Evaluator<'a> {
         let text =
             self.sources.file(file).text[m.body.start as usize..m.body.end as usize].to_string();
         Ok((text, file, m.body.start as usize))
+    }
+
+    /// `Align(Center(Thing) -y, 0)`: with fewer arguments than the macro's parameters, an
+    /// argument `M(…) - e` (or `+ e`) whose left side is a call of a macro giving an item (an
+    /// object, a texture …) is two arguments, `M(…)` and `-e`, as POV-Ray reads the tokens:
+    /// the item ends at its `}` and the sign starts the next argument. `None` when no such
+    /// split gives `want` arguments.
+    fn split_after_macro_items(&mut self, args: &[syntax::Expr], want: usize) -> Option<Vec<syntax::Expr>> {
+        if args.len() >= want {
+            return None;
+        }
+        let mut out = Vec::with_capacity(want);
+        for a in args {
+            if let ExprKind::Binary(op @ (syntax::BinOp::Sub | syntax::BinOp::Add), left, right) = &a.kind {
+                if matches!(&left.kind, ExprKind::Call(n, ..) if self.macros.contains_key(n)) {
+                    out.push((**left).clone());
+                    let sign = if *op == syntax::BinOp::Sub { syntax::UnOp::Neg } else { syntax::UnOp::Plus };
+                    out.push(syntax::Expr {
+                        kind: ExprKind::Unary(sign, right.clone()),
+                        span: right.span,
+                    });
+                    continue;
+                }
+            }
+            out.push(a.clone());
+        }
+        (out.len() == want).then_some(out)
     }
 
     /// Ends an item-level macro call: restores shadowed variables, copies back by-reference

@@ -30,6 +30,10 @@ pub(super) enum FileType {
     Png,
     Jpeg,
     Gif,
+    /// Fractint's continuous-potential file: a GIF twice as wide as the picture, each
+    /// pixel's index in the left half the high byte of a 16-bit grey, the right half's the
+    /// low byte (POV-Ray's `pot`).
+    Pot,
     Tga,
     Ppm,
     Pgm,
@@ -39,7 +43,7 @@ pub(super) enum FileType {
     Hdr,
     /// `sys`: POV-Ray's platform format (none on Unix; trace reads the file's own format).
     Sys,
-    /// `iff` (Amiga) and `pot` (Fractint): named by POV-Ray, not read by trace.
+    /// `iff` (Amiga): named by POV-Ray, not read by trace.
     Unread(&'static str),
 }
 
@@ -59,7 +63,7 @@ impl FileType {
             "hdr" => FileType::Hdr,
             "sys" => FileType::Sys,
             "iff" => FileType::Unread("iff"),
-            "pot" => FileType::Unread("pot"),
+            "pot" => FileType::Pot,
             _ => return None,
         })
     }
@@ -95,7 +99,7 @@ impl FileType {
         match self {
             FileType::Png => &[".png"],
             FileType::Jpeg => &[".jpg", ".jpeg"],
-            FileType::Gif => &[".gif"],
+            FileType::Gif | FileType::Pot => &[".gif"],
             FileType::Tga => &[".tga"],
             FileType::Ppm => &[".ppm"],
             FileType::Pgm => &[".pgm"],
@@ -112,7 +116,7 @@ impl FileType {
         Some(match self {
             FileType::Png => F::Png,
             FileType::Jpeg => F::Jpeg,
-            FileType::Gif => F::Gif,
+            FileType::Gif | FileType::Pot => F::Gif,
             FileType::Tga => F::Tga,
             FileType::Ppm | FileType::Pgm => F::Pnm,
             FileType::Tiff => F::Tiff,
@@ -248,6 +252,9 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
         }
         _ => {}
     }
+    if ty == FileType::Pot {
+        return pot(indices.as_deref().unwrap_or_default(), w, h);
+    }
     Ok(Picture {
         width: w,
         height: h,
@@ -258,6 +265,34 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
         has_alpha,
         encoding,
         interlaced,
+    })
+}
+
+/// A Fractint POT file from its GIF's palette indices (`w` × `h`, top row first): a 16-bit
+/// grey picture half as wide, its palette ignored.
+fn pot(indices: &[u8], w: u32, h: u32) -> Result<Picture, String> {
+    if w % 2 != 0 {
+        return Err(format!("a POT file is twice as wide as its picture; this one is {w} pixels wide"));
+    }
+    let (half, wide) = (w as usize / 2, w as usize);
+    let pixels = (0..h as usize * half)
+        .map(|i| {
+            let (y, x) = (i / half, i % half);
+            let v = u16::from(indices[y * wide + x]) << 8 | u16::from(indices[y * wide + x + half]);
+            let g = f32::from(v) / 65535.0;
+            [g, g, g, 1.0]
+        })
+        .collect();
+    Ok(Picture {
+        width: w / 2,
+        height: h,
+        pixels,
+        indices: None,
+        grey: true,
+        deep: true,
+        has_alpha: false,
+        encoding: Encoding::AsWorking,
+        interlaced: false,
     })
 }
 
@@ -381,7 +416,11 @@ impl Picture {
                 heights[z * w + x] = if let Some(indices) = &self.indices {
                     u16::from(indices[i]) * 256
                 } else if self.grey {
-                    (r * 65535.0f32) as i64 as u16
+                    // POV-Ray's arithmetic on the stored integer: (v / max) × 65535 in f32,
+                    // truncated (so some 16-bit greys lose one unit, as in POV-Ray).
+                    let max = if self.deep { 65535.0f32 } else { 255.0 };
+                    let v = (r * max).round();
+                    (v / max * 65535.0) as i64 as u16
                 } else if self.deep {
                     super::heightfield::grey16([r, g, b].map(|c| (c * 65535.0).round() as u16))
                 } else {
@@ -658,5 +697,29 @@ impl super::Evaluator<'_> {
             transform: None,
             entries,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn example(name: &str) -> std::path::PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/images").join(name)
+    }
+
+    /// A POT file (examples/images/hills16.pot, made by scripts/make_images.py) holds the
+    /// same 16-bit heights as the PGM beside it: high bytes in the left half, low bytes in
+    /// the right.
+    #[test]
+    fn pot_files_are_sixteen_bit_greys_from_two_halves() {
+        let pot = read(&example("hills16.pot"), FileType::Pot).expect("reads the POT file");
+        let pgm = read(&example("hills16.pgm"), FileType::Pgm).expect("reads the PGM file");
+        assert_eq!((pot.width, pot.height), (pgm.width, pgm.height));
+        assert!(pot.grey && pot.deep && pot.indices.is_none());
+        assert_eq!(pot.heights(), pgm.heights());
+        assert!(pot.heights().iter().any(|&h| h & 0xff != 0), "low bytes are read");
+        // An odd width cannot be split in two halves.
+        assert!(super::pot(&[0; 6], 3, 2).is_err_and(|e| e.contains("twice as wide")));
     }
 }

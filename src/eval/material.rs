@@ -1006,16 +1006,22 @@ impl Evaluator<'_> {
             return Ok(normal);
         }
         let mut normal: Option<ir::Normal> = base.map(|b| *b);
+        // `checker normal {…}, normal {…}`: a discrete pattern's list of normals.
+        let mut list: Vec<(ir::Normal, crate::diag::Span)> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
                     Value::Normal(n) => normal = Some(n),
                     other => return Err(type_error("a normal", &other, item.span)),
                 },
+                NodeKind::Normal => {
+                    let entry = ev.normal(item, None)?;
+                    list.push((entry, item.word_span));
+                }
                 NodeKind::Pattern => {
                     let (kind, rest) = ev.pattern_kind(item)?;
-                    // (A discrete pattern bumps by the slope of its entry number, as in POV-Ray;
-                    // a list of normals after it is not read yet.)
+                    // (A discrete pattern without a list of normals bumps by the slope of its
+                    // entry number, as in POV-Ray.)
                     let amount = match rest {
                         [] => ev.default_bump_size,
                         [e] => ev.float(e)?,
@@ -1089,6 +1095,31 @@ impl Evaluator<'_> {
         let mut normal =
             normal.ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))?;
         check_pattern(&mut normal.pattern, node.word_span)?;
+        if let Some((_, first_span)) = list.first() {
+            let Some(len) = normal.pattern.kind.list_len() else {
+                return Err(Diagnostic::error(
+                    "a list of normals follows a pattern such as checker, hexagon or brick (give this pattern a normal_map)",
+                    *first_span,
+                ));
+            };
+            if let Some((_, extra)) = list.get(len) {
+                return Err(Diagnostic::error(format!("this pattern takes at most {len} normals"), *extra));
+            }
+            // Entry i at value i; the entries not given are the default texture's normal
+            // (flat unless `#default` gave one), as in POV-Ray.
+            let flat = || {
+                self.default_texture.normal.as_deref().cloned().unwrap_or_else(|| {
+                    ir::Normal::new(Pattern::new(PatternKind::Checker), 0.0)
+                })
+            };
+            let mut entries: Vec<(f64, ir::Normal)> = Vec::with_capacity(len);
+            let mut given = list.into_iter();
+            for i in 0..len {
+                let entry = given.next().map_or_else(flat, |(n, _)| n);
+                entries.push((i as f64, entry));
+            }
+            normal.map = Some(entries);
+        }
         if normal.pattern.kind == PatternKind::Average && normal.map.is_none() {
             return Err(Diagnostic::error(
                 "an average of normals needs a normal_map",

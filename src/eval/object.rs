@@ -620,6 +620,16 @@ impl Evaluator<'_> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::Function => function = Some(ev.function(item)?),
+                // (A directive's body reads `function {…}` as a function pattern: in an
+                // isosurface it is the surface's function, as POV-Ray reads the tokens.)
+                NodeKind::Pattern
+                    if item.args.is_empty()
+                        && matches!(&item.children[..], [f] if f.kind == NodeKind::Function) =>
+                {
+                    function = Some(ev.function(&item.children[0])?)
+                }
+                // (`open` in a directive's body reads as a flag.)
+                NodeKind::Flag if item.word == "open" => iso.closed = false,
                 NodeKind::ContainedBy => {
                     let shape = &item.children[0];
                     iso.container = if shape.kind == NodeKind::Sphere {
@@ -784,7 +794,7 @@ impl Evaluator<'_> {
             let component = matches!(
                 item.kind,
                 NodeKind::Sphere | NodeKind::Cylinder | NodeKind::BlobComponent | NodeKind::BlobThreshold
-            );
+            ) || item.kind == NodeKind::IsoSetting && item.word == "threshold";
             if component && !modifiers.is_empty() {
                 return Err(Diagnostic::error(
                     "a blob's components and threshold come before its modifiers",
@@ -793,6 +803,10 @@ impl Evaluator<'_> {
             }
             match item.kind {
                 NodeKind::BlobThreshold => blob.threshold = ev.float(&item.args[0])?,
+                // (`threshold` in a directive's body reads as an isosurface's setting.)
+                NodeKind::IsoSetting if item.word == "threshold" && item.args.len() == 1 => {
+                    blob.threshold = ev.float(&item.args[0])?
+                }
                 NodeKind::BlobComponent => {
                     let strength = ev.float(&item.args[0])?;
                     let radius = ev.float(&item.args[1])?;

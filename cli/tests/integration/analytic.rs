@@ -447,3 +447,91 @@ fn hollow_is_the_last_given_and_a_union_passes_it_to_members_without_their_own()
     let hollow: Vec<bool> = scene.objects.iter().map(|o| o.hollow).collect();
     assert_eq!(hollow, [false, true, false, true, false, false]);
 }
+
+/// `checker normal {A}, normal {B}` (POV-Ray's list of normals, commas optional): each
+/// square is bumped exactly as by A or B alone; with one normal given, the other squares are
+/// flat (the default texture's normal).
+#[test]
+fn a_discrete_pattern_with_a_list_of_normals_bumps_each_square_by_its_entry() {
+    let (a, b) = ("bumps 0.8 scale 0.15", "wrinkles 1 scale 0.3");
+    // An orthographic view of the plane z = 0, 4 units on 64 pixels: squares of 16 pixels.
+    let scene = |normal: &str| {
+        format!(
+            "{HEADER} camera {{ orthographic location <0,0,-5> look_at 0 right 4*x up 4*y }}
+             light_source {{ <-3,4,-6>, rgb 1 }}
+             plane {{ -z, 0 pigment {{ rgb 0.7 }} {normal} }}"
+        )
+    };
+    let render = |normal: &str| crate::render_text(&scene(normal), 64, 64, Antialias::Off);
+    let both = render(&format!(
+        "normal {{ checker normal {{ {a} }}, normal {{ {b} }} }}"
+    ));
+    let both_no_comma = render(&format!(
+        "normal {{ checker normal {{ {a} }} normal {{ {b} }} }}"
+    ));
+    let first_only = render(&format!("normal {{ checker normal {{ {a} }} }}"));
+    let (only_a, only_b, flat) = (
+        render(&format!("normal {{ {a} }}")),
+        render(&format!("normal {{ {b} }}")),
+        render(""),
+    );
+    let mut seen = [0; 2];
+    for y in 0..64u32 {
+        for x in 0..64u32 {
+            // Away from the squares' borders (pixel centres 1.5 pixels or more inside).
+            let (px, py) = (x % 16, y % 16);
+            if !(2..14).contains(&px) || !(2..14).contains(&py) {
+                continue;
+            }
+            // World x = −2 + (x + ½)/16, y = 2 − (y + ½)/16: squares of checker are the
+            // integer cells; the entry is the parity of their sum.
+            let (cx, cy) = ((x / 16) as i32 - 2, 1 - (y / 16) as i32);
+            let entry = (cx + cy).rem_euclid(2) as usize;
+            seen[entry] += 1;
+            let (want, want_first) = if entry == 0 {
+                (only_a.get(x, y), only_a.get(x, y))
+            } else {
+                (only_b.get(x, y), flat.get(x, y))
+            };
+            assert_eq!(both.get(x, y), want, "pixel ({x}, {y}), entry {entry}");
+            assert_eq!(
+                both_no_comma.get(x, y),
+                want,
+                "pixel ({x}, {y}) without the comma"
+            );
+            assert_eq!(
+                first_only.get(x, y),
+                want_first,
+                "pixel ({x}, {y}) with one normal"
+            );
+        }
+    }
+    assert!(seen[0] > 1000 && seen[1] > 1000, "{seen:?}");
+    // The bumps do show: the two normals differ from each other and from flat.
+    assert_ne!(only_a.get(24, 24), flat.get(24, 24));
+}
+
+/// Commas may separate a list pattern's pigments and textures, as POV-Ray reads them.
+#[test]
+fn lists_of_pigments_and_textures_take_commas() {
+    let scene = |body: &str| {
+        format!(
+            "{HEADER} camera {{ orthographic location <0,0,-5> look_at 0 right 4*x up 4*y }}
+             light_source {{ <-3,4,-6>, rgb 1 }}
+             plane {{ -z, 0 {body} }}"
+        )
+    };
+    let render = |body: &str| crate::render_text(&scene(body), 16, 16, Antialias::Off);
+    let colours = render("pigment { checker rgb <1,0,0>, rgb <0,0,1> }");
+    let pigments = render("pigment { checker pigment { rgb <1,0,0> }, pigment { rgb <0,0,1> } }");
+    let textures = render(
+        "texture { checker texture { pigment { rgb <1,0,0> } }, texture { pigment { rgb <0,0,1> } } }",
+    );
+    for y in 0..16 {
+        for x in 0..16 {
+            assert_eq!(pigments.get(x, y), colours.get(x, y));
+            assert_eq!(textures.get(x, y), colours.get(x, y));
+        }
+    }
+    assert_ne!(colours.get(2, 2), colours.get(6, 2), "two colours");
+}

@@ -426,3 +426,66 @@ fn an_object_keyword_chosen_by_a_directive() {
         "{e}"
     );
 }
+
+#[test]
+fn an_isosurfaces_function_and_settings_and_a_blobs_threshold_may_come_from_directives() {
+    // POV-Ray reads the tokens a directive leaves in place (its crackle_form scene picks each
+    // frame's function and max_gradient with `#if`); settings may follow modifiers.
+    let chosen = load(
+        "#declare F = 1;
+         isosurface {
+           #if (F = 0) function { x } #else function { x*x + y*y + z*z - 0.5 } #end
+           contained_by { sphere { 0, 2 } }
+           pigment { rgb 1 }
+           #if (F = 1) max_gradient 3.5 open #end
+           accuracy 0.01
+           threshold 0.1
+         }
+         blob { #if (F) threshold 0.4 #end sphere { 0, 1, 1 } }",
+    );
+    let plain = load(
+        "isosurface {
+           function { x*x + y*y + z*z - 0.5 }
+           contained_by { sphere { 0, 2 } }
+           max_gradient 3.5 open accuracy 0.01 threshold 0.1
+           pigment { rgb 1 }
+         }
+         blob { threshold 0.4 sphere { 0, 1, 1 } }",
+    );
+    assert_eq!(
+        format!("{:?}", chosen.scene.objects),
+        format!("{:?}", plain.scene.objects)
+    );
+    let different = load("blob { threshold 0.5 sphere { 0, 1, 1 } }");
+    assert_ne!(
+        format!("{:?}", chosen.scene.objects[1]),
+        format!("{:?}", different.scene.objects[0])
+    );
+}
+
+#[test]
+fn a_sign_after_a_macro_that_gives_an_item_starts_the_next_argument() {
+    // POV-Ray's shapes.pov: `Align_Object(Center_Object(Text, x) -y, <0,0,0>)`: the object
+    // ends at its `}`, so `-y` is the next argument, not a subtraction.
+    let text = "#macro Ball(R) sphere { 0, R } #end
+                #macro Place(O, D, P) object { O translate D + P } #end
+                object { Place(Ball(1) -y, <0, 0, 2>) }
+                object { Place(Ball(1) +x <0, 0, 2>) }";
+    let loaded = load(text);
+    let commas = load(
+        "object { sphere { 0, 1 } translate -y + <0, 0, 2> }
+         object { sphere { 0, 1 } translate x + <0, 0, 2> }",
+    );
+    assert_eq!(
+        format!("{:?}", loaded.scene.objects),
+        format!("{:?}", commas.scene.objects)
+    );
+    // With the right number of arguments a sign is still an operator.
+    let sum =
+        load("#macro Two() 2 #end #macro Id(A) sphere { 0, A } #end object { Id(Two() - 1) }");
+    let one = load("sphere { 0, 1 }");
+    assert_eq!(
+        format!("{:?}", sum.scene.objects),
+        format!("{:?}", one.scene.objects)
+    );
+}
