@@ -11,6 +11,7 @@ use super::{
 };
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::{self, ExprKind, Node, NodeKind};
+use std::sync::Arc;
 
 /// Longest string a string function may make (a string doubled in a loop stops here).
 pub const MAX_STRING_BYTES: usize = 1 << 20;
@@ -50,6 +51,13 @@ pub struct Macro {
     params: Vec<String>,
     body: Span,
     name_span: Span,
+}
+
+/// A macro body's trees, each made the first time the body is read that way.
+#[derive(Default)]
+pub(super) struct MacroParse {
+    items: Option<std::result::Result<Arc<Vec<Node>>, Diagnostic>>,
+    expr: Option<std::result::Result<Arc<syntax::FragmentExpr>, Diagnostic>>,
 }
 
 /// One macro call in progress: the variables its parameters and `#local`s shadow (restored
@@ -214,7 +222,12 @@ impl<'a> Evaluator<'a> {
             .iter()
             .filter(|c| c.kind == NodeKind::Subscript)
             .collect();
-        let value = match children.get(1 + subs.len()) {
+        let mut at = 1 + subs.len();
+        if let Some(leading) = children.get(at).filter(|c| c.kind == NodeKind::LeadingDirectives) {
+            self.each_item(&leading.children, &mut |ev, item| Err(ev.unknown_item(item, "a declaration")))?;
+            at += 1;
+        }
+        let value = match children.get(at) {
             Some(item) if item.kind == NodeKind::LayeredTexture => {
                 self.layered_texture(item).or_else(unsupported_later)?
             }
@@ -503,10 +516,10 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Parses a macro's body for a call at item level, binding its parameters.
-    fn macro_items(&mut self, call: &Node) -> Result<Vec<Node>> {
+    fn macro_items(&mut self, call: &Node) -> Result<Arc<Vec<Node>>> {
         let name = &call.children[0];
-        let (text, file, offset) = self.begin_macro(&name.word, name.span, &call.args)?;
-        syntax::parse_fragment_items(&text, file, offset).map_err(|d| {
+        let body = self.begin_macro(&name.word, name.span, &call.args)?;
+        self.parsed_items(body).map_err(|d| {
             d.with_note(format!(
                 "in macro {}, called at {}",
                 name.word,
@@ -523,14 +536,14 @@ impl<'a> Evaluator<'a> {
         args: &[syntax::Expr],
         call_span: Span,
     ) -> Result<Value> {
-        let (text, file, offset) = self.begin_macro(name, name_span, args)?;
+        let body = self.begin_macro(name, name_span, args)?;
         let only_directives = |n: &Node| {
             Diagnostic::error(
                 "a macro used as a value may hold only directives besides its value",
                 n.word_span,
             )
         };
-        let result = match syntax::parse_fragment_expr(&text, file, offset) {
+        let result = match self.parsed_expr(body) {
             Ok(fragment) => {
                 let mut directives = |_: &mut Evaluator<'a>, n: &Node| Err(only_directives(n));
                 self.each_item(&fragment.before, &mut directives)
@@ -542,7 +555,7 @@ impl<'a> Evaluator<'a> {
             }
             // The value may stand inside the directives: `#if (A) rgb 1 #else rgb 0 #end`
             // (a colour there, as POV-Ray reads the tokens the directives leave).
-            Err(not_an_expression) => match syntax::parse_fragment_items(&text, file, offset) {
+            Err(not_an_expression) => match self.parsed_items(body) {
                 // Or the value is an item: `#declare O = MakeObject(1)` with an object in the
                 // macro, a pigment, a function … (POV-Ray's usual way of making things).
                 Ok(items) => {
@@ -642,7 +655,7 @@ impl<'a> Evaluator<'a> {
         name: &str,
         span: Span,
         args: &[syntax::Expr],
-    ) -> Result<(String, crate::diag::FileId, usize)> {
+    ) -> Result<Span> {
         let Some(m) = self.macros.get(name).cloned() else {
             return Err(self.unknown_word(name, span));
         };
@@ -698,10 +711,35 @@ impl<'a> Evaluator<'a> {
             self.shadow(param);
             self.env.insert(param.clone(), value);
         }
-        let file = m.body.file;
-        let text =
-            self.sources.file(file).text[m.body.start as usize..m.body.end as usize].to_string();
-        Ok((text, file, m.body.start as usize))
+        Ok(m.body)
+    }
+
+    /// A macro body parsed as items, parsed at its first call only (the body's text never
+    /// changes, so neither does its tree).
+    fn parsed_items(&mut self, body: Span) -> std::result::Result<Arc<Vec<Node>>, Diagnostic> {
+        let key = (body.file.0, body.start);
+        if let Some(found) = self.macro_parses.get(&key).and_then(|p| p.items.clone()) {
+            return found;
+        }
+        let text = &self.sources.file(body.file).text[body.start as usize..body.end as usize];
+        let parsed = syntax::parse_fragment_items(text, body.file, body.start as usize).map(Arc::new);
+        self.macro_parses.entry(key).or_default().items = Some(parsed.clone());
+        parsed
+    }
+
+    /// A macro body parsed as a value (directives around one expression), parsed once.
+    fn parsed_expr(
+        &mut self,
+        body: Span,
+    ) -> std::result::Result<Arc<syntax::FragmentExpr>, Diagnostic> {
+        let key = (body.file.0, body.start);
+        if let Some(found) = self.macro_parses.get(&key).and_then(|p| p.expr.clone()) {
+            return found;
+        }
+        let text = &self.sources.file(body.file).text[body.start as usize..body.end as usize];
+        let parsed = syntax::parse_fragment_expr(text, body.file, body.start as usize).map(Arc::new);
+        self.macro_parses.entry(key).or_default().expr = Some(parsed.clone());
+        parsed
     }
 
     /// `Align(Center(Thing) -y, 0)`: with fewer arguments than the macro's parameters, an

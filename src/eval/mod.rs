@@ -150,6 +150,8 @@ impl Default for LoadOptions {
 enum LightType {
     Point,
     Spot,
+    /// `cylinder`: a spot of parallel rays.
+    Cylinder,
     /// `shadowless`: POV-Ray's fill light.
     Fill,
 }
@@ -350,7 +352,9 @@ pub(crate) fn transform_light(light: &mut ir::Light, m: &glam::DMat4) {
     }
     match &mut light.kind {
         ir::LightKind::Point => {}
-        ir::LightKind::Spot { point_at, .. } | ir::LightKind::Parallel { point_at } => {
+        ir::LightKind::Spot { point_at, .. }
+        | ir::LightKind::Parallel { point_at }
+        | ir::LightKind::Cylinder { point_at, .. } => {
             *point_at = m.transform_point3(*point_at);
         }
     }
@@ -382,6 +386,8 @@ pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
     sources: &'a mut SourceMap,
     macros: HashMap<String, flow::Macro>,
+    /// Macro bodies parsed so far, by file and start.
+    macro_parses: HashMap<(u32, u32), flow::MacroParse>,
     frames: Vec<flow::Frame>,
     include_depth: usize,
     /// Evaluation steps so far (see [`LoadOptions::max_steps`]).
@@ -453,6 +459,7 @@ impl<'a> Evaluator<'a> {
             options,
             sources,
             macros: HashMap::new(),
+            macro_parses: HashMap::new(),
             frames: Vec::new(),
             include_depth: 0,
             steps: 0,
@@ -1080,6 +1087,10 @@ impl<'a> Evaluator<'a> {
                         light_type = LightType::Spot;
                         (radius, falloff, tightness) = (None, None, None);
                     }
+                    "cylinder" => {
+                        light_type = LightType::Cylinder;
+                        (radius, falloff, tightness) = (None, None, None);
+                    }
                     "parallel" => parallel = true,
                     "shadowless" => light_type = LightType::Fill,
                     flag => {
@@ -1092,12 +1103,12 @@ impl<'a> Evaluator<'a> {
                     }
                 },
                 NodeKind::PointAt | NodeKind::Radius | NodeKind::Falloff | NodeKind::Tightness
-                    if light_type != LightType::Spot
-                        && !(parallel && item.kind == NodeKind::PointAt) =>
+                    if !(matches!(light_type, LightType::Spot | LightType::Cylinder)
+                        || parallel && item.kind == NodeKind::PointAt) =>
                 {
                     return Err(Diagnostic::error(
                         format!(
-                            "`{}` needs `spotlight` before it (POV-Ray refuses it on a {} light)",
+                            "`{}` needs `spotlight` or `cylinder` before it (POV-Ray refuses it on a {} light)",
                             item.word,
                             if light_type == LightType::Fill {
                                 "shadowless"
@@ -1206,7 +1217,15 @@ impl<'a> Evaluator<'a> {
                 }
             }
         }
-        let kind = if parallel {
+        // (A cylinder light's rays are parallel whatever `parallel` says.)
+        let kind = if light_type == LightType::Cylinder {
+            ir::LightKind::Cylinder {
+                point_at,
+                radius: radius.unwrap_or(0.75),
+                falloff: falloff.unwrap_or(1.0),
+                tightness: tightness.unwrap_or(0.0),
+            }
+        } else if parallel {
             ir::LightKind::Parallel { point_at }
         } else if light_type == LightType::Spot {
             ir::LightKind::Spot {

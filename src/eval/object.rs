@@ -1292,20 +1292,50 @@ impl Evaluator<'_> {
 
     /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
     fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
+        // Directives among the lists run first, in order (they may declare what a list
+        // uses); one that leaves an item there is refused.
+        // (Directives after the last list are the modifiers'.)
+        let is_list = |c: &Node| {
+            matches!(
+                c.kind,
+                NodeKind::VertexVectors
+                    | NodeKind::NormalVectors
+                    | NodeKind::UvVectors
+                    | NodeKind::FaceIndices
+                    | NodeKind::NormalIndices
+                    | NodeKind::UvIndices
+            )
+        };
+        let lists_end = node.children.iter().rposition(is_list).map_or(0, |p| p + 1);
+        let mut sections: Vec<std::borrow::Cow<'n, Node>> = Vec::new();
         let mut i = 0;
-        let section = |kind: NodeKind, i: &mut usize| -> Option<&'n Node> {
-            let n = node.children.get(*i).filter(|c| c.kind == kind)?;
-            *i += 1;
+        for child in &node.children[..lists_end] {
+            if is_list(child) {
+                sections.push(match self.list_with_directives(child)? {
+                    Some(expanded) => std::borrow::Cow::Owned(expanded),
+                    None => std::borrow::Cow::Borrowed(child),
+                });
+            } else {
+                self.each_item(std::slice::from_ref(child), &mut |ev, item| {
+                    Err(ev.unknown_item(item, "a mesh2's lists"))
+                })?;
+            }
+            i += 1;
+        }
+        let mut at = 0;
+        let section = |kind: NodeKind, at: &mut usize| -> Option<&Node> {
+            let n = sections.get(*at).map(|c| c.as_ref()).filter(|c| c.kind == kind)?;
+            *at += 1;
             Some(n)
         };
         let vertex_node =
-            section(NodeKind::VertexVectors, &mut i).expect("grammar requires vertex_vectors");
-        let normal_node = section(NodeKind::NormalVectors, &mut i);
-        let uv_node = section(NodeKind::UvVectors, &mut i);
+            section(NodeKind::VertexVectors, &mut at).expect("grammar requires vertex_vectors");
+        let normal_node = section(NodeKind::NormalVectors, &mut at);
+        let uv_node = section(NodeKind::UvVectors, &mut at);
         let face_node =
-            section(NodeKind::FaceIndices, &mut i).expect("grammar requires face_indices");
-        let normal_index_node = section(NodeKind::NormalIndices, &mut i);
-        let uv_index_node = section(NodeKind::UvIndices, &mut i);
+            section(NodeKind::FaceIndices, &mut at).expect("grammar requires face_indices");
+        let normal_index_node = section(NodeKind::NormalIndices, &mut at);
+        let uv_index_node = section(NodeKind::UvIndices, &mut at);
         let vertices = self.vector_list(vertex_node)?;
         let normals = match normal_node {
             Some(n) => self.vector_list(n)?,
@@ -1493,6 +1523,22 @@ impl Evaluator<'_> {
             out.push(face);
         }
         Ok(out)
+    }
+
+    /// A mesh2 list whose entries include directives (`#while` loops making vertices), with
+    /// the directives run and their values in their place; `None` when it has none.
+    fn list_with_directives(&mut self, node: &Node) -> Result<Option<Node>> {
+        if !node.children.iter().any(|c| is_directive(c.kind)) {
+            return Ok(None);
+        }
+        let mut values = node.args.clone();
+        for c in &node.children {
+            self.directive_values(c, &mut values, &mut |ev, item| {
+                Err(ev.unknown_item(item, &format!("`{}`", node.word)))
+            })?;
+        }
+        values.sort_by_key(|e| e.span.start);
+        Ok(Some(Node { args: values, children: Vec::new(), ..node.clone() }))
     }
 
     fn list_count(&mut self, node: &Node) -> Result<usize> {

@@ -275,6 +275,18 @@ pub enum LightKind {
         /// Target point.
         point_at: DVec3,
     },
+    /// `cylinder`: parallel rays along `point_at − location` within a cylinder around that
+    /// axis, on the side of the light's plane that `point_at` is on.
+    Cylinder {
+        /// Where the axis points.
+        point_at: DVec3,
+        /// Full intensity within this distance of the axis (default 0.75).
+        radius: f64,
+        /// Zero from this distance of the axis (default 1).
+        falloff: f64,
+        /// Exponent of the fall-off across the cylinder (default 0).
+        tightness: f64,
+    },
 }
 
 /// Light attenuation `2 / (1 + (d / distance)^power)`.

@@ -86,7 +86,7 @@ impl Tracer<'_> {
             return None;
         }
         let (direction, distance) = match &light.kind {
-            LightKind::Parallel { point_at } => {
+            LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
                 let l = (light.position - *point_at).normalize();
                 (l, (light.position - hit.point).dot(l))
             }
@@ -100,7 +100,7 @@ impl Tracer<'_> {
         if cos < MIN_LIGHT_COSINE && !(back && cos < 0.0) {
             return None;
         }
-        let mut colour = light.colour * attenuation(light, direction, distance);
+        let mut colour = light.colour * attenuation(light, hit.point, direction, distance);
         if colour == Rgb::ZERO {
             return None;
         }
@@ -388,9 +388,34 @@ fn square_to_disc(x: f64, y: f64) -> (f64, f64) {
     (a * s, b * s)
 }
 
-/// Spotlight cone and distance fade (POV-Ray §8.1–8.2).
-fn attenuation(light: &Light, direction: DVec3, distance: f64) -> f64 {
+/// Spotlight cone, cylinder and distance fade (POV-Ray §8.1–8.2) at `point`.
+fn attenuation(light: &Light, point: DVec3, direction: DVec3, distance: f64) -> f64 {
     let mut a = 1.0;
+    if let LightKind::Cylinder {
+        point_at,
+        radius,
+        falloff,
+        tightness,
+    } = &light.kind
+    {
+        // Nothing behind the light's plane or beyond `falloff` from the axis; a smooth step
+        // from `radius` out.
+        let axis = (*point_at - light.position).normalize_or_zero();
+        let v = point - light.position;
+        let along = v.dot(axis);
+        if along <= 0.0 {
+            return 0.0;
+        }
+        let off = (v - along * axis).length();
+        if off >= *falloff {
+            return 0.0;
+        }
+        let inside = 1.0 - off / falloff;
+        a = inside.powf(*tightness);
+        if *radius > 0.0 && off > *radius {
+            a *= smooth_step(0.0, 1.0 - radius / falloff, inside);
+        }
+    }
     if let LightKind::Spot {
         point_at,
         radius_deg,
@@ -420,7 +445,7 @@ fn attenuation(light: &Light, direction: DVec3, distance: f64) -> f64 {
 /// How far a shadow ray toward the light goes.
 fn shadow_length(light: &Light, shadow: &Ray, distance: f64) -> f64 {
     match light.kind {
-        LightKind::Parallel { .. } => distance.max(0.0),
+        LightKind::Parallel { .. } | LightKind::Cylinder { .. } => distance.max(0.0),
         _ => (light.position - shadow.origin).length(),
     }
 }

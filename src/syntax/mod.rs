@@ -265,6 +265,9 @@ pub enum NodeKind {
     IdentRef,
     /// `deprecated [once] "message"` in a declaration.
     Deprecation,
+    /// Declarations between a declaration's `=` and its value (`#declare A = #declare B = …;
+    /// value`, as exporters write it): run before the value is read, as POV-Ray reads them.
+    LeadingDirectives,
     /// `array[N]…` with an optional [`NodeKind::ArrayInit`] child after the subscripts.
     Array,
     /// `{ a, b, … }`: the elements of an array, one [`NodeKind::ArrayElem`] each.
@@ -1027,6 +1030,7 @@ impl Lower {
             }
             Rule::array_value => NodeKind::Array,
             Rule::deprecation => NodeKind::Deprecation,
+            Rule::leading_directives => NodeKind::LeadingDirectives,
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
             Rule::unknown_item

@@ -535,3 +535,50 @@ fn lists_of_pigments_and_textures_take_commas() {
     }
     assert_ne!(colours.get(2, 2), colours.get(6, 2), "two colours");
 }
+
+/// A `cylinder` light (POV-Ray's cylindrical spot): parallel rays down its axis, full within
+/// `radius` of it, a smooth step (POV-Ray's cubic) to zero at `falloff`, nothing beyond.
+/// Checked against POV-Ray's render of a similar scene (mean FLIP 0).
+#[test]
+fn a_cylinder_light_lights_a_disc_with_a_soft_edge() {
+    // Orthographic view straight down on the plane y = 0: 8 units on 64 pixels.
+    let scene = format!(
+        "{HEADER} camera {{ orthographic location <0,10,0> look_at 0 right 8*x up 8*z }}
+         light_source {{ <0,5,0>, rgb 1 cylinder point_at <0,0,0> radius 1.5 falloff 2.5 }}
+         plane {{ y, 0 pigment {{ rgb 1 }} finish {{ ambient 0 diffuse 1 }} }}"
+    );
+    let film = crate::render_text(&scene, 64, 64, Antialias::Off);
+    // Pixel column x has its centre at world x = −4 + (x + ½)/8 (row 32: z = −1/16).
+    let at = |x: u32| {
+        let (wx, wz) = (-4.0 + (f64::from(x) + 0.5) / 8.0, -1.0 / 16.0);
+        (wx * wx + wz * wz).sqrt()
+    };
+    for x in 0..64 {
+        let d = at(x);
+        let expected = if d < 1.5 {
+            1.0
+        } else if d >= 2.5 {
+            0.0
+        } else {
+            let inside = 1.0 - d / 2.5;
+            let s = inside / (1.0 - 1.5 / 2.5);
+            s * s * (3.0 - 2.0 * s)
+        };
+        assert_close(film.get(x, 32), [expected; 3], 1e-5);
+    }
+    // Rays are parallel: the plane is lit the same wherever the light sits on its axis, and
+    // not at all behind the light's plane.
+    let higher = scene.replace("<0,5,0>, rgb 1", "<0,50,0>, rgb 1");
+    assert_eq!(
+        crate::render_text(&higher, 64, 64, Antialias::Off).get(20, 32),
+        film.get(20, 32)
+    );
+    let below = scene.replace(
+        "<0,5,0>, rgb 1 cylinder point_at <0,0,0>",
+        "<0,-1,0>, rgb 1 cylinder point_at <0,-2,0>",
+    );
+    assert_eq!(
+        crate::render_text(&below, 64, 64, Antialias::Off).get(32, 32),
+        [0.0; 3]
+    );
+}

@@ -489,3 +489,62 @@ fn a_sign_after_a_macro_that_gives_an_item_starts_the_next_argument() {
         format!("{:?}", one.scene.objects)
     );
 }
+
+#[test]
+fn directives_may_stand_among_and_inside_a_mesh2s_lists() {
+    // As real scenes write them: a progress `#debug` before the lists, a `#declare` between
+    // them, and loops making the entries (with built-in functions among them).
+    let looped = load(
+        "#declare N = 2;
+         mesh2 {
+           #debug \"vertices\\n\"
+           vertex_vectors { (N + 1)*2
+             #local I = 0;
+             #while (I <= N) <I, 0, 0>, <I, 1, 0> #local I = I + 1; #end
+           }
+           normal_vectors { 6 #for (I, 0, 5) vnormalize(<0, 0, -2>) #end }
+           #declare F = 2;
+           face_indices { F, #for (I, 0, F - 1) <2*I, 2*I + 2, 2*I + 1>, #end }
+           #if (1) pigment { rgb 1 } #end
+         }",
+    );
+    let written = load(
+        "mesh2 {
+           vertex_vectors { 6, <0,0,0>, <0,1,0>, <1,0,0>, <1,1,0>, <2,0,0>, <2,1,0> }
+           normal_vectors { 6, <0,0,-1>, <0,0,-1>, <0,0,-1>, <0,0,-1>, <0,0,-1>, <0,0,-1> }
+           face_indices { 2, <0, 2, 1>, <2, 4, 3> }
+           pigment { rgb 1 }
+         }",
+    );
+    assert_eq!(
+        format!("{:?}", looped.scene.objects),
+        format!("{:?}", written.scene.objects)
+    );
+    assert!(
+        looped.debug_output.contains("vertices"),
+        "{:?}",
+        looped.debug_output
+    );
+}
+
+#[test]
+fn declarations_between_a_declarations_equals_sign_and_its_value_run_first() {
+    // An exporter's `#declare None_ = #declare P = …; #declare T = …; material { … }`:
+    // POV-Ray runs the inner declarations, then the value is what follows them.
+    let chained = load(
+        "#declare M =
+         #declare P = pigment { rgb <1, 0, 0> }
+         #local F = finish { ambient 0.5 }
+         material { texture { pigment { P } finish { F } } }
+         sphere { 0, 1 material { M } }
+         sphere { 0, 1 pigment { P } }",
+    );
+    let plain = load(
+        "sphere { 0, 1 texture { pigment { rgb <1, 0, 0> } finish { ambient 0.5 } } }
+         sphere { 0, 1 pigment { rgb <1, 0, 0> } }",
+    );
+    assert_eq!(
+        format!("{:?}", chained.scene.objects),
+        format!("{:?}", plain.scene.objects)
+    );
+}
