@@ -341,15 +341,14 @@ impl Evaluator<'_> {
                         pattern_span.unwrap_or(node.word_span),
                     ));
                 }
-                let last = list.last().map(|(t, _)| t.clone()).expect("not empty");
                 let mut entries: Vec<(f64, Texture)> = list
                     .into_iter()
                     .enumerate()
                     .map(|(i, (t, _))| (i as f64, t))
                     .collect();
-                // (Entries not given repeat the last one given.)
+                // (Entries not given are the default texture, as in POV-Ray.)
                 while entries.len() < len {
-                    entries.push((entries.len() as f64, last.clone()));
+                    entries.push((entries.len() as f64, self.default_texture.clone()));
                 }
                 m.entries = entries;
             }
@@ -574,14 +573,15 @@ impl Evaluator<'_> {
                     *extra,
                 ));
             }
-            // The entries not given keep the pattern's default colours.
+            // The entries not given are the default texture's pigment (black unless
+            // `#default` says otherwise), as in POV-Ray: not the pattern's default colours.
             let PigmentMap::Colours(defaults) = &p.map else {
                 unreachable!("a discrete pattern starts with its list of colours")
             };
             let mut entries: Vec<(f64, Pigment)> = defaults
                 .entries
                 .iter()
-                .map(|(v, c)| (*v, Pigment::solid(*c)))
+                .map(|(v, _)| (*v, self.default_texture.pigment.clone()))
                 .collect();
             for (slot, (entry, _)) in entries.iter_mut().zip(list) {
                 slot.1 = entry;

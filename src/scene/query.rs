@@ -65,7 +65,7 @@ impl Scene {
             let (t, part) = Self::crossings(object, ray).first_part()?;
             if let Some(b) = &best {
                 let tied = (t - b.t).abs() <= TIE * b.t.abs();
-                if tied && self.objects[b.object.0 as usize].rank < object.rank {
+                if tied && !self.wins_tie(i, b.object.0, ray) {
                     return None;
                 }
             }
@@ -97,6 +97,32 @@ impl Scene {
             }
         }
         best
+    }
+
+    /// Whether object `new`, hit at the same depth as object `old`, is the one POV-Ray sees:
+    /// the first it tests. With its bounding tree on, POV-Ray tests objects as the ray enters
+    /// their boxes (a priority queue by entry depth), so of two objects standing alone the
+    /// one whose box the ray enters first wins (two coplanar box faces: the box that reaches
+    /// nearer the camera); otherwise, and within a union, the fixed test order of `rank`.
+    fn wins_tie(&self, new: u32, old: u32, ray: &Ray) -> bool {
+        let (a, b) = (&self.objects[new as usize], &self.objects[old as usize]);
+        if self.bounded_last && a.bounded && b.bounded && self.alone(new) && self.alone(old) {
+            if let (Some(ba), Some(bb)) = (a.world_bounds(), b.world_bounds()) {
+                let (ea, eb) = (entry_depth(ba, ray), entry_depth(bb, ray));
+                if (ea - eb).abs() > 1e-9 * ea.abs().max(eb.abs()) {
+                    return ea < eb;
+                }
+            }
+        }
+        a.rank <= b.rank
+    }
+
+    /// Whether object `i` stands alone (is no member of a union).
+    fn alone(&self, i: u32) -> bool {
+        let base = |k: usize| self.objects.get(k).map(|o| o.rank >> 32);
+        let i = i as usize;
+        let own = base(i);
+        (i == 0 || base(i - 1) != own) && base(i + 1) != own
     }
 
     /// Surface details for a hit found by [`Scene::intersect`].
@@ -509,6 +535,21 @@ impl ShadowHull {
             n.dot(far) + d < -self.margin
         })
     }
+}
+
+/// Where `ray` enters the box `(lo, hi)` (0 if it starts inside).
+fn entry_depth((lo, hi): (DVec3, DVec3), ray: &Ray) -> f64 {
+    let inv = ray.direction.recip();
+    let (a, b) = ((lo - ray.origin) * inv, (hi - ray.origin) * inv);
+    let near = a.min(b);
+    // (A zero direction component gives NaN for a point on the slab: it does not limit.)
+    let mut t: f64 = 0.0;
+    for v in near.to_array() {
+        if v > t {
+            t = v;
+        }
+    }
+    t
 }
 
 #[cfg(test)]

@@ -582,3 +582,38 @@ fn a_cylinder_light_lights_a_disc_with_a_soft_edge() {
         [0.0; 3]
     );
 }
+
+/// Two boxes with coplanar faces, each alone in the scene: POV-Ray tests objects as the ray
+/// enters their bounding boxes, so at the shared face the box whose box the ray enters first
+/// is seen, whichever comes first in the file (both orders checked against POV-Ray's renders:
+/// the green box at every pixel of the shared face).
+#[test]
+fn at_coplanar_faces_the_box_entered_first_is_seen_as_in_povray() {
+    let red = "box { <-2,-0.5,-0.5>, <2,0.5,0.5> pigment { rgb <1,0,0> } finish { ambient 1 diffuse 0 } rotate 45*x }";
+    let green = "box { <-0.5,-0.5,-2>, <0.5,0.5,2> pigment { rgb <0,1,0> } finish { ambient 1 diffuse 0 } rotate 45*x }";
+    let render = |objects: &str| {
+        let scene = format!(
+            "{HEADER} camera {{ location <0,2,-10> look_at <0,0.3,0> angle 20 }}
+             light_source {{ <0,10,-10>, rgb 1 }}
+             {objects}"
+        );
+        crate::render_text(&scene, 32, 32, Antialias::Off)
+    };
+    let (only_red, only_green) = (render(red), render(green));
+    let (red_first, green_first) = (
+        render(&format!("{red}\n{green}")),
+        render(&format!("{green}\n{red}")),
+    );
+    let mut shared = 0;
+    for y in 0..32 {
+        for x in 0..32 {
+            // Pixels where each box alone shows its face: the shared face.
+            if only_red.get(x, y) == [1.0, 0.0, 0.0] && only_green.get(x, y) == [0.0, 1.0, 0.0] {
+                shared += 1;
+                assert_eq!(red_first.get(x, y), [0.0, 1.0, 0.0], "pixel ({x}, {y})");
+                assert_eq!(green_first.get(x, y), [0.0, 1.0, 0.0], "pixel ({x}, {y})");
+            }
+        }
+    }
+    assert!(shared > 20, "{shared} pixels of the shared face");
+}
