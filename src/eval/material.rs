@@ -219,6 +219,16 @@ impl Evaluator<'_> {
                     }));
                     pattern_span = Some(item.word_span);
                 }
+                // `no_bump_scale` on a texture is its normal's (none: nothing), as in POV-Ray.
+                NodeKind::PatternModifier if item.word == "no_bump_scale" && texture.map.is_none() => {
+                    let on = match item.args.first() {
+                        Some(e) => ev.float(e)? != 0.0,
+                        None => true,
+                    };
+                    if let Some(n) = &mut texture.normal {
+                        n.no_bump_scale = on;
+                    }
+                }
                 NodeKind::PatternModifier => match &mut texture.map {
                     Some(m) => ev.pattern_modifier(item, &mut m.pattern)?,
                     None => {
@@ -403,6 +413,15 @@ impl Evaluator<'_> {
         // (Directives among the entries run where they stand; an entry a directive leaves
         // is read as `[v VALUE]`, the value a declared one or a colour: `[I/2 T1]`.)
         self.each_item(&node.children, &mut |ev, e| {
+            // An entry a directive left as text: read now that the map's kind is known.
+            let parsed;
+            let e = if e.kind == NodeKind::RawMapEntry {
+                let text = &ev.sources.file(e.span.file).text[e.span.start as usize..e.span.end as usize];
+                parsed = crate::syntax::parse_map_entry(text, e.span.file, e.span.start as usize, what)?;
+                &parsed
+            } else {
+                e
+            };
             if e.kind != NodeKind::MapEntry {
                 return Err(ev.unknown_item(e, what));
             }

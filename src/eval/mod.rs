@@ -1341,6 +1341,11 @@ impl<'a> Evaluator<'a> {
                 }
                 NodeKind::Angle => {
                     let a = ev.float(&item.args[0])?;
+                    // (`angle 0` on a perspective or orthographic camera changes nothing, as
+                    // in POV-Ray.)
+                    if c.projection.is_planar() && a == 0.0 {
+                        return Ok(());
+                    }
                     if c.projection.is_planar() && !(a > 0.0 && a < 180.0) {
                         return Err(Diagnostic::error(
                             "camera angle must be between 0 and 180 degrees",

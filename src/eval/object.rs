@@ -471,7 +471,14 @@ impl Evaluator<'_> {
                 group
             }
             NodeKind::ObjectRef | NodeKind::LooksLike => {
-                let (first, rest) = node.children.split_first().expect("object {} has a body");
+                let mut children = &node.children[..];
+                if let Some((leading, after)) =
+                    children.split_first().filter(|(c, _)| c.kind == NodeKind::LeadingDirectives)
+                {
+                    self.each_item(&leading.children, &mut |ev, item| Err(ev.unknown_item(item, "an object")))?;
+                    children = after;
+                }
+                let (first, rest) = children.split_first().expect("object {} has a body");
                 modifiers = rest;
                 match first.kind {
                     NodeKind::MacroCall => self.macro_object(first)?,

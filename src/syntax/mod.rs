@@ -180,6 +180,9 @@ pub enum NodeKind {
     PatternModifier,
     ColourMap,
     MapEntry,
+    /// A map entry left by a directive, kept as text: read by [`parse_map_entry`] once the
+    /// map's kind is known.
+    RawMapEntry,
     ImageMap,
     ImageType,
     /// `gamma G` or `gamma srgb` in an image_map: the file's encoding.
@@ -715,6 +718,19 @@ fn too_deep(file: FileId, at: usize) -> Diagnostic {
     )
 }
 
+/// A map entry kept as text (`[V P rotate A*y]`, the whole of it from `[` to `]`, at byte
+/// `offset` of `file`) read as an entry of a `pigment_map`, `normal_map` or `texture_map`
+/// (`what`).
+pub fn parse_map_entry(text: &str, file: FileId, offset: usize, what: &str) -> Result<Node, Diagnostic> {
+    let rule = match what {
+        "normal_map" => Rule::normal_entry_probe,
+        "texture_map" => Rule::texture_entry_probe,
+        _ => Rule::pigment_entry_probe,
+    };
+    let mut nodes = parse_items(text, file, offset, rule)?;
+    Ok(nodes.remove(0))
+}
+
 fn parse_items(
     text: &str,
     file: FileId,
@@ -975,6 +991,7 @@ impl Lower {
             Rule::pattern_modifier => NodeKind::PatternModifier,
             Rule::colour_map => NodeKind::ColourMap,
             Rule::map_entry => NodeKind::MapEntry,
+            Rule::raw_map_entry => NodeKind::RawMapEntry,
             Rule::image_map => NodeKind::ImageMap,
             Rule::image_use => NodeKind::ImageUse,
             Rule::image_type => NodeKind::ImageType,
@@ -1064,6 +1081,11 @@ impl Lower {
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
+            return node;
+        }
+        if rule == Rule::raw_map_entry {
+            // Read later as its map's kind of entry, from the source text of its span.
+            node.word_span = span;
             return node;
         }
         if rule == Rule::value_item {

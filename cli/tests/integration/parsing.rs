@@ -548,3 +548,51 @@ fn declarations_between_a_declarations_equals_sign_and_its_value_run_first() {
         format!("{:?}", plain.scene.objects)
     );
 }
+
+#[test]
+fn map_entries_a_loop_makes_may_hold_any_entry() {
+    // textures.inc's Star_Ptrn writes `[(I+.5)/NP P rotate I*360/NP*y]` in a `#while`; entries
+    // with a pattern (`[V checker …]`) likewise, in pigment, normal and texture maps.
+    let looped = load(
+        "#declare P = pigment { gradient x }
+         plane { y, 0 pigment { radial pigment_map {
+           #for (I, 0, 1) [I P rotate I*90*y] [I + 0.5 checker rgb 1, rgb I scale 0.1] #end } } }
+         plane { y, 0 normal { radial normal_map { #for (I, 0, 1) [I bumps 0.5 scale I + 1] #end } } }
+         plane { y, 0 texture { radial texture_map {
+           #for (I, 0, 1) [I pigment { rgb I } finish { ambient I }] #end } } }",
+    );
+    let written = load(
+        "#declare P = pigment { gradient x }
+         plane { y, 0 pigment { radial pigment_map {
+           [0 P rotate 0*y] [0.5 checker rgb 1, rgb 0 scale 0.1]
+           [1 P rotate 90*y] [1.5 checker rgb 1, rgb 1 scale 0.1] } } }
+         plane { y, 0 normal { radial normal_map { [0 bumps 0.5 scale 1] [1 bumps 0.5 scale 2] } } }
+         plane { y, 0 texture { radial texture_map {
+           [0 pigment { rgb 0 } finish { ambient 0 }] [1 pigment { rgb 1 } finish { ambient 1 }] } } }",
+    );
+    assert_eq!(
+        format!("{:?}", looped.scene.objects),
+        format!("{:?}", written.scene.objects)
+    );
+}
+
+#[test]
+fn an_object_block_may_start_with_declarations_and_angle_0_changes_nothing() {
+    let declared = load(
+        "#macro Ball(R) sphere { 0, R pigment { T } } #end
+         object { #local T = pigment { rgb <1, 0, 0> }; Ball(2) translate x }
+         camera { location -5*z look_at 0 angle 0 }",
+    );
+    let plain = load(
+        "object { sphere { 0, 2 pigment { rgb <1, 0, 0> } } translate x }
+         camera { location -5*z look_at 0 }",
+    );
+    assert_eq!(
+        format!("{:?}", declared.scene.objects),
+        format!("{:?}", plain.scene.objects)
+    );
+    assert_eq!(
+        format!("{:?}", declared.scene.camera),
+        format!("{:?}", plain.scene.camera)
+    );
+}
