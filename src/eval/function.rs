@@ -30,6 +30,11 @@ impl Evaluator<'_> {
             let spline = self.spline(body)?;
             return Ok(Arc::new(Function::native(Arc::new(spline))));
         }
+        // `function { transform { … } }`: the point it takes, transformed.
+        if let Some(body) = node.children.iter().find(|c| c.kind == NodeKind::Transform) {
+            let t = self.transform(body)?;
+            return Ok(Arc::new(Function::native(Arc::new(TransformFunction(t.matrix)))));
+        }
         // `function { pigment { … } }`, `function { pattern { … } }`.
         if let Some(body) = node
             .children
@@ -442,4 +447,23 @@ fn member_index(member: &str, size: usize) -> Option<crate::func::Member> {
         _ => return None,
     };
     (usize::from(i) < size.max(3)).then_some(i)
+}
+
+/// `function { transform { … } }`: f(x, y, z) is the point (x, y, z) transformed (a vector).
+#[derive(Debug)]
+struct TransformFunction(glam::DMat4);
+
+impl crate::func::Native for TransformFunction {
+    fn params(&self) -> usize {
+        3
+    }
+
+    fn size(&self) -> usize {
+        3
+    }
+
+    fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
+        let p = self.0.transform_point3(glam::DVec3::new(args[0], args[1], args[2]));
+        [p.x, p.y, p.z, 0.0, 0.0]
+    }
 }

@@ -867,6 +867,7 @@ const SUPPORTED: &[&str] = &[
     "tanh",
     "text",
     "texture",
+    "texture_list",
     "texture_map",
     "tga",
     "thickness",
@@ -1014,7 +1015,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }
-        "texture_list" | "hierarchy" => {
+        "hierarchy" => {
             "this object item is not supported by trace yet"
         }
         "area_illumination" => {

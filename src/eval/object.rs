@@ -393,14 +393,32 @@ impl Evaluator<'_> {
                     if !matches!(t.kind, NodeKind::Triangle | NodeKind::SmoothTriangle) {
                         return Err(Diagnostic::error("expected a triangle or smooth_triangle here", t.word_span));
                     }
-                    if let Some(m) = t.children.iter().find(|c| c.kind != NodeKind::TriangleUv) {
-                        return Err(Diagnostic::error(
-                            "unsupported: modifiers on a triangle inside a mesh (not supported by trace yet)",
-                            m.span,
-                        ));
+                    // A triangle of a mesh may have a texture of its own (POV-Ray allows
+                    // nothing else there).
+                    let mut texture = None;
+                    for m in t.children.iter().filter(|c| c.kind != NodeKind::TriangleUv) {
+                        if m.kind != NodeKind::Texture || texture.is_some() {
+                            return Err(Diagnostic::error(
+                                "a triangle inside a mesh takes only uv_vectors and one texture",
+                                m.span,
+                            ));
+                        }
+                        texture = Some(ev.texture(m)?);
                     }
-                    ev.add_triangle(&mut mesh, t, true)
+                    let before = mesh.triangles.len();
+                    ev.add_triangle(&mut mesh, t, true)?;
+                    if mesh.triangles.len() > before {
+                        let entry = match texture {
+                            Some(t) => mesh_texture(&mut mesh.textures, t),
+                            None => ir::OWN_TEXTURE,
+                        };
+                        mesh.face_textures.push([entry; 3]);
+                    }
+                    Ok(())
                 })?;
+                if mesh.textures.is_empty() {
+                    mesh.face_textures.clear();
+                }
                 modifiers = self.inside_vector(&mut mesh, rest)?;
                 if mesh.triangles.is_empty() {
                     self.warn(Diagnostic::warning(
@@ -1308,6 +1326,7 @@ impl Evaluator<'_> {
                 NodeKind::VertexVectors
                     | NodeKind::NormalVectors
                     | NodeKind::UvVectors
+                    | NodeKind::TextureList
                     | NodeKind::FaceIndices
                     | NodeKind::NormalIndices
                     | NodeKind::UvIndices
@@ -1317,7 +1336,10 @@ impl Evaluator<'_> {
         let mut sections: Vec<std::borrow::Cow<'n, Node>> = Vec::new();
         let mut i = 0;
         for child in &node.children[..lists_end] {
-            if is_list(child) {
+            if child.kind == NodeKind::TextureList {
+                // (Its directives make textures: run as it is read.)
+                sections.push(std::borrow::Cow::Borrowed(child));
+            } else if is_list(child) {
                 sections.push(match self.list_with_directives(child)? {
                     Some(expanded) => std::borrow::Cow::Owned(expanded),
                     None => std::borrow::Cow::Borrowed(child),
@@ -1339,6 +1361,7 @@ impl Evaluator<'_> {
             section(NodeKind::VertexVectors, &mut at).expect("grammar requires vertex_vectors");
         let normal_node = section(NodeKind::NormalVectors, &mut at);
         let uv_node = section(NodeKind::UvVectors, &mut at);
+        let texture_node = section(NodeKind::TextureList, &mut at);
         let face_node =
             section(NodeKind::FaceIndices, &mut at).expect("grammar requires face_indices");
         let normal_index_node = section(NodeKind::NormalIndices, &mut at);
@@ -1348,7 +1371,14 @@ impl Evaluator<'_> {
             Some(n) => self.vector_list(n)?,
             None => Vec::new(),
         };
-        let faces = self.index_list(face_node, vertices.len())?;
+        let (faces, face_textures, textures) = match texture_node {
+            Some(list) => {
+                let textures = self.texture_list(list)?;
+                let (faces, face_textures) = self.faces_with_textures(face_node, vertices.len(), textures.len())?;
+                (faces, face_textures, textures)
+            }
+            None => (self.index_list(face_node, vertices.len())?, Vec::new(), Vec::new()),
+        };
         let normal_faces = match normal_index_node {
             Some(n) => self.index_list(n, normals.len())?,
             // Without normal_indices, as many normals as vertices reuse the face indices.
@@ -1403,8 +1433,13 @@ impl Evaluator<'_> {
             }
         };
         let (mut mesh, degenerate, dropped_smooth) =
-            assemble_mesh(&vertices, &normals, &faces, &normal_faces, &uv_faces);
+            assemble_mesh(&vertices, &normals, &faces, &normal_faces, &uv_faces, &face_textures);
         mesh.uvs = uvs;
+        if mesh.face_textures.iter().any(|f| f.iter().any(|&t| t != ir::OWN_TEXTURE)) {
+            mesh.textures = textures;
+        } else {
+            mesh.face_textures.clear();
+        }
         if degenerate + dropped_smooth > 0 {
             self.warn(Diagnostic::warning(
                 format!(
@@ -1442,6 +1477,7 @@ impl Evaluator<'_> {
             &data.normals,
             &data.faces,
             &data.normal_faces,
+            &[],
             &[],
         );
         if degenerate + dropped_smooth > 0 {
@@ -1548,6 +1584,94 @@ impl Evaluator<'_> {
         Ok(Some(Node { args: values, children: Vec::new(), ..node.clone() }))
     }
 
+    /// `texture_list { N, texture {…} … }` (directives may make the textures).
+    fn texture_list(&mut self, node: &Node) -> Result<Vec<ir::Texture>> {
+        let n = self.float(&node.args[0])?;
+        let mut textures = Vec::new();
+        self.each_item(&node.children, &mut |ev, item| {
+            if item.kind != NodeKind::Texture {
+                return Err(ev.unknown_item(item, "a texture_list"));
+            }
+            textures.push(ev.texture(item)?);
+            Ok(())
+        })?;
+        if n.trunc() != textures.len() as f64 {
+            return Err(Diagnostic::error(
+                format!("`texture_list` announces {n} textures but lists {}", textures.len()),
+                node.args[0].span,
+            ));
+        }
+        Ok(textures)
+    }
+
+    /// A mesh2's `face_indices { N, <a, b, c> [, t [, t2, t3]] … }` after a texture_list:
+    /// each face's vertex indices and its corners' textures (one for the face, or one per
+    /// corner; none: the object's texture).
+    fn faces_with_textures(
+        &mut self,
+        node: &Node,
+        limit: usize,
+        textures: usize,
+    ) -> Result<(Faces, Faces)> {
+        if bulk_list(node).is_some() {
+            let faces = self.index_list(node, limit)?;
+            let own = vec![[ir::OWN_TEXTURE; 3]; faces.len()];
+            return Ok((faces, own));
+        }
+        let n = self.float(&node.args[0])?;
+        let (mut faces, mut face_textures) = (Vec::new(), Vec::new());
+        let mut pending: Vec<(u32, Span)> = Vec::new();
+        let close = |faces: &Vec<[u32; 3]>, face_textures: &mut Vec<[u32; 3]>, pending: &mut Vec<(u32, Span)>| {
+            if faces.len() > face_textures.len() {
+                face_textures.push(match pending.as_slice() {
+                    [] => [ir::OWN_TEXTURE; 3],
+                    [(t, _)] => [*t; 3],
+                    [(a, _), (b, _), (c, _)] => [*a, *b, *c],
+                    [.., (_, span)] => {
+                        return Err(Diagnostic::error("a face takes one texture index or three", *span));
+                    }
+                });
+            }
+            pending.clear();
+            Ok(())
+        };
+        for e in &node.args[1..] {
+            match self.eval(e)? {
+                Value::Vector(v) if v.len == 3 => {
+                    close(&faces, &mut face_textures, &mut pending)?;
+                    let mut face = [0u32; 3];
+                    for (slot, &c) in face.iter_mut().zip(&v.c[..3]) {
+                        let i = c.trunc();
+                        if !(i >= 0.0 && (i as usize) < limit) {
+                            return Err(Diagnostic::error(format!("index {i} is out of range (0..{limit})"), e.span));
+                        }
+                        *slot = i as u32;
+                    }
+                    faces.push(face);
+                }
+                Value::Float(t) if !faces.is_empty() => {
+                    let t = t.trunc();
+                    if !(t >= 0.0 && (t as usize) < textures) {
+                        return Err(Diagnostic::error(
+                            format!("texture index {t} is out of range (0..{textures})"),
+                            e.span,
+                        ));
+                    }
+                    pending.push((t as u32, e.span));
+                }
+                other => return Err(type_error("a vector <a, b, c> of indices", &other, e.span)),
+            }
+        }
+        close(&faces, &mut face_textures, &mut pending)?;
+        if n.trunc() != faces.len() as f64 {
+            return Err(Diagnostic::error(
+                format!("`face_indices` announces {n} entries but lists {}", faces.len()),
+                node.args[0].span,
+            ));
+        }
+        Ok((faces, face_textures))
+    }
+
     fn list_count(&mut self, node: &Node) -> Result<usize> {
         let n = self.float(&node.args[0])?;
         let given = node.args.len() - 1;
@@ -1617,12 +1741,29 @@ fn smooth_normals(ng: DVec3, n: &[DVec3; 3], flatten_equal: bool) -> SmoothNorma
 /// A mesh from `mesh2`-style lists, with POV-Ray's rules: zero-area triangles are dropped, and
 /// so are smooth triangles whose normals straddle the face; returns the mesh and how many of
 /// each were dropped.
+/// Per triangle, three indices (of vertices, or of textures).
+type Faces = Vec<[u32; 3]>;
+
+/// The index of texture `t` among a mesh's `textures`, added unless one of the last few is
+/// equal (exporters give each triangle a copy of the same texture).
+fn mesh_texture(textures: &mut Vec<ir::Texture>, t: ir::Texture) -> u32 {
+    let recent = textures.len().saturating_sub(8);
+    match textures[recent..].iter().position(|u| *u == t) {
+        Some(i) => (recent + i) as u32,
+        None => {
+            textures.push(t);
+            textures.len() as u32 - 1
+        }
+    }
+}
+
 pub(super) fn assemble_mesh(
     vertices: &[DVec3],
     normals: &[DVec3],
     faces: &[[u32; 3]],
     normal_faces: &[[u32; 3]],
     uv_faces: &[[u32; 3]],
+    face_textures: &[[u32; 3]],
 ) -> (Mesh, usize, usize) {
     let mut mesh = Mesh {
         vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
@@ -1633,6 +1774,8 @@ pub(super) fn assemble_mesh(
         uvs: Vec::new(),
         uv_indices: Vec::new(),
         world_uv: false,
+        textures: Vec::new(),
+        face_textures: Vec::new(),
     };
     let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
     let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
@@ -1658,6 +1801,9 @@ pub(super) fn assemble_mesh(
         mesh.triangles.push(*face);
         if let Some(uv) = uv_faces.get(k) {
             mesh.uv_indices.push(*uv);
+        }
+        if let Some(t) = face_textures.get(k) {
+            mesh.face_textures.push(*t);
         }
         if normal_index != FLAT || !mesh.normal_indices.is_empty() {
             mesh.normal_indices.resize(mesh.triangles.len() - 1, FLAT);

@@ -29,6 +29,9 @@ pub struct TriangleMesh {
     uvs: Vec<glam::DVec2>,
     /// Per triangle (BVH order), indices into `uvs`; empty when the mesh has none.
     uv_indices: Vec<[u32; 3]>,
+    /// Per triangle (BVH order), the entries of the object's material its corners take (a
+    /// mesh's own textures); empty when the triangles have none.
+    corner_entries: Vec<[u32; 3]>,
     /// `inside_vector`, if given.
     pub inside_vector: Option<DVec3>,
     /// Without `uv_vectors`, POV-Ray's default coordinates (a stand-alone triangle's) instead
@@ -112,6 +115,20 @@ impl TriangleMesh {
         uvs: Vec<glam::DVec2>,
         uv_indices: Vec<[u32; 3]>,
     ) -> TriangleMesh {
+        Self::with_corner_entries(vertices, triangles, normals, normal_indices, uvs, uv_indices, Vec::new())
+    }
+
+    /// [`TriangleMesh::new`] with, per triangle, the material entries its corners take
+    /// (empty, or parallel to `triangles`).
+    pub fn with_corner_entries(
+        vertices: Vec<DVec3>,
+        triangles: Vec<[u32; 3]>,
+        normals: Vec<DVec3>,
+        normal_indices: Vec<[u32; 3]>,
+        uvs: Vec<glam::DVec2>,
+        uv_indices: Vec<[u32; 3]>,
+        corner_entries: Vec<[u32; 3]>,
+    ) -> TriangleMesh {
         let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
         for v in &vertices {
             lo = lo.min(*v);
@@ -164,6 +181,7 @@ impl TriangleMesh {
         let mut triangles_ordered = Vec::with_capacity(triangles.len());
         let mut normal_ordered = Vec::with_capacity(normal_indices.len());
         let mut uv_ordered = Vec::with_capacity(uv_indices.len());
+        let mut entries_ordered = Vec::with_capacity(corner_entries.len());
         let mut group_start = Vec::with_capacity(bvh.primitive_indices.len() + 1);
         for &g in &bvh.primitive_indices {
             group_start.push(triangles_ordered.len() as u32);
@@ -174,6 +192,9 @@ impl TriangleMesh {
                 }
                 if !uv_indices.is_empty() {
                     uv_ordered.push(uv_indices[k as usize]);
+                }
+                if !corner_entries.is_empty() {
+                    entries_ordered.push(corner_entries[k as usize]);
                 }
             }
         }
@@ -187,6 +208,7 @@ impl TriangleMesh {
             bvh,
             uvs,
             uv_indices: uv_ordered,
+            corner_entries: entries_ordered,
             inside_vector: None,
             world_uv: false,
             bounds: (lo, hi),
@@ -198,7 +220,7 @@ impl TriangleMesh {
         self.group_start[p] as usize..self.group_start[p + 1] as usize
     }
 
-    fn corners(&self, triangle: usize) -> [DVec3; 3] {
+    fn corners_of(&self, triangle: usize) -> [DVec3; 3] {
         self.triangles[triangle].map(|i| self.vertices[i as usize])
     }
 
@@ -211,7 +233,7 @@ impl TriangleMesh {
             .ray_traverse(bvh_ray(ray, ray.tmax), &mut RayHit::none(), |_, p| {
                 let mut hit = false;
                 for i in self.group(p) {
-                    let [a, b, c] = self.corners(i);
+                    let [a, b, c] = self.corners_of(i);
                     let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
                     counters::record(super::shape::TRIANGLE, crossing.is_some());
                     if let Some(t) = crossing {
@@ -239,7 +261,7 @@ impl TriangleMesh {
         self.bvh
             .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, p| {
                 for i in self.group(p) {
-                    let [a, b, c] = self.corners(i);
+                    let [a, b, c] = self.corners_of(i);
                     let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
                     counters::record(super::shape::TRIANGLE, crossing.is_some());
                     if let Some(t) = crossing {
@@ -261,7 +283,7 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, p| {
             for i in self.group(p) {
-                let [a, b, c] = self.corners(i);
+                let [a, b, c] = self.corners_of(i);
                 let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
                 counters::record(super::shape::TRIANGLE, crossing.is_some());
                 if crossing.is_some() {
@@ -274,7 +296,7 @@ impl TriangleMesh {
 
     /// The geometric normal of a triangle (not unit length; orientation from the winding).
     pub fn geometric_normal(&self, triangle: u32) -> DVec3 {
-        let [a, b, c] = self.corners(triangle as usize);
+        let [a, b, c] = self.corners_of(triangle as usize);
         // POV-Ray's orientation, (c − a) × (b − a), which decides the side that shows an
         // interior texture.
         (c - a).cross(b - a)
@@ -286,7 +308,7 @@ impl TriangleMesh {
         let ng = self.geometric_normal(triangle);
         match self.normal_indices.get(triangle as usize) {
             Some(ni) if *ni != FLAT => {
-                let [a, b, c] = self.corners(triangle as usize);
+                let [a, b, c] = self.corners_of(triangle as usize);
                 let w = barycentric(p, a, b, c);
                 let n = ni.map(|i| self.normals[i as usize]);
                 w[0] * n[0] + w[1] * n[1] + w[2] * n[2]
@@ -302,7 +324,24 @@ impl TriangleMesh {
         let Some(indices) = self.uv_indices.get(triangle as usize) else {
             return glam::DVec2::ZERO;
         };
-        let [a, b, c] = self.corners(triangle as usize);
+        let w = self.corner_weights(p, triangle).to_array();
+        let uv = indices.map(|i| self.uvs[i as usize]);
+        w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2]
+    }
+
+    /// The material entries of triangle `triangle`'s corners and the weights point `p` gives
+    /// them (barycentric), for a mesh whose triangles have textures of their own.
+    pub fn corners(&self, p: DVec3, triangle: u32) -> Option<([u32; 3], DVec3)> {
+        let entries = *self.corner_entries.get(triangle as usize)?;
+        if entries[0] == entries[1] && entries[1] == entries[2] {
+            return Some((entries, DVec3::X));
+        }
+        Some((entries, self.corner_weights(p, triangle)))
+    }
+
+    /// The barycentric weights of point `p` on triangle `triangle`.
+    fn corner_weights(&self, p: DVec3, triangle: u32) -> DVec3 {
+        let [a, b, c] = self.corners_of(triangle as usize);
         // The weight of corner `p0`, with `p1` and `p2` the other two: the projection of the
         // point onto the height from the side p1–p2 (1 at the corner, 0 on that side).
         let weight = |p0: DVec3, p1: DVec3, p2: DVec3| {
@@ -310,9 +349,7 @@ impl TriangleMesh {
             let height = side * (adjacent.dot(side) / side.dot(side)) - adjacent;
             1.0 + (p - p0).dot(height) / height.dot(height)
         };
-        let w = [weight(a, b, c), weight(b, a, c), weight(c, a, b)];
-        let uv = indices.map(|i| self.uvs[i as usize]);
-        w[0] * uv[0] + w[1] * uv[1] + w[2] * uv[2]
+        DVec3::new(weight(a, b, c), weight(b, a, c), weight(c, a, b))
     }
 
     /// Whether a point is inside: only a mesh with an `inside_vector` has an inside (an odd

@@ -605,7 +605,17 @@ pub struct Mesh {
     /// A stand-alone `triangle` or `smooth_triangle`: its surface coordinates are POV-Ray's
     /// default (the world point's x and y), not a mesh's (0, 0).
     pub world_uv: bool,
+    /// The triangles' own textures (`texture { T }` on a mesh's triangle, a mesh2's
+    /// `texture_list`), in the mesh's space.
+    pub textures: Vec<Texture>,
+    /// Per triangle, its corners' indices into `textures` ([`OWN_TEXTURE`]: the object's
+    /// texture); all three equal for one texture, else blended across the triangle. Empty
+    /// when no triangle has a texture of its own.
+    pub face_textures: Vec<[u32; 3]>,
 }
+
+/// In [`Mesh::face_textures`]: the corner takes the object's texture.
+pub const OWN_TEXTURE: u32 = u32::MAX;
 
 /// The marker for a flat triangle in [`Mesh::normal_indices`].
 pub const FLAT: [u32; 3] = [u32::MAX; 3];
@@ -635,6 +645,15 @@ impl std::fmt::Debug for Mesh {
                 .sum();
             d.field("uvs", &self.uvs.len())
                 .field("uv_checksum", &format_args!("{uv_sum:.4}"));
+        }
+        if !self.face_textures.is_empty() {
+            let face_sum: u64 = (self.face_textures.iter().enumerate())
+                .map(|(i, f)| {
+                    (i as u64 + 1) * f.iter().map(|&t| u64::from(t.wrapping_add(1))).sum::<u64>()
+                })
+                .sum();
+            d.field("textures", &self.textures)
+                .field("face_texture_checksum", &face_sum);
         }
         d.finish()
     }

@@ -802,6 +802,9 @@ pub struct Surface {
     pub direction: DVec3,
     /// The surface's (u, v) coordinates, where a uv-mapped texture asked for them.
     pub uv: glam::DVec2,
+    /// On a mesh whose triangles have textures of their own: the material entries of the
+    /// triangle's corners and the point's weights for them.
+    pub corners: ([u32; 3], DVec3),
 }
 
 /// `slope`'s parameters, as POV-Ray keeps them after parsing.

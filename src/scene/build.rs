@@ -133,6 +133,26 @@ fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Text
     (sides, textures)
 }
 
+/// The material of a mesh whose triangles have textures of their own: entry 0 is the
+/// object's texture, entry 1 + i the mesh's texture i placed in the world by the object's
+/// transformation; each triangle's corners pick theirs.
+fn mesh_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Option<Material> {
+    let ir::Shape::Mesh(m) = &o.shape else { return None };
+    if m.face_textures.is_empty() {
+        return None;
+    }
+    let world = o.transform.as_ref().map(|t| **t);
+    let mut entries = vec![Material::new(&o.texture, defaults)];
+    for t in &m.textures {
+        let mut t = t.clone();
+        if let Some(w) = world {
+            t.transform(w);
+        }
+        entries.push(Material::new(&t, defaults));
+    }
+    Some(Material::corner_blend(entries))
+}
+
 /// The material of a blob whose components have textures of their own: entry 0 is the
 /// blob's texture, then one entry per textured component (placed in the world by the
 /// object's transformation); each element brings its component's entry.
@@ -215,7 +235,7 @@ impl Scene {
         // A blob whose components have textures gets a material of its own that blends them
         // (both sides: POV-Ray ignores an interior texture there).
         for (o, id) in ir.objects.iter().zip(&mut ids) {
-            if let Some(m) = blob_material(o, pattern_defaults(ir)) {
+            if let Some(m) = blob_material(o, pattern_defaults(ir)).or_else(|| mesh_material(o, pattern_defaults(ir))) {
                 let own = MaterialId(materials.len() as u32);
                 materials.push(m);
                 *id = (own, own);
@@ -632,13 +652,17 @@ fn build_shape(
 }
 
 fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
-    let mut built = TriangleMesh::new(
+    // Corner entries of the object's material (see `mesh_material`): 0 the object's own
+    // texture, 1 + i the mesh's texture i.
+    let entry = |t: u32| if t == ir::OWN_TEXTURE { 0 } else { t + 1 };
+    let mut built = TriangleMesh::with_corner_entries(
         mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
         mesh.triangles.clone(),
         mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
         mesh.normal_indices.clone(),
         mesh.uvs.clone(),
         mesh.uv_indices.clone(),
+        mesh.face_textures.iter().map(|f| f.map(entry)).collect(),
     );
     built.inside_vector = mesh.inside_vector;
     built.world_uv = mesh.world_uv;

@@ -20,6 +20,8 @@ pub struct Material {
     uses_uv: bool,
     /// Whether some pattern of it sees more of the surface than the point (uv, slope, aoi).
     uses_surface: bool,
+    /// Whether it is picked by a mesh triangle's corners.
+    uses_corners: bool,
     /// Finish.
     pub finish: Arc<Finish>,
 }
@@ -38,6 +40,7 @@ impl Material {
             map: t.map.as_deref().map(|m| {
                 Box::new(MaterialMap {
                     blob: None,
+                    by_corner: false,
                     pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
                     world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
@@ -62,6 +65,7 @@ impl Material {
             see_through: false,
             uses_uv: false,
             uses_surface: false,
+            uses_corners: false,
         };
         m.uses_uv = m.layers().any(|l| {
             l.pigment.uses_uv() || l.normal.as_ref().is_some_and(|n| n.uses_uv())
@@ -91,6 +95,7 @@ impl Material {
         let see_through = entries.iter().any(Material::may_be_transparent);
         let map = MaterialMap {
             blob: Some(elements.into_boxed_slice()),
+            by_corner: false,
             pattern: crate::pattern::Pattern::new(crate::pattern::PatternKind::Average),
             pattern_from_world: blob_from_world,
             world_from_pattern: blob_from_world.map(|m| m.inverse()),
@@ -101,6 +106,37 @@ impl Material {
         m.map = Some(Box::new(map));
         m.see_through = see_through;
         m
+    }
+
+    /// The surface of a mesh whose triangles have textures of their own: `entries` picked
+    /// by the corners of the triangle hit (blended across it by the point's weights when
+    /// they differ, as POV-Ray blends a triangle's three textures).
+    pub fn corner_blend(entries: Vec<Material>) -> Material {
+        let see_through = entries.iter().any(Material::may_be_transparent);
+        let uses_uv = entries.iter().any(|e| e.uses_uv);
+        let map = MaterialMap {
+            blob: None,
+            by_corner: true,
+            pattern: crate::pattern::Pattern::new(crate::pattern::PatternKind::Average),
+            pattern_from_world: None,
+            world_from_pattern: None,
+            entries: entries.into_iter().map(|m| (0.0, m)).collect(),
+        };
+        let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
+        let mut m = Material::new(&ir::Texture::default(), defaults);
+        m.map = Some(Box::new(map));
+        m.see_through = see_through;
+        m.uses_uv = uses_uv;
+        // (A shadow ray works out the corners where it crosses such a mesh.)
+        m.uses_surface = true;
+        m.uses_corners = true;
+        m
+    }
+
+    /// Whether the material is picked by a mesh triangle's corners ([`Material::corner_blend`]):
+    /// only then does a hit work them out.
+    pub fn uses_corners(&self) -> bool {
+        self.uses_corners
     }
 
     /// Whether some pattern of the material looks at the surface's (u, v) (`uv_mapping`):
@@ -154,6 +190,9 @@ pub struct MaterialMap {
     /// For a blob's textures: its elements (blob space) and the entry each one brings; the
     /// pattern is then unused.
     blob: Option<Box<[(BlobElement, u32)]>>,
+    /// For a mesh's triangle textures: the entries are picked by the surface's corners; the
+    /// pattern is then unused.
+    by_corner: bool,
     pattern: crate::pattern::Pattern,
     pattern_from_world: Option<DMat4>,
     world_from_pattern: Option<DMat4>,
@@ -174,6 +213,14 @@ impl MaterialMap {
     ) -> Rgb {
         if self.pattern.kind == crate::pattern::PatternKind::UvMapping {
             return f(&self.entries[0].1, surface.uv.extend(0.0));
+        }
+        if self.by_corner {
+            let ([a, b, c], w) = surface.corners;
+            let entry = |i: u32| &self.entries[i as usize].1;
+            if a == b && b == c {
+                return f(entry(a), p);
+            }
+            return f(entry(a), p) * w.x + f(entry(b), p) * w.y + f(entry(c), p) * w.z;
         }
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
         if let Some(elements) = &self.blob {

@@ -306,6 +306,19 @@ impl Object {
         self.shape.uv(local, part).unwrap_or(glam::DVec2::new(p.x, p.y))
     }
 
+    /// The material entries of the corners of mesh triangle `part` and the weights world
+    /// point `p` gives them (none for other shapes).
+    pub fn corners(&self, p: DVec3, part: u32) -> ([u32; 3], DVec3) {
+        let Shape::Mesh(mesh) = &self.shape else {
+            return Default::default();
+        };
+        let local = match &self.transform {
+            None => p,
+            Some(t) => t.object_from_world.transform_point3(p),
+        };
+        mesh.corners(local, part).unwrap_or_default()
+    }
+
     /// `no_image`, `no_reflection`, `double_illuminate`.
     pub fn sight(&self) -> crate::ir::Sight {
         self.extra.as_ref().map_or_else(Default::default, |e| e.sight)

@@ -149,6 +149,11 @@ impl Scene {
         } else {
             glam::DVec2::ZERO
         };
+        let corners = if self.material(material).uses_corners() {
+            object.corners(point, hit.part)
+        } else {
+            Default::default()
+        };
         SurfaceHit {
             point,
             texture_point: point,
@@ -162,6 +167,7 @@ impl Scene {
                 normal: if normal.dot(ray.direction) > 0.0 { -normal } else { normal },
                 direction: ray.direction,
                 uv,
+                corners,
             },
         }
     }

@@ -197,6 +197,8 @@ pub enum NodeKind {
     SlopeAltitude,
     /// `uv_vectors { n, UV… }` of a mesh2.
     UvVectors,
+    /// A mesh2's `texture_list { N, texture {…} … }`.
+    TextureList,
     /// `uv_indices { n, <a, b, c>… }` of a mesh2.
     UvIndices,
     /// `uv_vectors UV1, UV2, UV3` of a mesh's triangle.
@@ -932,6 +934,7 @@ impl Lower {
             Rule::face_indices => NodeKind::FaceIndices,
             Rule::normal_indices => NodeKind::NormalIndices,
             Rule::mesh_uv_vectors => NodeKind::UvVectors,
+            Rule::texture_list => NodeKind::TextureList,
             Rule::uv_indices => NodeKind::UvIndices,
             Rule::triangle_uv => NodeKind::TriangleUv,
             Rule::flag => NodeKind::Flag,
@@ -1396,6 +1399,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_tile2
             | kw_uv_vectors
             | kw_uv_indices
+            | kw_texture_list
             | kw_uv_mapping
             | kw_altitude
             | kw_light_object

@@ -596,3 +596,20 @@ fn an_object_block_may_start_with_declarations_and_angle_0_changes_nothing() {
         format!("{:?}", plain.scene.camera)
     );
 }
+
+#[test]
+fn a_transform_function_gives_the_point_transformed() {
+    // transforms.inc's vtransform: `#local fn = function { transform { trans } }`.
+    let loaded = load(
+        "#declare F = function { transform { rotate 90*y translate x } }
+         #declare V = F(1, 2, 3);
+         sphere { V, 1 }",
+    );
+    let trace::ir::Shape::Sphere { centre, .. } = &loaded.scene.objects[0].shape else {
+        panic!("a sphere")
+    };
+    assert!(
+        (*centre - glam::DVec3::new(4.0, 2.0, -1.0)).length() < 1e-12,
+        "{centre}"
+    );
+}
