@@ -46,15 +46,7 @@ def main():
             subprocess.run(["povray", "+I" + name, "+Op.exr", "+FE", "+W320", "+H240", "-D", "-GA", "-A", "-J",
                             "+L" + INCLUDE] + switches, cwd=folder, capture_output=True, timeout=300)
             row["povray_s"] = f"{time.time() - t0:.2f}"
-            c = subprocess.run([trace, "compare", f"p{suffix}.exr", f"t{suffix}.exr"], cwd=folder,
-                               capture_output=True, text=True)
-            for line in c.stdout.splitlines():
-                if line.startswith("mean FLIP"):
-                    row["flip"] = line.split()[-1]
-                elif line.startswith("RMSE"):
-                    row["rmse"] = line.split()[-1]
-                elif line.startswith("NaN/inf"):
-                    row["nan"] = line.split()[-1]
+            row.update(compare(trace, folder, f"p{suffix}.exr", f"t{suffix}.exr"))
         else:
             reasons[message.split(" (")[0][:90]] += 1
         rows.append(row)
@@ -74,6 +66,17 @@ def main():
         print(f"  {n:4d}  {reason}")
     write_report(out[:-4] + ".md", rows, rendered, passing, reasons)
     shutil.rmtree(work)
+
+
+def compare(trace, folder, reference, test):
+    """`trace compare` of two pictures in `folder`: its mean FLIP, RMSE and NaN count."""
+    c = subprocess.run([trace, "compare", reference, test], cwd=folder, capture_output=True, text=True)
+    found = {}
+    for line in c.stdout.splitlines():
+        for prefix, key in (("mean FLIP", "flip"), ("RMSE", "rmse"), ("NaN/inf", "nan")):
+            if line.startswith(prefix):
+                found[key] = line.split()[-1]
+    return found
 
 
 def animation(ini):

@@ -21,7 +21,7 @@ the rest.
 import collections, csv, os, re, shutil, subprocess, sys, tempfile, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus import animation  # noqa: E402
+from corpus import animation, compare  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 INCLUDE = "/usr/share/povray-3.7/include"
@@ -102,13 +102,8 @@ def main():
             row["trace_exit"], row["trace_message"] = -1, "timeout"
         row["trace_s"] = f"{time.time() - t0:.2f}"
         if row["povray_exit"] == 0 and row["trace_exit"] == 0:
-            c = subprocess.run([trace, "compare", f"p{suffix}.exr", f"t{suffix}.exr"], cwd=folder,
-                               capture_output=True, text=True)
-            for line in c.stdout.splitlines():
-                if line.startswith("mean FLIP"):
-                    row["flip"] = line.split()[-1]
-                elif line.startswith("RMSE"):
-                    row["rmse"] = line.split()[-1]
+            found = compare(trace, folder, f"p{suffix}.exr", f"t{suffix}.exr")
+            row["flip"], row["rmse"] = found.get("flip", ""), found.get("rmse", "")
         rows.append(row)
         print(f"{row['scene'][:70]:70} pov={row['povray_exit']} trace={row['trace_exit']} flip={row['flip']} {row['outside']} {row['trace_message'][:60]}", flush=True)
         shutil.rmtree(work)

@@ -717,14 +717,7 @@ impl<'a> Evaluator<'a> {
     /// A macro body parsed as items, parsed at its first call only (the body's text never
     /// changes, so neither does its tree).
     fn parsed_items(&mut self, body: Span) -> std::result::Result<Arc<Vec<Node>>, Diagnostic> {
-        let key = (body.file.0, body.start);
-        if let Some(found) = self.macro_parses.get(&key).and_then(|p| p.items.clone()) {
-            return found;
-        }
-        let text = &self.sources.file(body.file).text[body.start as usize..body.end as usize];
-        let parsed = syntax::parse_fragment_items(text, body.file, body.start as usize).map(Arc::new);
-        self.macro_parses.entry(key).or_default().items = Some(parsed.clone());
-        parsed
+        self.parsed_once(body, |p| &mut p.items, syntax::parse_fragment_items)
     }
 
     /// A macro body parsed as a value (directives around one expression), parsed once.
@@ -732,13 +725,23 @@ impl<'a> Evaluator<'a> {
         &mut self,
         body: Span,
     ) -> std::result::Result<Arc<syntax::FragmentExpr>, Diagnostic> {
+        self.parsed_once(body, |p| &mut p.expr, syntax::parse_fragment_expr)
+    }
+
+    /// The tree `parse` makes of macro body `body`, kept in the `slot` of its cache entry.
+    fn parsed_once<T>(
+        &mut self,
+        body: Span,
+        slot: impl Fn(&mut MacroParse) -> &mut Option<std::result::Result<Arc<T>, Diagnostic>>,
+        parse: impl FnOnce(&str, crate::diag::FileId, usize) -> std::result::Result<T, Diagnostic>,
+    ) -> std::result::Result<Arc<T>, Diagnostic> {
         let key = (body.file.0, body.start);
-        if let Some(found) = self.macro_parses.get(&key).and_then(|p| p.expr.clone()) {
+        if let Some(found) = self.macro_parses.get_mut(&key).and_then(|p| slot(p).clone()) {
             return found;
         }
         let text = &self.sources.file(body.file).text[body.start as usize..body.end as usize];
-        let parsed = syntax::parse_fragment_expr(text, body.file, body.start as usize).map(Arc::new);
-        self.macro_parses.entry(key).or_default().expr = Some(parsed.clone());
+        let parsed = parse(text, body.file, body.start as usize).map(Arc::new);
+        *slot(self.macro_parses.entry(key).or_default()) = Some(parsed.clone());
         parsed
     }
 
