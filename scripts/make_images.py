@@ -2,7 +2,8 @@
 """Writes the image files of examples/image_formats.rt into examples/images/, one per format
 POV-Ray reads, made from examples/trace_logo.png (64x48) and examples/heights/hills8.png:
 logo.jpg (4:2:0 JPEG), logo.gif (non-interlaced, 256-colour palette), logo.tga, logo.ppm,
-logo.bmp, logo.tif, grey.pgm, hills.gif (palette height field: the index is the height),
+logo.bmp, logo.tif, grey.pgm, logo16.png/.bmp/.tga (one 16-colour palette image, the TGA
+run-length encoded), hills.gif (palette height field: the index is the height),
 hills16.pgm (16-bit grey height field) and hills16.pot (the same heights as Fractint's POT
 file: a GIF twice as wide, high bytes left, low bytes right), ramp.hdr (Radiance RGBE, values up to 3) and
 sky.exr (a trace render of examples/mirrors.rt at 64x48, float channels), and the DF3 voxel
@@ -52,6 +53,11 @@ def main():
     logo.save(out("logo.bmp"))
     logo.save(out("logo.tif"))
     logo.convert("L").save(out("grey.pgm"))
+    # One 16-colour palette image in three formats (the same indices: tests compare them).
+    logo16 = logo.convert("RGB").quantize(16)
+    logo16.save(out("logo16.png"))
+    logo16.save(out("logo16.bmp"))
+    logo16.save(out("logo16.tga"), compression="tga_rle")
     hills = Image.open(os.path.join(ROOT, "examples", "heights", "hills8.png"))
     hills.convert("P").save(out("hills.gif"), interlace=False)
     hills16 = Image.open(os.path.join(ROOT, "examples", "heights", "hills16.png"))

@@ -10,7 +10,8 @@
 //! - HDR and EXR: linear.
 //!
 //! Decoding uses the image crate with only these formats enabled; palette indices (a
-//! palette image's height field and `use_index`) come from the png and gif decoders.
+//! palette image's height field, `use_index` and per-entry `filter`/`transmit`) come from the
+//! png and gif decoders and, for BMP (1, 4, 8 bits) and colour-mapped TGA, from the file.
 
 use super::value::Value;
 use super::expr::type_error;
@@ -243,6 +244,7 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
             interlaced = gif_interlaced;
         }
         Some(image::ImageFormat::Bmp) => {
+            indices = bmp_indices(path, w, h);
             if let Some(alphas) = bmp_alpha(path, w, h)? {
                 for (p, a) in pixels.iter_mut().zip(alphas) {
                     p[3] = a;
@@ -250,6 +252,7 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
                 has_alpha = true;
             }
         }
+        Some(image::ImageFormat::Tga) => indices = tga_indices(path, w, h),
         _ => {}
     }
     if ty == FileType::Pot {
@@ -340,6 +343,70 @@ fn bmp_alpha(path: &Path, w: u32, h: u32) -> Result<Option<Vec<f32>>, String> {
         }
     }
     Ok(Some(alphas))
+}
+
+/// Each pixel's palette index (top row first) of an uncompressed 1-, 4- or 8-bit BMP, which
+/// POV-Ray reads as a palette image (`None` for any other BMP, or one it cannot read).
+fn bmp_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
+    let bytes = std::fs::read(path).ok()?;
+    let u32_at = |i: usize| bytes.get(i..i + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
+    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| u16::from_le_bytes([b[0], b[1]]));
+    let (offset, info, height, depth, compression) = (u32_at(10)?, u32_at(14)?, u32_at(22)?, u16_at(28)?, u32_at(30)?);
+    if info < 40 || !matches!(depth, 1 | 4 | 8) || compression != 0 {
+        return None;
+    }
+    let (w, h, bits) = (w as usize, h as usize, usize::from(depth));
+    let row_bytes = (w * bits).div_ceil(32) * 4;
+    let data = bytes.get(offset as usize..offset as usize + row_bytes * h)?;
+    let top_down = (height as i32) < 0;
+    let mut indices = vec![0u8; w * h];
+    for (k, row) in data.chunks(row_bytes).enumerate() {
+        let y = if top_down { k } else { h - 1 - k };
+        for x in 0..w {
+            let bit = x * bits;
+            indices[y * w + x] = (row[bit / 8] >> (8 - bits - bit % 8)) & ((1u16 << bits) - 1) as u8;
+        }
+    }
+    Some(indices)
+}
+
+/// Each pixel's palette index (top row first) of a colour-mapped TGA with 8-bit indices,
+/// uncompressed (type 1) or run-length encoded (type 9), which POV-Ray reads as a palette
+/// image (`None` for any other TGA).
+fn tga_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
+    let bytes = std::fs::read(path).ok()?;
+    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| usize::from(u16::from_le_bytes([b[0], b[1]])));
+    let (id_len, map_type, kind) = (usize::from(*bytes.first()?), *bytes.get(1)?, *bytes.get(2)?);
+    let (map_len, entry_bits) = (u16_at(5)?, usize::from(*bytes.get(7)?));
+    let (depth, descriptor) = (*bytes.get(16)?, *bytes.get(17)?);
+    if map_type != 1 || !matches!(kind, 1 | 9) || depth != 8 {
+        return None;
+    }
+    let (w, h) = (w as usize, h as usize);
+    let mut data = bytes.get(18 + id_len + map_len * entry_bits.div_ceil(8)..)?.iter();
+    // Pixels in file order, then placed by the origin bit (set: the first row is the top).
+    let mut file_order = Vec::with_capacity(w * h);
+    while file_order.len() < w * h {
+        if kind == 1 {
+            file_order.push(*data.next()?);
+            continue;
+        }
+        let head = *data.next()?;
+        let count = usize::from(head & 0x7f) + 1;
+        if head & 0x80 != 0 {
+            let v = *data.next()?;
+            file_order.extend(std::iter::repeat_n(v, count));
+        } else {
+            for _ in 0..count {
+                file_order.push(*data.next()?);
+            }
+        }
+    }
+    file_order.truncate(w * h);
+    if descriptor & 0x20 != 0 {
+        return Some(file_order);
+    }
+    Some(file_order.chunks(w).rev().flatten().copied().collect())
 }
 
 fn png_details(path: &Path) -> Result<(Encoding, Option<Vec<u8>>), String> {
@@ -557,7 +624,15 @@ impl super::Evaluator<'_> {
                 NodeKind::Interpolate => {
                     let n = ev.float(&item.args[0])?;
                     interpolation = match n as i64 {
-                        0 | 1 => Interpolation::Nearest,
+                        0 | 1 => {
+                            // (POV-Ray 3.7 stops with "Cannot parse input" here; trace reads
+                            // the scene and says so.)
+                            ev.warn(Diagnostic::warning(
+                                format!("`interpolate {}` is refused by POV-Ray 3.7 (it takes 2, 3 or 4); read as no interpolation", n as i64),
+                                item.args[0].span,
+                            ));
+                            Interpolation::Nearest
+                        }
                         2 => Interpolation::Bilinear,
                         3 => Interpolation::Bicubic,
                         4 => Interpolation::NormalizedDistance,
@@ -598,10 +673,16 @@ impl super::Evaluator<'_> {
         let working = self.assumed_gamma.unwrap_or(1.0);
         let colours = role == "image_map";
         let encoding = gamma.unwrap_or(picture.encoding);
+        // In a scene of a version before 3.7 (or of none), POV-Ray takes an image's numbers as
+        // they are unless the image_map names a `gamma`: without `assumed_gamma` it corrects
+        // no gamma at all, and with one the file's default gamma is the working gamma, which
+        // puts the numbers back where they were.
+        let uncorrected = self.version.unwrap_or(3.62) < 3.7 - 1e-9;
         let to_working = |v: f32| {
             let v = f64::from(v);
             let linear = match (colours, gamma) {
                 (false, None) => return v as f32,
+                (true, None) if uncorrected => return v as f32,
                 (true, None) if encoding == Encoding::AsWorking => return v as f32,
                 _ => encoding.decode(v),
             };
@@ -721,5 +802,22 @@ mod tests {
         assert!(pot.heights().iter().any(|&h| h & 0xff != 0), "low bytes are read");
         // An odd width cannot be split in two halves.
         assert!(super::pot(&[0; 6], 3, 2).is_err_and(|e| e.contains("twice as wide")));
+    }
+
+    /// A palette BMP and a run-length encoded colour-mapped TGA give the same palette indices
+    /// as the PNG of the same picture (examples/images/logo16.*, made by make_images.py), as
+    /// POV-Ray reads them (checked against its renders with per-entry filter and transmit).
+    #[test]
+    fn palette_bmp_and_tga_files_give_their_indices() {
+        let png = read(&example("logo16.png"), FileType::Png).expect("reads the PNG file");
+        let want = png.indices.expect("a palette PNG");
+        assert!(want.iter().any(|&i| i > 1), "several entries");
+        for (name, ty) in [("logo16.bmp", FileType::Bmp), ("logo16.tga", FileType::Tga)] {
+            let picture = read(&example(name), ty).unwrap_or_else(|e| panic!("{name}: {e}"));
+            assert_eq!(picture.indices.as_ref(), Some(&want), "{name}");
+        }
+        // A true-colour BMP has none.
+        let rgb = read(&example("logo.bmp"), FileType::Bmp).expect("reads the BMP file");
+        assert!(rgb.indices.is_none());
     }
 }

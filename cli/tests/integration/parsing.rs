@@ -613,3 +613,67 @@ fn a_transform_function_gives_the_point_transformed() {
         "{centre}"
     );
 }
+
+#[test]
+fn interpolate_0_and_1_are_read_with_a_warning_that_povray_refuses_them() {
+    let text = "plane { z, 0 pigment { image_map { png \"trace_logo.png\" interpolate 1 } } }";
+    let at = crate::root().join("examples/interp.rt");
+    let loaded = trace::load_str(&at, text.to_string(), &trace::LoadOptions::default())
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        loaded
+            .warnings
+            .iter()
+            .any(|w| w.contains("refused by POV-Ray 3.7")),
+        "{:?}",
+        loaded.warnings
+    );
+    let plain = trace::load_str(
+        &at,
+        text.replace(" interpolate 1", ""),
+        &trace::LoadOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(
+        format!("{:?}", loaded.scene.objects),
+        format!("{:?}", plain.scene.objects)
+    );
+}
+
+#[test]
+fn before_version_3_7_an_image_maps_numbers_are_taken_as_they_are() {
+    // POV-Ray corrects no gamma of a scene of an older version (or of none) without
+    // `assumed_gamma`, and with one the file's default gamma is the working gamma: either
+    // way the numbers stay (checked against POV-Ray's renders: mean FLIP 0 for PNG, palette
+    // BMP and GIF, with and without `assumed_gamma`).
+    let at = crate::root().join("examples/images/gamma.rt");
+    let load_at = |text: &str| {
+        trace::load_str(&at, text.to_string(), &trace::LoadOptions::default())
+            .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let map = |head: &str, gamma: &str| {
+        let loaded = load_at(&format!(
+            "{head} plane {{ z, 0 pigment {{ image_map {{ png \"logo16.png\" {gamma} }} }} }}"
+        ));
+        let trace::ir::PigmentKind::ImageMap(image) = &loaded.scene.objects[0].texture.pigment.kind
+        else {
+            panic!("an image map")
+        };
+        image.pixels.clone()
+    };
+    let raw = map("#version 3.7;", "gamma 1.0");
+    assert_eq!(map("", ""), raw);
+    assert_eq!(map("#version 3.6;", ""), raw);
+    assert_eq!(
+        map("#version 3.6; global_settings { assumed_gamma 2.2 }", ""),
+        map(
+            "#version 3.6; global_settings { assumed_gamma 2.2 }",
+            "gamma 2.2"
+        )
+    );
+    assert_ne!(
+        map("#version 3.7;", ""),
+        raw,
+        "a 3.7 scene decodes the file's sRGB"
+    );
+}
