@@ -7,8 +7,7 @@ use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
-use obvhs::bvh2::Bvh2;
-use obvhs::ray::{Ray as BvhRay, RayHit};
+use obvhs::ray::Ray as BvhRay;
 use std::time::Duration;
 
 /// Marker for a flat triangle in the normal indices.
@@ -22,9 +21,8 @@ pub struct TriangleMesh {
     normals: Vec<DVec3>,
     /// Per triangle (BVH order), indices into `normals`, or [`FLAT`]; empty if all flat.
     normal_indices: Vec<[u32; 3]>,
-    /// Where each BVH primitive's group of triangles starts in `triangles` (plus the end).
-    group_start: Vec<u32>,
-    bvh: Bvh2,
+    /// The 4-wide tree over the triangles.
+    tree: super::wide::WideBvh,
     /// `uv_vectors`: the corners' surface coordinates.
     uvs: Vec<glam::DVec2>,
     /// Per triangle (BVH order), indices into `uvs`; empty when the mesh has none.
@@ -83,9 +81,24 @@ pub fn bvh_ray(ray: &Ray, tmax: f64) -> BvhRay {
     }
 }
 
-/// A distance as obvhs's pruning value: never below the true distance.
+/// A distance as the tree's pruning value: never below the true distance.
 fn prune_value(t: f64) -> f32 {
-    ((t * (1.0 + 1e-6)) as f32).next_up()
+    if t.is_finite() {
+        ((t * (1.0 + 1e-6)) as f32).next_up()
+    } else {
+        f32::INFINITY
+    }
+}
+
+/// The triangles of a block's lanes mask: `first + i` for each set bit `i`.
+fn lanes_of(first: u32, mut lanes: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (lanes != 0).then(|| {
+            let i = lanes.trailing_zeros();
+            lanes &= lanes - 1;
+            (first + i) as usize
+        })
+    })
 }
 
 /// Triangles per BVH primitive. Building over groups of spatially close triangles (consecutive
@@ -173,7 +186,7 @@ impl TriangleMesh {
             .collect();
         let params = BvhBuildParams {
             max_prims_per_leaf: 1,
-            ..BvhBuildParams::very_fast_build()
+            ..BvhBuildParams::fast_build()
         };
         let bvh = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
         drop(boxes);
@@ -199,13 +212,19 @@ impl TriangleMesh {
             }
         }
         group_start.push(triangles_ordered.len() as u32);
+        let tree = super::wide::WideBvh::new(
+            &bvh,
+            &group_start,
+            |i| triangles_ordered[i].map(|v| vertices[v as usize]),
+            (lo, hi),
+        );
+        drop((bvh, group_start));
         TriangleMesh {
             vertices,
             triangles: triangles_ordered,
             normals,
             normal_indices: normal_ordered,
-            group_start,
-            bvh,
+            tree,
             uvs,
             uv_indices: uv_ordered,
             corner_entries: entries_ordered,
@@ -213,11 +232,6 @@ impl TriangleMesh {
             world_uv: false,
             bounds: (lo, hi),
         }
-    }
-
-    /// The triangles of the BVH primitive at position `p`.
-    fn group(&self, p: usize) -> std::ops::Range<usize> {
-        self.group_start[p] as usize..self.group_start[p + 1] as usize
     }
 
     fn corners_of(&self, triangle: usize) -> [DVec3; 3] {
@@ -229,25 +243,20 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut best: Option<(f64, u32)> = None;
         let mut tmax = ray.tmax;
-        self.bvh
-            .ray_traverse(bvh_ray(ray, ray.tmax), &mut RayHit::none(), |_, p| {
-                let mut hit = false;
-                for i in self.group(p) {
-                    let [a, b, c] = self.corners_of(i);
-                    let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
-                    counters::record(super::shape::TRIANGLE, crossing.is_some());
-                    if let Some(t) = crossing {
-                        tmax = t;
-                        best = Some((t, i as u32));
-                        hit = true;
-                    }
+        self.tree.walk::<true>(ray, prune_value(ray.tmax), |first, lanes| {
+            let mut hit = false;
+            for i in lanes_of(first, lanes) {
+                let [a, b, c] = self.corners_of(i);
+                let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
+                counters::record(super::shape::TRIANGLE, crossing.is_some());
+                if let Some(t) = crossing {
+                    tmax = t;
+                    best = Some((t, i as u32));
+                    hit = true;
                 }
-                if hit {
-                    prune_value(tmax)
-                } else {
-                    f32::INFINITY
-                }
-            });
+            }
+            if hit { prune_value(tmax) } else { f32::INFINITY }
+        });
         let mut out = Crossings::NONE;
         if let Some((t, i)) = best {
             out.push(t, i);
@@ -258,17 +267,17 @@ impl TriangleMesh {
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).
     pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        self.bvh
-            .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, p| {
-                for i in self.group(p) {
-                    let [a, b, c] = self.corners_of(i);
-                    let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
-                    counters::record(super::shape::TRIANGLE, crossing.is_some());
-                    if let Some(t) = crossing {
-                        f(t, i as u32);
-                    }
+        self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+            for i in lanes_of(first, lanes) {
+                let [a, b, c] = self.corners_of(i);
+                let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
+                counters::record(super::shape::TRIANGLE, crossing.is_some());
+                if let Some(t) = crossing {
+                    f(t, i as u32);
                 }
-            });
+            }
+            f32::INFINITY
+        });
     }
 
     /// The number of crossings along the ray.
@@ -281,17 +290,20 @@ impl TriangleMesh {
     /// Whether any triangle lies on the ray.
     pub fn occluded(&self, ray: &Ray) -> bool {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, p| {
-            for i in self.group(p) {
+        let mut found = false;
+        self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+            for i in lanes_of(first, lanes) {
                 let [a, b, c] = self.corners_of(i);
                 let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
                 counters::record(super::shape::TRIANGLE, crossing.is_some());
                 if crossing.is_some() {
-                    return 0.0;
+                    found = true;
+                    return -1.0;
                 }
             }
             f32::INFINITY
-        })
+        });
+        found
     }
 
     /// The geometric normal of a triangle (not unit length; orientation from the winding).

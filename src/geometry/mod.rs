@@ -34,6 +34,7 @@ mod sphere_sweep;
 mod superellipsoid;
 mod torus;
 pub mod triangle;
+mod wide;
 
 pub use blob::{Blob, BlobElement};
 pub use cone::Cone;

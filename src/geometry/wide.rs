@@ -1,0 +1,544 @@
+//! The 4-wide tree a triangle mesh is traced through.
+//!
+//! obvhs builds a binary tree (`Bvh2`) over groups of up to four triangles; here it is
+//! collapsed into a tree of four children a node, whose nodes hold the four children's boxes
+//! side by side (one SIMD slab test for four boxes) and whose leaves hold their triangles'
+//! corners side by side in f32 (one SIMD test for four triangles). Both tests are conservative:
+//! the box test pads for every rounding of the ray's f32 copy, and the triangle test is a
+//! filter that passes every triangle the exact test might hit, by a bound on its own rounding
+//! errors. The mesh's double-precision watertight test decides each triangle that passes, so
+//! the crossings are those of the exact test alone.
+
+use super::Ray;
+use glam::{DVec3, Vec4};
+use obvhs::bvh2::Bvh2;
+use rayon::prelude::*;
+
+/// A child slot that holds nothing.
+const EMPTY: u32 = u32::MAX;
+/// The bit that marks a child as a leaf (the rest is its first block).
+const LEAF: u32 = 1 << 31;
+
+/// Half an f32 ulp: the relative error of one rounding.
+const UNIT: f32 = f32::EPSILON / 2.0;
+
+/// An inner node: the boxes of its four children, axis by axis, relative to the mesh's centre.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    lo: [Vec4; 3],
+    hi: [Vec4; 3],
+    /// A node's index, `LEAF` | a leaf's first block, or `EMPTY`.
+    child: [u32; 4],
+}
+
+/// Up to four consecutive triangles' corners (relative to the mesh's centre), lane by lane;
+/// the lanes past `count` hold NaN, which no test passes.
+#[derive(Clone, Copy, Debug)]
+struct Block {
+    corner: [[Vec4; 3]; 3],
+    /// The first triangle (in the mesh's order); lane `i` is triangle `first + i`.
+    first: u32,
+    /// The triangles in the block (1 to 4), plus `MORE` when the next block belongs to the
+    /// same leaf.
+    count: u32,
+}
+
+const MORE: u32 = 1 << 8;
+
+/// The tree: nodes, leaves' blocks and the frame they are stored in.
+pub struct WideBvh {
+    nodes: Vec<Node>,
+    blocks: Vec<Block>,
+    /// The root entry (as a node's child), `EMPTY` for a mesh with no triangles.
+    root: u32,
+    /// Coordinates are stored relative to this point.
+    centre: DVec3,
+    /// The largest magnitude of a stored corner coordinate.
+    extent: f32,
+}
+
+/// The smallest f32 not below `x` and the largest not above it.
+fn up(x: f64) -> f32 {
+    let y = x as f32;
+    if (y as f64) < x { y.next_up() } else { y }
+}
+fn down(x: f64) -> f32 {
+    let y = x as f32;
+    if (y as f64) > x { y.next_down() } else { y }
+}
+
+impl WideBvh {
+    /// Collapses `bvh` (whose primitive at position `p` is the triangles
+    /// `group_start[p]..group_start[p + 1]`) into a 4-wide tree; `corners(i)` gives triangle
+    /// `i`'s corners and `(lo, hi)` bounds them all.
+    pub fn new(
+        bvh: &Bvh2,
+        group_start: &[u32],
+        corners: impl Fn(usize) -> [DVec3; 3] + Sync + Send,
+        (lo, hi): (DVec3, DVec3),
+    ) -> WideBvh {
+        let centre = if lo.cmple(hi).all() { (lo + hi) * 0.5 } else { DVec3::ZERO };
+        // Every stored coordinate is within half the box's largest side of the centre, give
+        // or take its rounding to f32.
+        let half = ((hi - lo) * 0.5).max_element();
+        let extent = if half.is_finite() { up(half) * (1.0 + 4.0 * UNIT) } else { 0.0 };
+        let mut tree = WideBvh {
+            nodes: Vec::with_capacity(bvh.nodes.len() / 3 + 1),
+            blocks: Vec::new(),
+            root: EMPTY,
+            centre,
+            extent,
+        };
+        if bvh.nodes.is_empty() || group_start.len() < 2 {
+            return tree;
+        }
+        // The leaves' triangles, in the order their blocks are stored.
+        let mut leaves: Vec<std::ops::Range<usize>> = Vec::with_capacity(group_start.len());
+        let mut block_count = 0u32;
+        // Work list: (Bvh2 node, the node slot to fill, or None for the root).
+        let mut work: Vec<(usize, Option<(usize, usize)>)> = vec![(0, None)];
+        while let Some((index, slot)) = work.pop() {
+            let node = &bvh.nodes[index];
+            let entry = if node.is_leaf() {
+                let first = node.first_index as usize;
+                let range = group_start[first] as usize
+                    ..group_start[first + node.prim_count as usize] as usize;
+                let entry = LEAF | block_count;
+                block_count += range.len().div_ceil(4) as u32;
+                leaves.push(range);
+                entry
+            } else {
+                // Open the widest inner child until there are four.
+                let mut kids = [node.first_index as usize, node.first_index as usize + 1, 0, 0];
+                let mut n = 2;
+                while n < 4 {
+                    let area = |k: usize| bvh.nodes[k].aabb.half_area();
+                    let Some(widest) = (0..n)
+                        .filter(|&i| !bvh.nodes[kids[i]].is_leaf())
+                        .max_by(|&a, &b| area(kids[a]).total_cmp(&area(kids[b])))
+                    else {
+                        break;
+                    };
+                    let k = bvh.nodes[kids[widest]].first_index as usize;
+                    kids[widest] = k;
+                    kids[n] = k + 1;
+                    n += 1;
+                }
+                let at = tree.nodes.len();
+                let empty = Vec4::splat(f32::NAN);
+                let mut new = Node { lo: [empty; 3], hi: [empty; 3], child: [EMPTY; 4] };
+                for (i, &k) in kids[..n].iter().enumerate() {
+                    let b = &bvh.nodes[k].aabb;
+                    for axis in 0..3 {
+                        new.lo[axis][i] = down(b.min[axis] as f64 - centre[axis]);
+                        new.hi[axis][i] = up(b.max[axis] as f64 - centre[axis]);
+                    }
+                }
+                tree.nodes.push(new);
+                // Pushed in reverse so that the first child is laid out next (depth first).
+                for (i, &k) in kids[..n].iter().enumerate().rev() {
+                    work.push((k, Some((at, i))));
+                }
+                at as u32
+            };
+            match slot {
+                Some((node, i)) => tree.nodes[node].child[i] = entry,
+                None => tree.root = entry,
+            }
+        }
+        // The blocks' triangles (sequentially: cheap), then their corners (in parallel).
+        let nan = Vec4::splat(f32::NAN);
+        tree.blocks = Vec::with_capacity(block_count as usize);
+        for range in leaves {
+            for start in range.clone().step_by(4) {
+                let count = (range.end - start).min(4);
+                tree.blocks.push(Block {
+                    corner: [[nan; 3]; 3],
+                    first: start as u32,
+                    count: count as u32 | if start + count < range.end { MORE } else { 0 },
+                });
+            }
+        }
+        tree.blocks.par_iter_mut().for_each(|block| {
+            for lane in 0..(block.count & 7) as usize {
+                for (k, p) in corners(block.first as usize + lane).into_iter().enumerate() {
+                    for axis in 0..3 {
+                        block.corner[k][axis][lane] = (p[axis] - centre[axis]) as f32;
+                    }
+                }
+            }
+        });
+        debug_assert_eq!(tree.blocks.len(), block_count as usize);
+        tree
+    }
+
+    /// Asks for an entry's memory ahead of its test.
+    #[inline(always)]
+    fn prefetch(&self, entry: u32) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+            let (p, lines) = if entry & LEAF != 0 {
+                match self.blocks.get((entry & !LEAF) as usize) {
+                    Some(b) => (b as *const Block as *const i8, 3),
+                    None => return,
+                }
+            } else {
+                match self.nodes.get(entry as usize) {
+                    Some(n) => (n as *const Node as *const i8, 2),
+                    None => return,
+                }
+            };
+            for k in 0..lines {
+                // SAFETY: a prefetch only hints the cache; it never faults, whatever the address.
+                unsafe { _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(64 * k)) };
+            }
+        }
+    }
+
+    /// Visits, nearest box first when `ORDERED`, the leaves whose boxes the ray enters before
+    /// `limit`; `visit(first, lanes)` is called for each block with a mask of the triangles
+    /// that may cross the ray (lane `i` is triangle `first + i`) and returns a new limit (it
+    /// only ever lowers it; a negative limit ends the walk).
+    pub fn walk<const ORDERED: bool>(
+        &self,
+        ray: &Ray,
+        mut limit: f32,
+        mut visit: impl FnMut(u32, u32) -> f32,
+    ) {
+        if self.root == EMPTY {
+            return;
+        }
+        let r = FilterRay::new(ray, self.centre, self.extent);
+        let mut stack = Stack::new();
+        stack.push(self.root, 0.0);
+        while let Some((mut entry, near)) = stack.pop() {
+            if near > limit {
+                continue;
+            }
+            // Descend through inner nodes, nearest child first.
+            while entry & LEAF == 0 {
+                let node = &self.nodes[entry as usize];
+                let (entry_t, mut mask) = r.boxes(node, limit);
+                if mask == 0 {
+                    break;
+                }
+                let mut m = mask;
+                while m != 0 {
+                    let i = m.trailing_zeros() as usize;
+                    m &= m - 1;
+                    self.prefetch(node.child[i]);
+                }
+                if !ORDERED || mask.count_ones() == 1 {
+                    let first = mask.trailing_zeros();
+                    mask &= mask - 1;
+                    while mask != 0 {
+                        let i = mask.trailing_zeros() as usize;
+                        mask &= mask - 1;
+                        stack.push(node.child[i], entry_t[i]);
+                    }
+                    entry = node.child[first as usize];
+                    continue;
+                }
+                // Sort the children hit by entry distance, farthest first, and go on with
+                // the nearest.
+                let mut hits = [(0.0f32, 0u32); 4];
+                let mut n = 0;
+                while mask != 0 {
+                    let i = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    hits[n] = (entry_t[i], node.child[i]);
+                    n += 1;
+                }
+                for i in 1..n {
+                    let mut j = i;
+                    while j > 0 && hits[j - 1].0 < hits[j].0 {
+                        hits.swap(j - 1, j);
+                        j -= 1;
+                    }
+                }
+                for &(t, child) in &hits[..n - 1] {
+                    stack.push(child, t);
+                }
+                entry = hits[n - 1].1;
+            }
+            if entry & LEAF == 0 {
+                continue;
+            }
+            let mut b = (entry & !LEAF) as usize;
+            loop {
+                let block = &self.blocks[b];
+                let lanes = r.triangles(block);
+                if lanes != 0 {
+                    limit = limit.min(visit(block.first, lanes));
+                    if limit < 0.0 {
+                        return;
+                    }
+                }
+                if block.count & MORE == 0 {
+                    break;
+                }
+                b += 1;
+            }
+        }
+    }
+}
+
+/// A ray's f32 copies for the two tests, in the tree's frame.
+struct FilterRay {
+    /// The origin rounded down and up, axis by axis (the box test brackets the exact one).
+    below: [Vec4; 3],
+    above: [Vec4; 3],
+    /// The reciprocal of the direction's f32 copy (infinite along an axis it does not move in).
+    inverse: [Vec4; 3],
+    /// The origin rounded to nearest.
+    origin: [Vec4; 3],
+    /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
+    kx: usize,
+    ky: usize,
+    kz: usize,
+    sx: Vec4,
+    sy: Vec4,
+    /// A bound on the error of each sheared corner coordinate; infinite when the coordinates
+    /// are too large for the bound to hold in f32 (every triangle then passes).
+    error: f32,
+}
+
+impl FilterRay {
+    fn new(ray: &Ray, centre: DVec3, extent: f32) -> FilterRay {
+        let o = ray.origin - centre;
+        let d = ray.direction;
+        // The same axes and factors as the exact test (ShearedRay).
+        let a = d.abs();
+        let kz = if a.x >= a.y && a.x >= a.z {
+            0
+        } else if a.y >= a.z {
+            1
+        } else {
+            2
+        };
+        let mut kx = (kz + 1) % 3;
+        let mut ky = (kx + 1) % 3;
+        if d[kz] < 0.0 {
+            std::mem::swap(&mut kx, &mut ky);
+        }
+        // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the corner's
+        // and origin's roundings (one unit of each magnitude), the subtraction, the factor's
+        // rounding, the product and the difference: under 9 units of the largest magnitude;
+        // 16 leaves room for the exact test's own (double-precision) roundings.
+        let magnitude = extent + o.abs().max_element() as f32;
+        let error = if magnitude < 1e15 { 16.0 * UNIT * magnitude } else { f32::INFINITY };
+        let (ox, oy, oz) = (o.x, o.y, o.z);
+        let (dx, dy, dz) = (d.x as f32, d.y as f32, d.z as f32);
+        FilterRay {
+            below: [down(ox), down(oy), down(oz)].map(Vec4::splat),
+            above: [up(ox), up(oy), up(oz)].map(Vec4::splat),
+            inverse: [dx.recip(), dy.recip(), dz.recip()].map(Vec4::splat),
+            origin: [ox as f32, oy as f32, oz as f32].map(Vec4::splat),
+            kx,
+            ky,
+            kz,
+            sx: Vec4::splat((d[kx] / d[kz]) as f32),
+            sy: Vec4::splat((d[ky] / d[kz]) as f32),
+            error,
+        }
+    }
+
+    /// The entry distances into a node's four boxes and the mask of those the ray enters at a
+    /// distance in [0, limit].
+    #[inline(always)]
+    fn boxes(&self, node: &Node, limit: f32) -> ([f32; 4], u32) {
+        let mut near = Vec4::ZERO;
+        let mut far = Vec4::INFINITY;
+        for axis in 0..3 {
+            // The origin that makes each distance smallest (entry) or largest (exit), so that
+            // the slab holds the exact ray's whatever the rounding.
+            let t0 = (node.lo[axis] - self.above[axis]) * self.inverse[axis];
+            let t1 = (node.hi[axis] - self.below[axis]) * self.inverse[axis];
+            near = near.max(t0.min(t1));
+            far = far.min(t0.max(t1));
+        }
+        // The rounding of the inverse direction and of the products scales each axis's
+        // distances by a few units; a relative margin on the exit covers it.
+        let far = far * (1.0 + 32.0 * UNIT);
+        let mask = near.cmple(far) & near.cmple(Vec4::splat(limit));
+        (near.to_array(), mask.bitmask())
+    }
+
+    /// The lanes of a block whose triangle the exact test might find on the ray's line: the
+    /// scaled barycentric coordinates are computed in f32 and a lane passes unless they have
+    /// opposite signs by more than their error bound.
+    #[inline(always)]
+    fn triangles(&self, block: &Block) -> u32 {
+        if self.error.is_infinite() {
+            return (1 << (block.count & 7)) - 1;
+        }
+        let (kx, ky, kz) = (self.kx, self.ky, self.kz);
+        let shear = |c: &[Vec4; 3]| {
+            let z = c[kz] - self.origin[kz];
+            (c[kx] - self.origin[kx] - self.sx * z, c[ky] - self.origin[ky] - self.sy * z)
+        };
+        let (ax, ay) = shear(&block.corner[0]);
+        let (bx, by) = shear(&block.corner[1]);
+        let (cx, cy) = shear(&block.corner[2]);
+        let u = cx * by - cy * bx;
+        let v = ax * cy - ay * cx;
+        let w = bx * ay - by * ax;
+        // |u − exact u| ≤ 4·E·S + 2·E² + 3·unit·2·S², with E the coordinate error and S the
+        // largest sheared coordinate; rounded up generously.
+        let s = ax.abs().max(ay.abs()).max(bx.abs()).max(by.abs()).max(cx.abs()).max(cy.abs());
+        let e = Vec4::splat(self.error);
+        let bound = e * s * 5.0 + e * e * 3.0 + s * s * (8.0 * UNIT);
+        let (lo, hi) = (-bound, bound);
+        let positive = u.cmpge(lo) & v.cmpge(lo) & w.cmpge(lo);
+        let negative = u.cmple(hi) & v.cmple(hi) & w.cmple(hi);
+        (positive | negative).bitmask()
+    }
+}
+
+/// The walk's stack of (entry, entry distance): a fixed array, spilling to the heap only for
+/// trees deeper than any a real mesh gives.
+struct Stack {
+    items: [(u32, f32); 64],
+    len: usize,
+    spill: Vec<(u32, f32)>,
+}
+
+impl Stack {
+    fn new() -> Stack {
+        Stack { items: [(0, 0.0); 64], len: 0, spill: Vec::new() }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, entry: u32, near: f32) {
+        if self.len < self.items.len() {
+            self.items[self.len] = (entry, near);
+            self.len += 1;
+        } else {
+            self.spill.push((entry, near));
+        }
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(u32, f32)> {
+        if let Some(item) = self.spill.pop() {
+            return Some(item);
+        }
+        if self.len == 0 {
+            return None;
+        }
+        self.len -= 1;
+        Some(self.items[self.len])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::mesh::TriangleMesh;
+    use super::super::triangle::ShearedRay;
+    use super::*;
+
+    /// A small deterministic generator (xorshift), uniform in [0, 1).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn point(&mut self, centre: DVec3, size: f64) -> DVec3 {
+            centre + DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * size
+        }
+    }
+
+    /// Every triangle, tested exactly: the nearest crossing, whether any, and how many.
+    fn brute(mesh: &[[DVec3; 3]], ray: &Ray) -> (Option<f64>, bool, usize) {
+        let s = ShearedRay::new(ray.origin, ray.direction);
+        let ts: Vec<f64> =
+            mesh.iter().filter_map(|&[a, b, c]| s.intersect(a, b, c, ray.tmin, ray.tmax)).collect();
+        (ts.iter().copied().reduce(f64::min), !ts.is_empty(), ts.len())
+    }
+
+    #[test]
+    fn stack_spills_and_pops_in_order() {
+        let mut stack = Stack::new();
+        for i in 0..200 {
+            stack.push(i, i as f32);
+        }
+        for i in (0..200).rev() {
+            assert_eq!(stack.pop(), Some((i, i as f32)));
+        }
+        assert_eq!(stack.pop(), None);
+    }
+
+    #[test]
+    fn tree_finds_what_every_triangle_tested_exactly_finds() {
+        // Triangle soups and closed grids, near and far from the origin, with rays through
+        // random points, exactly through corners and along edges (where the f32 filter must
+        // not drop a triangle the exact test hits), and grazing.
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        for (offset, size) in [(0.0, 10.0), (1e4, 1.0), (1e6, 100.0), (3.0, 1e-4), (-2e5, 1e3)] {
+            let centre = DVec3::new(offset, -0.5 * offset, 0.25 * offset);
+            // A grid of 24×24 cells (two triangles each), bumped, plus 300 random triangles.
+            let n = 24;
+            let mut vertices = Vec::new();
+            for j in 0..=n {
+                for i in 0..=n {
+                    let (x, z) = (i as f64 / n as f64 - 0.5, j as f64 / n as f64 - 0.5);
+                    let y = 0.1 * (7.0 * x).sin() * (5.0 * z).cos();
+                    vertices.push(centre + DVec3::new(x, y, z) * size);
+                }
+            }
+            let mut faces = Vec::new();
+            for j in 0..n {
+                for i in 0..n {
+                    let a = (j * (n + 1) + i) as u32;
+                    let s = (n + 1) as u32;
+                    faces.push([a, a + s, a + 1]);
+                    faces.push([a + 1, a + s, a + s + 1]);
+                }
+            }
+            for _ in 0..300 {
+                let p = rng.point(centre, size);
+                let k = vertices.len() as u32;
+                for _ in 0..3 {
+                    vertices.push(p + rng.point(DVec3::ZERO, size * 0.1));
+                }
+                faces.push([k, k + 1, k + 2]);
+            }
+            let soup: Vec<[DVec3; 3]> =
+                faces.iter().map(|f| f.map(|i| vertices[i as usize])).collect();
+            let mesh = TriangleMesh::new(vertices.clone(), faces.clone(), vec![], vec![], vec![], vec![]);
+            for k in 0..3000 {
+                let origin = rng.point(centre, size * 3.0);
+                let target = match k % 4 {
+                    0 => rng.point(centre, size),
+                    // A corner of a triangle.
+                    1 => vertices[(rng.next() * vertices.len() as f64) as usize],
+                    // A point on an edge.
+                    2 => {
+                        let f = soup[(rng.next() * soup.len() as f64) as usize];
+                        let s = rng.next();
+                        f[0] + (f[1] - f[0]) * s
+                    }
+                    // Grazing: along the grid's plane.
+                    _ => {
+                        let p = rng.point(centre, size);
+                        DVec3::new(p.x, centre.y, p.z)
+                    }
+                };
+                let mut ray = Ray::new(origin, target - origin);
+                if k % 3 == 0 {
+                    // A shadow ray ending at the target.
+                    ray.tmin = 1e-9;
+                    ray.tmax = 1.0;
+                }
+                let (nearest, any, count) = brute(&soup, &ray);
+                assert_eq!(mesh.intersect(&ray).first(), nearest, "offset {offset}, ray {k}");
+                assert_eq!(mesh.occluded(&ray), any, "offset {offset}, ray {k}");
+                assert_eq!(mesh.count_crossings(&ray), count, "offset {offset}, ray {k}");
+            }
+        }
+    }
+}
