@@ -17,10 +17,11 @@ use std::sync::Arc;
 pub const MAX_STRING_BYTES: usize = 1 << 20;
 /// Widest field and most decimals `str`/`vstr` write.
 const MAX_FORMAT_WIDTH: f64 = 1000.0;
-/// Evaluation steps a macro call costs before its body's length: its body is parsed at every
-/// call, which costs about as much as 32 simple statements (measured: a call of a one-line
-/// expression macro took 20 µs, a loop pass with one `#declare` 0.5 µs).
-const MACRO_CALL_STEPS: u64 = 32;
+/// Evaluation steps a macro call costs besides the statements its body runs (measured: a call
+/// of a one-line expression macro takes 0.7 µs, a loop pass with two `#declare`s 0.5 µs).
+const MACRO_CALL_STEPS: u64 = 4;
+/// Bytes of a macro's body that cost one step when the body is parsed (once, at its first call).
+const MACRO_PARSE_BYTES_PER_STEP: u64 = 16;
 /// Deepest nesting of macro calls.
 pub const MAX_MACRO_DEPTH: usize = 200;
 /// Deepest nesting of include files.
@@ -632,8 +633,8 @@ impl<'a> Evaluator<'a> {
     /// Counts `cost` steps against the scene's evaluation budget
     /// ([`LoadOptions::max_steps`](super::LoadOptions)), shared by everything the scene runs:
     /// a statement or block item is one step, a loop pass one, a macro call
-    /// [`MACRO_CALL_STEPS`] plus one per 16 bytes of its body (parsed at every call). Nested
-    /// loops cannot run for hours.
+    /// [`MACRO_CALL_STEPS`], plus one per [`MACRO_PARSE_BYTES_PER_STEP`] bytes of its body at
+    /// the call that parses it (the first). Nested loops cannot run for hours.
     pub(super) fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
         self.steps = self.steps.saturating_add(cost);
         if self.steps <= self.options.max_steps {
@@ -681,8 +682,10 @@ impl<'a> Evaluator<'a> {
                 self.location(m.name_span)
             )));
         }
+        let parsed = self.macro_parses.contains_key(&(m.body.file.0, m.body.start));
         let body_bytes = u64::from(m.body.end.saturating_sub(m.body.start));
-        self.charge(MACRO_CALL_STEPS + body_bytes / 16, "macro call", span)?;
+        let parse = if parsed { 0 } else { body_bytes / MACRO_PARSE_BYTES_PER_STEP };
+        self.charge(MACRO_CALL_STEPS + parse, "macro call", span)?;
         if self.frames.len() >= MAX_MACRO_DEPTH {
             return Err(Diagnostic::error(
                 format!("macros nested more than {MAX_MACRO_DEPTH} deep (endless recursion?)"),

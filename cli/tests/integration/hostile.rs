@@ -262,6 +262,17 @@ fn work_and_memory_are_bounded() {
     let out = run_in(&dir, fan, &["--max-steps", "5000"]);
     assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
     assert!(stderr(&out).contains("--max-steps"), "{}", stderr(&out));
+    // A macro's body is charged for once (it is parsed once), each call 4 steps besides the
+    // statements it runs: 1000 calls of a macro with a 16 KB body fit 10,000 steps (at a
+    // charge by body length per call they would take a million), 3000 calls do not.
+    let big_body = format!("#macro M() #local X = 1; // {}\n#end\n", "x".repeat(16_000));
+    let calls = |n: usize| format!("{big_body}#for (i, 1, {n}) M() #end\n{CAMERA}");
+    let macro_dir = scratch("bounds-macro");
+    let out = run_in(&macro_dir, &calls(1000), &["--max-steps", "10000"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let out = run_in(&macro_dir, &calls(3000), &["--max-steps", "10000"]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("--max-steps"), "{}", stderr(&out));
     // A string doubled in a loop stops at the string limit.
     let doubling = "#declare S = \"ab\";\n#for (i, 0, 40) #declare S = concat(S, S); #end\n";
     let err = load_error(doubling).expect("too long");
