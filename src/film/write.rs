@@ -328,8 +328,9 @@ pub(super) fn write_exr(
     .map_err(format)
 }
 
-/// A PNG with the settings of the image crate's encoder (balanced compression, adaptive
-/// filter), RGB or RGBA, 8 or 16 bits, rows from `row(y, bytes)`.
+/// A PNG, RGB or RGBA, 8 or 16 bits, rows from `row(y, bytes)`: adaptive filter, and the png
+/// crate's fast compression (fdeflate), which wrote `lights.rt` at 1280×960 in 0.03 s where
+/// its balanced setting took 0.09 s (−5 % of the whole run), for a file 39 % larger.
 pub(super) fn write_png(
     out: impl Write,
     (width, height): (u32, u32),
@@ -351,7 +352,7 @@ pub(super) fn write_png(
     } else {
         png::BitDepth::Eight
     });
-    encoder.set_compression(png::Compression::Balanced);
+    encoder.set_compression(png::Compression::Fast);
     encoder.set_filter(png::Filter::Adaptive);
     if let Some(note) = &layout.note {
         encoder
