@@ -24,21 +24,7 @@ pub struct ShearedRay {
 impl ShearedRay {
     /// Prepares `origin + t·direction`.
     pub fn new(origin: DVec3, direction: DVec3) -> ShearedRay {
-        // The dimension where the direction is largest becomes z; swap x and y to keep the
-        // winding when that component is negative.
-        let a = direction.abs();
-        let kz = if a.x >= a.y && a.x >= a.z {
-            0
-        } else if a.y >= a.z {
-            1
-        } else {
-            2
-        };
-        let mut kx = (kz + 1) % 3;
-        let mut ky = (kx + 1) % 3;
-        if direction[kz] < 0.0 {
-            std::mem::swap(&mut kx, &mut ky);
-        }
+        let (kx, ky, kz) = shear_axes(direction);
         ShearedRay {
             origin,
             kx,
@@ -78,6 +64,25 @@ impl ShearedRay {
         let t = t_scaled / det;
         (tmin < t && t < tmax).then_some(t)
     }
+}
+
+/// The axes of the shear for `direction`: the one where it is largest becomes z, and x and y
+/// are swapped when that component is negative, to keep the winding.
+pub fn shear_axes(direction: DVec3) -> (usize, usize, usize) {
+    let a = direction.abs();
+    let kz = if a.x >= a.y && a.x >= a.z {
+        0
+    } else if a.y >= a.z {
+        1
+    } else {
+        2
+    };
+    let mut kx = (kz + 1) % 3;
+    let mut ky = (kx + 1) % 3;
+    if direction[kz] < 0.0 {
+        std::mem::swap(&mut kx, &mut ky);
+    }
+    (kx, ky, kz)
 }
 
 /// Barycentric coordinates of a point `p` on the plane of triangle (v0, v1, v2).

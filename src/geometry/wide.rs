@@ -311,19 +311,7 @@ impl FilterRay {
         let o = ray.origin - centre;
         let d = ray.direction;
         // The same axes and factors as the exact test (ShearedRay).
-        let a = d.abs();
-        let kz = if a.x >= a.y && a.x >= a.z {
-            0
-        } else if a.y >= a.z {
-            1
-        } else {
-            2
-        };
-        let mut kx = (kz + 1) % 3;
-        let mut ky = (kx + 1) % 3;
-        if d[kz] < 0.0 {
-            std::mem::swap(&mut kx, &mut ky);
-        }
+        let (kx, ky, kz) = super::triangle::shear_axes(d);
         // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the corner's
         // and origin's roundings (one unit of each magnitude), the subtraction, the factor's
         // rounding, the product and the difference: under 9 units of the largest magnitude;
