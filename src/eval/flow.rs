@@ -22,6 +22,11 @@ const MAX_FORMAT_WIDTH: f64 = 1000.0;
 const MACRO_CALL_STEPS: u64 = 4;
 /// Bytes of a macro's body that cost one step when the body is parsed (once, at its first call).
 const MACRO_PARSE_BYTES_PER_STEP: u64 = 16;
+/// The key of a macro body's entry in the cache of parsed bodies.
+fn macro_key(body: Span) -> (u32, u32) {
+    (body.file.0, body.start)
+}
+
 /// Deepest nesting of macro calls.
 pub const MAX_MACRO_DEPTH: usize = 200;
 /// Deepest nesting of include files.
@@ -682,7 +687,7 @@ impl<'a> Evaluator<'a> {
                 self.location(m.name_span)
             )));
         }
-        let parsed = self.macro_parses.contains_key(&(m.body.file.0, m.body.start));
+        let parsed = self.macro_parses.contains_key(&macro_key(m.body));
         let body_bytes = u64::from(m.body.end.saturating_sub(m.body.start));
         let parse = if parsed { 0 } else { body_bytes / MACRO_PARSE_BYTES_PER_STEP };
         self.charge(MACRO_CALL_STEPS + parse, "macro call", span)?;
@@ -738,7 +743,7 @@ impl<'a> Evaluator<'a> {
         slot: impl Fn(&mut MacroParse) -> &mut Option<std::result::Result<Arc<T>, Diagnostic>>,
         parse: impl FnOnce(&str, crate::diag::FileId, usize) -> std::result::Result<T, Diagnostic>,
     ) -> std::result::Result<Arc<T>, Diagnostic> {
-        let key = (body.file.0, body.start);
+        let key = macro_key(body);
         if let Some(found) = self.macro_parses.get_mut(&key).and_then(|p| slot(p).clone()) {
             return found;
         }

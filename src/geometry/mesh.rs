@@ -240,6 +240,15 @@ impl TriangleMesh {
         self.triangles[triangle].map(|i| self.vertices[i as usize])
     }
 
+    /// The exact (double-precision, watertight) test of one triangle the tree's filter kept,
+    /// counted for `--stats`.
+    fn exact(&self, sheared: &ShearedRay, triangle: usize, tmin: f64, tmax: f64) -> Option<f64> {
+        let [a, b, c] = self.corners_of(triangle);
+        let crossing = sheared.intersect(a, b, c, tmin, tmax);
+        counters::record(super::shape::TRIANGLE, crossing.is_some());
+        crossing
+    }
+
     /// The nearest crossing (part = triangle index).
     pub fn intersect(&self, ray: &Ray) -> Crossings {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
@@ -248,9 +257,7 @@ impl TriangleMesh {
         self.tree.walk::<true>(ray, prune_value(ray.tmax), |first, lanes| {
             let mut hit = false;
             for i in lanes_of(first, lanes) {
-                let [a, b, c] = self.corners_of(i);
-                let crossing = sheared.intersect(a, b, c, ray.tmin, tmax);
-                counters::record(super::shape::TRIANGLE, crossing.is_some());
+                let crossing = self.exact(&sheared, i, ray.tmin, tmax);
                 if let Some(t) = crossing {
                     tmax = t;
                     best = Some((t, i as u32));
@@ -271,9 +278,7 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
             for i in lanes_of(first, lanes) {
-                let [a, b, c] = self.corners_of(i);
-                let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
-                counters::record(super::shape::TRIANGLE, crossing.is_some());
+                let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
                 if let Some(t) = crossing {
                     f(t, i as u32);
                 }
@@ -295,9 +300,7 @@ impl TriangleMesh {
         let mut found = false;
         self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
             for i in lanes_of(first, lanes) {
-                let [a, b, c] = self.corners_of(i);
-                let crossing = sheared.intersect(a, b, c, ray.tmin, ray.tmax);
-                counters::record(super::shape::TRIANGLE, crossing.is_some());
+                let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
                 if crossing.is_some() {
                     found = true;
                     return -1.0;
