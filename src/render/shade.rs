@@ -7,7 +7,8 @@ use crate::geometry::Ray;
 use crate::scene::{
     Colour, FogKind, Material, ObjectId, Rgb, Scene, SurfaceHit, filter_colour, interior_fade,
 };
-use glam::DVec3;
+use crate::pattern::Surface;
+use glam::{DMat4, DVec3};
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
 const MAX_DISTANCE: f64 = 1e7;
@@ -321,9 +322,12 @@ impl<'a> Tracer<'a> {
         interiors: &Interiors,
     ) -> Rgb {
         let material = self.scene.material(hit.material);
+        // The normal slope and aoi patterns see: the surface's, until a layer's normal
+        // perturbs it (POV-Ray's PNormal, below).
+        let mut seen = hit.surface.normal;
         match &material.map {
-            None => self.shade_layers(material, ray, t, hit, level, weight, interiors),
-            Some(_) => self.shade_mapped(material, ray, t, hit, level, weight, interiors),
+            None => self.shade_layers(material, ray, t, hit, level, weight, interiors, (&mut seen, None)),
+            Some(_) => self.shade_mapped(material, ray, t, hit, level, weight, interiors, (&mut seen, None)),
         }
     }
 
@@ -340,21 +344,33 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: f64,
         interiors: &Interiors,
+        (seen, warp): (&mut DVec3, Option<&'a DMat4>),
     ) -> Rgb {
         let Some(map) = &material.map else {
-            return self.shade_layers(material, ray, t, hit, level, weight, interiors);
+            return self.shade_layers(material, ray, t, hit, level, weight, interiors, (seen, warp));
         };
-        map.blend(hit.texture_point, &hit.surface, |entry, texture_point| {
+        let surface = Surface {
+            normal: *seen,
+            ..hit.surface
+        };
+        // The entries' normals are seen in this pattern's space (POV-Ray's list of warps).
+        let warp = map.world_from_pattern().or(warp);
+        map.blend(hit.texture_point, &surface, |entry, texture_point| {
             let hit = &SurfaceHit {
                 texture_point,
                 ..*hit
             };
-            self.shade_mapped(entry, ray, t, hit, level, weight, interiors)
+            self.shade_mapped(entry, ray, t, hit, level, weight, interiors, (&mut *seen, warp))
         })
     }
 
     /// The light leaving the surface hit, of `material` (not a pattern of materials): its
     /// layers' light, then what passes through them and what they reflect.
+    ///
+    /// `seen` is the normal slope and aoi patterns see (POV-Ray's PNormal): each layer whose
+    /// normal is perturbed leaves its normal there, as seen in `warp`'s space (the pattern
+    /// space of the innermost pattern of materials around), for its own pigment and for
+    /// every pattern evaluated after it on this hit.
     #[allow(clippy::too_many_arguments)]
     fn shade_layers(
         &mut self,
@@ -365,6 +381,7 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: f64,
         interiors: &Interiors,
+        (seen, warp): (&mut DVec3, Option<&DMat4>),
     ) -> Rgb {
         let scene = self.scene;
         let d = ray.direction;
@@ -389,7 +406,10 @@ impl<'a> Tracer<'a> {
 
         // Each layer (top first) adds its light as seen through the layers above it, `filter`
         // (POV-Ray's ComputeLightedTexture); a texture has one layer unless layered.
-        let (n, colour, top_reflec) = self.layer_at(material, hit, d, raw, crossing.fresnel_eta);
+        let (n, colour, top_reflec) = self.layer_at(material, hit, d, raw, crossing.fresnel_eta, (seen, warp));
+        let top_colour = colour;
+        // (What the lower layers saw, replayed for their reflections below.)
+        let mut replay = *seen;
         let mut result = self.layer_light(material, &colour, n, ray, hit);
         let mut filter = filter_colour(&colour);
         if material.finish.conserve_energy {
@@ -401,7 +421,8 @@ impl<'a> Tracer<'a> {
                 break;
             }
             layers += 1;
-            let (n_l, colour, reflec) = self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
+            let (n_l, colour, reflec) =
+                self.layer_at(layer, hit, d, raw, crossing.fresnel_eta, (&mut *seen, warp));
             result += self.layer_light(layer, &colour, n_l, ray, hit) * filter;
             filter *= filter_colour(&colour);
             if layer.finish.conserve_energy {
@@ -457,18 +478,17 @@ impl<'a> Tracer<'a> {
         }
         if layers > 1 {
             let mut above = Rgb::ONE;
-            let mut previous = (material, top_reflec, None);
+            let mut previous = (material, top_reflec, top_colour);
             for layer in material.layers().take(layers).skip(1) {
                 // (What the layer above lets through.)
                 let (upper, upper_reflec, upper_colour) = previous;
-                let c = upper_colour.unwrap_or_else(|| upper.pigment.colour_on(hit.texture_point, &hit.surface));
-                above *= filter_colour(&c);
+                above *= filter_colour(&upper_colour);
                 if upper.finish.conserve_energy {
                     above *= (Rgb::ONE - upper_reflec).min(Rgb::ONE);
                 }
                 let (n_l, colour, reflec) =
-                    self.layer_at(layer, hit, d, raw, crossing.fresnel_eta);
-                previous = (layer, reflec, Some(colour));
+                    self.layer_at(layer, hit, d, raw, crossing.fresnel_eta, (&mut replay, warp));
+                previous = (layer, reflec, colour);
                 let same_normal = (n_l - n).abs().max_element() <= 1e-10;
                 if total_internal_reflection && same_normal {
                     continue;
@@ -568,7 +588,9 @@ impl<'a> Tracer<'a> {
     }
 
     /// One layer at the hit: its shading normal (perturbed if the layer has a normal), its
-    /// colour and its reflectivity.
+    /// colour and its reflectivity. A perturbed normal is left in `seen` before the colour
+    /// is found, as POV-Ray's Perturb_Normal leaves it in the intersection's PNormal, seen
+    /// in the space of `warp` (pattern to world) if given.
     #[inline]
     fn layer_at(
         &self,
@@ -577,12 +599,25 @@ impl<'a> Tracer<'a> {
         d: DVec3,
         raw: DVec3,
         fresnel_eta: f64,
+        (seen, warp): (&mut DVec3, Option<&DMat4>),
     ) -> (DVec3, Colour, Rgb) {
-        let n = layer
-            .normal
-            .as_ref()
-            .map_or(raw, |normal| normal.perturb_on(hit.texture_point, raw, &hit.surface));
-        let colour = layer.pigment.colour_on(hit.texture_point, &hit.surface);
+        let mut surface = Surface {
+            normal: *seen,
+            ..hit.surface
+        };
+        let n = match &layer.normal {
+            None => raw,
+            Some(normal) => {
+                let n = normal.perturb_on(hit.texture_point, raw, &surface);
+                if hit.surface.normal != DVec3::ZERO {
+                    let m = warp.map_or(glam::DMat3::IDENTITY, |m| glam::DMat3::from_mat4(*m).transpose());
+                    *seen = (m * n).normalize();
+                    surface.normal = *seen;
+                }
+                n
+            }
+        };
+        let colour = layer.pigment.colour_on(hit.texture_point, &surface);
         let reflec = reflectivity(layer, &colour, -d.dot(n), fresnel_eta);
         (n, colour, reflec)
     }

@@ -281,6 +281,15 @@ impl MaterialMap {
         sum
     }
 
+    /// Pattern space to world, for a pattern of materials that places its entries (not a
+    /// blob's or a mesh's textures, which POV-Ray lights each on its own).
+    pub fn world_from_pattern(&self) -> Option<&DMat4> {
+        if self.blob.is_some() || self.by_corner {
+            return None;
+        }
+        self.world_from_pattern.as_ref()
+    }
+
     /// The entries see the pattern's warped point: placed in the world as they are, that is
     /// the warped point taken back out of the pattern's space (`p` itself if nothing moved).
     fn world_point(&self, q: DVec3, warped: DVec3, p: DVec3) -> DVec3 {
