@@ -71,7 +71,7 @@ impl Interiors {
         for pass in [false, true] {
             for (i, object) in scene.objects.iter().enumerate() {
                 let second = bounded_last && object.bounded;
-                if second == pass && scene.contains(object, p) {
+                if second == pass && scene.starts_inside(object, p) {
                     list.push(ObjectId(i as u32));
                 }
             }

@@ -412,6 +412,17 @@ impl Scene {
         object.shape.contains(local) != object.inverse
     }
 
+    /// Whether a ray starting at `p` (a camera's) starts inside `object`: as POV-Ray finds
+    /// the objects a camera ray starts in, the point must lie in the object's bounding box
+    /// too (a disc's inside is a half-space, but a camera outside the disc's flat box does not
+    /// start in it; its medium would change the Fresnel reflection of glass the ray leaves).
+    pub fn starts_inside(&self, object: &Object, p: DVec3) -> bool {
+        let in_box = object
+            .world_bounds()
+            .is_none_or(|(lo, hi)| p.cmpge(lo).all() && p.cmple(hi).all());
+        in_box && self.contains(object, p)
+    }
+
     /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
     pub fn spawn(&self, hit: &SurfaceHit, from: DVec3, dir: DVec3) -> Ray {
         Ray::new(
