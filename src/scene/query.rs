@@ -238,7 +238,6 @@ impl Scene {
                 && object.admits(ray)
                 && object.shape.occludes(&Self::local_ray(object, ray))
         };
-        let mut through = Rgb::ONE;
         match &self.index {
             Some(index) => {
                 // First any opaque blocker (stops at the first), then the transparent ones.
@@ -248,18 +247,12 @@ impl Scene {
                     return Rgb::ZERO;
                 }
                 if !self.any_transparent {
-                    return through;
+                    return Rgb::ONE;
                 }
-                if self.shadow_fades {
-                    return self.faded_crossings(ray, |f| {
-                        index.unbounded.iter().for_each(|&i| f(i));
-                        index.each(ray, f);
-                    });
-                }
-                for &i in &index.unbounded {
-                    self.filter_through(i, ray, &mut through);
-                }
-                index.each(ray, |i| self.filter_through(i, ray, &mut through));
+                self.crossings_through(ray, |f| {
+                    index.unbounded.iter().for_each(|&i| f(i));
+                    index.each(ray, f);
+                })
             }
             None => {
                 let inv = ray.direction.recip();
@@ -273,15 +266,9 @@ impl Scene {
                 if candidates().any(opaque_blocks) {
                     return Rgb::ZERO;
                 }
-                if self.shadow_fades {
-                    return self.faded_crossings(ray, |f| candidates().for_each(f));
-                }
-                for i in candidates() {
-                    self.filter_through(i, ray, &mut through);
-                }
+                self.crossings_through(ray, |f| candidates().for_each(f))
             }
         }
-        through
     }
 
     fn local_ray(object: &Object, ray: &Ray) -> Ray {
@@ -334,29 +321,18 @@ impl Scene {
         self.material(s.material).filter_on(s.point, &s.surface)
     }
 
-    /// Multiplies `through` by the filter colour at each crossing of a transparent object
-    /// with a shadow ray (the order of crossings does not matter when no interior fades).
-    fn filter_through(&self, i: u32, ray: &Ray, through: &mut Rgb) {
-        let object = &self.objects[i as usize];
-        if !self.filters_shadows(i) || !object.admits(ray) {
-            return;
-        }
-        object
-            .shape
-            .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
-                *through *= self.crossing_filter(i, ray, t, part);
-            });
-    }
-
-    /// What a shadow ray lets through when interiors fade: POV-Ray's walk from the surface to
-    /// the light, one crossing after the other, with a list of the media the ray is in. At a
+    /// What a shadow ray lets through the transparent objects it crosses: POV-Ray's walk from
+    /// the surface to the light, one crossing after the other, each filtering the light. As
+    /// POV-Ray's walk starts each step at the crossing before, a crossing at the same point as
+    /// the one before (a duplicated surface) is passed over: the light is filtered once there.
+    /// Where interiors fade, the walk also keeps a list of the media the ray is in. At a
     /// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
     /// applies over the distance from the previous crossing of any object (so a medium
     /// shared by overlapping union members fades only between their surfaces, and an object
     /// around another fades only from the inner one's exit); otherwise it enters. The list
     /// starts with the media of the crossed objects that contain the ray's origin.
     /// `candidates` calls its argument with every object the ray may cross.
-    fn faded_crossings(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
+    fn crossings_through(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
         thread_local! {
             /// Per thread: the crossings (distance, object) and the list of media.
             static SCRATCH: RefCell<ShadowScratch> = const { RefCell::new((Vec::new(), Vec::new())) };
@@ -375,13 +351,30 @@ impl Scene {
                 }
             });
             crossings.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            // (Crossings closer than rounding to the one kept before are the same point.)
+            let length = ray.direction.length();
+            let scale = ray.origin.abs().max_element().max(1.0);
+            let mut kept = f64::NEG_INFINITY;
+            crossings.retain(|&(t, _, _)| {
+                let world = t * length;
+                let same = world - kept <= COINCIDENT * scale.max(world.abs());
+                if !same {
+                    kept = world;
+                }
+                !same
+            });
+            if !self.shadow_fades {
+                return crossings
+                    .iter()
+                    .map(|&(t, i, part)| self.crossing_filter(i, ray, t, part))
+                    .fold(Rgb::ONE, |a, b| a * b);
+            }
             for &(_, i, _) in crossings.iter() {
                 let object = &self.objects[i as usize];
                 if !media.contains(&object.medium) && self.contains(object, ray.origin) {
                     media.push(object.medium);
                 }
             }
-            let length = ray.direction.length();
             let (mut through, mut last_t) = (Rgb::ONE, 0.0);
             for &(t, i, part) in crossings.iter() {
                 let object = &self.objects[i as usize];
@@ -438,8 +431,12 @@ impl Scene {
 }
 
 
-/// Per thread, for a shadow ray through fading interiors: its crossings (distance, object, part)
-/// and the list of media it is in.
+/// Two crossings of a shadow ray closer than this, relative to the distances and coordinates
+/// involved, are taken for the same point (a few thousand times the rounding of a double).
+const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
+
+/// Per thread, for a shadow ray through transparent objects: its crossings (distance, object,
+/// part) and the list of media it is in.
 type ShadowScratch = (Vec<(f64, u32, u32)>, Vec<u32>);
 
 /// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
