@@ -299,8 +299,11 @@ impl super::shape::Surface for Isosurface {
         Some(self.container.bounds())
     }
 
+    /// Every crossing, whatever `max_trace`: POV-Ray walks a shadow ray from crossing to
+    /// crossing, searching the surface anew from each (at most `max_trace` crossings a
+    /// search), so it meets them all.
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
-        self.crossings(ray, f)
+        super::shape::walk(ray, f, |from, give| self.crossings(from, give));
     }
 }
 

@@ -251,6 +251,16 @@ impl super::shape::Surface for Parametric {
         c
     }
 
+    /// Every crossing: the search finds the nearest, so the walk searches again from each.
+    fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
+        super::shape::walk(ray, f, |from, give| {
+            let c = self.intersect(from);
+            for (&t, &part) in c.as_slice().iter().zip(c.parts()) {
+                give(t, part);
+            }
+        });
+    }
+
     /// POV-Ray's normal: the cross product of the forward differences along u and v (step
     /// `accuracy`) at the hit's (u, v).
     fn normals(&self, _: DVec3, part: u32) -> (DVec3, DVec3) {

@@ -20,6 +20,44 @@ use super::{
 use glam::DVec3;
 use std::sync::Arc;
 
+/// The most searches [`walk`] makes along one ray.
+const MAX_WALK: usize = 1024;
+
+/// Every crossing of `ray` for a shape whose `search` finds only the first few from a ray's
+/// start (as POV-Ray's isosurface and parametric searches do): POV-Ray walks a shadow ray from
+/// crossing to crossing, each step taking the nearest crossing a search from the step before
+/// finds, and so meets them all. `search` calls its second argument with the crossings it
+/// finds on the ray it is given (in any order).
+pub fn walk(
+    ray: &Ray,
+    mut f: impl FnMut(f64, u32),
+    mut search: impl FnMut(&Ray, &mut dyn FnMut(f64, u32)),
+) {
+    let mut start = 0.0;
+    // (Bounded, in case a search kept finding a crossing where it starts.)
+    for _ in 0..MAX_WALK {
+        let from = Ray {
+            origin: ray.at(start),
+            direction: ray.direction,
+            tmin: ray.tmin - start,
+            tmax: ray.tmax - start,
+        };
+        let mut nearest: Option<(f64, u32)> = None;
+        search(&from, &mut |t, part| {
+            if t > 0.0 && nearest.is_none_or(|(n, _)| t < n) {
+                nearest = Some((t, part));
+            }
+        });
+        match nearest {
+            Some((t, part)) => {
+                start += t;
+                f(start, part);
+            }
+            None => return,
+        }
+    }
+}
+
 /// What a shape provides, in its own (object) space.
 pub trait Surface {
     /// The name of its tests in `--stats`.
