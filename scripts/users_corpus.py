@@ -7,9 +7,11 @@ scientific figures, exports from modellers), listed with their repository, path 
 docs/users-corpus-manifest.tsv; the files themselves are their authors' and are not part of
 this repository. Lay them out as <DIR>/<owner>+<repo>/<path> (the manifest's rows) and run
 
-    scripts/users_corpus.py [--dir DIR] [--out docs/users-corpus.csv]
+    scripts/users_corpus.py [--dir DIR] [--out docs/users-corpus.csv] [--only TEXT[,TEXT…]]
 
-(DIR defaults to $USERS_CORPUS or /work/users-corpus). Each scene is rendered from a copy of
+(DIR defaults to $USERS_CORPUS or /work/users-corpus). With `--only`, only the scenes whose
+name contains one of the texts are run (DIR then needs only their repositories and manifest
+rows), and their rows replace the old ones in the existing CSV. Each scene is rendered from a copy of
 its repository's folder at 320x240 without anti-aliasing, by POV-Ray (`-A -J +FE`, 120 s at
 most) and by trace (`--aa off`, 60 s), both with POV-Ray's standard include folder; an
 animation whose INI lies beside it at its first frame. Writes one CSV row per scene and
@@ -70,6 +72,9 @@ def main():
     trace = os.environ.get("TRACE", os.path.join(ROOT, "target/release/trace"))
     manifest = [line.rstrip("\n").split("\t") for line in open(os.path.join(corpus, "MANIFEST.tsv"))]
     scenes = [(repo, path) for repo, path, _, kind, _ in manifest if kind == "scene"]
+    only = args[args.index("--only") + 1].split(",") if "--only" in args else None
+    if only:
+        scenes = [(repo, path) for repo, path in scenes if any(t in f"{repo}/{path}" for t in only)]
     rows = []
     for repo, path in scenes:
         work = tempfile.mkdtemp()
@@ -107,14 +112,22 @@ def main():
         rows.append(row)
         print(f"{row['scene'][:70]:70} pov={row['povray_exit']} trace={row['trace_exit']} flip={row['flip']} {row['outside']} {row['trace_message'][:60]}", flush=True)
         shutil.rmtree(work)
+    if only:
+        # (The rows re-run replace the old ones, in the old order.)
+        fresh = {r["scene"]: r for r in rows}
+        rows = [fresh.get(r["scene"], r) for r in csv.DictReader(open(out))]
     with open(out, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    write_report(out[:-4] + ".md", rows)
+    note = ""
+    if only:
+        note = (f"Only the {len(fresh)} scenes named by `--only` were re-run at this commit; the other rows "
+                "come from the last full run.")
+    write_report(out[:-4] + ".md", rows, note)
 
 
-def write_report(path, rows):
+def write_report(path, rows, note=""):
     ok = lambda v: str(v) == "0"
     pov = [r for r in rows if ok(r["povray_exit"])]
     inside = [r for r in pov if not r["outside"]]
@@ -135,6 +148,7 @@ def write_report(path, rows):
         "each file, its repository and commit. Each scene is rendered at 320×240 without anti-aliasing by",
         "POV-Ray 3.7 (`-A -J`) and by trace (`--aa off`), both with POV-Ray's standard include folder,",
         "and compared where both render. Raw results: `docs/users-corpus.csv`.",
+        *([note] if note else []),
         "",
         f"- POV-Ray renders **{len(pov)}** of the {len(rows)} (the rest need files the repositories do not hold —",
         "  images, fonts, includes from the author's machine — or fail in POV-Ray 3.7 itself).",
