@@ -12,6 +12,11 @@ use glam::{DVec3, DVec4};
 /// Bisection tolerance and shortest distance.
 const TOLERANCE: f64 = 1e-7;
 
+/// POV-Ray's shortest shadow-ray step (its SHADOW_TOLERANCE): a shadow ray (unit direction
+/// in the world, so `t` is a distance) ignores what it meets closer than this to where it or
+/// its last crossing was.
+const SHADOW_TOLERANCE: f64 = 1e-3;
+
 /// A julia fractal in object space.
 #[derive(Clone, Debug, PartialEq)]
 pub struct JuliaFractal {
@@ -265,11 +270,34 @@ impl super::shape::Surface for JuliaFractal {
         Some((DVec3::splat(-r), DVec3::splat(r)))
     }
 
-    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+    /// A shadow ray's crossings, as POV-Ray's walk meets them: its search reports the first
+    /// crossing from where the walk stands, and a shadow ray passes what lies within
+    /// `SHADOW_TOLERANCE` of its start, so a first crossing that near ends the walk through
+    /// the set. (The surface is found to within the marching's precision and reported just
+    /// inside, so a shadow ray leaving a lit point meets the surface it leaves at once.)
+    fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
+        super::shape::walk(ray, f, |from, give| {
+            if let Some(t) = self.first_beyond_tolerance(from) {
+                give(t, 0);
+            }
+        });
+    }
+
+    /// Whether a shadow ray is blocked: the first crossing lies beyond `SHADOW_TOLERANCE`.
+    fn occludes(&self, ray: &Ray) -> bool {
+        self.first_beyond_tolerance(ray).is_some()
+    }
+}
+
+impl JuliaFractal {
+    /// The first crossing of a shadow ray if it lies beyond `SHADOW_TOLERANCE`.
+    fn first_beyond_tolerance(&self, ray: &Ray) -> Option<f64> {
+        let mut first = None;
         self.crossings(ray, |t| {
-            f(t, 0);
-            true
-        })
+            first = Some(t);
+            false
+        });
+        first.filter(|&t| t > SHADOW_TOLERANCE)
     }
 }
 
