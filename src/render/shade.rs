@@ -5,9 +5,9 @@
 use super::lights::LightSample;
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, FogKind, Material, ObjectId, Rgb, Scene, SurfaceHit, filter_colour, interior_fade,
+    Colour, FogKind, Material, ObjectId, PatternSurface as Surface, Rgb, Scene, SurfaceHit, filter_colour,
+    interior_fade,
 };
-use crate::pattern::Surface;
 use glam::{DMat4, DVec3};
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.

@@ -29,6 +29,8 @@ pub use normal::Normal;
 pub use query::{ShadowHull, interior_fade};
 pub use pigment::{Pigment, pigment_function};
 pub use probe::object_query;
+/// What patterns may see of the surface at a hit (the renderer passes it on).
+pub use crate::pattern::Surface as PatternSurface;
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
