@@ -8,7 +8,7 @@ use crate::scene::{
     Colour, FogKind, Material, ObjectId, PatternSurface as Surface, Rgb, Scene, SurfaceHit, filter_colour,
     interior_fade,
 };
-use glam::{DMat4, DVec3};
+use glam::{DMat3, DVec3};
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
 const MAX_DISTANCE: f64 = 1e7;
@@ -344,7 +344,7 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: f64,
         interiors: &Interiors,
-        (seen, warp): (&mut DVec3, Option<&'a DMat4>),
+        (seen, warp): (&mut DVec3, Option<&'a DMat3>),
     ) -> Rgb {
         let Some(map) = &material.map else {
             return self.shade_layers(material, ray, t, hit, level, weight, interiors, (seen, warp));
@@ -354,7 +354,7 @@ impl<'a> Tracer<'a> {
             ..hit.surface
         };
         // The entries' normals are seen in this pattern's space (POV-Ray's list of warps).
-        let warp = map.world_from_pattern().or(warp);
+        let warp = map.normal_to_pattern().or(warp);
         map.blend(hit.texture_point, &surface, |entry, texture_point| {
             let hit = &SurfaceHit {
                 texture_point,
@@ -381,7 +381,7 @@ impl<'a> Tracer<'a> {
         level: u32,
         weight: f64,
         interiors: &Interiors,
-        (seen, warp): (&mut DVec3, Option<&DMat4>),
+        (seen, warp): (&mut DVec3, Option<&DMat3>),
     ) -> Rgb {
         let scene = self.scene;
         let d = ray.direction;
@@ -590,7 +590,7 @@ impl<'a> Tracer<'a> {
     /// One layer at the hit: its shading normal (perturbed if the layer has a normal), its
     /// colour and its reflectivity. A perturbed normal is left in `seen` before the colour
     /// is found, as POV-Ray's Perturb_Normal leaves it in the intersection's PNormal, seen
-    /// in the space of `warp` (pattern to world) if given.
+    /// in the space `warp` takes world normals to, if given.
     #[inline]
     fn layer_at(
         &self,
@@ -599,7 +599,7 @@ impl<'a> Tracer<'a> {
         d: DVec3,
         raw: DVec3,
         fresnel_eta: f64,
-        (seen, warp): (&mut DVec3, Option<&DMat4>),
+        (seen, warp): (&mut DVec3, Option<&DMat3>),
     ) -> (DVec3, Colour, Rgb) {
         let mut surface = Surface {
             normal: *seen,
@@ -609,11 +609,8 @@ impl<'a> Tracer<'a> {
             None => raw,
             Some(normal) => {
                 let n = normal.perturb_on(hit.texture_point, raw, &surface);
-                if hit.surface.normal != DVec3::ZERO {
-                    let m = warp.map_or(glam::DMat3::IDENTITY, |m| glam::DMat3::from_mat4(*m).transpose());
-                    *seen = (m * n).normalize();
-                    surface.normal = *seen;
-                }
+                *seen = warp.map_or(n, |m| *m * n).normalize();
+                surface.normal = *seen;
                 n
             }
         };

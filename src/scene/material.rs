@@ -44,6 +44,7 @@ impl Material {
                     pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
                     world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
+                    normal_to_pattern: m.transform.as_ref().map(|t| DMat3::from_mat4(t.matrix).transpose()),
                     entries: m
                         .entries
                         .iter()
@@ -99,6 +100,7 @@ impl Material {
             pattern: crate::pattern::Pattern::new(crate::pattern::PatternKind::Average),
             pattern_from_world: blob_from_world,
             world_from_pattern: blob_from_world.map(|m| m.inverse()),
+            normal_to_pattern: None,
             entries: entries.into_iter().map(|m| (0.0, m)).collect(),
         };
         let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
@@ -120,6 +122,7 @@ impl Material {
             pattern: crate::pattern::Pattern::new(crate::pattern::PatternKind::Average),
             pattern_from_world: None,
             world_from_pattern: None,
+            normal_to_pattern: None,
             entries: entries.into_iter().map(|m| (0.0, m)).collect(),
         };
         let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
@@ -196,6 +199,9 @@ pub struct MaterialMap {
     pattern: crate::pattern::Pattern,
     pattern_from_world: Option<DMat4>,
     world_from_pattern: Option<DMat4>,
+    /// A world normal into the pattern's space (not normalised), for an ordinary pattern of
+    /// materials; `None` for a blob's or a mesh's textures, which POV-Ray lights each on its own.
+    normal_to_pattern: Option<DMat3>,
     /// (value, material), each placed in the world.
     pub entries: Box<[(f64, Material)]>,
 }
@@ -281,13 +287,10 @@ impl MaterialMap {
         sum
     }
 
-    /// Pattern space to world, for a pattern of materials that places its entries (not a
-    /// blob's or a mesh's textures, which POV-Ray lights each on its own).
-    pub fn world_from_pattern(&self) -> Option<&DMat4> {
-        if self.blob.is_some() || self.by_corner {
-            return None;
-        }
-        self.world_from_pattern.as_ref()
+    /// Takes a world normal into the pattern's space (POV-Ray's warps of a texture map), if
+    /// the pattern is moved.
+    pub fn normal_to_pattern(&self) -> Option<&DMat3> {
+        self.normal_to_pattern.as_ref()
     }
 
     /// The entries see the pattern's warped point: placed in the world as they are, that is
