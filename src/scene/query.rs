@@ -409,11 +409,13 @@ impl Scene {
     /// the objects a camera ray starts in, the point must lie in the object's bounding box
     /// too (a disc's inside is a half-space, but a camera outside the disc's flat box does not
     /// start in it; its medium would change the Fresnel reflection of glass the ray leaves).
+    /// (The inside test first: an orthographic camera asks this for every ray, and the box is
+    /// worked out from the object's transformation.)
     pub fn starts_inside(&self, object: &Object, p: DVec3) -> bool {
-        let in_box = object
-            .world_bounds()
-            .is_none_or(|(lo, hi)| p.cmpge(lo).all() && p.cmple(hi).all());
-        in_box && self.contains(object, p)
+        self.contains(object, p)
+            && object
+                .world_bounds()
+                .is_none_or(|(lo, hi)| p.cmpge(lo).all() && p.cmple(hi).all())
     }
 
     /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
