@@ -10,7 +10,7 @@ pub(super) const STRING_FUNCTIONS: [&str; 8] =
     ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime"];
 
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
-const EQUALITY_TOLERANCE: f64 = 1e-10;
+pub(super) const EQUALITY_TOLERANCE: f64 = 1e-10;
 
 type Result<T> = std::result::Result<T, Diagnostic>;
 
@@ -74,6 +74,14 @@ impl Evaluator<'_> {
                 }
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b),
+            ExprKind::Chosen(branches, otherwise) => {
+                for (c, v) in branches {
+                    if self.float(c)?.abs() > EQUALITY_TOLERANCE {
+                        return self.eval(v);
+                    }
+                }
+                self.eval(otherwise)
+            }
             ExprKind::Ternary(c, a, b) => {
                 // POV-Ray evaluates both branches (it reads them), so a rand() in the one not
                 // taken still draws its number.

@@ -94,7 +94,26 @@ impl<'a> Evaluator<'a> {
     ) -> Result<()> {
         let mut statements = statements;
         while let Some(statement) = statements.next() {
-            let statement = statement?;
+            let statement = match statement {
+                // A statement read with a directive where a value is: from it on, the file is
+                // read as POV-Ray's token reader reads it.
+                Ok(statement) if self.directive_in_value(&statement).is_some() => {
+                    let file = statements.file();
+                    drop(statements);
+                    let (at, end) = (statement.span.start as usize, self.sources.file(file).text.len());
+                    let failed = super::spliced::directive_in_value(file, at);
+                    return self.run_spliced(file, at..end, false, failed, f);
+                }
+                Ok(statement) => statement,
+                // What the grammar cannot read may be directives working on tokens: the rest of
+                // the file is read as POV-Ray's token reader reads it.
+                Err(failed) => {
+                    let (file, at) = (statements.file(), statements.position());
+                    drop(statements);
+                    let end = self.sources.file(file).text.len();
+                    return self.run_spliced(file, at..end, false, failed, f);
+                }
+            };
             let done = self.one_item(&statement, f);
             // (A statement parsed ahead is freed by the thread that parsed it.)
             statements.spent(statement);
@@ -103,7 +122,7 @@ impl<'a> Evaluator<'a> {
         Ok(())
     }
 
-    fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+    pub(super) fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
         self.charge(1, "statement", item.word_span)?;
         match item.kind {
             NodeKind::Version => {
@@ -135,14 +154,7 @@ impl<'a> Evaluator<'a> {
                 }
             }
             NodeKind::IfDef => {
-                let name = &item.children[0];
-                let defined = if name.children.is_empty() {
-                    self.env.contains_key(&name.word)
-                } else {
-                    self.element_assigned(name)?
-                };
-                let wanted = item.word == "ifdef";
-                if defined == wanted {
+                if self.ifdef_holds(item)? {
                     return self.each_item(&item.children[1].children, f);
                 }
                 if let Some(clause) = item.children.get(2) {
@@ -155,7 +167,10 @@ impl<'a> Evaluator<'a> {
                     self.each_item(&item.children[0].children, f)?;
                 }
             }
-            NodeKind::For => self.for_loop(item, f)?,
+            NodeKind::For => {
+                let body = &item.children[1].children;
+                self.for_loop_with(item, &mut |ev| ev.each_item(body, f))?;
+            }
             NodeKind::Switch => self.switch(item, f)?,
             NodeKind::Message => {
                 let text = self.string(&item.args[0])?;
@@ -184,8 +199,9 @@ impl<'a> Evaluator<'a> {
                 );
             }
             NodeKind::MacroCall => {
-                let nodes = self.macro_items(item)?;
-                let result = self.each_item(&nodes, f);
+                let name = &item.children[0];
+                let body = self.begin_macro(&name.word, name.span, &item.args)?;
+                let result = self.run_body(body, f);
                 self.end_macro(item, result)?;
             }
             NodeKind::Include => self.include(item, f)?,
@@ -328,12 +344,28 @@ impl<'a> Evaluator<'a> {
         }
     }
 
-    fn truth(&mut self, e: &syntax::Expr) -> Result<bool> {
+    pub(super) fn truth(&mut self, e: &syntax::Expr) -> Result<bool> {
         Ok(self.float(e)?.abs() > 1e-10)
     }
 
-    /// `#for (I, start, end [, step]) body #end`: inclusive, with POV-Ray's 1e-10 slack.
-    fn for_loop(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
+    /// Whether `#ifdef (Name)` (or `#ifndef`, or an array element's) takes its first branch.
+    pub(super) fn ifdef_holds(&mut self, item: &Node) -> Result<bool> {
+        let name = &item.children[0];
+        let defined = if name.children.is_empty() {
+            self.env.contains_key(&name.word)
+        } else {
+            self.element_assigned(name)?
+        };
+        Ok(defined == (item.word == "ifdef"))
+    }
+
+    /// `#for (I, start, end [, step]) body #end`: inclusive, with POV-Ray's 1e-10 slack;
+    /// `pass` runs the body.
+    pub(super) fn for_loop_with(
+        &mut self,
+        item: &Node,
+        pass: &mut dyn FnMut(&mut Evaluator<'a>) -> Result<()>,
+    ) -> Result<()> {
         let name = item.children[0].word.clone();
         let start = self.float(&item.args[0])?;
         let end = self.float(&item.args[1])?;
@@ -347,12 +379,11 @@ impl<'a> Evaluator<'a> {
                 item.args[2].span,
             ));
         }
-        let body = &item.children[1].children;
         let mut i = start;
         while (step > 0.0 && i <= end + 1e-10) || (step < 0.0 && i >= end - 1e-10) {
             self.charge(1, "#for", item.word_span)?;
             self.env.insert(name.clone(), Value::Float(i));
-            self.each_item(body, f)?;
+            pass(self)?;
             // The body may change the counter, as in POV-Ray.
             i = match self.env.get(&name) {
                 Some(Value::Float(v)) => *v,
@@ -501,9 +532,10 @@ impl<'a> Evaluator<'a> {
 
     /// The single object a macro call expands to (`object { Macro(…) modifiers }`).
     pub(super) fn macro_object(&mut self, call: &Node) -> Result<super::ObjectValue> {
-        let nodes = self.macro_items(call)?;
+        let name = &call.children[0];
+        let body = self.begin_macro(&name.word, name.span, &call.args)?;
         let mut object = None;
-        let result = self.each_item(&nodes, &mut |ev, n| {
+        let result = self.run_body(body, &mut |ev, n| {
             // An unsupported construct the macro leaves (`difference { … }`): named.
             if n.kind == NodeKind::Unknown && super::keywords::reason(&n.word).is_some() {
                 return Err(ev.unknown_word(&n.word, n.word_span));
@@ -521,17 +553,15 @@ impl<'a> Evaluator<'a> {
         object.ok_or_else(|| Diagnostic::error("the macro gives no object", call.span))
     }
 
-    /// Parses a macro's body for a call at item level, binding its parameters.
-    fn macro_items(&mut self, call: &Node) -> Result<Arc<Vec<Node>>> {
-        let name = &call.children[0];
-        let body = self.begin_macro(&name.word, name.span, &call.args)?;
-        self.parsed_items(body).map_err(|d| {
-            d.with_note(format!(
-                "in macro {}, called at {}",
-                name.word,
-                self.location(call.span)
-            ))
-        })
+    /// Runs a macro's body as items (read once by the grammar, or, if the grammar cannot read
+    /// it whole, as POV-Ray's token reader reads it, at every call).
+    fn run_body(&mut self, body: Span, f: &mut Handler<'_, 'a>) -> Result<()> {
+        match self.parsed_items(body) {
+            Ok(nodes) => self.each_item(&nodes, f),
+            Err(failed) => {
+                self.run_spliced(body.file, body.start as usize..body.end as usize, true, failed, f)
+            }
+        }
     }
 
     /// Evaluates a macro called inside an expression: its body is one expression.
@@ -561,25 +591,34 @@ impl<'a> Evaluator<'a> {
             }
             // The value may stand inside the directives: `#if (A) rgb 1 #else rgb 0 #end`
             // (a colour there, as POV-Ray reads the tokens the directives leave).
-            Err(not_an_expression) => match self.parsed_items(body) {
-                // Or the value is an item: `#declare O = MakeObject(1)` with an object in the
-                // macro, a pigment, a function … (POV-Ray's usual way of making things).
-                Ok(items) => {
-                    let mut value = None;
-                    self.each_item(&items, &mut |ev, n| {
-                        if value.is_some() {
-                            return Err(only_directives(n));
-                        }
-                        match ev.item_as_value(n)? {
-                            Some(v) => value = Some(v),
-                            None => return Err(only_directives(n)),
-                        }
-                        Ok(())
-                    })
-                    .and_then(|()| value.ok_or(not_an_expression))
+            // Or the value is an item: `#declare O = MakeObject(1)` with an object in the
+            // macro, a pigment, a function … (POV-Ray's usual way of making things).
+            Err(not_an_expression) => {
+                let mut value = None;
+                let mut one_value = |ev: &mut Evaluator<'a>, n: &Node| {
+                    if value.is_some() {
+                        return Err(only_directives(n));
+                    }
+                    match ev.item_as_value(n)? {
+                        Some(v) => value = Some(v),
+                        None => return Err(only_directives(n)),
+                    }
+                    Ok(())
+                };
+                let run = match self.parsed_items(body) {
+                    Ok(items) => self.each_item(&items, &mut one_value),
+                    Err(failed) => {
+                        let region = body.start as usize..body.end as usize;
+                        self.run_spliced(body.file, region, true, failed, &mut one_value)
+                    }
+                };
+                match run {
+                    Ok(()) => value.ok_or(not_an_expression),
+                    // (Neither an expression nor items: the expression's error says more.)
+                    Err(d) if d.message.starts_with("syntax error") => Err(not_an_expression),
+                    Err(d) => Err(d),
                 }
-                Err(_) => Err(not_an_expression),
-            },
+            }
         };
         let result = result.map_err(|d| {
             d.with_note(format!(
@@ -724,8 +763,18 @@ impl<'a> Evaluator<'a> {
 
     /// A macro body parsed as items, parsed at its first call only (the body's text never
     /// changes, so neither does its tree).
+    /// (A body read with a directive where a value is counts as unread: it is read as POV-Ray's
+    /// token reader reads it.)
     fn parsed_items(&mut self, body: Span) -> std::result::Result<Arc<Vec<Node>>, Diagnostic> {
-        self.parsed_once(body, |p| &mut p.items, syntax::parse_fragment_items)
+        self.parsed_once(body, |p| &mut p.items, |text, file, offset| {
+            let items = syntax::parse_fragment_items(text, file, offset)?;
+            for item in &items {
+                if let Some(at) = syntax::tokens::directive_after_unknown(item, text, offset) {
+                    return Err(super::spliced::directive_in_value(file, offset + at));
+                }
+            }
+            Ok(items)
+        })
     }
 
     /// A macro body parsed as a value (directives around one expression), parsed once.

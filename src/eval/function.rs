@@ -271,6 +271,18 @@ impl Evaluator<'_> {
                 });
             }
             ExprKind::Call(name, name_span, args) => self.compile_call(name, *name_span, args, e.span, params, code)?,
+            // (A directive in a function's body is executed as the function is declared, as
+            // POV-Ray's reader does.)
+            ExprKind::Chosen(branches, otherwise) => {
+                let mut chosen: &Expr = otherwise;
+                for (c, v) in branches {
+                    if self.float(c)?.abs() > super::expr::EQUALITY_TOLERANCE {
+                        chosen = v;
+                        break;
+                    }
+                }
+                self.compile(chosen, params, code)?;
+            }
             ExprKind::Ternary(..) => return not_here("`? :` (use select(a, b, c))", e.span),
             ExprKind::Member(base, member, member_span) => {
                 // `F(x, y, z).red`: one value of a vector function (a pigment's colour …).

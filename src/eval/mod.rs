@@ -17,6 +17,7 @@ mod material;
 mod object;
 mod sandbox;
 mod shapes;
+mod spliced;
 mod transform;
 mod value;
 

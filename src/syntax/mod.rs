@@ -8,6 +8,7 @@ mod ahead;
 pub mod bulk;
 pub mod lexical;
 mod plain;
+pub mod tokens;
 
 mod grammar {
     #[derive(pest_derive::Parser)]
@@ -365,6 +366,9 @@ pub enum ExprKind {
     Binary(BinOp, Box<Expr>, Box<Expr>),
     /// `c ? a : b`.
     Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// `#if (c) a [#elseif (d) b]* #else z #end` where a value is read: each condition with
+    /// its value, then the value otherwise. Only the value chosen is evaluated.
+    Chosen(Vec<(Expr, Expr)>, Box<Expr>),
     /// `f(a, b)`; the function name and its span.
     Call(String, Span, Vec<Expr>),
     /// `a[i]`: an array element.
@@ -425,6 +429,16 @@ pub struct Statements {
 }
 
 impl Statements {
+    /// Where the next statement starts (after an error, the statement that has it).
+    pub fn position(&self) -> usize {
+        self.pos
+    }
+
+    /// The file the statements are read from.
+    pub fn file(&self) -> FileId {
+        self.lower.file
+    }
+
     /// Takes back a statement once evaluated: one a helper parsed goes back to that helper
     /// to be freed (freeing memory another thread allocated makes the two threads contend
     /// for the allocator's lock, which took more time than parsing on one thread).
@@ -544,6 +558,32 @@ fn next_statement(
     let top = pairs.next().expect("next_statement yields one pair");
     let statement = top.into_inner().find(|p| p.as_rule() != Rule::EOI)?;
     lower.offset = pos;
+    let end = pos + statement.as_span().end();
+    Some(Ok((lower.node(statement), end)))
+}
+
+/// Parses the statement (`items`: the item, as in a macro's body) after byte `pos` of
+/// `text`, a part of file `file` that starts at byte `base`: the statement and where it ends
+/// in `text`, or `None` at the end of `text`.
+pub fn statement_in(
+    text: &str,
+    pos: usize,
+    file: FileId,
+    base: usize,
+    items: bool,
+) -> Option<Result<(Node, usize), Diagnostic>> {
+    let rule = if items { Rule::next_item } else { Rule::next_statement };
+    let mut pairs = match SceneParser::parse(rule, &text[pos..]) {
+        Ok(pairs) => pairs,
+        Err(e) => return Some(Err(syntax_error_at(e, file, base + pos))),
+    };
+    let top = pairs.next().expect("the entry rule yields one pair");
+    let statement = top.into_inner().find(|p| p.as_rule() != Rule::EOI)?;
+    let lower = Lower {
+        file,
+        offset: base + pos,
+        bulk: Default::default(),
+    };
     let end = pos + statement.as_span().end();
     Some(Ok((lower.node(statement), end)))
 }
@@ -1228,6 +1268,23 @@ impl Lower {
                     };
                 }
                 e
+            }
+            Rule::chosen_value => {
+                let mut values: Vec<Expr> = pair
+                    .into_inner()
+                    .filter(|p| is_expr(p.as_rule()))
+                    .map(|p| self.expr(p))
+                    .collect();
+                let otherwise = values.pop().expect("a chosen value has its #else");
+                let mut pairs = Vec::with_capacity(values.len() / 2);
+                let mut values = values.into_iter();
+                while let (Some(c), Some(v)) = (values.next(), values.next()) {
+                    pairs.push((c, v));
+                }
+                Expr {
+                    kind: ExprKind::Chosen(pairs, Box::new(otherwise)),
+                    span,
+                }
             }
             Rule::postfix => {
                 let mut inner = pair.into_inner();

@@ -2,6 +2,7 @@
 
 mod analytic;
 mod cli;
+mod directives;
 mod errors;
 mod farm;
 mod fuzz_replay;

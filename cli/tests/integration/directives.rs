@@ -1,0 +1,162 @@
+//! Directives that work on tokens, as POV-Ray's reader executes them (src/syntax/tokens.rs,
+//! src/eval/spliced.rs, the grammar's `chosen_value`): a scene written with them is the scene
+//! written without them. (Their pictures against POV-Ray's: examples/token_directives.rt.)
+
+use crate::load_text;
+
+/// The scene `text` makes, as text (every resolved fact of it).
+fn scene(text: &str) -> String {
+    format!("{:?}", load_text(text, 32, 24))
+}
+
+const SET: &str = "camera { location <0, 1, -6> look_at 0 } light_source { <4, 8, -6> rgb 1 }\n";
+
+fn same(with: &str, without: &str) {
+    let (a, b) = (
+        scene(&format!("{SET}{with}")),
+        scene(&format!("{SET}{without}")),
+    );
+    assert!(a == b, "with directives:\n{with}\nwithout:\n{without}");
+}
+
+#[test]
+fn a_value_is_chosen_where_it_stands() {
+    for c in [0, 1] {
+        let with = format!(
+            "#declare C = {c};
+             sphere {{ #if (C) 0 #else x #end, #if (C) 1 #elseif (1) 2 #else 3 #end
+               pigment {{ rgb #if (C) <1, 0, 0> #else <0, 1, #if (C) 0 #else 1 #end> #end }}
+               translate #if (C) y #else -y #end }}"
+        );
+        let without = if c == 1 {
+            "sphere { 0, 1 pigment { rgb <1, 0, 0> } translate y }"
+        } else {
+            "sphere { x, 2 pigment { rgb <0, 1, 1> } translate -y }"
+        };
+        same(&with, without);
+    }
+}
+
+#[test]
+fn a_value_in_a_loop_is_chosen_at_each_pass() {
+    same(
+        "union { #for (I, 0, 3) sphere { <I, 0, 0>, #if (I < 2) 0.25 #else 0.5 #end } #end }
+         #declare J = 0;
+         #while (J < 2) box { 0, #if (J) 1 #else 2 #end #ifdef (Nothing) translate x #end } #declare J = J + 1; #end",
+        "union { sphere { <0, 0, 0>, 0.25 } sphere { <1, 0, 0>, 0.25 } sphere { <2, 0, 0>, 0.5 } sphere { <3, 0, 0>, 0.5 } }
+         box { 0, 2 } box { 0, 1 }",
+    );
+}
+
+#[test]
+fn a_value_not_chosen_is_not_evaluated() {
+    // Neither the undeclared name nor the random number of the branch not taken is read:
+    // the next number drawn is the first of the stream, as in POV-Ray.
+    same(
+        "#declare S = seed(7);
+         sphere { 0, #if (1) 1 #else Undeclared + rand(S) #end }
+         sphere { 0, rand(S) }",
+        "#declare S = seed(7);
+         sphere { 0, 1 }
+         sphere { 0, rand(S) }",
+    );
+}
+
+#[test]
+fn a_branch_may_open_a_block_that_text_after_it_closes() {
+    // As a macro of a real scene makes its pieces (BenoitPro's damier.pov): the branch taken
+    // opens the union, the text after the #end fills and closes it.
+    let with = "
+        #macro Piece(Kind, Where)
+          #if (Kind = 1)
+            union { cone { 0, 0.1, y, 0 }
+          #elseif (Kind = 2)
+            union { torus { 0.3, 0.05 }
+          #else
+            union { box { -1, 1 }
+          #end
+            sphere { y, 0.4 }
+            #if (Kind = 1) pigment { rgb x } #else pigment { rgb 1 } #end
+            translate Where }
+        #end
+        Piece(1, x) Piece(2, -x) Piece(3, z)
+        #declare UseMerge = 0;
+        #if (UseMerge) merge { #else union { #end sphere { 0, 1 } sphere { x, 1 } }
+        #ifndef (Undeclared) union { #else merge { #end box { 0, 1 } }";
+    let without = "
+        union { cone { 0, 0.1, y, 0 } sphere { y, 0.4 } pigment { rgb x } translate x }
+        union { torus { 0.3, 0.05 } sphere { y, 0.4 } pigment { rgb 1 } translate -x }
+        union { box { -1, 1 } sphere { y, 0.4 } pigment { rgb 1 } translate z }
+        union { sphere { 0, 1 } sphere { x, 1 } }
+        union { box { 0, 1 } }";
+    same(with, without);
+}
+
+#[test]
+fn a_condition_sees_the_declarations_before_it() {
+    same(
+        "#declare A = 1;
+         #if (A) union { #else union { sphere { 0, 9 } #end sphere { 0, 1 } }
+         #declare A = 0;
+         #if (A) union { #else union { sphere { 0, 9 } #end sphere { 0, 1 } }
+         sphere { 0, #if (A) 3 #else 4 #end }",
+        "union { sphere { 0, 1 } }
+         union { sphere { 0, 9 } sphere { 0, 1 } }
+         sphere { 0, 4 }",
+    );
+}
+
+#[test]
+fn a_big_file_parsed_ahead_reads_them_as_one_thread_does() {
+    // Over the size where helper threads parse ahead; the statement the grammar cannot read
+    // whole comes late, inside a chunk a helper parsed.
+    let mut body = String::new();
+    for i in 0..6000 {
+        body.push_str(&format!(
+            "sphere {{ <{i}, 0, 0>, 0.5 pigment {{ rgb {} }} }}\n",
+            i % 7
+        ));
+    }
+    let with = format!(
+        "{body}#declare U = 0;\n#if (U) merge {{ #else union {{ #end sphere {{ 0, 1 }} }}\n{body}"
+    );
+    let without = format!("{body}union {{ sphere {{ 0, 1 }} }}\n{body}");
+    assert!(with.len() > 1 << 19);
+    let load = |text: &str, threads| {
+        let options = trace::LoadOptions {
+            width: 32,
+            height: 24,
+            threads: Some(threads),
+            ..Default::default()
+        };
+        let loaded = trace::load_str(std::path::Path::new("big.rt"), text.to_string(), &options)
+            .unwrap_or_else(|e| panic!("{e}"));
+        format!("{:?}", loaded.scene)
+    };
+    let plain = load(&without, 1);
+    assert!(load(&with, 1) == plain);
+    assert!(load(&with, 4) == plain);
+}
+
+#[test]
+fn errors_still_point_at_the_culprit() {
+    let err = |text: &str| {
+        trace::load_str(
+            std::path::Path::new("e.rt"),
+            format!("{SET}{text}"),
+            &Default::default(),
+        )
+        .expect_err("an error")
+        .to_string()
+    };
+    // A syntax error in the text a branch leaves: where it stands.
+    let e = err("#declare A = 1;\n#if (A) union { #else merge { #end sphere { 0, 1 ] } }");
+    assert!(e.contains("e.rt:3:"), "{e}");
+    // In a branch not taken: none (POV-Ray passes over its tokens).
+    scene(&format!(
+        "{SET}#if (0) sphere {{ 0, ] }} union {{ #else union {{ #end sphere {{ 0, 1 }} }}"
+    ));
+    // An unsupported construct a branch chooses is named.
+    let e = err("#if (1) merge { #else union { #end sphere { 0, 1 } }");
+    assert!(e.contains("merge"), "{e}");
+}
