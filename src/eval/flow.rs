@@ -93,33 +93,41 @@ impl<'a> Evaluator<'a> {
         f: &mut Handler<'_, 'a>,
     ) -> Result<()> {
         let mut statements = statements;
-        while let Some(statement) = statements.next() {
-            let statement = match statement {
-                // A statement read with a directive where a value is: from it on, the file is
-                // read as POV-Ray's token reader reads it.
-                Ok(statement) if self.directive_in_value(&statement).is_some() => {
-                    let file = statements.file();
-                    drop(statements);
-                    let (at, end) = (statement.span.start as usize, self.sources.file(file).text.len());
-                    let failed = super::spliced::directive_in_value(file, at);
-                    return self.run_spliced(file, at..end, false, failed, f);
-                }
-                Ok(statement) => statement,
-                // What the grammar cannot read may be directives working on tokens: the rest of
-                // the file is read as POV-Ray's token reader reads it.
-                Err(failed) => {
-                    let (file, at) = (statements.file(), statements.position());
-                    drop(statements);
-                    let end = self.sources.file(file).text.len();
-                    return self.run_spliced(file, at..end, false, failed, f);
-                }
+        loop {
+            let Some(statement) = statements.next() else {
+                return Ok(());
             };
-            let done = self.one_item(&statement, f);
-            // (A statement parsed ahead is freed by the thread that parsed it.)
-            statements.spent(statement);
-            done?;
+            let (failed, at) = match statement {
+                Ok(statement) => match self.directive_in_value(&statement) {
+                    None => {
+                        let done = self.one_item(&statement, f);
+                        // (A statement parsed ahead is freed by the thread that parsed it.)
+                        statements.spent(statement);
+                        done?;
+                        continue;
+                    }
+                    // A statement read with a directive where a value is.
+                    Some(_) => {
+                        let at = statement.span.start as usize;
+                        (super::spliced::directive_in_value(statement.span.file, at), at)
+                    }
+                },
+                // What the grammar cannot read may be directives working on tokens.
+                Err(failed) => (failed, statements.position()),
+            };
+            // From here the file is read as POV-Ray's token reader reads it, up to where the
+            // grammar can read it whole again.
+            let file = statements.file();
+            drop(statements);
+            let text = self.sources.file(file).text.clone();
+            match self.run_spliced(file, at..text.len(), false, failed, f, true)? {
+                None => return Ok(()),
+                Some(resume) => {
+                    let helpers = self.options.parse_helpers();
+                    statements = syntax::statements_from(text, file, helpers, resume)?;
+                }
+            }
         }
-        Ok(())
     }
 
     pub(super) fn one_item(&mut self, item: &Node, f: &mut Handler<'_, 'a>) -> Result<()> {
@@ -559,7 +567,8 @@ impl<'a> Evaluator<'a> {
         match self.parsed_items(body) {
             Ok(nodes) => self.each_item(&nodes, f),
             Err(failed) => {
-                self.run_spliced(body.file, body.start as usize..body.end as usize, true, failed, f)
+                let region = body.start as usize..body.end as usize;
+                self.run_spliced(body.file, region, true, failed, f, false).map(|_| ())
             }
         }
     }
@@ -609,7 +618,7 @@ impl<'a> Evaluator<'a> {
                     Ok(items) => self.each_item(&items, &mut one_value),
                     Err(failed) => {
                         let region = body.start as usize..body.end as usize;
-                        self.run_spliced(body.file, region, true, failed, &mut one_value)
+                        self.run_spliced(body.file, region, true, failed, &mut one_value, false).map(|_| ())
                     }
                 };
                 match run {

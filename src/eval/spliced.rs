@@ -28,7 +28,9 @@ use std::ops::Range;
 impl<'a> Evaluator<'a> {
     /// Runs bytes `region` of file `file` (statements, or a macro body's `items`), whose
     /// reading as a whole failed with `failed`, as POV-Ray's token reader would; `failed` if
-    /// the text has no directive that could explain it.
+    /// the text has no directive that could explain it. With `resume`, stops after a
+    /// statement past every blanked branch and returns where the grammar can go on reading
+    /// the file whole (`None`: the region is done).
     pub(super) fn run_spliced(
         &mut self,
         file: FileId,
@@ -36,17 +38,20 @@ impl<'a> Evaluator<'a> {
         items: bool,
         failed: Diagnostic,
         f: &mut Handler<'_, 'a>,
-    ) -> Result<()> {
+        resume: bool,
+    ) -> Result<Option<usize>> {
         let text = &self.sources.file(file).text[region.clone()];
         let steering = ["#if", "#while", "#for"].iter().any(|d| text.contains(d));
         if !steering {
             return Err(failed);
         }
         let text = text.to_owned();
-        self.read_spliced(text, file, region.start, items, f)
+        let resumed = self.read_spliced(text, file, region.start, items, f, resume)?;
+        Ok(resumed.map(|at| region.start + at))
     }
 
-    /// Reads `text`, the part of file `file` from byte `base`, statement by statement.
+    /// Reads `text`, the part of file `file` from byte `base`, statement by statement (with
+    /// `resume`, only until a statement ends past every blanked branch: where that is).
     fn read_spliced(
         &mut self,
         mut text: String,
@@ -54,20 +59,26 @@ impl<'a> Evaluator<'a> {
         base: usize,
         items: bool,
         f: &mut Handler<'_, 'a>,
-    ) -> Result<()> {
+        resume: bool,
+    ) -> Result<Option<usize>> {
         let mut pos = 0;
+        // Where the last blanked branch ends.
+        let mut blanked_to = 0;
         loop {
             pos = tokens::skip_blanks(&text, pos);
             if pos >= text.len() {
-                return Ok(());
+                return Ok(None);
+            }
+            if resume && pos > 0 && pos >= blanked_to {
+                return Ok(Some(pos));
             }
             if let Some(c) = tokens::conditional_at(&text, pos).filter(|c| !tokens::balanced(&text, c)) {
                 let chosen = self.choose(&text, &c, file, base)?;
-                tokens::keep_branch(&mut text, &c, chosen);
+                blanked_to = blanked_to.max(keep(&mut text, &c, chosen));
                 continue;
             }
             let (failed, read) = match syntax::statement_in(&text, pos, file, base, items) {
-                None => return Ok(()),
+                None => return Ok(None),
                 Some(Ok((node, end))) => match tokens::directive_after_unknown(&node, &text, base) {
                     None => {
                         self.one_item(&node, f)?;
@@ -88,7 +99,7 @@ impl<'a> Evaluator<'a> {
             }
             if let Some(c) = tokens::conditional_at(&text, pos) {
                 let chosen = self.choose(&text, &c, file, base)?;
-                tokens::keep_branch(&mut text, &c, chosen);
+                blanked_to = blanked_to.max(keep(&mut text, &c, chosen));
                 continue;
             }
             let at = failed
@@ -107,7 +118,7 @@ impl<'a> Evaluator<'a> {
             };
             let chosen = culprit.as_ref().map(|c| (c, self.choose(&text, c, file, base)));
             match (chosen, read) {
-                (Some((c, Ok(chosen))), _) => tokens::keep_branch(&mut text, c, chosen),
+                (Some((c, Ok(chosen))), _) => blanked_to = blanked_to.max(keep(&mut text, c, chosen)),
                 (_, Some((node, end))) => {
                     self.one_item(&node, f)?;
                     pos = end;
@@ -174,7 +185,9 @@ impl<'a> Evaluator<'a> {
         let node = &nodes[0];
         let body = &text[l.body.clone()];
         let body_base = base + l.body.start;
-        let mut pass = |ev: &mut Evaluator<'a>| ev.read_spliced(body.to_owned(), file, body_base, items, f);
+        let mut pass = |ev: &mut Evaluator<'a>| {
+            ev.read_spliced(body.to_owned(), file, body_base, items, f, false).map(|_| ())
+        };
         match node.kind {
             NodeKind::While => {
                 while self.truth(&node.args[0])? {
@@ -186,6 +199,12 @@ impl<'a> Evaluator<'a> {
             _ => self.for_loop_with(node, &mut pass),
         }
     }
+}
+
+/// Blanks what conditional `c` leaves out when `chosen` is taken; where its `#end` ends.
+fn keep(text: &mut String, c: &tokens::Conditional, chosen: Option<usize>) -> usize {
+    tokens::keep_branch(text, c, chosen);
+    c.end.end
 }
 
 /// The error of a statement the grammar read with a conditional directive where a value is,

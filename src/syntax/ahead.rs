@@ -117,31 +117,33 @@ impl Drop for Ahead {
     }
 }
 
-/// Starts up to `helpers` threads parsing `source` in chunks, given where its top-level
-/// blocks end. With helpers, the first chunk starts at the beginning of the file: the caller
-/// only evaluates.
+/// Starts up to `helpers` threads parsing `source` from byte `from` (where a statement
+/// starts) in chunks, given where its top-level blocks end. With helpers, the first chunk
+/// starts at `from`: the caller only evaluates.
 pub(super) fn start(
     source: &Arc<str>,
     file: FileId,
     block_ends: &[usize],
     helpers: usize,
+    from: usize,
 ) -> Ahead {
-    if helpers == 0 || source.len() < MIN_BYTES {
+    if helpers == 0 || source.len() - from < MIN_BYTES {
         return Ahead::default();
     }
+    let block_ends = &block_ends[block_ends.partition_point(|&end| end <= from)..];
     // Parsing through the grammar takes about six times as long as evaluating, so every
     // core parses (the evaluating thread mostly waits; 1M spheres on two cores: 1.66 s
     // against 2.77 s with one helper). Statements of the fast lane take less time to parse
     // than to evaluate: then the evaluating thread is the limit and gets a core of its own
     // (100 MB of spheres on two cores: 0.83 s against 0.96-1.34 s with two helpers).
-    let helpers = if mostly_plain(source, file, block_ends) {
+    let helpers = if mostly_plain(source, file, block_ends, from) {
         helpers - 1
     } else {
         helpers
     };
     let helpers = helpers.clamp(1, MAX_HELPERS);
-    let mut starts = vec![0];
-    let mut target = CHUNK_BYTES;
+    let mut starts = vec![from];
+    let mut target = from + CHUNK_BYTES;
     let bytes = source.as_bytes();
     for &end in block_ends {
         if end >= target && !followed_by_semicolon(bytes, end) {
@@ -203,10 +205,10 @@ fn spawn_helpers(source: &Arc<str>, file: FileId, starts: &[usize], helpers: usi
 /// Top-level blocks probed at the start of a file by [`mostly_plain`].
 const PROBE: usize = 32;
 
-/// Whether at least three quarters of the first [`PROBE`] top-level blocks are statements
-/// the fast lane ([`plain`]) reads.
-fn mostly_plain(source: &str, file: FileId, block_ends: &[usize]) -> bool {
-    let (mut start, mut taken) = (0, 0);
+/// Whether at least three quarters of the first [`PROBE`] top-level blocks from byte `from`
+/// on are statements the fast lane ([`plain`]) reads.
+fn mostly_plain(source: &str, file: FileId, block_ends: &[usize], from: usize) -> bool {
+    let (mut start, mut taken) = (from, 0);
     for &end in block_ends.iter().take(PROBE) {
         taken += usize::from(plain::statement(source, start, file).is_some_and(|(_, e)| e == end));
         start = end;

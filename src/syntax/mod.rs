@@ -469,8 +469,23 @@ pub fn statements(
     file: FileId,
     helpers: usize,
 ) -> Result<Statements, Diagnostic> {
+    statements_from(text, file, helpers, 0)
+}
+
+/// Like [`statements`], from byte `from` of the file on (where a statement starts).
+pub fn statements_from(
+    text: std::sync::Arc<str>,
+    file: FileId,
+    helpers: usize,
+    from: usize,
+) -> Result<Statements, Diagnostic> {
     limit_parser_work();
-    let block_ends = check_nesting(&text, file, 0)?;
+    // (Blocks are counted from `from`: before it, a block opened by a directive's branch and
+    // closed after its `#end` would leave the count one too high to the end of the file.)
+    let block_ends: Vec<usize> = check_nesting(&text[from..], file, from)?
+        .into_iter()
+        .map(|end| end + from)
+        .collect();
     let prescanned = bulk::prescan(&text, 0);
     let source: std::sync::Arc<str> = match prescanned.text {
         Some(copy) => copy.into(),
@@ -479,13 +494,13 @@ pub fn statements(
     // The fast path's lists are handed to the one parser that meets them, so a file with any
     // is read by one thread (its time is in the lists, which the fast path reads).
     let ahead = if prescanned.lists.is_empty() {
-        ahead::start(&source, file, &block_ends, helpers)
+        ahead::start(&source, file, &block_ends, helpers, from)
     } else {
         Default::default()
     };
     Ok(Statements {
         source,
-        pos: 0,
+        pos: from,
         lower: Lower {
             file,
             offset: 0,
