@@ -91,6 +91,43 @@ pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -
     out
 }
 
+/// Whether the polynomial `c` has a real root in `[lo, hi]` that `accept` takes, for shadow
+/// rays: the same roots [`roots_in`] finds, but a root whose bracket lies inside `sure` (where
+/// every root is taken) is not refined, and the search stops at the first root taken.
+pub fn any_root_in<const N: usize>(
+    c: &[f64; N],
+    degree: usize,
+    (lo, hi): (f64, f64),
+    sure: (f64, f64),
+    accept: impl Fn(f64) -> bool,
+) -> bool {
+    if degree <= 1 || lo > hi || c[degree] == 0.0 {
+        return roots_in(c, degree, lo, hi).as_slice().iter().any(|&t| accept(t));
+    }
+    let d = derivative(c, degree);
+    let critical = roots_in(&d, degree - 1, lo, hi);
+    let mut a = lo;
+    let mut fa = eval(c, degree, a);
+    for &b in critical.as_slice().iter().chain(std::iter::once(&hi)) {
+        let fb = eval(c, degree, b);
+        if fa == 0.0 {
+            if accept(a) {
+                return true;
+            }
+        } else if fa.signum() != fb.signum() && fb != 0.0 {
+            if sure.0 < a && b < sure.1 {
+                return true;
+            }
+            if accept(refine(c, &d, degree, a, b, fa)) {
+                return true;
+            }
+        }
+        a = b;
+        fa = fb;
+    }
+    fa == 0.0 && accept(a)
+}
+
 /// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to
 /// bisection whenever a step leaves the bracket.
 fn refine<const N: usize>(c: &[f64; N], d: &[f64; N], degree: usize, mut a: f64, mut b: f64, fa: f64) -> f64 {
@@ -126,6 +163,28 @@ fn refine<const N: usize>(c: &[f64; N], d: &[f64; N], degree: usize, mut a: f64,
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn any_root_in_takes_the_roots_roots_in_finds() {
+        // (t-1)(t-2)(t-3)(t-4), and shifted up so that it has two roots or none.
+        let four = [24.0, -50.0, 35.0, -10.0, 1.0, 0.0, 0.0];
+        for lift in [0.0, 0.5, 0.99, 1.1, 30.0] {
+            let mut c = four;
+            c[0] += lift;
+            for (lo, hi) in [(0.0, 10.0), (1.5, 2.5), (2.2, 2.8), (-5.0, 0.5), (3.9, 3.95)] {
+                let found = roots_in(&c, 4, lo, hi);
+                for sure in [(lo, hi), (lo + 0.3, hi - 0.3), (f64::MAX, f64::MIN)] {
+                    for cut in [f64::MIN, 2.5, 3.5] {
+                        let accept = |t: f64| t > cut;
+                        let expected = found.as_slice().iter().any(|&t| accept(t));
+                        // (`sure` must lie where every root is accepted.)
+                        let sure = if cut > lo { (cut.max(sure.0), sure.1) } else { sure };
+                        assert_eq!(any_root_in(&c, 4, (lo, hi), sure, accept), expected, "{lift} {lo} {hi} {sure:?} {cut}");
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn quartic_with_four_roots() {

@@ -1,8 +1,16 @@
 //! Torus around the y axis: `(|p|² + R² − r²)² = 4R²(x² + z²)`.
 
-use super::poly::{Poly, roots_in};
+use super::poly::{Poly, any_root_in, roots_in};
 use super::{Crossings, Ray};
 use glam::DVec3;
+
+/// What a ray's search for crossings asks.
+enum Search<F> {
+    /// Each crossing in turn, until the function says stop.
+    Each(F),
+    /// Whether there is one (a shadow ray).
+    Any,
+}
 
 /// A torus in object space (centre at the origin, in the x-z plane).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,7 +47,13 @@ impl Torus {
     /// the part of the ray inside the bounding sphere (radius R + r), the slab |y| ≤ r and the
     /// ray's own range, and formed at that part's start (its coefficients grow with the
     /// distance from the torus).
-    fn each_root(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) -> bool {
+    fn each_root(&self, ray: &Ray, f: impl FnMut(f64) -> bool) -> bool {
+        self.search(ray, Search::Each(f))
+    }
+
+    /// [`Torus::each_root`] for `Search::Each`; for `Search::Any`, whether the ray meets the
+    /// torus in its range (a root known to lie well inside the range is not refined).
+    fn search<F: FnMut(f64) -> bool>(&self, ray: &Ray, search: Search<F>) -> bool {
         let (big, small) = (self.major, self.minor);
         let length = ray.direction.length();
         let d = ray.direction / length;
@@ -70,7 +84,18 @@ impl Torus {
         }
         let shift = lo.max(0.0).min(hi.max(0.0));
         let c = self.quartic(ray.origin + shift * d, d);
-        let roots = roots_in(&c, 4, (lo - shift) - margin, (hi - shift) + margin);
+        let range = ((lo - shift) - margin, (hi - shift) + margin);
+        let mut f = match search {
+            Search::Any => {
+                // Inside the ray's own range, with room for the rounding of t.
+                let room = 1e-9 * (ray.tmax * length).abs().min(1e300).max(bound);
+                let sure = (ray.tmin * length - shift + room, ray.tmax * length - shift - room);
+                let hit = |s: f64| ray.contains((shift + s) / length);
+                return any_root_in(&c, 4, range, sure, hit);
+            }
+            Search::Each(f) => f,
+        };
+        let roots = roots_in(&c, 4, range.0, range.1);
         for &s in roots.as_slice() {
             let t = (shift + s) / length;
             if ray.contains(t) && f(t) {
@@ -102,7 +127,7 @@ impl super::shape::Surface for Torus {
     }
 
     fn occludes(&self, ray: &Ray) -> bool {
-        self.each_root(ray, |_| true)
+        self.search(ray, Search::<fn(f64) -> bool>::Any)
     }
 
     #[inline]
