@@ -9,8 +9,8 @@
 //!
 //! - a conditional at the start of a statement whose branches open or close blocks is chosen
 //!   there, when the reader reaches it, exactly as POV-Ray chooses it;
-//! - a `#while` or `#for` loop whose body the grammar cannot read runs here pass by pass, its
-//!   body read this way at each pass;
+//! - a `#while` or `#for` loop met here whose body holds a conditional runs pass by pass, its
+//!   body read this way at each pass (at most 32 loops deep);
 //! - a conditional inside a statement (`sphere { 0, #if (B) 1 #else 2 #end }`) is chosen as
 //!   the statement starts: the same choice as POV-Ray's unless the statement itself changes
 //!   what the condition reads (a `#declare` inside it before the `#if`; a condition that cannot
@@ -24,6 +24,9 @@ use super::{Evaluator, Result, flow::Handler};
 use crate::diag::{Diagnostic, FileId, Span};
 use crate::syntax::{self, NodeKind, tokens};
 use std::ops::Range;
+
+/// Deepest nesting of loops read pass by pass here.
+const MAX_LOOPS: usize = 32;
 
 impl<'a> Evaluator<'a> {
     /// Runs bytes `region` of file `file` (statements, or a macro body's `items`), whose
@@ -41,12 +44,13 @@ impl<'a> Evaluator<'a> {
         resume: bool,
     ) -> Result<Option<usize>> {
         let text = &self.sources.file(file).text[region.clone()];
-        let steering = ["#if", "#while", "#for"].iter().any(|d| text.contains(d));
-        if !steering {
+        // (Only a conditional makes text the grammar cannot read that this reading can: a loop
+        // is read here only for a conditional inside it.)
+        if !text.contains("#if") {
             return Err(failed);
         }
         let text = text.to_owned();
-        let resumed = self.read_spliced(text, file, region.start, items, f, resume)?;
+        let resumed = self.read_spliced(text, file, region.start, (items, 0), f, resume)?;
         Ok(resumed.map(|at| region.start + at))
     }
 
@@ -57,7 +61,7 @@ impl<'a> Evaluator<'a> {
         mut text: String,
         file: FileId,
         base: usize,
-        items: bool,
+        (items, loops): (bool, usize),
         f: &mut Handler<'_, 'a>,
         resume: bool,
     ) -> Result<Option<usize>> {
@@ -77,6 +81,16 @@ impl<'a> Evaluator<'a> {
                 blanked_to = blanked_to.max(keep(&mut text, &c, chosen));
                 continue;
             }
+            // A loop holding a conditional is read pass by pass (not first by the grammar,
+            // which for loops nested in loops would read the inner ones again at every level),
+            // at most MAX_LOOPS deep.
+            if let Some(l) = tokens::loop_at(&text, pos)
+                .filter(|l| loops < MAX_LOOPS && text[l.body.clone()].contains("#if"))
+            {
+                self.spliced_loop(&text, &l, file, base, (items, loops + 1), f)?;
+                pos = l.end.end;
+                continue;
+            }
             let (failed, read) = match syntax::statement_in(&text, pos, file, base, items) {
                 None => return Ok(None),
                 Some(Ok((node, end))) => match tokens::directive_after_unknown(&node, &text, base) {
@@ -92,11 +106,6 @@ impl<'a> Evaluator<'a> {
                 },
                 Some(Err(e)) => (e, None),
             };
-            if let Some(l) = tokens::loop_at(&text, pos) {
-                self.spliced_loop(&text, &l, file, base, items, f)?;
-                pos = l.end.end;
-                continue;
-            }
             if let Some(c) = tokens::conditional_at(&text, pos) {
                 let chosen = self.choose(&text, &c, file, base)?;
                 blanked_to = blanked_to.max(keep(&mut text, &c, chosen));
@@ -177,7 +186,7 @@ impl<'a> Evaluator<'a> {
         l: &tokens::Loop,
         file: FileId,
         base: usize,
-        items: bool,
+        (items, loops): (bool, usize),
         f: &mut Handler<'_, 'a>,
     ) -> Result<()> {
         let directive = format!("{} #end", &text[l.head.clone()]);
@@ -186,7 +195,7 @@ impl<'a> Evaluator<'a> {
         let body = &text[l.body.clone()];
         let body_base = base + l.body.start;
         let mut pass = |ev: &mut Evaluator<'a>| {
-            ev.read_spliced(body.to_owned(), file, body_base, items, f, false).map(|_| ())
+            ev.read_spliced(body.to_owned(), file, body_base, (items, loops), f, false).map(|_| ())
         };
         match node.kind {
             NodeKind::While => {

@@ -162,3 +162,22 @@ fn errors_still_point_at_the_culprit() {
     let e = err("#if (1) merge { #else union { #end sphere { 0, 1 } }");
     assert!(e.contains("merge"), "{e}");
 }
+
+#[test]
+fn thousands_of_nested_loops_around_a_conditional_stay_quick() {
+    // Read pass by pass at most 32 loops deep (each reading parses what the loop holds), the
+    // rest by the grammar: a located error in about the time of one parse, not minutes.
+    let n = 5000;
+    let text = format!(
+        "{SET}#declare I = 0;\n{}sphere {{ #if (1) 0 #else ] #end, ] }}\n#declare I = 1;\n{}",
+        "#while (I < 1)\n".repeat(n),
+        "#end\n".repeat(n)
+    );
+    let start = std::time::Instant::now();
+    let err = trace::load_str(std::path::Path::new("deep.rt"), text, &Default::default())
+        .expect_err("a syntax error")
+        .to_string();
+    assert!(err.contains("deep.rt:"), "{err}");
+    let seconds = start.elapsed().as_secs_f64();
+    assert!(seconds < 30.0, "{seconds} s");
+}
