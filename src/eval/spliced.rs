@@ -166,10 +166,10 @@ impl<'a> Evaluator<'a> {
                 _ => format!("{head} #end"),
             };
             let nodes = syntax::parse_fragment_items(&directive, file, at)?;
-            let node = &nodes[0];
-            let holds = match node.kind {
-                NodeKind::If => self.truth(&node.args[0])?,
-                _ => self.ifdef_holds(node)?,
+            let holds = match nodes.first() {
+                Some(node) if node.kind == NodeKind::If => self.truth(&node.args[0])?,
+                Some(node) if node.kind == NodeKind::IfDef => self.ifdef_holds(node)?,
+                _ => return Err(Diagnostic::error("expected a condition here", Span::new(file, at, at + 1))),
             };
             if holds {
                 return Ok(Some(i));
@@ -190,8 +190,11 @@ impl<'a> Evaluator<'a> {
         f: &mut Handler<'_, 'a>,
     ) -> Result<()> {
         let directive = format!("{} #end", &text[l.head.clone()]);
-        let nodes = syntax::parse_fragment_items(&directive, file, base + l.head.start)?;
-        let node = &nodes[0];
+        let at = base + l.head.start;
+        let nodes = syntax::parse_fragment_items(&directive, file, at)?;
+        let Some(node) = nodes.first().filter(|n| matches!(n.kind, NodeKind::While | NodeKind::For)) else {
+            return Err(Diagnostic::error("expected a loop here", Span::new(file, at, at + 1)));
+        };
         let body = &text[l.body.clone()];
         let body_base = base + l.body.start;
         let mut pass = |ev: &mut Evaluator<'a>| {
