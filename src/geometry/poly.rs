@@ -68,27 +68,56 @@ pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -
     if c[degree] == 0.0 {
         return roots_in(c, degree - 1, lo, hi);
     }
-    // Split [lo, hi] at the critical points; each piece is monotonic.
     let d = derivative(c, degree);
-    let critical = roots_in(&d, degree - 1, lo, hi);
+    monotonic_pieces(c, &d, degree, (lo, hi), |piece| {
+        match piece {
+            Piece::At(a) => {
+                if out.len == 0 || out.t[out.len - 1] != a {
+                    out.push(a);
+                }
+            }
+            Piece::Bracket(a, b, fa) => out.push(refine(c, &d, degree, a, b, fa)),
+        }
+        false
+    });
+    out
+}
+
+/// What [`monotonic_pieces`] meets.
+enum Piece {
+    /// A root at the end of a piece.
+    At(f64),
+    /// A piece `[a, b]` whose ends differ in sign (the value at `a` given).
+    Bracket(f64, f64, f64),
+}
+
+/// `[lo, hi]` split at the critical points of `c` (degree ≥ 2, `d` its derivative) into
+/// pieces where it is monotonic: `visit` sees each root at a piece's end and each piece whose
+/// ends differ in sign, in increasing order, until it returns true; whether it did.
+fn monotonic_pieces<const N: usize>(
+    c: &[f64; N],
+    d: &[f64; N],
+    degree: usize,
+    (lo, hi): (f64, f64),
+    mut visit: impl FnMut(Piece) -> bool,
+) -> bool {
+    let critical = roots_in(d, degree - 1, lo, hi);
     let mut a = lo;
     let mut fa = eval(c, degree, a);
     for &b in critical.as_slice().iter().chain(std::iter::once(&hi)) {
         let fb = eval(c, degree, b);
-        if fa == 0.0 {
-            if out.len == 0 || out.t[out.len - 1] != a {
-                out.push(a);
-            }
-        } else if fa.signum() != fb.signum() && fb != 0.0 {
-            out.push(refine(c, &d, degree, a, b, fa));
+        let stop = if fa == 0.0 {
+            visit(Piece::At(a))
+        } else {
+            fa.signum() != fb.signum() && fb != 0.0 && visit(Piece::Bracket(a, b, fa))
+        };
+        if stop {
+            return true;
         }
         a = b;
         fa = fb;
     }
-    if fa == 0.0 && (out.len == 0 || out.t[out.len - 1] != a) {
-        out.push(a);
-    }
-    out
+    fa == 0.0 && visit(Piece::At(a))
 }
 
 /// Whether the polynomial `c` has a real root in `[lo, hi]` that `accept` takes, for shadow
@@ -105,27 +134,12 @@ pub fn any_root_in<const N: usize>(
         return roots_in(c, degree, lo, hi).as_slice().iter().any(|&t| accept(t));
     }
     let d = derivative(c, degree);
-    let critical = roots_in(&d, degree - 1, lo, hi);
-    let mut a = lo;
-    let mut fa = eval(c, degree, a);
-    for &b in critical.as_slice().iter().chain(std::iter::once(&hi)) {
-        let fb = eval(c, degree, b);
-        if fa == 0.0 {
-            if accept(a) {
-                return true;
-            }
-        } else if fa.signum() != fb.signum() && fb != 0.0 {
-            if sure.0 < a && b < sure.1 {
-                return true;
-            }
-            if accept(refine(c, &d, degree, a, b, fa)) {
-                return true;
-            }
+    monotonic_pieces(c, &d, degree, (lo, hi), |piece| match piece {
+        Piece::At(a) => accept(a),
+        Piece::Bracket(a, b, fa) => {
+            (sure.0 < a && b < sure.1) || accept(refine(c, &d, degree, a, b, fa))
         }
-        a = b;
-        fa = fb;
-    }
-    fa == 0.0 && accept(a)
+    })
 }
 
 /// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to

@@ -71,32 +71,20 @@ struct Directive<'t> {
 /// The directives of `text` from byte `from` on, in order (strings and comments passed over).
 fn directives(text: &str, from: usize) -> impl Iterator<Item = Directive<'_>> {
     let b = text.as_bytes();
-    let mut i = from;
-    std::iter::from_fn(move || {
-        while i < b.len() {
-            match b[i] {
-                b'"' => i = string_end(b, i),
-                b'/' if matches!(b.get(i + 1), Some(b'/' | b'*')) => i = comment_end(b, i),
-                b'#' => {
-                    let at = i;
-                    i += 1;
-                    let start = i;
-                    while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                        i += 1;
-                    }
-                    if i > start {
-                        return Some(Directive {
-                            at,
-                            word: &text[start..i],
-                            after: i,
-                        });
-                    }
-                }
-                _ => i += 1,
-            }
-        }
-        None
-    })
+    code(b, from..b.len())
+        .filter(|&(_, c)| c == b'#')
+        .filter_map(move |(at, _)| {
+            let word = &b[at + 1..];
+            let len = word
+                .iter()
+                .position(|c| !(c.is_ascii_alphanumeric() || *c == b'_'))
+                .unwrap_or(word.len());
+            (len > 0).then(|| Directive {
+                at,
+                word: &text[at + 1..at + 1 + len],
+                after: at + 1 + len,
+            })
+        })
 }
 
 /// Just after the string starting at `b[i]` (`"`).
@@ -136,21 +124,13 @@ pub fn skip_blanks(text: &str, mut pos: usize) -> usize {
 /// closes.
 fn parenthesis_end(text: &str, pos: usize) -> Option<usize> {
     let b = text.as_bytes();
-    let mut i = skip_blanks(text, pos);
-    if b.get(i) != Some(&b'(') {
+    let start = skip_blanks(text, pos);
+    if b.get(start) != Some(&b'(') {
         return None;
     }
     let mut depth = 0usize;
-    while i < b.len() {
-        match b[i] {
-            b'"' => {
-                i = string_end(b, i);
-                continue;
-            }
-            b'/' if matches!(b.get(i + 1), Some(b'/' | b'*')) => {
-                i = comment_end(b, i);
-                continue;
-            }
+    for (i, c) in code(b, start..b.len()) {
+        match c {
             b'(' => depth += 1,
             b')' => {
                 depth -= 1;
@@ -160,9 +140,26 @@ fn parenthesis_end(text: &str, pos: usize) -> Option<usize> {
             }
             _ => {}
         }
-        i += 1;
     }
     None
+}
+
+/// The bytes of `b[range]` outside strings and comments, with their positions.
+fn code(b: &[u8], range: Range<usize>) -> impl Iterator<Item = (usize, u8)> + '_ {
+    let mut i = range.start;
+    std::iter::from_fn(move || {
+        while i < range.end {
+            match b[i] {
+                b'"' => i = string_end(b, i),
+                b'/' if matches!(b.get(i + 1), Some(b'/' | b'*')) => i = comment_end(b, i),
+                c => {
+                    i += 1;
+                    return Some((i - 1, c));
+                }
+            }
+        }
+        None
+    })
 }
 
 /// The conditional whose `#if`, `#ifdef` or `#ifndef` stands at byte `pos`, if one does and
@@ -244,18 +241,9 @@ pub fn loop_at(text: &str, pos: usize) -> Option<Loop> {
 /// `}` outside strings and comments).
 pub fn balanced(text: &str, c: &Conditional) -> bool {
     c.branches.iter().all(|branch| {
-        let b = text.as_bytes();
-        let (mut i, mut depth) = (branch.body.start, 0i64);
-        while i < branch.body.end {
-            match b[i] {
-                b'"' => {
-                    i = string_end(b, i);
-                    continue;
-                }
-                b'/' if matches!(b.get(i + 1), Some(b'/' | b'*')) => {
-                    i = comment_end(b, i);
-                    continue;
-                }
+        let mut depth = 0i64;
+        for (_, c) in code(text.as_bytes(), branch.body.clone()) {
+            match c {
                 b'{' => depth += 1,
                 b'}' => {
                     depth -= 1;
@@ -265,7 +253,6 @@ pub fn balanced(text: &str, c: &Conditional) -> bool {
                 }
                 _ => {}
             }
-            i += 1;
         }
         depth == 0
     })

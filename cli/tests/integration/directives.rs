@@ -119,22 +119,13 @@ fn a_big_file_parsed_ahead_reads_them_as_one_thread_does() {
     }
     // (Early, too: the grammar goes back to reading the file whole after it, helpers parsing
     // ahead from there.)
-    let token = "#if (U) merge { #else union { #end sphere { 0, 1 } }\n";
-    let plain = "union { sphere { 0, 1 } }\n";
+    let token =
+        "#if (U) union { box { 0, 1 } #else union { sphere { x, 1 } #end sphere { 0, 1 } }\n";
+    let plain = "union { sphere { x, 1 } sphere { 0, 1 } }\n";
     let with = format!("#declare U = 0;\n{token}{body}{token}{body}");
     let without = format!("{plain}{body}{plain}{body}");
     assert!(with.len() > 1 << 19);
-    let load = |text: &str, threads| {
-        let options = trace::LoadOptions {
-            width: 32,
-            height: 24,
-            threads: Some(threads),
-            ..Default::default()
-        };
-        let loaded = trace::load_str(std::path::Path::new("big.rt"), text.to_string(), &options)
-            .unwrap_or_else(|e| panic!("{e}"));
-        format!("{:?}", loaded.scene)
-    };
+    let load = crate::parsing::load_with_threads;
     let expected = load(&without, 1);
     assert!(load(&with, 1) == expected);
     assert!(load(&with, 4) == expected);

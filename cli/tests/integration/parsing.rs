@@ -63,7 +63,8 @@ fn fast_path_errors_point_at_the_entry() {
     assert!(err.contains("announces 145 entries but lists 144"), "{err}");
 }
 
-fn load_with_threads(text: &str, threads: usize) -> String {
+/// The scene `text` makes when loaded with `threads` threads, as text.
+pub(crate) fn load_with_threads(text: &str, threads: usize) -> String {
     let options = trace::LoadOptions {
         width: 64,
         height: 48,
