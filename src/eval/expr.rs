@@ -10,11 +10,31 @@ pub(super) const STRING_FUNCTIONS: [&str; 8] =
     ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime"];
 
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
-pub(super) const EQUALITY_TOLERANCE: f64 = 1e-10;
+const EQUALITY_TOLERANCE: f64 = 1e-10;
 
 type Result<T> = std::result::Result<T, Diagnostic>;
 
 impl Evaluator<'_> {
+    /// The value `#if (c) a [#elseif (d) b]* #else z #end` leaves where a value is read: the
+    /// first whose condition holds (only the conditions up to it are evaluated), else `z`.
+    pub(super) fn chosen<'e>(
+        &mut self,
+        branches: &'e [(Expr, Expr)],
+        otherwise: &'e Expr,
+    ) -> Result<&'e Expr> {
+        for (c, v) in branches {
+            if self.truth(c)? {
+                return Ok(v);
+            }
+        }
+        Ok(otherwise)
+    }
+
+    /// Whether a float counts as true (POV-Ray's |x| > 1e-10).
+    pub(super) fn truth(&mut self, e: &Expr) -> Result<bool> {
+        Ok(self.float(e)?.abs() > EQUALITY_TOLERANCE)
+    }
+
     /// Evaluates an expression to a value; a number that is not finite (an overflow such as
     /// `1e308*10`, `exp(1000)` or `1e400`, or a NaN such as `val("nan")`) is an error here,
     /// at the innermost expression that made it.
@@ -75,12 +95,8 @@ impl Evaluator<'_> {
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b),
             ExprKind::Chosen(branches, otherwise) => {
-                for (c, v) in branches {
-                    if self.float(c)?.abs() > EQUALITY_TOLERANCE {
-                        return self.eval(v);
-                    }
-                }
-                self.eval(otherwise)
+                let chosen = self.chosen(branches, otherwise)?;
+                self.eval(chosen)
             }
             ExprKind::Ternary(c, a, b) => {
                 // POV-Ray evaluates both branches (it reads them), so a rand() in the one not

@@ -109,7 +109,7 @@ impl<'a> Evaluator<'a> {
                     // A statement read with a directive where a value is.
                     Some(_) => {
                         let at = statement.span.start as usize;
-                        (super::spliced::directive_in_value(statement.span.file, at), at)
+                        (super::spliced::directive_in_value_error(statement.span.file, at), at)
                     }
                 },
                 // What the grammar cannot read may be directives working on tokens.
@@ -350,10 +350,6 @@ impl<'a> Evaluator<'a> {
                     .push((name.to_string(), self.env.get(name).cloned()));
             }
         }
-    }
-
-    pub(super) fn truth(&mut self, e: &syntax::Expr) -> Result<bool> {
-        Ok(self.float(e)?.abs() > 1e-10)
     }
 
     /// Whether `#ifdef (Name)` (or `#ifndef`, or an array element's) takes its first branch.
@@ -779,7 +775,7 @@ impl<'a> Evaluator<'a> {
             let items = syntax::parse_fragment_items(text, file, offset)?;
             for item in &items {
                 if let Some(at) = syntax::tokens::directive_after_unknown(item, text, offset) {
-                    return Err(super::spliced::directive_in_value(file, offset + at));
+                    return Err(super::spliced::directive_in_value_error(file, offset + at));
                 }
             }
             Ok(items)

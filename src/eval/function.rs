@@ -274,13 +274,7 @@ impl Evaluator<'_> {
             // (A directive in a function's body is executed as the function is declared, as
             // POV-Ray's reader does.)
             ExprKind::Chosen(branches, otherwise) => {
-                let mut chosen: &Expr = otherwise;
-                for (c, v) in branches {
-                    if self.float(c)?.abs() > super::expr::EQUALITY_TOLERANCE {
-                        chosen = v;
-                        break;
-                    }
-                }
+                let chosen = self.chosen(branches, otherwise)?;
                 self.compile(chosen, params, code)?;
             }
             ExprKind::Ternary(..) => return not_here("`? :` (use select(a, b, c))", e.span),

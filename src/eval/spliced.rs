@@ -102,7 +102,7 @@ impl<'a> Evaluator<'a> {
                     // (Read, but with a directive where a value is: chosen below, or, if it
                     // cannot be, the statement is evaluated as read, whose message names the
                     // item.)
-                    Some(at) => (directive_in_value(file, base + at), Some((node, end))),
+                    Some(at) => (directive_in_value_error(file, base + at), Some((node, end))),
                 },
                 Some(Err(e)) => (e, None),
             };
@@ -221,7 +221,7 @@ fn keep(text: &mut String, c: &tokens::Conditional, chosen: Option<usize>) -> us
 
 /// The error of a statement the grammar read with a conditional directive where a value is,
 /// at byte `at` of `file`.
-pub(super) fn directive_in_value(file: FileId, at: usize) -> Diagnostic {
+pub(super) fn directive_in_value_error(file: FileId, at: usize) -> Diagnostic {
     Diagnostic::error(
         "a directive stands where a value is read here",
         Span::new(file, at, at + 1),

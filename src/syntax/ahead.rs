@@ -118,7 +118,7 @@ impl Drop for Ahead {
 }
 
 /// Starts up to `helpers` threads parsing `source` from byte `from` (where a statement
-/// starts) in chunks, given where its top-level blocks end. With helpers, the first chunk
+/// starts) in chunks, given where its top-level blocks end after `from`. With helpers, the first chunk
 /// starts at `from`: the caller only evaluates.
 pub(super) fn start(
     source: &Arc<str>,
@@ -130,7 +130,6 @@ pub(super) fn start(
     if helpers == 0 || source.len() - from < MIN_BYTES {
         return Ahead::default();
     }
-    let block_ends = &block_ends[block_ends.partition_point(|&end| end <= from)..];
     // Parsing through the grammar takes about six times as long as evaluating, so every
     // core parses (the evaluating thread mostly waits; 1M spheres on two cores: 1.66 s
     // against 2.77 s with one helper). Statements of the fast lane take less time to parse
