@@ -122,7 +122,8 @@ def main():
         w.writerows(rows)
     note = ""
     if only:
-        note = (f"Only the {len(fresh)} scene{"s" if len(fresh) != 1 else ""} named by `--only` were re-run at this commit; the other rows "
+        plural = "s" if len(fresh) != 1 else ""
+        note = (f"Only the {len(fresh)} scene{plural} named by `--only` were re-run at this commit; the other rows "
                 "come from the last full run.")
     write_report(out[:-4] + ".md", rows, note)
 

@@ -1214,8 +1214,9 @@ impl Evaluator<'_> {
 
     /// Appends a `triangle` or `smooth_triangle` node to a mesh (a degenerate one is dropped
     /// with a warning, as POV-Ray does).
-    /// (`in_mesh`: a mesh's member, which POV-Ray makes flat when its three normals are
-    /// equal; a stand-alone smooth triangle keeps them.)
+    /// (`in_mesh`: a mesh's member, flat when its three normals are equal and kept whatever
+    /// their sides; a stand-alone smooth triangle keeps equal normals smooth and is dropped
+    /// when they straddle its face, as POV-Ray does.)
     fn add_triangle(&mut self, mesh: &mut Mesh, node: &Node, in_mesh: bool) -> Result<()> {
         let smooth = node.kind == NodeKind::SmoothTriangle;
         let step = if smooth { 2 } else { 1 };
@@ -1276,7 +1277,7 @@ impl Evaluator<'_> {
         mesh: &mut Mesh,
         p: &[DVec3; 3],
         normals: Option<[DVec3; 3]>,
-        flatten_equal: bool,
+        in_mesh: bool,
         span: Span,
     ) -> Option<[u32; 3]> {
         let ng = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -1288,11 +1289,11 @@ impl Evaluator<'_> {
             return None;
         }
         let Some(n) = normals else { return Some(FLAT) };
-        match smooth_normals(ng, &n, flatten_equal) {
+        match smooth_normals(ng, &n, in_mesh) {
             SmoothNormals::Flat => Some(FLAT),
             SmoothNormals::Degenerate => {
                 self.warn(Diagnostic::warning(
-                    "degenerate triangle: its vertex normals lie on both sides of the face (POV-Ray drops it)",
+                    "degenerate smooth_triangle: a zero normal, or normals on both sides of the face (POV-Ray drops it; in a mesh it would be kept)",
                     span,
                 ));
                 None
@@ -1432,7 +1433,7 @@ impl Evaluator<'_> {
                 ));
             }
         };
-        let (mut mesh, degenerate, dropped_smooth) =
+        let (mut mesh, degenerate) =
             assemble_mesh(&vertices, &normals, &faces, &normal_faces, &uv_faces, &face_textures);
         mesh.uvs = uvs;
         if mesh.face_textures.iter().any(|f| f.iter().any(|&t| t != ir::OWN_TEXTURE)) {
@@ -1440,11 +1441,9 @@ impl Evaluator<'_> {
         } else {
             mesh.face_textures.clear();
         }
-        if degenerate + dropped_smooth > 0 {
+        if degenerate > 0 {
             self.warn(Diagnostic::warning(
-                format!(
-                    "mesh2: {degenerate} zero-area and {dropped_smooth} straddling-normal triangles are not rendered (as in POV-Ray)"
-                ),
+                format!("mesh2: {degenerate} zero-area triangles are not rendered (as in POV-Ray)"),
                 node.word_span,
             ));
         }
@@ -1472,7 +1471,7 @@ impl Evaluator<'_> {
                 file_expr.span,
             )
         })?;
-        let (mesh, degenerate, dropped_smooth) = assemble_mesh(
+        let (mesh, degenerate) = assemble_mesh(
             &data.vertices,
             &data.normals,
             &data.faces,
@@ -1480,10 +1479,10 @@ impl Evaluator<'_> {
             &[],
             &[],
         );
-        if degenerate + dropped_smooth > 0 {
+        if degenerate > 0 {
             self.warn(Diagnostic::warning(
                 format!(
-                    "{file}: {degenerate} zero-area and {dropped_smooth} straddling-normal triangles are not rendered (as POV-Ray would not render them in the converted mesh2)"
+                    "{file}: {degenerate} zero-area triangles are not rendered (as POV-Ray would not render them in the converted mesh2)"
                 ),
                 file_expr.span,
             ));
@@ -1715,21 +1714,44 @@ fn check_bulk_count(node: &Node, list: &crate::syntax::bulk::BulkList) -> Result
 }
 
 enum SmoothNormals {
-    /// All three normals equal: the triangle is flat.
+    /// The three normals equal: the triangle is flat.
     Flat,
-    /// Normals on both sides of the face: POV-Ray drops the triangle.
+    /// A stand-alone smooth triangle with a zero normal, or with normals on both sides of its
+    /// face: POV-Ray drops it.
     Degenerate,
     /// Unit normals.
     Smooth([DVec3; 3]),
 }
 
-/// POV-Ray's smooth-triangle rule: unit vertex normals, flat when all equal, degenerate when
-/// they are not all on the same side of the geometric normal `ng`.
-fn smooth_normals(ng: DVec3, n: &[DVec3; 3], flatten_equal: bool) -> SmoothNormals {
-    let unit = n.map(|v| v.normalize_or_zero());
-    if flatten_equal && unit[0] == unit[1] && unit[1] == unit[2] {
-        return SmoothNormals::Flat;
+/// A mesh's vertex normal as POV-Ray stores it: a zero one (every component under 1e-10)
+/// becomes <1, 0, 0>, and it is made unit.
+fn mesh_normal(n: DVec3) -> DVec3 {
+    if n.abs().max_element() < 1e-10 {
+        DVec3::X
+    } else {
+        n.normalize()
     }
+}
+
+/// POV-Ray's smooth-triangle rules. A mesh's member (`in_mesh`; a `mesh2` face too) is flat
+/// when its unit normals are equal to within 1e-10 (squared distance), smooth otherwise, even
+/// when its normals lie on both sides of the face (POV-Ray interpolates them as they are). A
+/// stand-alone `smooth_triangle` keeps equal normals smooth but is dropped when a normal is
+/// zero or the normals are not all on one side of the geometric normal `ng`.
+fn smooth_normals(ng: DVec3, n: &[DVec3; 3], in_mesh: bool) -> SmoothNormals {
+    if in_mesh {
+        let unit = n.map(mesh_normal);
+        let apart = |a: DVec3, b: DVec3| (a - b).length_squared() > 1e-10;
+        return if apart(unit[0], unit[1]) || apart(unit[0], unit[2]) {
+            SmoothNormals::Smooth(unit)
+        } else {
+            SmoothNormals::Flat
+        };
+    }
+    if n.iter().any(|v| v.length_squared() == 0.0) {
+        return SmoothNormals::Degenerate;
+    }
+    let unit = n.map(|v| v.normalize());
     let sides = unit.map(|v| v.dot(ng));
     if sides.iter().all(|&s| s > 0.0) || sides.iter().all(|&s| s < 0.0) {
         SmoothNormals::Smooth(unit)
@@ -1738,9 +1760,9 @@ fn smooth_normals(ng: DVec3, n: &[DVec3; 3], flatten_equal: bool) -> SmoothNorma
     }
 }
 
-/// A mesh from `mesh2`-style lists, with POV-Ray's rules: zero-area triangles are dropped, and
-/// so are smooth triangles whose normals straddle the face; returns the mesh and how many of
-/// each were dropped.
+/// A mesh from `mesh2`-style lists, with POV-Ray's rules: zero-area triangles are dropped
+/// (returned: the mesh and how many were dropped), a face whose three normals are equal is
+/// flat.
 /// Per triangle, three indices (of vertices, or of textures).
 type Faces = Vec<[u32; 3]>;
 
@@ -1764,7 +1786,7 @@ pub(super) fn assemble_mesh(
     normal_faces: &[[u32; 3]],
     uv_faces: &[[u32; 3]],
     face_textures: &[[u32; 3]],
-) -> (Mesh, usize, usize) {
+) -> (Mesh, usize) {
     let mut mesh = Mesh {
         vertices: vertices.iter().map(|v| v.as_vec3()).collect(),
         normals: Vec::with_capacity(normals.len()),
@@ -1777,8 +1799,8 @@ pub(super) fn assemble_mesh(
         textures: Vec::new(),
         face_textures: Vec::new(),
     };
-    let unit_normals: Vec<DVec3> = normals.iter().map(|n| n.normalize_or_zero()).collect();
-    let (mut degenerate, mut dropped_smooth) = (0usize, 0usize);
+    let unit_normals: Vec<DVec3> = normals.iter().map(|&n| mesh_normal(n)).collect();
+    let mut degenerate = 0usize;
     for (k, face) in faces.iter().enumerate() {
         let p = face.map(|i| vertices[i as usize]);
         let ng = (p[1] - p[0]).cross(p[2] - p[0]);
@@ -1789,13 +1811,8 @@ pub(super) fn assemble_mesh(
         let mut normal_index = FLAT;
         if let Some(nf) = normal_faces.get(k) {
             let n = nf.map(|i| unit_normals[i as usize]);
-            match smooth_normals(ng, &n, true) {
-                SmoothNormals::Flat => {}
-                SmoothNormals::Degenerate => {
-                    dropped_smooth += 1;
-                    continue;
-                }
-                SmoothNormals::Smooth(_) => normal_index = *nf,
+            if let SmoothNormals::Smooth(_) = smooth_normals(ng, &n, true) {
+                normal_index = *nf;
             }
         }
         mesh.triangles.push(*face);
@@ -1813,7 +1830,7 @@ pub(super) fn assemble_mesh(
     if !mesh.normal_indices.is_empty() {
         mesh.normals = unit_normals.iter().map(|v| v.as_vec3()).collect();
     }
-    (mesh, degenerate, dropped_smooth)
+    (mesh, degenerate)
 }
 
 /// An interior texture given to an object: a second one is layered on the first, as POV-Ray

@@ -320,7 +320,8 @@ impl TriangleMesh {
     }
 
     /// The shading normal at `p` on a triangle: interpolated vertex normals for a smooth
-    /// triangle (POV-Ray: normalize(Σ bᵢ·Nᵢ)), the geometric normal otherwise.
+    /// triangle (POV-Ray: normalize(Σ bᵢ·Nᵢ)), the geometric normal otherwise (and where the
+    /// interpolated normals cancel).
     pub fn normal(&self, p: DVec3, triangle: u32) -> DVec3 {
         let ng = self.geometric_normal(triangle);
         match self.normal_indices.get(triangle as usize) {
@@ -328,7 +329,9 @@ impl TriangleMesh {
                 let [a, b, c] = self.corners_of(triangle as usize);
                 let w = barycentric(p, a, b, c);
                 let n = ni.map(|i| self.normals[i as usize]);
-                w[0] * n[0] + w[1] * n[1] + w[2] * n[2]
+                let smooth = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
+                // Normals on both sides of the face (POV-Ray keeps such triangles) can cancel.
+                if smooth.length_squared() > 1e-20 { smooth } else { ng }
             }
             _ => ng,
         }
