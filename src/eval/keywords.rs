@@ -722,6 +722,7 @@ const SUPPORTED: &[&str] = &[
     "max_trace_level",
     "mesh",
     "mesh2",
+    "mesh_camera",
     "metallic",
     "metric",
     "min",
@@ -984,7 +985,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "clipped_by"
         | "split_union" | "cutaway_textures" => LATER,
-        "spherical_camera" | "cylinder_camera" | "mesh_camera" => "this camera type or item is not supported by trace yet",
+        "spherical_camera" | "cylinder_camera" => "this camera type or item is not supported by trace yet",
         "render" | "statistics" => {
             "file input/output is not supported by trace yet"
         }

@@ -180,6 +180,9 @@ pub struct CameraItems {
     confidence: f64,
     variance: f64,
     normal: Option<Box<ir::Normal>>,
+    /// `mesh_camera { … }`: what it gives before the camera's location and direction are
+    /// known (offset and reversal are left for `resolve_camera`).
+    mesh: Option<ir::MeshCamera>,
 }
 
 impl Default for CameraItems {
@@ -203,6 +206,7 @@ impl Default for CameraItems {
             confidence: 0.9,
             variance: 1.0 / 10000.0,
             normal: None,
+            mesh: None,
             span: Span::default(),
         }
     }
@@ -1321,8 +1325,14 @@ impl<'a> Evaluator<'a> {
                 ));
             }
             match item.kind {
-                NodeKind::Perspective => c.projection = ir::Projection::Perspective,
-                NodeKind::Orthographic => c.projection = ir::Projection::Orthographic,
+                NodeKind::Perspective => {
+                    c.projection = ir::Projection::Perspective;
+                    c.mesh = None;
+                }
+                NodeKind::Orthographic => {
+                    c.projection = ir::Projection::Orthographic;
+                    c.mesh = None;
+                }
                 NodeKind::Location => c.location = ev.vec3(&item.args[0])?,
                 NodeKind::LookAt => c.look_at = Some(ev.vec3(&item.args[0])?),
                 NodeKind::Direction => c.direction = ev.vec3(&item.args[0])?,
@@ -1336,6 +1346,10 @@ impl<'a> Evaluator<'a> {
                 }
                 NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
                 NodeKind::CameraBlur => ev.camera_blur(item, &mut c)?,
+                NodeKind::MeshCamera => {
+                    c.mesh = Some(ev.mesh_camera(item)?);
+                    c.projection = ir::Projection::Mesh;
+                }
                 NodeKind::Normal => {
                     let base = c.normal.take();
                     c.normal = Some(Box::new(ev.normal(item, base)?));
@@ -1414,14 +1428,15 @@ impl<'a> Evaluator<'a> {
                         _ => ir::Projection::Spherical { h: 360.0, v: 180.0 },
                     };
                 }
-                NodeKind::CameraType | NodeKind::Unknown
-                    if matches!(item.word.as_str(), "mesh_camera" | "user_defined") =>
-                {
+                NodeKind::CameraType | NodeKind::Unknown if item.word == "mesh_camera" => {
                     return Err(Diagnostic::error(
-                        format!(
-                            "unsupported: the {} camera (this camera type is not supported by trace yet)",
-                            item.word
-                        ),
+                        "`mesh_camera` takes a block: `mesh_camera { RAYS DISTRIBUTION mesh { … } }`",
+                        item.word_span,
+                    ));
+                }
+                NodeKind::CameraType | NodeKind::Unknown if item.word == "user_defined" => {
+                    return Err(Diagnostic::error(
+                        "unsupported: the user_defined camera (this camera type is not supported by trace yet)",
                         item.word_span,
                     ));
                 }
@@ -1636,6 +1651,15 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
             variance: c.variance,
         }
     });
+    // POV-Ray reads the mesh camera's offset and direction from the location's and the
+    // direction's z, after the camera's transformations.
+    let mesh = c.mesh.as_ref().filter(|_| projection == ir::Projection::Mesh).map(|m| {
+        Arc::new(ir::MeshCamera {
+            offset: location.z,
+            reversed: direction.z < -1e-10,
+            ..m.clone()
+        })
+    });
     Ok(ir::Camera {
         projection,
         location,
@@ -1644,5 +1668,90 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
         up,
         blur,
         normal: c.normal.clone(),
+        mesh,
     })
+}
+
+impl Evaluator<'_> {
+    /// `mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { … } … [smooth] }`, with
+    /// POV-Ray's checks.
+    fn mesh_camera(&mut self, node: &Node) -> Result<ir::MeshCamera> {
+        let rays = self.float(&node.args[0])?;
+        if rays < 1.0 {
+            return Err(Diagnostic::error("mesh_camera: rays per pixel may not be 0", node.args[0].span));
+        }
+        let distribution = self.float(&node.args[1])?;
+        if !(0.0..4.0).contains(&distribution) {
+            return Err(Diagnostic::error(
+                "mesh_camera: unrecognized distribution method (0 to 3)",
+                node.args[1].span,
+            ));
+        }
+        let (rays, distribution) = (rays.min(u32::MAX as f64) as u32, distribution as u8);
+        if distribution >= 2 && rays != 1 {
+            return Err(Diagnostic::error(
+                "mesh_camera: rays per pixel must be 1 for distribution method 2 or 3",
+                node.args[0].span,
+            ));
+        }
+        let max_distance = match node.args.get(2) {
+            Some(e) => self.float(e)?,
+            None => 0.0,
+        };
+        let mut meshes = Vec::new();
+        let mut smooth = None;
+        self.each_item(&node.children, &mut |ev, item| {
+            if item.kind == NodeKind::MeshCameraSmooth {
+                smooth = Some(item.word_span);
+                return Ok(());
+            }
+            if !matches!(item.word.as_str(), "mesh" | "mesh2") {
+                return Err(Diagnostic::error(
+                    format!("mesh_camera takes `mesh` or `mesh2`, not `{}`", item.word),
+                    item.word_span,
+                ));
+            }
+            let object = ev.object(item)?;
+            match object.as_mesh() {
+                Some(mesh) => meshes.push(mesh),
+                None => {
+                    return Err(Diagnostic::error(
+                        "mesh_camera takes meshes only (this names another kind of object)",
+                        item.word_span,
+                    ));
+                }
+            }
+            Ok(())
+        })?;
+        if let Some(span) = smooth.filter(|_| distribution != 3) {
+            return Err(Diagnostic::error(
+                "mesh_camera: `smooth` can only be used with distribution method 3",
+                span,
+            ));
+        }
+        if meshes.is_empty() {
+            return Err(Diagnostic::error("mesh_camera needs a mesh or mesh2", node.word_span));
+        }
+        if distribution == 0 && rays as usize > meshes.len() {
+            return Err(Diagnostic::error(
+                "mesh_camera: rays per pixel must be at most the number of meshes for distribution method 0",
+                node.args[0].span,
+            ));
+        }
+        if distribution == 3 && meshes.len() > 1 {
+            self.warn(Diagnostic::warning(
+                "mesh_camera: meshes after the first are ignored for distribution method 3 (as in POV-Ray)",
+                node.word_span,
+            ));
+        }
+        Ok(ir::MeshCamera {
+            rays_per_pixel: rays,
+            distribution,
+            max_distance,
+            meshes,
+            smooth: smooth.is_some(),
+            offset: 0.0,
+            reversed: false,
+        })
+    }
 }

@@ -182,6 +182,14 @@ impl ObjectValue {
         }
     }
 
+    /// The object's mesh and transformation, if it is one mesh.
+    pub(super) fn as_mesh(&self) -> Option<(Arc<Mesh>, Option<Transform>)> {
+        match self.parts.as_slice() {
+            [Part { shape: Shape::Mesh(mesh), transform, .. }] => Some((Arc::clone(mesh), *transform)),
+            _ => None,
+        }
+    }
+
     /// Whether the object has no shapes (a light alone).
     pub(super) fn parts_is_empty(&self) -> bool {
         self.parts.is_empty()

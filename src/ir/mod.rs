@@ -162,6 +162,29 @@ pub struct Camera {
     pub blur: Option<FocalBlur>,
     /// `normal { … }`: a pattern that bends the camera's rays, if any.
     pub normal: Option<Box<Normal>>,
+    /// `mesh_camera { … }` (with [`Projection::Mesh`]): the meshes whose faces the rays leave.
+    pub mesh: Option<Arc<MeshCamera>>,
+}
+
+/// A `mesh_camera`: each pixel's rays leave faces of meshes, as POV-Ray 3.7 picks them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCamera {
+    /// Rays a pixel averages (the ones that exist).
+    pub rays_per_pixel: u32,
+    /// POV-Ray's face distribution: 0 (ray k of a pixel from mesh k), 1 (the meshes' faces
+    /// numbered on, one ray a pixel), 2 (meshes side by side across the image), 3 (the face
+    /// whose `uv_vectors` hold the pixel).
+    pub distribution: u8,
+    /// Longest distance a camera ray looks (0: no limit).
+    pub max_distance: f64,
+    /// The meshes, each with its transformation.
+    pub meshes: Vec<(Arc<Mesh>, Option<Transform>)>,
+    /// Method 3 only: the ray direction interpolates the face's vertex normals.
+    pub smooth: bool,
+    /// How far along its face's normal a ray starts (the camera location's z).
+    pub offset: f64,
+    /// Rays go against the face normals (the camera direction's z is negative).
+    pub reversed: bool,
 }
 
 /// A camera's focal blur, as POV-Ray samples it.
@@ -213,6 +236,8 @@ pub enum Projection {
         /// Degrees.
         angle: f64,
     },
+    /// `mesh_camera`: rays from mesh faces ([`Camera::mesh`]).
+    Mesh,
     /// `spherical`: `angle H, V` (default 360, 180): longitude across the width and
     /// latitude across the height.
     Spherical {
@@ -1038,6 +1063,7 @@ impl Default for Camera {
             up: DVec3::Y,
             blur: None,
             normal: None,
+            mesh: None,
         }
     }
 }

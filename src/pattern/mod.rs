@@ -1342,33 +1342,44 @@ fn crackle(p: DVec3, c: &Crackle, generator: u8) -> f64 {
             (d.x.abs().powf(c.metric) + d.y.abs().powf(c.metric)) + d.z.abs().powf(c.metric)
         }
     };
-    let offsets = crackle_offsets();
-    // (On the stack: crackle runs for every shading sample.)
-    let points: [DVec3; 81] = std::array::from_fn(|i| point(&offsets[i]));
-    let (mut m1, mut m2, mut m3) = (dist(points[0]), dist(points[1]), dist(points[2]));
-    let mut nearest = 0;
-    if m2 < m1 {
-        std::mem::swap(&mut m1, &mut m2);
-        nearest = 1;
+    // The 81 points around a cell depend on the cell alone; neighbouring samples mostly fall
+    // in the cell of the last one (as POV-Ray, each thread keeps the last cell's points).
+    thread_local! {
+        static LAST: std::cell::RefCell<([i32; 3], [DVec3; 81])> =
+            const { std::cell::RefCell::new(([i32::MIN; 3], [DVec3::ZERO; 81])) };
     }
-    if m3 < m1 {
-        std::mem::swap(&mut m1, &mut m3);
-        nearest = 2;
-    }
-    if m3 < m2 {
-        std::mem::swap(&mut m2, &mut m3);
-    }
-    for (i, q) in points.iter().enumerate().skip(3) {
-        let s = dist(*q);
-        if s < m1 {
-            (m3, m2, m1) = (m2, m1, s);
-            nearest = i;
-        } else if s < m2 {
-            (m3, m2) = (m2, s);
-        } else if s < m3 {
-            m3 = s;
+    let (mut m1, mut m2, mut m3, nearest) = LAST.with_borrow_mut(|(key, points)| {
+        if *key != cell {
+            let offsets = crackle_offsets();
+            *points = std::array::from_fn(|i| point(&offsets[i]));
+            *key = cell;
         }
-    }
+        let (mut m1, mut m2, mut m3) = (dist(points[0]), dist(points[1]), dist(points[2]));
+        let mut nearest = 0;
+        if m2 < m1 {
+            std::mem::swap(&mut m1, &mut m2);
+            nearest = 1;
+        }
+        if m3 < m1 {
+            std::mem::swap(&mut m1, &mut m3);
+            nearest = 2;
+        }
+        if m3 < m2 {
+            std::mem::swap(&mut m2, &mut m3);
+        }
+        for (i, q) in points.iter().enumerate().skip(3) {
+            let s = dist(*q);
+            if s < m1 {
+                (m3, m2, m1) = (m2, m1, s);
+                nearest = i;
+            } else if s < m2 {
+                (m3, m2) = (m2, s);
+            } else if s < m3 {
+                m3 = s;
+            }
+        }
+        (m1, m2, m3, points[nearest])
+    });
     if c.offset != 0.0 {
         let o = if c.metric == 2.0 {
             c.offset * c.offset
@@ -1382,7 +1393,7 @@ fn crackle(p: DVec3, c: &Crackle, generator: u8) -> f64 {
         m3 += o;
     }
     let v = if c.solid {
-        noise(points[nearest], generator)
+        noise(nearest, generator)
     } else if c.metric == 2.0 {
         (c.form.x * m1.sqrt() + c.form.y * m2.sqrt()) + c.form.z * m3.sqrt()
     } else if c.metric == 1.0 {

@@ -281,7 +281,7 @@ impl<'a> Bands<'a> {
     pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
         // The rays of a camera with one eye point all start inside the same objects: found once.
         let camera_interiors = match scene.camera.projection {
-            Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } => None,
+            Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } | Projection::Mesh => None,
             _ => Some(Interiors::at(scene, scene.camera.location)),
         };
         let region = options.region();
@@ -680,6 +680,10 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
                 ),
             }
         }
+        Projection::Mesh => (
+            scene.mesh_camera.as_ref().and_then(|m| m.ray(x, y, width, height, 0)),
+            (0.0, 0.0),
+        ),
         Projection::Spherical { h, v } => {
             let lat = y0 * v.to_radians();
             let lon = x0 * h.to_radians();
@@ -687,20 +691,49 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             (along(glam::DQuat::from_axis_angle(u, lon) * v1), (lon, lat))
         }
     };
-    // The camera's normal bends the unit direction by its pattern at the screen point.
+    bent(scene, ray, screen)
+}
+
+/// The camera's normal bends a camera ray's unit direction by its pattern at the screen
+/// point.
+fn bent(scene: &Scene, ray: Option<Ray>, screen: (f64, f64)) -> Option<Ray> {
     match (&scene.camera_normal, ray) {
         (Some(n), Some(ray)) => {
             let bent = n.perturb(glam::DVec3::new(screen.0, screen.1, 0.0), ray.direction);
-            Some(Ray::new(ray.origin, bent.normalize()))
+            Some(Ray { direction: bent.normalize(), ..ray })
         }
         (_, ray) => ray,
     }
+}
+
+/// The colour seen through image position (x, y) by a `mesh_camera`: the mean of the rays
+/// its faces give the sample (transparent black when they give none, as in POV-Ray).
+fn mesh_sample(tracer: &mut Tracer, mesh: &crate::scene::meshcam::MeshCamera, w: u32, h: u32, x: f64, y: f64) -> Px {
+    let scene = tracer.scene;
+    let (mut sum, mut n) = (Px::ZERO, 0u32);
+    for k in 0..mesh.rays_per_pixel() {
+        // (POV-Ray bends a mesh camera's rays by its normal at the screen point (0, 0).)
+        let Some(ray) = bent(scene, mesh.ray(x, y, w, h, k), (0.0, 0.0)) else {
+            continue;
+        };
+        tracer.counts.camera += 1;
+        let colour = trace_primary(tracer, &None, Some(ray));
+        sum += colour.extend(tracer.see_through);
+        n += 1;
+    }
+    if n == 0 {
+        return trace_primary(tracer, &None, None).extend(tracer.see_through);
+    }
+    sum / f64::from(n)
 }
 
 /// The colour seen through image position (x, y): one camera ray, or with focal blur
 /// POV-Ray's adaptive batches of rays through the lens (counted as camera rays).
 fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: u32, x: f64, y: f64) -> Px {
     let scene = tracer.scene;
+    if let Some(mesh) = &scene.mesh_camera {
+        return mesh_sample(tracer, mesh, w, h, x, y);
+    }
     let Some(blur) = &scene.blur else {
         tracer.counts.camera += 1;
         let colour = trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));

@@ -67,14 +67,21 @@ impl Interiors {
     /// into their members, a medium is listed once per member that contains `p`.
     pub fn at(scene: &Scene, p: DVec3) -> Interiors {
         let mut list = Interiors::default();
+        let mut later = Interiors::default();
         let bounded_last = scene.bounded_last;
-        for pass in [false, true] {
-            for (i, object) in scene.objects.iter().enumerate() {
-                let second = bounded_last && object.bounded;
-                if second == pass && scene.starts_inside(object, p) {
-                    list.push(ObjectId(i as u32));
+        // Only objects whose boxes hold the point can hold it (the first pass lists the
+        // unbounded ones when the bounded come last).
+        scene.each_near(p, |i| {
+            let object = &scene.objects[i as usize];
+            if scene.starts_inside(object, p) {
+                match bounded_last && object.bounded {
+                    false => list.push(ObjectId(i)),
+                    true => later.push(ObjectId(i)),
                 }
             }
+        });
+        for &i in &later.ids[..later.len] {
+            list.push(ObjectId(i));
         }
         list
     }

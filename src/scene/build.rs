@@ -312,6 +312,7 @@ impl Scene {
             },
             blur: c.blur.as_ref().map(|b| super::blur::Blur::new(b, c.direction, c.up)),
             camera_normal: c.normal.as_deref().map(|n| Normal::new(n, pattern_defaults(ir))),
+            mesh_camera: c.mesh.as_ref().map(super::meshcam::MeshCamera::new),
             lights: ir
                 .lights
                 .iter()

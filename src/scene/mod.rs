@@ -15,6 +15,7 @@ mod accel;
 pub mod blur;
 mod build;
 mod material;
+pub mod meshcam;
 mod normal;
 mod pigment;
 mod probe;
@@ -49,6 +50,8 @@ pub struct Scene {
     pub blur: Option<blur::Blur>,
     /// The camera's `normal`, bending its rays, if any.
     pub camera_normal: Option<Normal>,
+    /// The `mesh_camera`, if the camera is one.
+    pub mesh_camera: Option<meshcam::MeshCamera>,
     /// Point lights.
     pub lights: Vec<Light>,
     /// Objects.

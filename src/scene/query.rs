@@ -405,6 +405,33 @@ impl Scene {
         object.shape.contains(local) != object.inverse
     }
 
+    /// Calls `f`, in increasing order, with the index of each object whose box may hold `p`
+    /// (every unbounded one included).
+    pub fn each_near(&self, p: DVec3, mut f: impl FnMut(u32)) {
+        let holds = |lo: DVec3, hi: DVec3| p.cmpge(lo).all() && p.cmple(hi).all();
+        match &self.index {
+            Some(index) => {
+                thread_local! {
+                    static NEAR: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
+                }
+                NEAR.with_borrow_mut(|near| {
+                    near.clear();
+                    near.extend_from_slice(&index.unbounded);
+                    index.each_kept(holds, |i| near.push(i));
+                    near.sort_unstable();
+                    near.iter().for_each(|&i| f(i));
+                });
+            }
+            None => {
+                for (i, bounds) in self.scan_bounds.iter().enumerate() {
+                    if bounds.is_none_or(|(lo, hi)| holds(lo, hi)) {
+                        f(i as u32);
+                    }
+                }
+            }
+        }
+    }
+
     /// Whether a ray starting at `p` (a camera's) starts inside `object`: as POV-Ray finds
     /// the objects a camera ray starts in, the point must lie in the object's bounding box
     /// too (a disc's inside is a half-space, but a camera outside the disc's flat box does not

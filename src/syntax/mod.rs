@@ -50,6 +50,11 @@ pub enum NodeKind {
     Perspective,
     /// A camera type other than perspective, orthographic and cylinder: its keyword is the word.
     CameraType,
+    /// `mesh_camera { RAYS DISTRIBUTION [MAX] meshes… [smooth] }`: args the numbers,
+    /// children the meshes (and directives) and the `smooth` flag.
+    MeshCamera,
+    /// `smooth` at the end of a `mesh_camera`.
+    MeshCameraSmooth,
     Orthographic,
     Location,
     LookAt,
@@ -941,6 +946,8 @@ impl Lower {
             Rule::ambient_light => NodeKind::AmbientLight,
             Rule::perspective => NodeKind::Perspective,
             Rule::camera_projection => NodeKind::CameraType,
+            Rule::mesh_camera => NodeKind::MeshCamera,
+            Rule::mesh_camera_smooth => NodeKind::MeshCameraSmooth,
             Rule::orthographic => NodeKind::Orthographic,
             Rule::location => NodeKind::Location,
             Rule::look_at => NodeKind::LookAt,
@@ -952,7 +959,7 @@ impl Lower {
             Rule::sphere => NodeKind::Sphere,
             Rule::plane => NodeKind::Plane,
             Rule::box_shape => NodeKind::Box,
-            Rule::object_ref => NodeKind::ObjectRef,
+            Rule::object_ref | Rule::shape_ref => NodeKind::ObjectRef,
             Rule::looks_like => NodeKind::LooksLike,
             Rule::cylinder => NodeKind::Cylinder,
             Rule::cone => NodeKind::Cone,
@@ -1604,6 +1611,9 @@ fn is_word(rule: Rule) -> bool {
             | kw_sky_sphere
             | pattern_kw
             | shape_kw
+            | shape_ref_kw
+            | kw_mesh_camera
+            | kw_smooth
             | modifier_kw
             | kw_color_map
             | kw_colour_map
