@@ -5,7 +5,8 @@
 #
 # Usage: scripts/crosscheck.sh [SCENE.rt ...]     (env: WIDTH, HEIGHT, RUNS)
 # Modes: "off" = trace --aa off vs povray -A; "aa" = trace --aa 0.0 --aa-depth 3 vs
-# povray +A0.0 +R3 -J. Each time is the best of RUNS runs (default 3).
+# povray +A0.0 +R3 -J. Each time is the best of RUNS runs (default 3). Both write the same
+# file: an EXR of half floats (POV-Ray's +FE; trace's --bits 16).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WIDTH="${WIDTH:-320}"
@@ -50,7 +51,7 @@ for scene in "$@"; do
         fi
         tout="$TMP/$name.$mode.trace.exr"
         pout="$TMP/$name.$mode.pov.exr"
-        tt=$(best_time "$TRACE" "$scene" -o "$tout" --width "$WIDTH" --height "$HEIGHT" "${targs[@]}" --quiet)
+        tt=$(best_time "$TRACE" "$scene" -o "$tout" --width "$WIDTH" --height "$HEIGHT" "${targs[@]}" --bits 16 --quiet)
         pt=$(cd "$(dirname "$scene")" && best_time povray "+I$scene" "+O$pout" +FE "+W$WIDTH" "+H$HEIGHT" -D -GA "${pargs[@]}")
         cmp="$("$TRACE" compare "$pout" "$tout")"
         flip=$(echo "$cmp" | awk '/mean FLIP/ {print $3}')

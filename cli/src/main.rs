@@ -90,7 +90,8 @@ struct RenderArgs {
     /// pigment's colour), `object` (ObjectID, from 1 in scene order), comma-separated.
     #[arg(long, value_name = "LAYERS", value_delimiter = ',', value_parser = parse_aov)]
     aov: Vec<trace::Aov>,
-    /// Bits per channel of a PNG or PPM: 8 or 16 (POV-Ray +FN16).
+    /// Bits per channel of a PNG or PPM: 8 or 16 (POV-Ray +FN16); 16 writes an EXR in half
+    /// floats, as POV-Ray writes its EXRs (32-bit floats otherwise).
     #[arg(long, value_parser = clap::value_parser!(u8).range(8..=16))]
     bits: Option<u8>,
     /// Declare a float identifier before the scene is read, NAME=VALUE (repeatable; POV-Ray's

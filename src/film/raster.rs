@@ -292,7 +292,7 @@ impl Raster {
                     out,
                     size,
                     names,
-                    self.layout.note.as_deref(),
+                    (self.layout.note.as_deref(), false),
                     true,
                     &mut row,
                 )

@@ -44,7 +44,8 @@ impl Format {
 pub struct Layout {
     /// An alpha channel (PNG and EXR).
     pub alpha: bool,
-    /// Bits per channel of PNG and PPM files: 8 or 16.
+    /// Bits per channel of PNG and PPM files: 8 or 16; 16 makes an EXR's channels half
+    /// floats (POV-Ray's EXR), any other value 32-bit floats.
     pub bits: u8,
     /// Names of the EXR channels after R, G, B (and A): the AOVs.
     pub aovs: Vec<String>,
@@ -157,7 +158,7 @@ pub fn write_streamed<'a>(
                 out,
                 size,
                 &names,
-                layout.note.as_deref(),
+                (layout.note.as_deref(), layout.bits == 16),
                 threads != Some(1),
                 &mut row,
             )
@@ -256,14 +257,15 @@ fn srgb8_table() -> &'static Srgb8Table {
     })
 }
 
-/// An EXR of float channels `names` (sorted in the file as EXR asks), zip-compressed in blocks
-/// of 16 scanlines, top first, filled from `row(y)` (interleaved values in `names`' order) in
-/// file order, then compressed on all cores if `parallel`.
+/// An EXR of float channels `names` (sorted in the file as EXR asks; half floats if `half`,
+/// values beyond their range written as the largest), zip-compressed in blocks of 16
+/// scanlines, top first, filled from `row(y)` (interleaved values in `names`' order) in file
+/// order, then compressed on all cores if `parallel`.
 pub(super) fn write_exr(
     out: impl Write + std::io::Seek,
     (width, height): (u32, u32),
     names: &[String],
-    note: Option<&str>,
+    (note, half): (Option<&str>, bool),
     parallel: bool,
     row: &mut dyn FnMut(u32, &mut Vec<f32>),
 ) -> Result<(), ImageError> {
@@ -280,7 +282,14 @@ pub(super) fn write_exr(
     order.sort_by(|&a, &b| names[a].as_bytes().cmp(names[b].as_bytes()));
     let channels: Vec<ChannelDescription> = order
         .iter()
-        .map(|&i| ChannelDescription::named(names[i].as_str(), SampleType::F32))
+        .map(|&i| {
+            let kind = if half {
+                SampleType::F16
+            } else {
+                SampleType::F32
+            };
+            ChannelDescription::named(names[i].as_str(), kind)
+        })
         .collect();
     let encoding = Encoding::SMALL_LOSSLESS;
     let mut header = Header::new(
@@ -314,8 +323,14 @@ pub(super) fn write_exr(
                     row(y as u32, &mut values);
                     last = Some(y);
                 }
-                line.write_samples(|i| values[(x0 + i) * stride + c])
-                    .expect("a line holds sample_count samples");
+                let value = |i: usize| values[(x0 + i) * stride + c];
+                if half {
+                    let max = f16::MAX.to_f32();
+                    line.write_samples(|i| f16::from_f32(value(i).clamp(-max, max)))
+                } else {
+                    line.write_samples(value)
+                }
+                .expect("a line holds sample_count samples");
             })
         });
         let chunks = chunks.on_progress(|_| {});

@@ -83,9 +83,10 @@ impl MeshCamera {
         }
     }
 
-    /// Rays a pixel averages.
+    /// Rays a pixel may average: distribution 1 gives only ray 0 a face (POV-Ray numbers
+    /// ray k's face from k times the total count), so its further rays are never made.
     pub fn rays_per_pixel(&self) -> u32 {
-        self.camera.rays_per_pixel
+        if self.camera.distribution == 1 { 1 } else { self.camera.rays_per_pixel }
     }
 
     /// Ray `k` of the sample at image position (x, y) (pixel units, as the other cameras
@@ -249,6 +250,7 @@ mod tests {
         let ray = cam.ray(4.0, 0.0, 6, 1, 0).expect("a face");
         assert!((ray.origin - (centroid(&b, 2) + DVec3::new(0.0, 0.0, 5.0))).length() < 1e-9);
         assert!(cam.ray(0.0, 0.0, 6, 1, 1).is_none());
+        assert_eq!(cam.rays_per_pixel(), 1);
     }
 
     #[test]

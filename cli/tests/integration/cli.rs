@@ -31,6 +31,46 @@ fn renders_png_and_exr() {
 }
 
 #[test]
+fn exr_in_half_floats_with_bits_16() {
+    // `--bits 16` writes an EXR's channels as half floats (POV-Ray's EXR): the same pixels
+    // to half precision, in a much smaller file.
+    let dir = temp_dir("half");
+    let mut films = Vec::new();
+    for bits in [None, Some("16")] {
+        let out = dir.join(format!("img{}.exr", bits.unwrap_or("")));
+        let mut cmd = trace();
+        cmd.args(["examples/basic_spheres.rt", "-o"])
+            .arg(&out)
+            .args(["--width", "64", "--height", "48", "--quiet"]);
+        if let Some(b) = bits {
+            cmd.args(["--bits", b]);
+        }
+        assert!(
+            cmd.current_dir(crate::root())
+                .status()
+                .expect("runs")
+                .success()
+        );
+        let size = std::fs::metadata(&out).expect("written").len();
+        films.push((trace::Film::read(&out).expect("readable image"), size));
+    }
+    let ((full, full_size), (half, half_size)) = (&films[0], &films[1]);
+    assert!(
+        half_size * 3 < *full_size,
+        "{half_size} bytes against {full_size}"
+    );
+    assert_eq!((half.width, half.height), (64, 48));
+    let mut differ = 0;
+    for (a, b) in full.pixels.iter().zip(&half.pixels) {
+        for (x, y) in a.iter().zip(b) {
+            assert!((x - y).abs() <= 1e-3 * x.abs().max(1e-3), "{x} against {y}");
+            differ += usize::from(x != y);
+        }
+    }
+    assert!(differ > 0, "the half-float file holds the full floats");
+}
+
+#[test]
 fn bad_scene_exits_2_with_location_and_keeps_existing_output() {
     let dir = temp_dir("bad");
     let scene = dir.join("bad.rt");
