@@ -196,7 +196,11 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
             (o, pov_type)
         }
     };
+    // POV-Ray writes its EXRs (+FE) in half floats: so does trace when POV-Ray's options name
+    // the file; trace's own `-o x.exr` writes 32-bit floats unless `--bits 16`.
+    let pov_exr = own.output.is_none() && format == Format::Exr;
     let bits = match own.bits.map(u32::from).or(pov.bits) {
+        None if pov_exr => 16,
         None | Some(8) => 8,
         Some(b) if (9..=16).contains(&b) => 16,
         Some(b) if (1..8).contains(&b) => 8,
@@ -205,9 +209,6 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
     let alpha = own.alpha || pov.alpha.unwrap_or(false);
     if alpha && format == Format::Ppm {
         warnings.push("a PPM file has no alpha channel: written without it".into());
-    }
-    if bits == 16 && format == Format::Exr {
-        warnings.push("an EXR is written in float whatever the bits per colour".into());
     }
 
     let region = match own.region {

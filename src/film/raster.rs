@@ -292,7 +292,7 @@ impl Raster {
                     out,
                     size,
                     names,
-                    (self.layout.note.as_deref(), false),
+                    (self.layout.note.as_deref(), self.layout.bits == 16),
                     true,
                     &mut row,
                 )
@@ -469,13 +469,18 @@ fn read_exr(path: &Path) -> Result<Raster, ImageError> {
         });
     let alpha = names.get(3).is_some_and(|n| n == "A");
     let aovs = names[3 + usize::from(alpha)..].to_vec();
+    // Half-float colour channels are written back as halves (a part of an image keeps its
+    // precision when the parts are merged).
+    let half = order[..3]
+        .iter()
+        .all(|&i| matches!(list[i].sample_data, FlatSamples::F16(_)));
     Ok(Raster {
         width,
         height,
         format: Format::Exr,
         layout: Layout {
             alpha,
-            bits: 32,
+            bits: if half { 16 } else { 32 },
             aovs,
             note,
         },

@@ -257,8 +257,8 @@ fn srgb8_table() -> &'static Srgb8Table {
     })
 }
 
-/// An EXR of float channels `names` (sorted in the file as EXR asks; half floats if `half`,
-/// values beyond their range written as the largest), zip-compressed in blocks of 16
+/// An EXR of float channels `names` (sorted in the file as EXR asks; R, G, B and A in half
+/// floats if `half`, values beyond their range written as the largest), zip-compressed in blocks of 16
 /// scanlines, top first, filled from `row(y)` (interleaved values in `names`' order) in file
 /// order, then compressed on all cores if `parallel`.
 pub(super) fn write_exr(
@@ -280,10 +280,13 @@ pub(super) fn write_exr(
     };
     let mut order: Vec<usize> = (0..names.len()).collect();
     order.sort_by(|&a, &b| names[a].as_bytes().cmp(names[b].as_bytes()));
+    // (The AOV layers stay 32-bit: depths and object numbers need more than a half's
+    // precision.)
+    let colour = |i: usize| matches!(names[i].as_str(), "R" | "G" | "B" | "A");
     let channels: Vec<ChannelDescription> = order
         .iter()
         .map(|&i| {
-            let kind = if half {
+            let kind = if half && colour(i) {
                 SampleType::F16
             } else {
                 SampleType::F32
@@ -324,7 +327,7 @@ pub(super) fn write_exr(
                     last = Some(y);
                 }
                 let value = |i: usize| values[(x0 + i) * stride + c];
-                if half {
+                if half && colour(c) {
                     let max = f16::MAX.to_f32();
                     line.write_samples(|i| f16::from_f32(value(i).clamp(-max, max)))
                 } else {

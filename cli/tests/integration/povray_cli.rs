@@ -100,6 +100,25 @@ fn povray_switches_and_ini_files_read_as_trace_options() {
 }
 
 #[test]
+fn povray_exr_option_writes_half_floats_as_povray() {
+    // +FE names an EXR as POV-Ray writes it (half floats); trace's own -o x.exr keeps 32-bit
+    // floats unless --bits 16.
+    let dir = scratch("fe");
+    std::fs::write(dir.join("s.pov"), SCENE).unwrap();
+    run(&dir, &["+Is.pov", "+FE", "+Opov", "+W40", "+H30", "-q"]);
+    run(
+        &dir,
+        &[
+            "s.pov", "-o", "own.exr", "--width", "40", "--height", "30", "-q",
+        ],
+    );
+    let bits = |name: &str| Raster::read(&dir.join(name)).unwrap().layout.bits;
+    assert_eq!(bits("pov.exr"), 16);
+    assert_eq!(bits("own.exr"), 32);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn regions_merge_into_the_whole_image_byte_for_byte() {
     let dir = scratch("merge");
     std::fs::write(dir.join("s.pov"), SCENE).unwrap();
@@ -110,6 +129,8 @@ fn regions_merge_into_the_whole_image_byte_for_byte() {
             "exr",
             vec!["--alpha", "--aov", "depth,normal,albedo,object"],
         ),
+        // (Half-float colour, 32-bit AOVs.)
+        ("exr", vec!["--bits", "16", "--aov", "depth"]),
         ("ppm", vec![]),
     ] {
         let with = |args: &[&str]| -> Vec<String> {
