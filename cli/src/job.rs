@@ -196,11 +196,12 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
             (o, pov_type)
         }
     };
-    // POV-Ray writes its EXRs (+FE) in half floats: so does trace when POV-Ray's options name
-    // the file; trace's own `-o x.exr` writes 32-bit floats unless `--bits 16`.
+    // POV-Ray writes its EXRs (+FE) in half floats whatever the bits per colour: so does trace
+    // when POV-Ray's options name the file; trace's own `-o x.exr` writes 32-bit floats unless
+    // `--bits 16`.
     let pov_exr = own.output.is_none() && format == Format::Exr;
     let bits = match own.bits.map(u32::from).or(pov.bits) {
-        None if pov_exr => 16,
+        _ if pov_exr && own.bits.is_none() => 16,
         None | Some(8) => 8,
         Some(b) if (9..=16).contains(&b) => 16,
         Some(b) if (1..8).contains(&b) => 8,

@@ -1653,6 +1653,12 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
     });
     // POV-Ray reads the mesh camera's offset and direction from the location's and the
     // direction's z, after the camera's transformations.
+    if c.mesh.is_some() && projection == ir::Projection::Mesh && blur.is_some() {
+        warnings.push(Diagnostic::warning(
+            "focal blur is not applied to a mesh camera's rays by trace (POV-Ray blurs them)",
+            c.span,
+        ));
+    }
     let mesh = c.mesh.as_ref().filter(|_| projection == ir::Projection::Mesh).map(|m| {
         Arc::new(ir::MeshCamera {
             offset: location.z,
@@ -1677,7 +1683,7 @@ impl Evaluator<'_> {
     /// POV-Ray's checks.
     fn mesh_camera(&mut self, node: &Node) -> Result<ir::MeshCamera> {
         let rays = self.float(&node.args[0])?;
-        if rays < 1.0 {
+        if rays.is_nan() || rays < 1.0 {
             return Err(Diagnostic::error("mesh_camera: rays per pixel may not be 0", node.args[0].span));
         }
         let distribution = self.float(&node.args[1])?;

@@ -1769,8 +1769,8 @@ fn smooth_normals(ng: DVec3, n: &[DVec3; 3], in_mesh: bool) -> SmoothNormals {
 }
 
 /// A mesh from `mesh2`-style lists, with POV-Ray's rules: zero-area triangles are dropped
-/// (returned: the mesh and how many were dropped), a face whose three normals are equal is
-/// flat.
+/// (returned: the mesh and how many were dropped; their numbers are kept for a mesh camera),
+/// a face whose three normals are equal is flat.
 /// Per triangle, three indices (of vertices, or of textures).
 type Faces = Vec<[u32; 3]>;
 
@@ -1806,6 +1806,7 @@ pub(super) fn assemble_mesh(
         world_uv: false,
         textures: Vec::new(),
         face_textures: Vec::new(),
+        dropped_faces: Vec::new(),
     };
     let unit_normals: Vec<DVec3> = normals.iter().map(|&n| mesh_normal(n)).collect();
     let mut degenerate = 0usize;
@@ -1814,6 +1815,7 @@ pub(super) fn assemble_mesh(
         let ng = (p[1] - p[0]).cross(p[2] - p[0]);
         if ng.length_squared() == 0.0 {
             degenerate += 1;
+            mesh.dropped_faces.push(k as u32);
             continue;
         }
         let mut normal_index = FLAT;

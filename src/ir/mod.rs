@@ -637,6 +637,9 @@ pub struct Mesh {
     /// texture); all three equal for one texture, else blended across the triangle. Empty
     /// when no triangle has a texture of its own.
     pub face_textures: Vec<[u32; 3]>,
+    /// The numbers (in the order written, increasing) of a `mesh2`'s faces of no area: trace
+    /// does not keep them, POV-Ray does, and a mesh camera numbers faces as POV-Ray does.
+    pub dropped_faces: Vec<u32>,
 }
 
 /// In [`Mesh::face_textures`]: the corner takes the object's texture.

@@ -7,7 +7,9 @@
 //! face whose `uv_vectors` triangle holds the pixel's (u, v) (3). The ray leaves the face's
 //! centroid (for 3, the point of those barycentric weights) along the face's normal,
 //! `offset` further along it, reversed on request, and is carried to the world by the mesh's
-//! transformation (the direction as a normal is, then made unit).
+//! transformation (the direction as a normal is, then made unit). Each ray starts inside the
+//! objects that hold its own origin (POV-Ray 3.7 works that out once per thread, at the
+//! thread's first ray, and 3.8 per ray, as trace does).
 
 use crate::geometry::Ray;
 use crate::ir;
@@ -52,7 +54,7 @@ impl MeshCamera {
         let mut total_faces = 0u64;
         for (mesh, _) in &camera.meshes {
             first_face.push(total_faces);
-            total_faces += mesh.triangles.len() as u64;
+            total_faces += faces(mesh);
         }
         let mut cells = Vec::new();
         if camera.distribution == 3 {
@@ -116,7 +118,7 @@ impl MeshCamera {
             _ => return self.uv_ray(px, py, w, h),
         };
         let (m, _) = c.meshes.get(mesh)?;
-        let corners = m.triangles.get(usize::try_from(face).ok()?)?;
+        let corners = m.triangles.get(kept(m, face)?)?;
         let p = corners.map(|i| m.vertices[i as usize].as_dvec3());
         let centroid = (p[0] + p[1] + p[2]) / 3.0;
         self.leave(mesh, centroid, face_normal(&p))
@@ -171,6 +173,22 @@ impl MeshCamera {
         }
         Some(ray)
     }
+}
+
+/// The faces of a mesh as POV-Ray numbers them: a `mesh2`'s faces of no area count.
+fn faces(m: &ir::Mesh) -> u64 {
+    (m.triangles.len() + m.dropped_faces.len()) as u64
+}
+
+/// Where face `face` (POV-Ray's number) is among the mesh's triangles; `None` for a face of
+/// no area (POV-Ray's ray from it has no direction) or past the last.
+fn kept(m: &ir::Mesh, face: u64) -> Option<usize> {
+    let f = u32::try_from(face).ok()?;
+    let before = m.dropped_faces.partition_point(|&d| d < f);
+    if m.dropped_faces.get(before) == Some(&f) {
+        return None;
+    }
+    Some(f as usize - before)
 }
 
 /// A face's unit normal as POV-Ray stores it: (p₃ − p₁) × (p₂ − p₁).
@@ -251,6 +269,22 @@ mod tests {
         assert!((ray.origin - (centroid(&b, 2) + DVec3::new(0.0, 0.0, 5.0))).length() < 1e-9);
         assert!(cam.ray(0.0, 0.0, 6, 1, 1).is_none());
         assert_eq!(cam.rays_per_pixel(), 1);
+    }
+
+    #[test]
+    fn faces_of_no_area_keep_their_numbers() {
+        // A mesh2's face of no area (dropped by trace, kept by POV-Ray) still takes its
+        // number: the faces after it are where POV-Ray finds them, and its own pixel has no ray.
+        let full = grid(3, 1);
+        let mut m = full.clone();
+        m.triangles.remove(2);
+        m.dropped_faces = vec![2];
+        let cam = camera(0, 1, vec![(m, None)]);
+        assert!(cam.ray(2.0, 0.0, 6, 1, 0).is_none());
+        for x in [1u32, 3, 5] {
+            let ray = cam.ray(f64::from(x), 0.0, 6, 1, 0).expect("a face");
+            assert!((ray.origin - centroid(&full, x as usize)).length() < 1e-9, "pixel {x}");
+        }
     }
 
     #[test]

@@ -106,6 +106,8 @@ fn povray_exr_option_writes_half_floats_as_povray() {
     let dir = scratch("fe");
     std::fs::write(dir.join("s.pov"), SCENE).unwrap();
     run(&dir, &["+Is.pov", "+FE", "+Opov", "+W40", "+H30", "-q"]);
+    // (POV-Ray's bit depth does not change its EXR.)
+    run(&dir, &["+Is.pov", "+FE8", "+Opov8", "+W40", "+H30", "-q"]);
     run(
         &dir,
         &[
@@ -114,6 +116,7 @@ fn povray_exr_option_writes_half_floats_as_povray() {
     );
     let bits = |name: &str| Raster::read(&dir.join(name)).unwrap().layout.bits;
     assert_eq!(bits("pov.exr"), 16);
+    assert_eq!(bits("pov8.exr"), 16);
     assert_eq!(bits("own.exr"), 32);
     std::fs::remove_dir_all(&dir).unwrap();
 }
