@@ -808,6 +808,38 @@ fn mirror_direction(d: DVec3, n: DVec3, raw: DVec3) -> DVec3 {
 mod tests {
     use super::*;
 
+    /// The objects a point starts in, found through the object tree's boxes, are those (in
+    /// the same order, the unbounded ones first) that testing every object finds.
+    #[test]
+    fn starting_objects_through_the_tree_are_those_of_a_scan() {
+        // Ten nested spheres (bounded: the scene has a tree), a plane below (unbounded) and a
+        // disc whose inside is a half-space but whose box is flat.
+        let mut text = String::from("#version 3.7;\nplane { y, -20 }\ndisc { 0, y, 30 }\n");
+        for k in 1..=10 {
+            text += &format!("sphere {{ <0.1, 0, 0>, {k} pigment {{ rgb 1 }} }}\n");
+        }
+        let loaded = crate::load_str(std::path::Path::new("nest.rt"), text, &crate::LoadOptions::default())
+            .expect("loads");
+        let scene = crate::scene::Scene::build(&loaded.scene);
+        assert!(scene.has_index());
+        let scan = |p: DVec3| {
+            let mut list = Interiors::default();
+            for pass in [false, true] {
+                for (i, object) in scene.objects.iter().enumerate() {
+                    let second = scene.bounded_last && object.bounded;
+                    if second == pass && scene.starts_inside(object, p) {
+                        list.push(ObjectId(i as u32));
+                    }
+                }
+            }
+            list.ids[..list.len].to_vec()
+        };
+        for p in [DVec3::ZERO, DVec3::new(0.0, 3.5, 0.0), DVec3::new(7.2, -1.0, 2.0), DVec3::new(0.0, -25.0, 0.0), DVec3::splat(40.0)] {
+            let found = Interiors::at(&scene, p);
+            assert_eq!(found.ids[..found.len].to_vec(), scan(p), "{p}");
+        }
+    }
+
     #[test]
     fn a_grazing_light_gives_nothing_at_any_brilliance() {
         for exponent in [-3.0, -1.0, 0.0, 0.5, 1.0, 10.0] {
