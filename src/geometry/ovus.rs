@@ -75,14 +75,14 @@ impl Ovus {
         None
     }
 
-    fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+    /// Calls `f` with each crossing (distance, part) until it returns true (an any-hit query
+    /// needs only one: the others, the spindle's quartic among them, are then not sought).
+    fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64, u32) -> bool) {
         let len = ray.direction.length();
         let (o, d) = (ray.origin, ray.direction / len);
         let mut hit = |k: f64, part: u32| {
             let t = k / len;
-            if k > EPSILON && t > DEPTH_TOLERANCE && ray.contains(t) {
-                f(t, part);
-            }
+            k > EPSILON && t > DEPTH_TOLERANCE && ray.contains(t) && f(t, part)
         };
         let y = |k: f64| o.y + k * d.y;
         let mut below = 0;
@@ -90,8 +90,8 @@ impl Ovus {
         if let Some((k1, k2)) = lower {
             below = usize::from(y(k1) < self.bottom_vertical) + usize::from(y(k2) < self.bottom_vertical);
             for k in [k1, k2] {
-                if y(k) < self.bottom_vertical {
-                    hit(k, BOTTOM);
+                if y(k) < self.bottom_vertical && hit(k, BOTTOM) {
+                    return;
                 }
             }
         }
@@ -104,11 +104,23 @@ impl Ovus {
             for k in [k3, k4] {
                 if y(k) > self.top_vertical {
                     above += 1;
-                    hit(k, TOP);
+                    if hit(k, TOP) {
+                        return;
+                    }
                 }
             }
         }
         if above > 1 {
+            return;
+        }
+        // The band's points lie within (h + horizontal)² ≤ connecting² + tolerance of the
+        // axis, h their distance from it: a ray whose line passes farther from the axis has
+        // no root to keep, and its quartic is not solved (a margin covers the rounding).
+        let (dh2, ph_dot) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
+        let nearest2 = if dh2 > 0.0 { o.x * o.x + o.z * o.z - ph_dot * ph_dot / dh2 } else { o.x * o.x + o.z * o.z };
+        let reach_h = (self.connecting * self.connecting + ROOT_TOLERANCE).sqrt() - self.horizontal;
+        let margin = 1e-9 * (1.0 + self.connecting + self.horizontal + o.abs().max_element());
+        if reach_h < 0.0 || nearest2.max(0.0).sqrt() > reach_h + margin {
             return;
         }
         // The spindle torus, formed about the ray's point nearest its centre.
@@ -133,8 +145,8 @@ impl Ovus {
             if q.y > self.bottom_vertical && q.y < self.top_vertical {
                 let h = (q.x * q.x + q.z * q.z).sqrt();
                 let band = (h + self.horizontal).powi(2) + (q.y - self.vertical).powi(2);
-                if (band - small2).abs() < ROOT_TOLERANCE {
-                    hit(s + shift, BAND);
+                if (band - small2).abs() < ROOT_TOLERANCE && hit(s + shift, BAND) {
+                    return;
                 }
             }
         }
@@ -145,7 +157,21 @@ impl super::shape::Surface for Ovus {
     const NAME: &'static str = "Ovus";
 
     fn intersect(&self, ray: &Ray) -> Crossings {
-        Crossings::nearest_of(|f| self.crossings(ray, f))
+        Crossings::nearest_of(|f| {
+            self.crossings(ray, |t, part| {
+                f(t, part);
+                false
+            })
+        })
+    }
+
+    fn occludes(&self, ray: &Ray) -> bool {
+        let mut any = false;
+        self.crossings(ray, |_, _| {
+            any = true;
+            true
+        });
+        any
     }
 
     fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {
@@ -179,8 +205,11 @@ impl super::shape::Surface for Ovus {
         Some((DVec3::new(-r, -self.bottom, -r), DVec3::new(r, self.bottom + self.top, r)))
     }
 
-    fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
-        self.crossings(ray, f)
+    fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
+        self.crossings(ray, |t, part| {
+            f(t, part);
+            false
+        })
     }
 
     /// POV-Ray's ovus coordinates: those of a sphere around the point half the top radius up
