@@ -1325,14 +1325,8 @@ impl<'a> Evaluator<'a> {
                 ));
             }
             match item.kind {
-                NodeKind::Perspective => {
-                    c.projection = ir::Projection::Perspective;
-                    c.mesh = None;
-                }
-                NodeKind::Orthographic => {
-                    c.projection = ir::Projection::Orthographic;
-                    c.mesh = None;
-                }
+                NodeKind::Perspective => c.projection = ir::Projection::Perspective,
+                NodeKind::Orthographic => c.projection = ir::Projection::Orthographic,
                 NodeKind::Location => c.location = ev.vec3(&item.args[0])?,
                 NodeKind::LookAt => c.look_at = Some(ev.vec3(&item.args[0])?),
                 NodeKind::Direction => c.direction = ev.vec3(&item.args[0])?,
@@ -1651,14 +1645,9 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
             variance: c.variance,
         }
     });
-    // POV-Ray reads the mesh camera's offset and direction from the location's and the
-    // direction's z, after the camera's transformations.
-    if c.mesh.is_some() && projection == ir::Projection::Mesh && blur.is_some() {
-        warnings.push(Diagnostic::warning(
-            "focal blur is not applied to a mesh camera's rays by trace (POV-Ray blurs them)",
-            c.span,
-        ));
-    }
+    // The mesh camera's meshes, unless a later projection replaced it. POV-Ray reads its
+    // offset and direction from the location's and the direction's z, after the camera's
+    // transformations.
     let mesh = c.mesh.as_ref().filter(|_| projection == ir::Projection::Mesh).map(|m| {
         Arc::new(ir::MeshCamera {
             offset: location.z,
@@ -1666,6 +1655,12 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
             ..m.clone()
         })
     });
+    if mesh.is_some() && blur.is_some() {
+        warnings.push(Diagnostic::warning(
+            "focal blur is not applied to a mesh camera's rays by trace (POV-Ray blurs them)",
+            c.span,
+        ));
+    }
     Ok(ir::Camera {
         projection,
         location,

@@ -25,9 +25,12 @@ pub struct MeshCamera {
     /// Per mesh, the faces of the meshes before it (distribution 1), and the total.
     first_face: Vec<u64>,
     total_faces: u64,
-    /// Distribution 3: for each of POV-Ray's 10 × 10 cells of the (u, v) square (u across),
-    /// the first mesh's faces whose (u, v) extent reaches it, in order.
-    cells: Vec<Vec<u32>>,
+    /// Distribution 3, as POV-Ray indexes the first mesh's faces: for each tenth of u (and
+    /// of v) the set (one bit a face, in order) of faces whose (u, v) extent reaches it; a
+    /// pixel's candidates are the faces in both its u's and its v's set (2.5 bytes a face
+    /// whatever their extents).
+    u_sets: Vec<Vec<u64>>,
+    v_sets: Vec<Vec<u64>>,
 }
 
 /// POV-Ray's cell of a (u, v) coordinate: tenths, cut towards zero, at most 9.
@@ -56,22 +59,22 @@ impl MeshCamera {
             first_face.push(total_faces);
             total_faces += faces(mesh);
         }
-        let mut cells = Vec::new();
+        let (mut u_sets, mut v_sets) = (Vec::new(), Vec::new());
         if camera.distribution == 3 {
-            cells = vec![Vec::new(); 100];
             let mesh = &camera.meshes[0].0;
+            let words = mesh.uv_indices.len().div_ceil(64);
+            (u_sets, v_sets) = (vec![vec![0u64; words]; 10], vec![vec![0u64; words]; 10]);
             for (k, corners) in mesh.uv_indices.iter().enumerate() {
                 let uv = corners.map(|i| mesh.uvs[i as usize]);
-                // (POV-Ray's cells of a corner: its tenths cut towards zero; a face's cells run
-                // from its corners' least to their greatest, each at most 9.)
+                // (POV-Ray's tenths of a corner: cut towards zero; a face's run from its
+                // corners' least to their greatest, each at most 9.)
                 let tenth = |x: f64| ((x * 10.0) as i64).min(9);
-                let u = uv.map(|p| tenth(p.x));
-                let v = uv.map(|p| tenth(p.y));
-                let (u0, u1) = (*u.iter().min().unwrap(), *u.iter().max().unwrap());
-                let (v0, v1) = (*v.iter().min().unwrap(), *v.iter().max().unwrap());
-                for cu in u0.max(0)..=u1 {
-                    for cv in v0.max(0)..=v1 {
-                        cells[cu as usize * 10 + cv as usize].push(k as u32);
+                let (u, v) = (uv.map(|p| tenth(p.x)), uv.map(|p| tenth(p.y)));
+                let bit = 1u64 << (k % 64);
+                for (sets, t) in [(&mut u_sets, u), (&mut v_sets, v)] {
+                    let (lo, hi) = (t.into_iter().min().unwrap_or(0), t.into_iter().max().unwrap_or(-1));
+                    for cell in lo.max(0)..=hi {
+                        sets[cell as usize][k / 64] |= bit;
                     }
                 }
             }
@@ -81,7 +84,8 @@ impl MeshCamera {
             transforms,
             first_face,
             total_faces,
-            cells,
+            u_sets,
+            v_sets,
         }
     }
 
@@ -130,8 +134,18 @@ impl MeshCamera {
         let c = &*self.camera;
         let (u, v) = ((px - 0.5) / w, 1.0 - (py + 0.5) / h);
         let m = &c.meshes[0].0;
-        for &k in &self.cells[cell(u) * 10 + cell(v)] {
-            let k = k as usize;
+        let (us, vs) = (&self.u_sets[cell(u)], &self.v_sets[cell(v)]);
+        let candidates = us.iter().zip(vs).enumerate().flat_map(|(word, (a, b))| {
+            let mut bits = a & b;
+            std::iter::from_fn(move || {
+                (bits != 0).then(|| {
+                    let k = word * 64 + bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    k
+                })
+            })
+        });
+        for k in candidates {
             let uv = m.uv_indices[k].map(|i| m.uvs[i as usize]);
             let (a, b, d) = (uv[0], uv[1], uv[2]);
             let scale = (b.x - a.x) * (d.y - a.y) - (d.x - a.x) * (b.y - a.y);
