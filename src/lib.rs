@@ -39,31 +39,35 @@ pub mod noise;
 pub mod output;
 pub mod pattern;
 
-/// Declares the pipeline's inner stages: public with the feature `internals`, private
-/// without.
-macro_rules! stages {
-    ($($(#[$doc:meta])* $name:ident;)*) => {$(
-        $(#[$doc])*
-        #[cfg(feature = "internals")]
-        pub mod $name;
-        $(#[$doc])*
-        #[cfg(not(feature = "internals"))]
-        mod $name;
-    )*};
-}
+// The pipeline's inner stages: public with the feature `internals` (for the stability suite
+// and the BVH benchmarks), private without. Each is declared twice, plainly, so that rustfmt
+// and every other tool sees the modules (a macro declaring them hid them from rustfmt).
 
-stages! {
-    /// Directives, declarations, expressions and includes: syntax → IR.
-    eval;
-    /// Rays, shapes, intersections, bounds.
-    geometry;
-    /// The tracer: camera rays, shading, anti-aliasing, in parallel.
-    render;
-    /// IR → the render-ready scene (transforms, materials, acceleration structures).
-    scene;
-    /// pest's parse of scene text into syntax trees.
-    syntax;
-}
+/// Directives, declarations, expressions and includes: syntax → IR.
+#[cfg(feature = "internals")]
+pub mod eval;
+#[cfg(not(feature = "internals"))]
+mod eval;
+/// Rays, shapes, intersections, bounds.
+#[cfg(feature = "internals")]
+pub mod geometry;
+#[cfg(not(feature = "internals"))]
+mod geometry;
+/// The tracer: camera rays, shading, anti-aliasing, in parallel.
+#[cfg(feature = "internals")]
+pub mod render;
+#[cfg(not(feature = "internals"))]
+mod render;
+/// IR → the render-ready scene (transforms, materials, acceleration structures).
+#[cfg(feature = "internals")]
+pub mod scene;
+#[cfg(not(feature = "internals"))]
+mod scene;
+/// pest's parse of scene text into syntax trees.
+#[cfg(feature = "internals")]
+pub mod syntax;
+#[cfg(not(feature = "internals"))]
+mod syntax;
 
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;

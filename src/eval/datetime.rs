@@ -21,10 +21,28 @@ fn is_leap(year: i64) -> bool {
     year % 4 == 0 && (year % 100 != 0 || year % 400 == 0)
 }
 
-const WEEKDAYS: [&str; 7] = ["Sunday", "Monday", "Tuesday", "Wednesday", "Thursday", "Friday", "Saturday"];
+const WEEKDAYS: [&str; 7] = [
+    "Sunday",
+    "Monday",
+    "Tuesday",
+    "Wednesday",
+    "Thursday",
+    "Friday",
+    "Saturday",
+];
 const MONTHS: [&str; 12] = [
-    "January", "February", "March", "April", "May", "June", "July", "August", "September", "October",
-    "November", "December",
+    "January",
+    "February",
+    "March",
+    "April",
+    "May",
+    "June",
+    "July",
+    "August",
+    "September",
+    "October",
+    "November",
+    "December",
 ];
 
 /// `days` since 2000-01-01 00:00 UTC formatted by `format` (rounded to the second, as
@@ -33,7 +51,11 @@ pub(super) fn format(days: f64, format: &str) -> String {
     let seconds = ((days + 10_957.0) * 86_400.0 + 0.5).floor() as i64;
     let (day_number, second_of_day) = (seconds.div_euclid(86_400), seconds.rem_euclid(86_400));
     let (year, month, day) = civil(day_number);
-    let (hour, minute, second) = (second_of_day / 3600, second_of_day / 60 % 60, second_of_day % 60);
+    let (hour, minute, second) = (
+        second_of_day / 3600,
+        second_of_day / 60 % 60,
+        second_of_day % 60,
+    );
     let weekday = (day_number + 4).rem_euclid(7) as usize; // 1970-01-01 was a Thursday
     let cumulative = [0, 31, 59, 90, 120, 151, 181, 212, 243, 273, 304, 334];
     let yday = cumulative[month as usize - 1] + day + u32::from(month > 2 && is_leap(year));
@@ -93,7 +115,10 @@ mod tests {
     fn povray_dates() {
         assert_eq!(format(0.0, "%Y-%m-%d %H:%M:%SZ"), "2000-01-01 00:00:00Z");
         assert_eq!(format(9825.5, "%Y-%m-%d %H:%M:%S"), "2026-11-25 12:00:00");
-        assert_eq!(format(59.0, "%d %b %Y, %A, day %j"), "29 Feb 2000, Tuesday, day 060");
+        assert_eq!(
+            format(59.0, "%d %b %Y, %A, day %j"),
+            "29 Feb 2000, Tuesday, day 060"
+        );
         assert_eq!(format(-1.25, "%F %T %p %I"), "1999-12-30 18:00:00 PM 06");
     }
 }

@@ -6,8 +6,9 @@ use crate::diag::{Diagnostic, Span};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
 
 /// Functions whose value is a string (evaluated by `Evaluator::string`).
-pub(super) const STRING_FUNCTIONS: [&str; 8] =
-    ["concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime"];
+pub(super) const STRING_FUNCTIONS: [&str; 8] = [
+    "concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime",
+];
 
 /// POV-Ray's tolerance for `=`, `!=` and truth (`ftrue`): |x| > 1e-10 is true.
 const EQUALITY_TOLERANCE: f64 = 1e-10;
@@ -103,7 +104,11 @@ impl Evaluator<'_> {
                 // taken still draws its number.
                 let cond = self.float(c)?;
                 let (va, vb) = (self.eval(a)?, self.eval(b)?);
-                Ok(if cond.abs() > EQUALITY_TOLERANCE { va } else { vb })
+                Ok(if cond.abs() > EQUALITY_TOLERANCE {
+                    va
+                } else {
+                    vb
+                })
             }
             ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, expr.span),
             ExprKind::Member(base, name, span) => {

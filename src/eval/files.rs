@@ -338,7 +338,11 @@ impl Evaluator<'_> {
     fn user_file(&self, node: &Node) -> Result<usize> {
         match self.env.get(&node.word) {
             Some(Value::File(id)) => Ok(*id),
-            Some(other) => Err(super::expr::type_error("a file opened by #fopen", other, node.span)),
+            Some(other) => Err(super::expr::type_error(
+                "a file opened by #fopen",
+                other,
+                node.span,
+            )),
             None => Err(Diagnostic::error(
                 format!("`{}` is not an open file", node.word),
                 node.span,
@@ -364,10 +368,8 @@ impl Evaluator<'_> {
             let mut lexer = Lexer { text: &text, pos };
             let value = read_value(&mut lexer).map_err(|(message, at)| {
                 let end = (at + 1).min(text.len()).max(at);
-                Diagnostic::error(message, Span::new(file, at, end)).with_note(format!(
-                    "read by #read at {}",
-                    self.location(target.span)
-                ))
+                Diagnostic::error(message, Span::new(file, at, end))
+                    .with_note(format!("read by #read at {}", self.location(target.span)))
             })?;
             pos = lexer.pos;
             let Some((value, ended)) = value else {
@@ -414,9 +416,8 @@ impl Evaluator<'_> {
                     let Some((c, n)) = v.components() else {
                         return Err(super::expr::type_error("a number or vector", &v, expr.span));
                     };
-                    write_binary(&mut bytes, &kind.word, &c[..n]).map_err(|m| {
-                        Diagnostic::error(m, kind.span)
-                    })?;
+                    write_binary(&mut bytes, &kind.word, &c[..n])
+                        .map_err(|m| Diagnostic::error(m, kind.span))?;
                 }
                 None => match self.eval(expr)? {
                     Value::Str(s) => bytes.extend_from_slice(s.as_bytes()),
@@ -446,7 +447,10 @@ impl Evaluator<'_> {
             unreachable!("checked above");
         };
         out.write_all(&bytes).map_err(|e| {
-            Diagnostic::error(format!("cannot write {}: {e}", path.display()), item.word_span)
+            Diagnostic::error(
+                format!("cannot write {}: {e}", path.display()),
+                item.word_span,
+            )
         })
     }
 }
@@ -528,7 +532,11 @@ fn write_binary(out: &mut Vec<u8>, kind: &str, values: &[f64]) -> std::result::R
         "uint16be" => (0, 65535, 2, true),
         "sint32le" => (i32::MIN as i64, i32::MAX as i64, 4, false),
         "sint32be" => (i32::MIN as i64, i32::MAX as i64, 4, true),
-        other => return Err(format!("`{other}` is not a binary kind (uint8, sint16le …)")),
+        other => {
+            return Err(format!(
+                "`{other}` is not a binary kind (uint8, sint16le …)"
+            ));
+        }
     };
     for &v in values {
         let n = if v <= min as f64 {
@@ -584,7 +592,9 @@ mod tests {
 
     #[test]
     fn data_files_read_as_povray_reads_them() {
-        let values = read_all("\"s1\",-1.5,<1,2,3> ,\"two\\\\x\", // c\n - 3, + +2, <1,2>, /* c */ <1,2,3,4,5>, 1e3");
+        let values = read_all(
+            "\"s1\",-1.5,<1,2,3> ,\"two\\\\x\", // c\n - 3, + +2, <1,2>, /* c */ <1,2,3,4,5>, 1e3",
+        );
         let shown: Vec<String> = values
             .iter()
             .map(|v| match v {
@@ -598,8 +608,15 @@ mod tests {
         assert_eq!(
             shown,
             [
-                "s1", "-1.5", "[1.0, 2.0, 3.0]", "two\\x", "-3", "2", "[1.0, 2.0]",
-                "[1.0, 2.0, 3.0, 4.0, 5.0]", "1000"
+                "s1",
+                "-1.5",
+                "[1.0, 2.0, 3.0]",
+                "two\\x",
+                "-3",
+                "2",
+                "[1.0, 2.0]",
+                "[1.0, 2.0, 3.0, 4.0, 5.0]",
+                "1000"
             ]
         );
     }
@@ -611,7 +628,10 @@ mod tests {
             text: "1 2, 3",
             pos: 0,
         };
-        assert!(matches!(read_value(&mut lexer), Ok(Some((Value::Float(1.0), false)))));
+        assert!(matches!(
+            read_value(&mut lexer),
+            Ok(Some((Value::Float(1.0), false)))
+        ));
         assert!(read_value(&mut lexer).is_err());
     }
 

@@ -109,7 +109,10 @@ impl<'a> Evaluator<'a> {
                     // A statement read with a directive where a value is.
                     Some(_) => {
                         let at = statement.span.start as usize;
-                        (super::spliced::directive_in_value_error(statement.span.file, at), at)
+                        (
+                            super::spliced::directive_in_value_error(statement.span.file, at),
+                            at,
+                        )
                     }
                 },
                 // What the grammar cannot read may be directives working on tokens.
@@ -135,7 +138,11 @@ impl<'a> Evaluator<'a> {
         match item.kind {
             NodeKind::Version => {
                 self.version = Some(self.float(&item.args[0])?);
-                if item.children.iter().any(|c| c.kind == NodeKind::MissingSemicolon) {
+                if item
+                    .children
+                    .iter()
+                    .any(|c| c.kind == NodeKind::MissingSemicolon)
+                {
                     self.warn(Diagnostic::warning(
                         "`#version` wants a `;` after its number (POV-Ray warns too)",
                         item.args[0].span,
@@ -253,8 +260,13 @@ impl<'a> Evaluator<'a> {
             .filter(|c| c.kind == NodeKind::Subscript)
             .collect();
         let mut at = 1 + subs.len();
-        if let Some(leading) = children.get(at).filter(|c| c.kind == NodeKind::LeadingDirectives) {
-            self.each_item(&leading.children, &mut |ev, item| Err(ev.unknown_item(item, "a declaration")))?;
+        if let Some(leading) = children
+            .get(at)
+            .filter(|c| c.kind == NodeKind::LeadingDirectives)
+        {
+            self.each_item(&leading.children, &mut |ev, item| {
+                Err(ev.unknown_item(item, "a declaration"))
+            })?;
             at += 1;
         }
         let value = match children.get(at) {
@@ -265,12 +277,15 @@ impl<'a> Evaluator<'a> {
                 Value::Unsupported(Box::new(self.why_unparsed(item)))
             }
             Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
-            Some(item) if matches!(item.kind, NodeKind::If | NodeKind::IfDef | NodeKind::Switch) => {
+            Some(item)
+                if matches!(item.kind, NodeKind::If | NodeKind::IfDef | NodeKind::Switch) =>
+            {
                 self.directive_value(item).or_else(unsupported_later)?
             }
-            Some(item) if item.kind == NodeKind::Function => {
-                self.function(item).map(Value::Function).or_else(unsupported_later)?
-            }
+            Some(item) if item.kind == NodeKind::Function => self
+                .function(item)
+                .map(Value::Function)
+                .or_else(unsupported_later)?,
             Some(item) if item.kind == NodeKind::IdentRef => {
                 self.lookup(item).or_else(unsupported_later)?
             }
@@ -564,7 +579,8 @@ impl<'a> Evaluator<'a> {
             Ok(nodes) => self.each_item(&nodes, f),
             Err(failed) => {
                 let region = body.start as usize..body.end as usize;
-                self.run_spliced(body.file, region, true, failed, f, false).map(|_| ())
+                self.run_spliced(body.file, region, true, failed, f, false)
+                    .map(|_| ())
             }
         }
     }
@@ -614,7 +630,8 @@ impl<'a> Evaluator<'a> {
                     Ok(items) => self.each_item(&items, &mut one_value),
                     Err(failed) => {
                         let region = body.start as usize..body.end as usize;
-                        self.run_spliced(body.file, region, true, failed, &mut one_value, false).map(|_| ())
+                        self.run_spliced(body.file, region, true, failed, &mut one_value, false)
+                            .map(|_| ())
                     }
                 };
                 match run {
@@ -647,7 +664,9 @@ impl<'a> Evaluator<'a> {
             }
             // (`function { … }` reads as a function pattern among items.)
             NodeKind::Pattern
-                if n.children.first().is_some_and(|c| c.kind == NodeKind::Function) =>
+                if n.children
+                    .first()
+                    .is_some_and(|c| c.kind == NodeKind::Function) =>
             {
                 Value::Function(self.function(&n.children[0])?)
             }
@@ -668,14 +687,20 @@ impl<'a> Evaluator<'a> {
             match (v, &value) {
                 (Some(v), None) => value = Some(v),
                 (Some(_), Some(_)) => {
-                    return Err(Diagnostic::error("a declaration takes one value", n.word_span));
+                    return Err(Diagnostic::error(
+                        "a declaration takes one value",
+                        n.word_span,
+                    ));
                 }
                 (None, _) => return Err(ev.unknown_item(n, "a declaration")),
             }
             Ok(())
         })?;
         value.ok_or_else(|| {
-            Diagnostic::error("this directive gives the declaration no value", directive.word_span)
+            Diagnostic::error(
+                "this directive gives the declaration no value",
+                directive.word_span,
+            )
         })
     }
 
@@ -700,12 +725,7 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Binds a macro's parameters in a new frame and returns its body text.
-    fn begin_macro(
-        &mut self,
-        name: &str,
-        span: Span,
-        args: &[syntax::Expr],
-    ) -> Result<Span> {
+    fn begin_macro(&mut self, name: &str, span: Span, args: &[syntax::Expr]) -> Result<Span> {
         let Some(m) = self.macros.get(name).cloned() else {
             return Err(self.unknown_word(name, span));
         };
@@ -733,7 +753,11 @@ impl<'a> Evaluator<'a> {
         }
         let parsed = self.macro_parses.contains_key(&macro_key(m.body));
         let body_bytes = u64::from(m.body.end.saturating_sub(m.body.start));
-        let parse = if parsed { 0 } else { body_bytes / MACRO_PARSE_BYTES_PER_STEP };
+        let parse = if parsed {
+            0
+        } else {
+            body_bytes / MACRO_PARSE_BYTES_PER_STEP
+        };
         self.charge(MACRO_CALL_STEPS + parse, "macro call", span)?;
         if self.frames.len() >= MAX_MACRO_DEPTH {
             return Err(Diagnostic::error(
@@ -771,15 +795,19 @@ impl<'a> Evaluator<'a> {
     /// (A body read with a directive where a value is counts as unread: it is read as POV-Ray's
     /// token reader reads it.)
     fn parsed_items(&mut self, body: Span) -> std::result::Result<Arc<Vec<Node>>, Diagnostic> {
-        self.parsed_once(body, |p| &mut p.items, |text, file, offset| {
-            let items = syntax::parse_fragment_items(text, file, offset)?;
-            for item in &items {
-                if let Some(at) = syntax::tokens::directive_after_unknown(item, text, offset) {
-                    return Err(super::spliced::directive_in_value_error(file, offset + at));
+        self.parsed_once(
+            body,
+            |p| &mut p.items,
+            |text, file, offset| {
+                let items = syntax::parse_fragment_items(text, file, offset)?;
+                for item in &items {
+                    if let Some(at) = syntax::tokens::directive_after_unknown(item, text, offset) {
+                        return Err(super::spliced::directive_in_value_error(file, offset + at));
+                    }
                 }
-            }
-            Ok(items)
-        })
+                Ok(items)
+            },
+        )
     }
 
     /// A macro body parsed as a value (directives around one expression), parsed once.
@@ -798,7 +826,11 @@ impl<'a> Evaluator<'a> {
         parse: impl FnOnce(&str, crate::diag::FileId, usize) -> std::result::Result<T, Diagnostic>,
     ) -> std::result::Result<Arc<T>, Diagnostic> {
         let key = macro_key(body);
-        if let Some(found) = self.macro_parses.get_mut(&key).and_then(|p| slot(p).clone()) {
+        if let Some(found) = self
+            .macro_parses
+            .get_mut(&key)
+            .and_then(|p| slot(p).clone())
+        {
             return found;
         }
         let text = &self.sources.file(body.file).text[body.start as usize..body.end as usize];
@@ -812,16 +844,26 @@ impl<'a> Evaluator<'a> {
     /// object, a texture …) is two arguments, `M(…)` and `-e`, as POV-Ray reads the tokens:
     /// the item ends at its `}` and the sign starts the next argument. `None` when no such
     /// split gives `want` arguments.
-    fn split_after_macro_items(&mut self, args: &[syntax::Expr], want: usize) -> Option<Vec<syntax::Expr>> {
+    fn split_after_macro_items(
+        &mut self,
+        args: &[syntax::Expr],
+        want: usize,
+    ) -> Option<Vec<syntax::Expr>> {
         if args.len() >= want {
             return None;
         }
         let mut out = Vec::with_capacity(want);
         for a in args {
-            if let ExprKind::Binary(op @ (syntax::BinOp::Sub | syntax::BinOp::Add), left, right) = &a.kind {
+            if let ExprKind::Binary(op @ (syntax::BinOp::Sub | syntax::BinOp::Add), left, right) =
+                &a.kind
+            {
                 if matches!(&left.kind, ExprKind::Call(n, ..) if self.macros.contains_key(n)) {
                     out.push((**left).clone());
-                    let sign = if *op == syntax::BinOp::Sub { syntax::UnOp::Neg } else { syntax::UnOp::Plus };
+                    let sign = if *op == syntax::BinOp::Sub {
+                        syntax::UnOp::Neg
+                    } else {
+                        syntax::UnOp::Plus
+                    };
                     out.push(syntax::Expr {
                         kind: ExprKind::Unary(sign, right.clone()),
                         span: right.span,
@@ -916,7 +958,9 @@ impl Evaluator<'_> {
                 None => t,
             });
         }
-        Ok(Value::Texture(layered.expect("a layered texture has textures")))
+        Ok(Value::Texture(
+            layered.expect("a layered texture has textures"),
+        ))
     }
 }
 

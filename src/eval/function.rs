@@ -15,7 +15,11 @@ use std::sync::Arc;
 impl Evaluator<'_> {
     /// A `function { … }` node, compiled.
     pub(super) fn function(&mut self, node: &Node) -> Result<Arc<Function>> {
-        let params: Vec<String> = match node.children.iter().find(|c| c.kind == NodeKind::FunctionParams) {
+        let params: Vec<String> = match node
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::FunctionParams)
+        {
             Some(p) => p
                 .word
                 .trim_matches(|c| c == '(' || c == ')')
@@ -33,7 +37,9 @@ impl Evaluator<'_> {
         // `function { transform { … } }`: the point it takes, transformed.
         if let Some(body) = node.children.iter().find(|c| c.kind == NodeKind::Transform) {
             let t = self.transform(body)?;
-            return Ok(Arc::new(Function::native(Arc::new(TransformFunction(t.matrix)))));
+            return Ok(Arc::new(Function::native(Arc::new(TransformFunction(
+                t.matrix,
+            )))));
         }
         // `function { pigment { … } }`, `function { pattern { … } }`.
         if let Some(body) = node
@@ -41,13 +47,19 @@ impl Evaluator<'_> {
             .iter()
             .find(|c| matches!(c.kind, NodeKind::Pigment | NodeKind::PatternFunction))
         {
-            if let Some(p) = node.children.iter().find(|c| c.kind == NodeKind::FunctionParams) {
+            if let Some(p) = node
+                .children
+                .iter()
+                .find(|c| c.kind == NodeKind::FunctionParams)
+            {
                 return Err(Diagnostic::error(
                     "a pigment or pattern function takes no parameters (its point is x, y, z), as in POV-Ray",
                     p.span,
                 ));
             }
-            return self.native_function(body).map(|n| Arc::new(Function::native(n)));
+            return self
+                .native_function(body)
+                .map(|n| Arc::new(Function::native(n)));
         }
         let body = &node.args[0];
         // `function { internal(N) }`: one of POV-Ray's built-in functions.
@@ -84,7 +96,11 @@ impl Evaluator<'_> {
         // Entries made by directives (`#for` over an array of points) join the written ones
         // in the order they stand.
         let flat;
-        let node = if node.children.iter().any(|c| super::object::is_directive(c.kind)) {
+        let node = if node
+            .children
+            .iter()
+            .any(|c| super::object::is_directive(c.kind))
+        {
             let mut args = node.args.clone();
             let mut kinds = Vec::new();
             for c in &node.children {
@@ -102,7 +118,11 @@ impl Evaluator<'_> {
                 })?;
             }
             args.sort_by_key(|e| e.span.start);
-            flat = Node { args, children: kinds, ..node.clone() };
+            flat = Node {
+                args,
+                children: kinds,
+                ..node.clone()
+            };
             &flat
         } else {
             node
@@ -110,7 +130,9 @@ impl Evaluator<'_> {
         let mut args = node.args.as_slice();
         let mut spline = match args.first().map(|e| &e.kind) {
             Some(ExprKind::Ident(name)) if matches!(self.env.get(name), Some(Value::Spline(_))) => {
-                let Some(Value::Spline(s)) = self.env.get(name) else { unreachable!() };
+                let Some(Value::Spline(s)) = self.env.get(name) else {
+                    unreachable!()
+                };
                 let s = (**s).clone();
                 args = &args[1..];
                 s
@@ -147,13 +169,22 @@ impl Evaluator<'_> {
         }
         spline.extend(entries);
         if spline.is_empty() {
-            return Err(Diagnostic::error("a spline needs at least one entry", node.word_span));
+            return Err(Diagnostic::error(
+                "a spline needs at least one entry",
+                node.word_span,
+            ));
         }
         Ok(spline)
     }
 
     /// `S(t)` or `S(t, kind)`: the spline's vector at t.
-    pub(super) fn call_spline(&mut self, spline: &Spline, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+    pub(super) fn call_spline(
+        &mut self,
+        spline: &Spline,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Value> {
         if !(1..=2).contains(&args.len()) {
             return Err(Diagnostic::error(
                 format!("the spline `{name}` takes a parameter and, optionally, a spline kind"),
@@ -209,7 +240,10 @@ impl Evaluator<'_> {
     /// Appends the program of `e` to `code`.
     fn compile(&mut self, e: &Expr, params: &[String], code: &mut Vec<Op>) -> Result<()> {
         let not_here = |what: &str, span: Span| {
-            Err(Diagnostic::error(format!("{what} cannot stand in a function (POV-Ray's function syntax)"), span))
+            Err(Diagnostic::error(
+                format!("{what} cannot stand in a function (POV-Ray's function syntax)"),
+                span,
+            ))
         };
         match &e.kind {
             ExprKind::Number(n) => code.push(Op::Const(*n)),
@@ -229,7 +263,9 @@ impl Evaluator<'_> {
                     Value::Float(f) => code.push(Op::Const(f)),
                     Value::Function(_) => {
                         return Err(Diagnostic::error(
-                            format!("the function `{name}` is called with its arguments: {name}(x, y, z)"),
+                            format!(
+                                "the function `{name}` is called with its arguments: {name}(x, y, z)"
+                            ),
                             e.span,
                         ));
                     }
@@ -270,7 +306,9 @@ impl Evaluator<'_> {
                     BinOp::Or => Op::Or,
                 });
             }
-            ExprKind::Call(name, name_span, args) => self.compile_call(name, *name_span, args, e.span, params, code)?,
+            ExprKind::Call(name, name_span, args) => {
+                self.compile_call(name, *name_span, args, e.span, params, code)?
+            }
             // (A directive in a function's body is executed as the function is declared, as
             // POV-Ray's reader does.)
             ExprKind::Chosen(branches, otherwise) => {
@@ -281,7 +319,10 @@ impl Evaluator<'_> {
             ExprKind::Member(base, member, member_span) => {
                 // `F(x, y, z).red`: one value of a vector function (a pigment's colour …).
                 let ExprKind::Call(name, name_span, args) = &base.kind else {
-                    return not_here("a member (`.x`, `.red` …) of anything but a pigment or spline function's value", e.span);
+                    return not_here(
+                        "a member (`.x`, `.red` …) of anything but a pigment or spline function's value",
+                        e.span,
+                    );
                 };
                 let f = match self.ident(name, *name_span)? {
                     Value::Function(f) => f,
@@ -320,7 +361,10 @@ impl Evaluator<'_> {
                     Value::Float(f) => code.push(Op::Const(f)),
                     other => {
                         return Err(Diagnostic::error(
-                            format!("this element is {}: a function uses numbers", other.kind_name()),
+                            format!(
+                                "this element is {}: a function uses numbers",
+                                other.kind_name()
+                            ),
                             e.span,
                         ));
                     }
@@ -356,22 +400,38 @@ impl Evaluator<'_> {
             code.push(Op::Math2(m));
         } else if name == "min" || name == "max" {
             if args.len() < 2 {
-                return Err(Diagnostic::error(format!("`{name}` takes at least 2 arguments"), span));
+                return Err(Diagnostic::error(
+                    format!("`{name}` takes at least 2 arguments"),
+                    span,
+                ));
             }
             if args.len() > 255 {
-                return Err(Diagnostic::error(format!("`{name}` takes at most 255 arguments here"), span));
+                return Err(Diagnostic::error(
+                    format!("`{name}` takes at most 255 arguments here"),
+                    span,
+                ));
             }
             operands(self, code)?;
             let n = args.len() as u8;
-            code.push(if name == "min" { Op::Min(n) } else { Op::Max(n) });
+            code.push(if name == "min" {
+                Op::Min(n)
+            } else {
+                Op::Max(n)
+            });
         } else if name == "sum" || name == "prod" {
             // sum(i, a, b, f): the term is a function of this one's parameters and i.
             check_arity(name, 4, args.len(), span)?;
             let ExprKind::Ident(var) = &args[0].kind else {
-                return Err(Diagnostic::error(format!("`{name}` counts with a name: {name}(i, a, b, f)"), args[0].span));
+                return Err(Diagnostic::error(
+                    format!("`{name}` counts with a name: {name}(i, a, b, f)"),
+                    args[0].span,
+                ));
             };
             if params.len() + 1 > crate::func::MAX_STACK {
-                return Err(Diagnostic::error(format!("`{name}` nested too deeply"), span));
+                return Err(Diagnostic::error(
+                    format!("`{name}` nested too deeply"),
+                    span,
+                ));
             }
             self.compile(&args[1], params, code)?;
             self.compile(&args[2], params, code)?;
@@ -380,7 +440,10 @@ impl Evaluator<'_> {
             let mut term = Vec::new();
             self.compile(&args[3], &inner, &mut term)?;
             let term = Function::new(inner.len(), term).ok_or_else(|| {
-                Diagnostic::error(format!("the term of this `{name}` nests too deeply"), args[3].span)
+                Diagnostic::error(
+                    format!("the term of this `{name}` nests too deeply"),
+                    args[3].span,
+                )
             })?;
             code.push(Op::Loop(Arc::new(term), name == "prod"));
         } else if name == "select" {
@@ -388,12 +451,18 @@ impl Evaluator<'_> {
                 return Err(Diagnostic::error("`select` takes 3 or 4 arguments", span));
             }
             operands(self, code)?;
-            code.push(if args.len() == 3 { Op::Select3 } else { Op::Select4 });
+            code.push(if args.len() == 3 {
+                Op::Select3
+            } else {
+                Op::Select4
+            });
         } else {
             match self.ident(name, name_span)? {
                 Value::Function(f) if f.vector.is_some() => {
                     return Err(Diagnostic::error(
-                        format!("`{name}` gives several values: a function uses one of them, as in {name}(x, y, z).red or .gray"),
+                        format!(
+                            "`{name}` gives several values: a function uses one of them, as in {name}(x, y, z).red or .gray"
+                        ),
                         span,
                     ));
                 }
@@ -404,7 +473,10 @@ impl Evaluator<'_> {
                 }
                 other => {
                     return Err(Diagnostic::error(
-                        format!("`{name}` is {}, not a function this function can call", other.kind_name()),
+                        format!(
+                            "`{name}` is {}, not a function this function can call",
+                            other.kind_name()
+                        ),
                         name_span,
                     ));
                 }
@@ -417,11 +489,21 @@ impl Evaluator<'_> {
     /// else POV-Ray's default for the version).
     pub(super) fn noise_generator(&self) -> u8 {
         self.noise_generator
-            .unwrap_or(if self.version.is_some_and(|v| v < 3.5 - 1e-9) { 1 } else { 2 })
+            .unwrap_or(if self.version.is_some_and(|v| v < 3.5 - 1e-9) {
+                1
+            } else {
+                2
+            })
     }
 
     /// `F(a, b, …)` in an expression: the declared function's value.
-    pub(super) fn call_function(&mut self, f: &Function, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+    pub(super) fn call_function(
+        &mut self,
+        f: &Function,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Value> {
         check_arity(name, f.params, args.len(), span)?;
         let mut values = Vec::with_capacity(args.len());
         for a in args {
@@ -469,7 +551,9 @@ impl crate::func::Native for TransformFunction {
     }
 
     fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
-        let p = self.0.transform_point3(glam::DVec3::new(args[0], args[1], args[2]));
+        let p = self
+            .0
+            .transform_point3(glam::DVec3::new(args[0], args[1], args[2]));
         [p.x, p.y, p.z, 0.0, 0.0]
     }
 }

@@ -20,12 +20,16 @@ pub(super) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
     let mut reader = decoder.read_info().map_err(|e| e.to_string())?;
     let (w, h) = (reader.info().width, reader.info().height);
     if u64::from(w) * u64::from(h) > MAX_PIXELS {
-        return Err(format!("{w}×{h} pixels; trace reads height fields up to {MAX_PIXELS} pixels"));
+        return Err(format!(
+            "{w}×{h} pixels; trace reads height fields up to {MAX_PIXELS} pixels"
+        ));
     }
     if w < 2 || h < 2 {
         return Err(format!("{w}×{h} pixels: a height field needs at least 2×2"));
     }
-    let size = reader.output_buffer_size().ok_or("the image is too large")?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or("the image is too large")?;
     let mut buf = vec![0; size];
     let out = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let bits = out.bit_depth as usize;
@@ -52,7 +56,9 @@ pub(super) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
             heights[z * wu + x] = match out.color_type {
                 png::ColorType::Indexed => (v(0) * 256) as u16,
                 png::ColorType::Grayscale if bits <= 8 => grey_byte(v(0) as f32 / max) * 257,
-                png::ColorType::Grayscale | png::ColorType::GrayscaleAlpha if bits == 16 => v(0) as u16,
+                png::ColorType::Grayscale | png::ColorType::GrayscaleAlpha if bits == 16 => {
+                    v(0) as u16
+                }
                 png::ColorType::GrayscaleAlpha => (v(0) * 257) as u16,
                 _ if bits == 16 => grey16([v(0) as u16, v(1) as u16, v(2) as u16]),
                 _ => (v(0) * 256 + v(1)) as u16,
@@ -90,7 +96,9 @@ mod tests {
         assert_eq!(grey8(3), 2);
         assert_eq!(grey8(4), 4);
         assert_eq!(grey8(255), 255);
-        let lowered = (0..=255u8).filter(|&v| grey8(v) + 1 == u16::from(v)).count();
+        let lowered = (0..=255u8)
+            .filter(|&v| grey8(v) + 1 == u16::from(v))
+            .count();
         assert_eq!(lowered, 84);
     }
 }

@@ -13,8 +13,8 @@
 //! palette image's height field, `use_index` and per-entry `filter`/`transmit`) come from the
 //! png and gif decoders and, for BMP (1, 4, 8 bits) and colour-mapped TGA, from the file.
 
-use super::value::Value;
 use super::expr::type_error;
+use super::value::Value;
 use crate::diag::Diagnostic;
 use crate::ir::{self, ImageMap, Pattern, PatternKind};
 use crate::pattern::image::{ImageUse, Interpolation, MapType};
@@ -177,7 +177,9 @@ pub(super) struct Picture {
 /// Reads `path` as a file of type `ty`.
 pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
     if let FileType::Unread(word) = ty {
-        return Err(format!("`{word}` images are not read by trace (PNG, JPEG, GIF, TGA, PPM, PGM, TIFF, BMP, EXR and HDR are)"));
+        return Err(format!(
+            "`{word}` images are not read by trace (PNG, JPEG, GIF, TGA, PPM, PGM, TIFF, BMP, EXR and HDR are)"
+        ));
     }
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     let mut reader = image::ImageReader::new(std::io::BufReader::new(file));
@@ -188,7 +190,9 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
     let format = reader.format();
     let (w, h) = reader.into_dimensions().map_err(|e| e.to_string())?;
     if u64::from(w) * u64::from(h) > MAX_PIXELS {
-        return Err(format!("{w}×{h} pixels; trace reads images up to {MAX_PIXELS} pixels"));
+        return Err(format!(
+            "{w}×{h} pixels; trace reads images up to {MAX_PIXELS} pixels"
+        ));
     }
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     let mut reader = image::ImageReader::new(std::io::BufReader::new(file));
@@ -200,7 +204,10 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
     reader.limits(limits);
     let decoded = reader.decode().map_err(|e| e.to_string())?;
     use image::DynamicImage as D;
-    let grey = matches!(decoded, D::ImageLuma8(_) | D::ImageLumaA8(_) | D::ImageLuma16(_) | D::ImageLumaA16(_));
+    let grey = matches!(
+        decoded,
+        D::ImageLuma8(_) | D::ImageLumaA8(_) | D::ImageLuma16(_) | D::ImageLumaA16(_)
+    );
     let deep = matches!(
         decoded,
         D::ImageLuma16(_) | D::ImageLumaA16(_) | D::ImageRgb16(_) | D::ImageRgba16(_)
@@ -275,7 +282,9 @@ pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
 /// grey picture half as wide, its palette ignored.
 fn pot(indices: &[u8], w: u32, h: u32) -> Result<Picture, String> {
     if w % 2 != 0 {
-        return Err(format!("a POT file is twice as wide as its picture; this one is {w} pixels wide"));
+        return Err(format!(
+            "a POT file is twice as wide as its picture; this one is {w} pixels wide"
+        ));
     }
     let (half, wide) = (w as usize / 2, w as usize);
     let pixels = (0..h as usize * half)
@@ -318,8 +327,16 @@ fn rgbe_midpoint(p: &mut [f32; 4]) {
 /// has it, ignores it). `None` for any other BMP.
 fn bmp_alpha(path: &Path, w: u32, h: u32) -> Result<Option<Vec<f32>>, String> {
     let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
-    let u32_at = |i: usize| bytes.get(i..i + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
-    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| u16::from_le_bytes([b[0], b[1]]));
+    let u32_at = |i: usize| {
+        bytes
+            .get(i..i + 4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    };
+    let u16_at = |i: usize| {
+        bytes
+            .get(i..i + 2)
+            .map(|b| u16::from_le_bytes([b[0], b[1]]))
+    };
     let (Some(offset), Some(info), Some(height), Some(depth), Some(compression)) =
         (u32_at(10), u32_at(14), u32_at(22), u16_at(28), u32_at(30))
     else {
@@ -349,9 +366,23 @@ fn bmp_alpha(path: &Path, w: u32, h: u32) -> Result<Option<Vec<f32>>, String> {
 /// POV-Ray reads as a palette image (`None` for any other BMP, or one it cannot read).
 fn bmp_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
     let bytes = std::fs::read(path).ok()?;
-    let u32_at = |i: usize| bytes.get(i..i + 4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]));
-    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| u16::from_le_bytes([b[0], b[1]]));
-    let (offset, info, height, depth, compression) = (u32_at(10)?, u32_at(14)?, u32_at(22)?, u16_at(28)?, u32_at(30)?);
+    let u32_at = |i: usize| {
+        bytes
+            .get(i..i + 4)
+            .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    };
+    let u16_at = |i: usize| {
+        bytes
+            .get(i..i + 2)
+            .map(|b| u16::from_le_bytes([b[0], b[1]]))
+    };
+    let (offset, info, height, depth, compression) = (
+        u32_at(10)?,
+        u32_at(14)?,
+        u32_at(22)?,
+        u16_at(28)?,
+        u32_at(30)?,
+    );
     if info < 40 || !matches!(depth, 1 | 4 | 8) || compression != 0 {
         return None;
     }
@@ -364,7 +395,8 @@ fn bmp_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
         let y = if top_down { k } else { h - 1 - k };
         for x in 0..w {
             let bit = x * bits;
-            indices[y * w + x] = (row[bit / 8] >> (8 - bits - bit % 8)) & ((1u16 << bits) - 1) as u8;
+            indices[y * w + x] =
+                (row[bit / 8] >> (8 - bits - bit % 8)) & ((1u16 << bits) - 1) as u8;
         }
     }
     Some(indices)
@@ -375,7 +407,11 @@ fn bmp_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
 /// image (`None` for any other TGA).
 fn tga_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
     let bytes = std::fs::read(path).ok()?;
-    let u16_at = |i: usize| bytes.get(i..i + 2).map(|b| usize::from(u16::from_le_bytes([b[0], b[1]])));
+    let u16_at = |i: usize| {
+        bytes
+            .get(i..i + 2)
+            .map(|b| usize::from(u16::from_le_bytes([b[0], b[1]])))
+    };
     let (id_len, map_type, kind) = (usize::from(*bytes.first()?), *bytes.get(1)?, *bytes.get(2)?);
     let (map_len, entry_bits) = (u16_at(5)?, usize::from(*bytes.get(7)?));
     let (depth, descriptor) = (*bytes.get(16)?, *bytes.get(17)?);
@@ -383,7 +419,9 @@ fn tga_indices(path: &Path, w: u32, h: u32) -> Option<Vec<u8>> {
         return None;
     }
     let (w, h) = (w as usize, h as usize);
-    let mut data = bytes.get(18 + id_len + map_len * entry_bits.div_ceil(8)..)?.iter();
+    let mut data = bytes
+        .get(18 + id_len + map_len * entry_bits.div_ceil(8)..)?
+        .iter();
     // Pixels in file order, then placed by the origin bit (set: the first row is the top).
     let mut file_order = Vec::with_capacity(w * h);
     while file_order.len() < w * h {
@@ -425,7 +463,9 @@ fn png_details(path: &Path) -> Result<(Encoding, Option<Vec<u8>>), String> {
     if info.color_type != png::ColorType::Indexed {
         return Ok((encoding, None));
     }
-    let size = reader.output_buffer_size().ok_or("the image is too large")?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or("the image is too large")?;
     let mut buf = vec![0; size];
     let out = reader.next_frame(&mut buf).map_err(|e| e.to_string())?;
     let bits = out.bit_depth as usize;
@@ -449,17 +489,25 @@ fn gif_indices(path: &Path) -> Result<(Vec<u8>, bool, bool), String> {
     options.set_color_output(gif::ColorOutput::Indexed);
     let mut decoder = options.read_info(file).map_err(|e| e.to_string())?;
     let (w, h) = (usize::from(decoder.width()), usize::from(decoder.height()));
-    let frame = decoder.next_frame_info().map_err(|e| e.to_string())?.ok_or("the file holds no image")?;
+    let frame = decoder
+        .next_frame_info()
+        .map_err(|e| e.to_string())?
+        .ok_or("the file holds no image")?;
     let (left, top) = (usize::from(frame.left), usize::from(frame.top));
     let fw = usize::from(frame.width);
     let (transparent, interlaced) = (frame.transparent.is_some(), frame.interlaced);
     let mut buffer = vec![0u8; decoder.buffer_size()];
-    decoder.read_into_buffer(&mut buffer).map_err(|e| e.to_string())?;
+    decoder
+        .read_into_buffer(&mut buffer)
+        .map_err(|e| e.to_string())?;
     // The frame sits at its offset on the logical screen; the rest is index 0.
     let mut indices = vec![0u8; w * h];
     for (y, row) in buffer.chunks(fw.max(1)).enumerate() {
         for (x, &i) in row.iter().enumerate() {
-            if let Some(p) = indices.get_mut((top + y) * w + left + x).filter(|_| left + x < w) {
+            if let Some(p) = indices
+                .get_mut((top + y) * w + left + x)
+                .filter(|_| left + x < w)
+            {
                 *p = i;
             }
         }
@@ -519,12 +567,16 @@ impl super::Evaluator<'_> {
                     format!("cannot tell the format of image \"{name}\" from its extension"),
                     name_span,
                 )
-                .with_note("name it before the file: png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr or hdr"));
+                .with_note(
+                    "name it before the file: png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr or hdr",
+                ));
             }
         };
         if let FileType::Unread(word) = ty {
             return Err(Diagnostic::error(
-                format!("unsupported: `{word}` images (trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr)"),
+                format!(
+                    "unsupported: `{word}` images (trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr)"
+                ),
                 type_span,
             ));
         }
@@ -540,7 +592,10 @@ impl super::Evaluator<'_> {
             None => self.find_file(name, "image", name_span)?,
         };
         let picture = read(&path, ty).map_err(|e| {
-            Diagnostic::error(format!("cannot read image {}: {e}", path.display()), name_span)
+            Diagnostic::error(
+                format!("cannot read image {}: {e}", path.display()),
+                name_span,
+            )
         })?;
         if picture.interlaced {
             self.warn(Diagnostic::warning(
@@ -579,7 +634,8 @@ impl super::Evaluator<'_> {
             other => return Err(type_error("a file name (a string)", &other, file_expr.span)),
         };
         let role = node.word.as_str();
-        let (mut once, mut map_type, mut interpolation) = (false, MapType::Planar, Interpolation::Nearest);
+        let (mut once, mut map_type, mut interpolation) =
+            (false, MapType::Planar, Interpolation::Nearest);
         let (mut use_, mut use_index, mut bump_size) = (ImageUse::Colour, false, None);
         // (filter or transmit, the palette entry and where it is named, the amount)
         type SeeThrough = (bool, Option<(i64, crate::diag::Span)>, f32);
@@ -686,12 +742,24 @@ impl super::Evaluator<'_> {
                 (true, None) if encoding == Encoding::AsWorking => return v as f32,
                 _ => encoding.decode(v),
             };
-            (if working == 1.0 || !colours { linear } else { linear.powf(1.0 / working) }) as f32
+            (if working == 1.0 || !colours {
+                linear
+            } else {
+                linear.powf(1.0 / working)
+            }) as f32
         };
         let mut pixels: Vec<[f32; 5]> = picture
             .pixels
             .iter()
-            .map(|p| [to_working(p[0]), to_working(p[1]), to_working(p[2]), 0.0, 1.0 - p[3]])
+            .map(|p| {
+                [
+                    to_working(p[0]),
+                    to_working(p[1]),
+                    to_working(p[2]),
+                    0.0,
+                    1.0 - p[3],
+                ]
+            })
             .collect();
         // `filter`/`transmit`: a palette image's entries take them (all, or one by index);
         // another image adds `all`'s amount to every pixel, as POV-Ray does.
@@ -763,7 +831,12 @@ impl super::Evaluator<'_> {
             word: "material_map".to_string(),
             word_span: node.word_span,
             args: node.args.clone(),
-            children: node.children.iter().filter(|c| c.kind != NodeKind::Texture).cloned().collect(),
+            children: node
+                .children
+                .iter()
+                .filter(|c| c.kind != NodeKind::Texture)
+                .cloned()
+                .collect(),
         };
         let read = self.image_map(&image_node)?;
         let mut entries = Vec::new();
@@ -771,10 +844,16 @@ impl super::Evaluator<'_> {
             entries.push((entries.len() as f64, self.texture(t)?));
         }
         if entries.is_empty() {
-            return Err(Diagnostic::error("a material_map needs at least one texture", node.word_span));
+            return Err(Diagnostic::error(
+                "a material_map needs at least one texture",
+                node.word_span,
+            ));
         }
         Ok(ir::TextureMap {
-            pattern: Pattern::new(PatternKind::MaterialIndex(Arc::new(read.image), entries.len() as u32)),
+            pattern: Pattern::new(PatternKind::MaterialIndex(
+                Arc::new(read.image),
+                entries.len() as u32,
+            )),
             transform: None,
             entries,
         })
@@ -786,7 +865,9 @@ mod tests {
     use super::*;
 
     fn example(name: &str) -> std::path::PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/images").join(name)
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("examples/images")
+            .join(name)
     }
 
     /// A POT file (examples/images/hills16.pot, made by scripts/make_images.py) holds the
@@ -799,7 +880,10 @@ mod tests {
         assert_eq!((pot.width, pot.height), (pgm.width, pgm.height));
         assert!(pot.grey && pot.deep && pot.indices.is_none());
         assert_eq!(pot.heights(), pgm.heights());
-        assert!(pot.heights().iter().any(|&h| h & 0xff != 0), "low bytes are read");
+        assert!(
+            pot.heights().iter().any(|&h| h & 0xff != 0),
+            "low bytes are read"
+        );
         // An odd width cannot be split in two halves.
         assert!(super::pot(&[0; 6], 3, 2).is_err_and(|e| e.contains("twice as wide")));
     }

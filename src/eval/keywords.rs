@@ -961,10 +961,7 @@ pub fn status(word: &str) -> Option<Status> {
 /// Whether `word` is one of POV-Ray's functions that trace does not support yet (called in
 /// an expression; other unsupported keywords there are simply unknown functions).
 pub fn is_unsupported_function(word: &str) -> bool {
-    matches!(
-        word,
-        "function"
-    )
+    matches!(word, "function")
 }
 
 /// Why trace rejects a POV-Ray keyword, or `None` if trace supports it or it is not a POV-Ray
@@ -983,49 +980,35 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "density_map" => LATER,
         "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
-        "clipped_by"
-        | "split_union" | "cutaway_textures" => LATER,
-        "spherical_camera" | "cylinder_camera" => "this camera type or item is not supported by trace yet",
-        "render" | "statistics" => {
-            "file input/output is not supported by trace yet"
+        "clipped_by" | "split_union" | "cutaway_textures" => LATER,
+        "spherical_camera" | "cylinder_camera" => {
+            "this camera type or item is not supported by trace yet"
         }
-        "max_intersections"
-        | "noise_generator_gs" | "subsurface_gs" => {
+        "render" | "statistics" => "file input/output is not supported by trace yet",
+        "max_intersections" | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }
         "aa_level" | "aa_threshold" | "always_sample" | "anisotropy" | "autostop" | "collect"
         | "dispersion_samples" | "eccentricity" | "expand_thresholds" | "extinction" | "gather"
         | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
-        | "pass_through" | "pretrace_end" | "pretrace_start" | "samples"
-        | "save_file" | "spacing" | "steps" | "target" | "arc_angle"
-        | "falloff_angle" | "brightness" | "count" | "distance_maximum" | "error_bound"
-        | "gray_threshold" | "low_error_factor" | "maximum_reuse" | "minimum_reuse"
-        | "nearest_count" | "recursion_limit" => {
+        | "pass_through" | "pretrace_end" | "pretrace_start" | "samples" | "save_file"
+        | "spacing" | "steps" | "target" | "arc_angle" | "falloff_angle" | "brightness"
+        | "count" | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
+        | "maximum_reuse" | "minimum_reuse" | "nearest_count" | "recursion_limit" => {
             "media, radiosity, photons and subsurface scattering are outside trace's subset"
         }
-        "evaluate" | "pwr" | "reciprocal"
-        => {
+        "evaluate" | "pwr" | "reciprocal" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "ratio" | "width" => {
-            "this pattern or pattern modifier is not supported by trace yet"
-        }
-        "all" | "alpha" | "premultiplied" => {
-            "this image_map item is not supported by trace yet"
-        }
+        "ratio" | "width" => "this pattern or pattern modifier is not supported by trace yet",
+        "all" | "alpha" | "premultiplied" => "this image_map item is not supported by trace yet",
         "reflection_exponent" | "refraction" | "translucency" => {
             "this finish item is outside trace's subset"
         }
-        "hierarchy" => {
-            "this object item is not supported by trace yet"
-        }
-        "area_illumination" => {
-            "this light_source item is not supported by trace yet"
-        }
+        "hierarchy" => "this object item is not supported by trace yet",
+        "area_illumination" => "this light_source item is not supported by trace yet",
         "bokeh" => "this camera item is not supported by trace yet",
-        "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" => {
-            "not supported by trace yet"
-        }
+        "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" => "not supported by trace yet",
         _ => return None,
     })
 }

@@ -1,18 +1,18 @@
 //! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
 
-use super::value::{MaterialValue, colour5, to_colour};
 use super::images::ImageRole;
+use super::value::{MaterialValue, colour5, to_colour};
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
+use crate::ir::{
+    self, Colour, ColourMap, Interior, Pattern, PatternKind, PatternPigment, Pigment, PigmentKind,
+    PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
+};
+use crate::noise;
 use crate::pattern::fractal::{self, Fractal, FractalKind};
 use crate::pattern::image::ImageUse;
 use crate::pattern::pavement;
-use crate::noise;
 use crate::pattern::{BlackHole, Mapping, MappingWarp};
-use crate::ir::{
-    self, Colour, ColourMap, Interior, Pattern, PatternKind, PatternPigment, Pigment,
-    PigmentKind, PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
-};
 use crate::syntax::{Node, NodeKind};
 use std::sync::Arc;
 
@@ -34,29 +34,53 @@ impl Evaluator<'_> {
     /// POV-Ray's parser leaves it: ranges as (low, high − low), an empty range ignored with a
     /// warning, the two directions normalised and weighted by their lengths.
     fn slope(&mut self, item: &Node) -> Result<crate::pattern::Slope> {
-        let block = item.children.iter().find(|c| c.kind == NodeKind::SlopeBlock);
+        let block = item
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::SlopeBlock);
         let (args, point_at) = match block {
-            Some(b) => (b.args.as_slice(), b.children.iter().any(|c| c.kind == NodeKind::SlopePointAt)),
+            Some(b) => (
+                b.args.as_slice(),
+                b.children.iter().any(|c| c.kind == NodeKind::SlopePointAt),
+            ),
             None => (item.args.as_slice(), false),
         };
         let Some(first) = args.first() else {
-            return Err(Diagnostic::error("`slope` needs a direction: slope y", item.span));
+            return Err(Diagnostic::error(
+                "`slope` needs a direction: slope y",
+                item.span,
+            ));
         };
-        let range = |ev: &mut Self, rest: &[crate::syntax::Expr], what: &str| -> Result<(f64, f64)> {
-            let low = rest.first().map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
-            let high = rest.get(1).map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
-            if high != 0.0 && high == low {
-                ev.warn(Diagnostic::warning(format!("zero {what} range, ignoring"), rest[1].span));
-                return Ok((0.0, 0.0));
-            }
-            Ok((low, high - low))
-        };
+        let range =
+            |ev: &mut Self, rest: &[crate::syntax::Expr], what: &str| -> Result<(f64, f64)> {
+                let low = rest
+                    .first()
+                    .map(|e| ev.float(e))
+                    .transpose()?
+                    .unwrap_or(0.0);
+                let high = rest.get(1).map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
+                if high != 0.0 && high == low {
+                    ev.warn(Diagnostic::warning(
+                        format!("zero {what} range, ignoring"),
+                        rest[1].span,
+                    ));
+                    return Ok((0.0, 0.0));
+                }
+                Ok((low, high - low))
+            };
         let direction = self.vec3(first)?;
         let slope_range = range(self, &args[1..], "slope")?;
         let (mut altitude, mut altitude_range) = (glam::DVec3::ZERO, (0.0, 0.0));
-        if let Some(alt) = block.and_then(|b| b.children.iter().find(|c| c.kind == NodeKind::SlopeAltitude)) {
+        if let Some(alt) = block.and_then(|b| {
+            b.children
+                .iter()
+                .find(|c| c.kind == NodeKind::SlopeAltitude)
+        }) {
             if point_at {
-                return Err(Diagnostic::error("`altitude` cannot be used with `point_at` in a slope pattern", alt.word_span));
+                return Err(Diagnostic::error(
+                    "`altitude` cannot be used with `point_at` in a slope pattern",
+                    alt.word_span,
+                ));
             }
             altitude = self.vec3(&alt.args[0])?;
             altitude_range = range(self, &alt.args[1..], "gradient")?;
@@ -74,7 +98,10 @@ impl Evaluator<'_> {
         let (slope_len, altitude_len) = (direction.length(), altitude.length());
         let total = slope_len + altitude_len;
         if total == 0.0 {
-            return Err(Diagnostic::error("zero length for both slope and gradient", first.span));
+            return Err(Diagnostic::error(
+                "zero length for both slope and gradient",
+                first.span,
+            ));
         }
         let unit = |v: glam::DVec3, len: f64| if len != 0.0 { v / len } else { v };
         let slope_weight = slope_len / total;
@@ -116,7 +143,10 @@ impl crate::func::Native for InsideTest {
 /// With `uv_mapping` among a block's items: the block made of the items after it (what sees
 /// the surface's (u, v, 0) instead of the point, as POV-Ray parses the rest of the block).
 fn after_uv_mapping(node: &Node) -> Option<Node> {
-    let i = node.children.iter().position(|c| c.kind == NodeKind::UvMapping)?;
+    let i = node
+        .children
+        .iter()
+        .position(|c| c.kind == NodeKind::UvMapping)?;
     Some(Node {
         kind: node.kind,
         span: node.span,
@@ -143,7 +173,10 @@ impl Evaluator<'_> {
 /// The texture a uv-mapped object's pigment, normal and finish go into: the one entry of a
 /// `uv_mapping` texture, else the texture itself.
 pub(super) fn uv_entry(texture: &mut Texture) -> &mut Texture {
-    let uv = texture.map.as_ref().is_some_and(|m| m.pattern.kind == PatternKind::UvMapping);
+    let uv = texture
+        .map
+        .as_ref()
+        .is_some_and(|m| m.pattern.kind == PatternKind::UvMapping);
     if uv {
         &mut texture.map.as_mut().expect("a uv_mapping texture").entries[0].1
     } else {
@@ -155,7 +188,9 @@ pub(super) fn uv_entry(texture: &mut Texture) -> &mut Texture {
 /// variant (its options then reduced as POV-Ray reduces them).
 fn check_pattern(pattern: &mut Pattern, span: crate::diag::Span) -> Result<()> {
     if let PatternKind::Pavement(pv) = &mut pattern.kind {
-        *pv = pv.checked().map_err(|e| Diagnostic::error(e.to_string(), span))?;
+        *pv = pv
+            .checked()
+            .map_err(|e| Diagnostic::error(e.to_string(), span))?;
     }
     Ok(())
 }
@@ -373,7 +408,11 @@ impl Evaluator<'_> {
     }
 
     /// `texture_map { [v TEXTURE_ITEMS] … }` or `texture_map { Name }`.
-    pub(super) fn texture_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, Texture)>> {
+    pub(super) fn texture_map(
+        &mut self,
+        node: &Node,
+        average: bool,
+    ) -> Result<Vec<(f64, Texture)>> {
         self.map_entries(
             node,
             "texture_map",
@@ -447,7 +486,10 @@ impl Evaluator<'_> {
             Ok(())
         })?;
         if entries.is_empty() {
-            return Err(Diagnostic::error(format!("{what} has no entries"), node.word_span));
+            return Err(Diagnostic::error(
+                format!("{what} has no entries"),
+                node.word_span,
+            ));
         }
         Ok(entries)
     }
@@ -619,9 +661,10 @@ impl Evaluator<'_> {
         pattern: &mut Pattern,
         placement: &mut Option<Box<Transform>>,
     ) -> Result<()> {
-        let first = item.children.first().ok_or_else(|| {
-            Diagnostic::error("this warp is empty", item.word_span)
-        })?;
+        let first = item
+            .children
+            .first()
+            .ok_or_else(|| Diagnostic::error("this warp is empty", item.word_span))?;
         let value = |ev: &mut Self, it: &Node| -> Result<glam::DVec3> {
             let e = it.args.first().ok_or_else(|| {
                 Diagnostic::error(format!("`{}` needs a value", it.word), it.word_span)
@@ -734,10 +777,16 @@ impl Evaluator<'_> {
                 }
                 for it in &item.children[1..] {
                     match (it.word.as_str(), &mut m.mapping) {
-                        ("orientation", Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. }) => {
+                        (
+                            "orientation",
+                            Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. },
+                        ) => {
                             m.orientation = value(self, it)?.normalize_or_zero();
                         }
-                        ("dist_exp", Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. }) => {
+                        (
+                            "dist_exp",
+                            Mapping::Cylindrical | Mapping::Spherical | Mapping::Toroidal { .. },
+                        ) => {
                             m.dist_exp = value(self, it)?.x;
                         }
                         ("major_radius", Mapping::Toroidal { major_radius }) => {
@@ -772,7 +821,11 @@ impl Evaluator<'_> {
             return Ok((PatternKind::Function(self.function(f)?), args));
         }
         // `object { OBJECT C0, C1 }`: inside or outside the object.
-        if let Some(o) = item.children.iter().find(|c| c.kind == NodeKind::ObjectPattern) {
+        if let Some(o) = item
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::ObjectPattern)
+        {
             let first = o.children.first().expect("the grammar gives the object");
             let object = match first.kind {
                 NodeKind::IdentRef => match self.lookup(first)? {
@@ -787,7 +840,11 @@ impl Evaluator<'_> {
             return Ok((PatternKind::Object(inside), &o.args));
         }
         // `pigment_pattern { … }`: a pigment's grey.
-        if let Some(p) = item.children.iter().find(|c| c.kind == NodeKind::PigmentPattern) {
+        if let Some(p) = item
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::PigmentPattern)
+        {
             let pigment = self.pigment(p, Pigment::solid(Colour::default()))?;
             let native = (self.pigment_function)(&pigment, self.scene_defaults());
             return Ok((PatternKind::Pigment(crate::func::NativeRef(native)), args));
@@ -803,7 +860,10 @@ impl Evaluator<'_> {
                 let e = first()?;
                 let axis = self.vec3(e)?;
                 if axis.length_squared() == 0.0 {
-                    return Err(Diagnostic::error("gradient direction is the zero vector", e.span));
+                    return Err(Diagnostic::error(
+                        "gradient direction is the zero vector",
+                        e.span,
+                    ));
                 }
                 return Ok((PatternKind::Gradient(axis.normalize()), &args[1..]));
             }
@@ -821,7 +881,10 @@ impl Evaluator<'_> {
                 let e = first()?;
                 let n = pavement::parameter_byte(self.float(e)?);
                 if !(1..=27).contains(&n) {
-                    return Err(Diagnostic::error("tiling number must be between 1 and 27", e.span));
+                    return Err(Diagnostic::error(
+                        "tiling number must be between 1 and 27",
+                        e.span,
+                    ));
                 }
                 return Ok((PatternKind::Tiling(n), &args[1..]));
             }
@@ -833,7 +896,10 @@ impl Evaluator<'_> {
             "julia" => {
                 let c = self.uv(first()?)?.to_array();
                 let Some(n) = args.get(1) else {
-                    return Err(Diagnostic::error("`julia` needs its constant and a number of iterations: julia <0.3, 0.5>, 30", item.span));
+                    return Err(Diagnostic::error(
+                        "`julia` needs its constant and a number of iterations: julia <0.3, 0.5>, 30",
+                        item.span,
+                    ));
                 };
                 let f = Fractal::new(FractalKind::Julia { c }, self.float(n)? as i32);
                 return Ok((PatternKind::Fractal(Box::new(f)), &args[2..]));
@@ -843,7 +909,11 @@ impl Evaluator<'_> {
                 // here as a name).
                 let kind_expr = first()?;
                 let kind = self.float(kind_expr)? as i64;
-                let Some(form) = item.children.iter().find(|c| c.kind == NodeKind::MagnetForm) else {
+                let Some(form) = item
+                    .children
+                    .iter()
+                    .find(|c| c.kind == NodeKind::MagnetForm)
+                else {
                     return Err(Diagnostic::error(
                         "invalid magnet pattern: `magnet 1 mandel N` or `magnet 1 julia <c>, N` (types 1 and 2)",
                         item.span,
@@ -857,15 +927,29 @@ impl Evaluator<'_> {
                     ));
                 }
                 let (julia, rest) = if which == "julia" {
-                    let c = args.get(1).ok_or_else(|| Diagnostic::error("`magnet … julia` needs its constant: magnet 1 julia <0.3, 0.5>, 30", item.span))?;
+                    let c = args.get(1).ok_or_else(|| {
+                        Diagnostic::error(
+                            "`magnet … julia` needs its constant: magnet 1 julia <0.3, 0.5>, 30",
+                            item.span,
+                        )
+                    })?;
                     (Some(self.uv(c)?.to_array()), 2)
                 } else {
                     (None, 1)
                 };
                 let Some(n) = args.get(rest) else {
-                    return Err(Diagnostic::error("`magnet` needs a number of iterations after it", item.span));
+                    return Err(Diagnostic::error(
+                        "`magnet` needs a number of iterations after it",
+                        item.span,
+                    ));
                 };
-                let f = Fractal::new(FractalKind::Magnet { kind: kind as u8, julia }, self.float(n)? as i32);
+                let f = Fractal::new(
+                    FractalKind::Magnet {
+                        kind: kind as u8,
+                        julia,
+                    },
+                    self.float(n)? as i32,
+                );
                 return Ok((PatternKind::Fractal(Box::new(f)), &args[rest + 1..]));
             }
             "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
@@ -881,7 +965,10 @@ impl Evaluator<'_> {
                 let name = self.string(file_expr)?;
                 let path = self.find_file(&name, "density file", file_expr.span)?;
                 let cannot = |e: &dyn std::fmt::Display| {
-                    Diagnostic::error(format!("cannot read density file {}: {e}", path.display()), file_expr.span)
+                    Diagnostic::error(
+                        format!("cannot read density file {}: {e}", path.display()),
+                        file_expr.span,
+                    )
                 };
                 let bytes = std::fs::read(&path).map_err(|e| cannot(&e))?;
                 let data = crate::pattern::density::parse(&name, &bytes).map_err(|e| cannot(&e))?;
@@ -944,7 +1031,14 @@ impl Evaluator<'_> {
             entries: entries.to_vec(),
         };
         let (red, green, blue) = (c(1.0, 0.0, 0.0), c(0.0, 1.0, 0.0), c(0.0, 0.0, 1.0));
-        let six = [red, green, blue, c(1.0, 1.0, 0.0), c(0.0, 1.0, 1.0), c(1.0, 0.0, 1.0)];
+        let six = [
+            red,
+            green,
+            blue,
+            c(1.0, 1.0, 0.0),
+            c(0.0, 1.0, 1.0),
+            c(1.0, 0.0, 1.0),
+        ];
         // Discrete patterns: POV-Ray's default entries, keyed 0, 1, ….
         let list: Vec<(f64, Colour)> = match kind {
             PatternKind::Checker | PatternKind::Object(_) => vec![(0.0, blue), (1.0, green)],
@@ -1006,8 +1100,11 @@ impl Evaluator<'_> {
             ));
         }
         // A list given: entries numbered 0, 1, …, the colours not given from the defaults.
-        let mut entries: Vec<(f64, Colour)> =
-            list.iter().enumerate().map(|(i, (_, c))| (i as f64, *c)).collect();
+        let mut entries: Vec<(f64, Colour)> = list
+            .iter()
+            .enumerate()
+            .map(|(i, (_, c))| (i as f64, *c))
+            .collect();
         for (slot, e) in entries.iter_mut().zip(rest) {
             let v = self.eval(e)?;
             slot.1 = to_colour(colour5(&v).ok_or_else(|| type_error("a colour", &v, e.span))?);
@@ -1017,7 +1114,11 @@ impl Evaluator<'_> {
 
     /// `normal { [Name] [PATTERN [amount]] modifiers transforms }`, starting from `base` (the
     /// texture's normal, if it has one).
-    pub(super) fn normal(&mut self, node: &Node, base: Option<Box<ir::Normal>>) -> Result<ir::Normal> {
+    pub(super) fn normal(
+        &mut self,
+        node: &Node,
+        base: Option<Box<ir::Normal>>,
+    ) -> Result<ir::Normal> {
         if let Some(inner) = after_uv_mapping(node) {
             let inner = self.normal(&inner, None)?;
             let mut normal = ir::Normal::new(Pattern::new(PatternKind::UvMapping), 0.0);
@@ -1111,8 +1212,8 @@ impl Evaluator<'_> {
             }
             Ok(())
         })?;
-        let mut normal =
-            normal.ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))?;
+        let mut normal = normal
+            .ok_or_else(|| Diagnostic::error("this normal has no pattern", node.word_span))?;
         check_pattern(&mut normal.pattern, node.word_span)?;
         if let Some((_, first_span)) = list.first() {
             let Some(len) = normal.pattern.kind.list_len() else {
@@ -1122,14 +1223,19 @@ impl Evaluator<'_> {
                 ));
             };
             if let Some((_, extra)) = list.get(len) {
-                return Err(Diagnostic::error(format!("this pattern takes at most {len} normals"), *extra));
+                return Err(Diagnostic::error(
+                    format!("this pattern takes at most {len} normals"),
+                    *extra,
+                ));
             }
             // Entry i at value i; the entries not given are the default texture's normal
             // (flat unless `#default` gave one), as in POV-Ray.
             let flat = || {
-                self.default_texture.normal.as_deref().cloned().unwrap_or_else(|| {
-                    ir::Normal::new(Pattern::new(PatternKind::Checker), 0.0)
-                })
+                self.default_texture
+                    .normal
+                    .as_deref()
+                    .cloned()
+                    .unwrap_or_else(|| ir::Normal::new(Pattern::new(PatternKind::Checker), 0.0))
             };
             let mut entries: Vec<(f64, ir::Normal)> = Vec::with_capacity(len);
             let mut given = list.into_iter();
@@ -1271,7 +1377,9 @@ impl Evaluator<'_> {
                 let e = arg()?;
                 let v = self.float(e)?;
                 match &mut pattern.kind {
-                    PatternKind::Pavement(pv) if interior => pv.interior = pavement::parameter_byte(v),
+                    PatternKind::Pavement(pv) if interior => {
+                        pv.interior = pavement::parameter_byte(v)
+                    }
                     PatternKind::Pavement(pv) => pv.exterior = pavement::parameter_byte(v),
                     PatternKind::Fractal(f) => {
                         let (kind, max) = if interior {
@@ -1282,7 +1390,9 @@ impl Evaluator<'_> {
                         let t = v as i32;
                         if !(0..=max).contains(&t) {
                             return Err(Diagnostic::error(
-                                format!("invalid fractal pattern {kind} type: valid types are 0 to {max}"),
+                                format!(
+                                    "invalid fractal pattern {kind} type: valid types are 0 to {max}"
+                                ),
                                 e.span,
                             ));
                         }
@@ -1376,7 +1486,11 @@ impl Evaluator<'_> {
 
     /// `pigment_map { [v PIGMENT] … }` or `pigment_map { Name }`: each entry's pigment starts
     /// black and unplaced (it is placed in the pattern's space).
-    pub(super) fn pigment_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, Pigment)>> {
+    pub(super) fn pigment_map(
+        &mut self,
+        node: &Node,
+        average: bool,
+    ) -> Result<Vec<(f64, Pigment)>> {
         self.map_entries(
             node,
             "pigment_map",
@@ -1392,7 +1506,11 @@ impl Evaluator<'_> {
 
     /// `slope_map { [v <height, slope>] … }`.
     /// `normal_map { [v NORMAL_ITEMS] … }` or `normal_map { Name }`.
-    pub(super) fn normal_map(&mut self, node: &Node, average: bool) -> Result<Vec<(f64, ir::Normal)>> {
+    pub(super) fn normal_map(
+        &mut self,
+        node: &Node,
+        average: bool,
+    ) -> Result<Vec<(f64, ir::Normal)>> {
         self.map_entries(
             node,
             "normal_map",
@@ -1417,7 +1535,10 @@ impl Evaluator<'_> {
         what: &str,
         take: impl FnOnce(Value) -> std::result::Result<T, Box<Value>>,
     ) -> Option<Result<T>> {
-        let ident = node.children.iter().find(|c| c.kind == NodeKind::IdentRef)?;
+        let ident = node
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::IdentRef)?;
         Some(match self.lookup(ident) {
             Ok(v) => take(v).map_err(|other| type_error(&format!("a {what}"), &other, ident.span)),
             Err(e) => Err(e),
@@ -1445,7 +1566,10 @@ impl Evaluator<'_> {
             entries.push((value, point));
         }
         if entries.is_empty() {
-            return Err(Diagnostic::error("slope_map has no entries", node.word_span));
+            return Err(Diagnostic::error(
+                "slope_map has no entries",
+                node.word_span,
+            ));
         }
         Ok(entries)
     }
@@ -1650,7 +1774,10 @@ impl Evaluator<'_> {
                 }
                 _ if Self::is_transform(item) => {
                     let t = ev.transform(item)?;
-                    for texture in [&mut m.texture, &mut m.interior_texture].into_iter().flatten() {
+                    for texture in [&mut m.texture, &mut m.interior_texture]
+                        .into_iter()
+                        .flatten()
+                    {
                         texture.transform(t);
                     }
                 }
@@ -1680,7 +1807,10 @@ fn pigment_from(v: Value, span: crate::diag::Span, pigment: Pigment) -> Result<P
 fn normal_only(kind: &PatternKind, item: &Node) -> Result<()> {
     if matches!(kind, PatternKind::Facets(_)) {
         return Err(Diagnostic::error(
-            format!("`{}` can stand only in a normal (POV-Ray refuses it elsewhere too)", item.word),
+            format!(
+                "`{}` can stand only in a normal (POV-Ray refuses it elsewhere too)",
+                item.word
+            ),
             item.word_span,
         ));
     }
@@ -1725,7 +1855,10 @@ mod tests {
             .noise_generator
         };
         assert_eq!(generator("global_settings { noise_generator 3 }"), 3);
-        assert_eq!(generator("#version 3.1; global_settings { noise_generator 2 }"), 2);
+        assert_eq!(
+            generator("#version 3.1; global_settings { noise_generator 2 }"),
+            2
+        );
         assert_eq!(generator("#version 3.1;"), 1);
         assert_eq!(generator("#version 3.7;"), 2);
         assert_eq!(generator(""), 2);
@@ -1740,7 +1873,10 @@ mod tests {
         let text = include_str!("../pattern/testdata/patterns.txt");
         let (mut checked, mut blocks) = (0, Vec::new());
         let mut current: Option<(String, crate::ir::Pattern, Option<glam::DMat4>)> = None;
-        for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+        for line in text
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        {
             if let Some(body) = line.strip_prefix("@ ") {
                 let (p, m) = pattern_of(body);
                 blocks.push(body.to_string());
@@ -1750,12 +1886,19 @@ mod tests {
             let Some((body, pattern, inverse)) = &current else {
                 continue;
             };
-            let v: Vec<f64> = line.split_whitespace().map(|x| x.parse().unwrap()).collect();
+            let v: Vec<f64> = line
+                .split_whitespace()
+                .map(|x| x.parse().unwrap())
+                .collect();
             let p = DVec3::new(v[0], v[1], v[2]);
             let q = inverse.map_or(p, |m| m.transform_point3(p));
             let got = pattern.value(q);
             if inverse.is_some() {
-                assert!((got - v[3]).abs() < 1e-9, "{body} at {p}: {got} vs POV-Ray {}", v[3]);
+                assert!(
+                    (got - v[3]).abs() < 1e-9,
+                    "{body} at {p}: {got} vs POV-Ray {}",
+                    v[3]
+                );
             } else {
                 assert_eq!(got, v[3], "{body} at {p}");
             }
@@ -1765,4 +1908,3 @@ mod tests {
         assert!(checked >= 1500, "{checked} values compared");
     }
 }
-

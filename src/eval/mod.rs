@@ -5,11 +5,11 @@
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 
 mod array;
+mod datetime;
 mod expr;
 mod files;
 mod flow;
 mod function;
-mod datetime;
 mod heightfield;
 mod images;
 pub mod keywords;
@@ -87,9 +87,18 @@ impl Clock {
     /// Frame `frame` of an animation of frames `first..=last` whose clock runs from `c0` to
     /// `c1` (POV-Ray: evenly, the last frame at `c1`; `cyclic`, the frame after the last at
     /// `c1`, and `final_frame` one more).
-    pub fn frame(frame: i64, (first, last): (i64, i64), (c0, c1): (f64, f64), cyclic: bool) -> Clock {
+    pub fn frame(
+        frame: i64,
+        (first, last): (i64, i64),
+        (c0, c1): (f64, f64),
+        cyclic: bool,
+    ) -> Clock {
         let last = if cyclic { last + 1 } else { last };
-        let delta = if last > first { (c1 - c0) / (last - first) as f64 } else { 0.0 };
+        let delta = if last > first {
+            (c1 - c0) / (last - first) as f64
+        } else {
+            0.0
+        };
         Clock {
             clock: c0 + delta * (frame - first) as f64,
             delta,
@@ -114,8 +123,11 @@ pub fn standard_include_folder() -> Option<std::path::PathBuf> {
     named
         .into_iter()
         .chain(
-            ["/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"]
-                .map(std::path::PathBuf::from),
+            [
+                "/usr/share/povray-3.7/include",
+                "/usr/local/share/povray-3.7/include",
+            ]
+            .map(std::path::PathBuf::from),
         )
         .find(|p| p.is_dir())
 }
@@ -863,10 +875,7 @@ impl<'a> Evaluator<'a> {
                     // (POV-Ray reads 0 or less as 1.)
                     if n > crate::pattern::MAX_WAVES as f64 {
                         return Err(Diagnostic::error(
-                            format!(
-                                "unsupported: more than {} waves",
-                                crate::pattern::MAX_WAVES
-                            ),
+                            format!("unsupported: more than {} waves", crate::pattern::MAX_WAVES),
                             e.span,
                         ));
                     }
@@ -878,7 +887,10 @@ impl<'a> Evaluator<'a> {
                     })?;
                     let n = ev.float(e)?;
                     if !(1.0..=3.0).contains(&n) {
-                        return Err(Diagnostic::error("noise_generator must be 1, 2 or 3", e.span));
+                        return Err(Diagnostic::error(
+                            "noise_generator must be 1, 2 or 3",
+                            e.span,
+                        ));
                     }
                     ev.noise_generator = Some(n as u8);
                 }
@@ -945,7 +957,10 @@ impl<'a> Evaluator<'a> {
                 NodeKind::FogOffset => items.offset = ev.float(arg(0))?,
                 NodeKind::TurbDepth => items.turb_depth = ev.float(arg(0))?,
                 NodeKind::PatternModifier
-                    if matches!(item.word.as_str(), "turbulence" | "octaves" | "omega" | "lambda") =>
+                    if matches!(
+                        item.word.as_str(),
+                        "turbulence" | "octaves" | "omega" | "lambda"
+                    ) =>
                 {
                     let e = item.args.first().ok_or_else(|| {
                         Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)
@@ -1473,9 +1488,13 @@ impl<'a> Evaluator<'a> {
         };
         self.settings.legacy_transparency = version < 3.7 - 1e-9;
         // (POV-Ray's default generator is 2 unless the scene declares a version before 3.5.)
-        self.settings.noise_generator = self.noise_generator.unwrap_or(
-            if self.version.is_some_and(|v| v < 3.5 - 1e-9) { 1 } else { 2 },
-        );
+        self.settings.noise_generator =
+            self.noise_generator
+                .unwrap_or(if self.version.is_some_and(|v| v < 3.5 - 1e-9) {
+                    1
+                } else {
+                    2
+                });
         Ok(Evaluated {
             scene: ir::Scene {
                 camera,
@@ -1505,7 +1524,10 @@ impl Evaluator<'_> {
             "blur_samples" => {
                 let a = self.float(first)?;
                 if a <= 0.0 {
-                    return Err(Diagnostic::error("blur_samples must be greater than 0", first.span));
+                    return Err(Diagnostic::error(
+                        "blur_samples must be greater than 0",
+                        first.span,
+                    ));
                 }
                 c.blur_samples = match item.args.get(1) {
                     Some(e) => {
@@ -1539,7 +1561,10 @@ impl Evaluator<'_> {
             }
         }
         if item.args.len() > 1 && item.word != "blur_samples" {
-            return Err(Diagnostic::error(format!("`{}` takes one value", item.word), item.args[1].span));
+            return Err(Diagnostic::error(
+                format!("`{}` takes one value", item.word),
+                item.args[1].span,
+            ));
         }
         Ok(())
     }
@@ -1628,7 +1653,9 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
     // Focal blur: the sharp plane at the focal point's distance from the eye (before the
     // camera's transformations), or at the image plane's.
     let blur = (c.aperture != 0.0 && c.blur_samples.1 > 0).then(|| {
-        let before = c.transform.map_or(direction, |t| t.matrix.inverse().transform_vector3(direction));
+        let before = c.transform.map_or(direction, |t| {
+            t.matrix.inverse().transform_vector3(direction)
+        });
         let mut focal_distance = match c.focal_point {
             Some(p) => (p - c.location).length(),
             None => before.length(),
@@ -1648,13 +1675,17 @@ fn resolve_camera(c: &CameraItems, warnings: &mut Vec<Diagnostic>) -> Result<ir:
     // The mesh camera's meshes, unless a later projection replaced it. POV-Ray reads its
     // offset and direction from the location's and the direction's z, after the camera's
     // transformations.
-    let mesh = c.mesh.as_ref().filter(|_| projection == ir::Projection::Mesh).map(|m| {
-        Arc::new(ir::MeshCamera {
-            offset: location.z,
-            reversed: direction.z < -1e-10,
-            ..m.clone()
-        })
-    });
+    let mesh = c
+        .mesh
+        .as_ref()
+        .filter(|_| projection == ir::Projection::Mesh)
+        .map(|m| {
+            Arc::new(ir::MeshCamera {
+                offset: location.z,
+                reversed: direction.z < -1e-10,
+                ..m.clone()
+            })
+        });
     if mesh.is_some() && blur.is_some() {
         warnings.push(Diagnostic::warning(
             "focal blur is not applied to a mesh camera's rays by trace (POV-Ray blurs them)",
@@ -1679,7 +1710,10 @@ impl Evaluator<'_> {
     fn mesh_camera(&mut self, node: &Node) -> Result<ir::MeshCamera> {
         let rays = self.float(&node.args[0])?;
         if rays.is_nan() || rays < 1.0 {
-            return Err(Diagnostic::error("mesh_camera: rays per pixel may not be 0", node.args[0].span));
+            return Err(Diagnostic::error(
+                "mesh_camera: rays per pixel may not be 0",
+                node.args[0].span,
+            ));
         }
         let distribution = self.float(&node.args[1])?;
         if !(0.0..4.0).contains(&distribution) {
@@ -1731,7 +1765,10 @@ impl Evaluator<'_> {
             ));
         }
         if meshes.is_empty() {
-            return Err(Diagnostic::error("mesh_camera needs a mesh or mesh2", node.word_span));
+            return Err(Diagnostic::error(
+                "mesh_camera needs a mesh or mesh2",
+                node.word_span,
+            ));
         }
         if distribution == 0 && rays as usize > meshes.len() {
             return Err(Diagnostic::error(

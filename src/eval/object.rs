@@ -124,7 +124,10 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
 fn no_strength(node: &Node, n: usize) -> Result<()> {
     match node.args.get(n) {
         Some(e) => Err(Diagnostic::error(
-            format!("a strength belongs to a blob's components: this {} takes {n} values", node.word),
+            format!(
+                "a strength belongs to a blob's components: this {} takes {n} values",
+                node.word
+            ),
             e.span,
         )),
         None => Ok(()),
@@ -185,7 +188,13 @@ impl ObjectValue {
     /// The object's mesh and transformation, if it is one mesh.
     pub(super) fn as_mesh(&self) -> Option<(Arc<Mesh>, Option<Transform>)> {
         match self.parts.as_slice() {
-            [Part { shape: Shape::Mesh(mesh), transform, .. }] => Some((Arc::clone(mesh), *transform)),
+            [
+                Part {
+                    shape: Shape::Mesh(mesh),
+                    transform,
+                    ..
+                },
+            ] => Some((Arc::clone(mesh), *transform)),
             _ => None,
         }
     }
@@ -226,7 +235,10 @@ impl ObjectValue {
                     }
                 }
             }
-            for tex in [&mut part.texture, &mut part.interior_texture].into_iter().flatten() {
+            for tex in [&mut part.texture, &mut part.interior_texture]
+                .into_iter()
+                .flatten()
+            {
                 tex.transform(t);
             }
             for b in &mut part.bounds {
@@ -236,7 +248,10 @@ impl ObjectValue {
         for b in &mut self.bounds {
             b.transform = compose(b.transform.take().map(|t| *t), t).map(Box::new);
         }
-        for tex in [&mut self.texture, &mut self.interior_texture].into_iter().flatten() {
+        for tex in [&mut self.texture, &mut self.interior_texture]
+            .into_iter()
+            .flatten()
+        {
             tex.transform(t);
         }
         for light in &mut self.lights {
@@ -250,7 +265,11 @@ impl Evaluator<'_> {
     pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
         // A shape whose values come partly from directives (points made in a loop): its
         // values and words laid out as if written in place.
-        let flat = if node.kind == NodeKind::Shape { self.shape_values(node)? } else { None };
+        let flat = if node.kind == NodeKind::Shape {
+            self.shape_values(node)?
+        } else {
+            None
+        };
         let node = flat.as_ref().unwrap_or(node);
         let mut modifiers = &node.children[..];
         let mut object = match node.kind {
@@ -399,7 +418,10 @@ impl Evaluator<'_> {
                     node.children.split_at(split.unwrap_or(node.children.len()));
                 self.each_item(triangles, &mut |ev, t| {
                     if !matches!(t.kind, NodeKind::Triangle | NodeKind::SmoothTriangle) {
-                        return Err(Diagnostic::error("expected a triangle or smooth_triangle here", t.word_span));
+                        return Err(Diagnostic::error(
+                            "expected a triangle or smooth_triangle here",
+                            t.word_span,
+                        ));
                     }
                     // A triangle of a mesh may have a texture of its own (POV-Ray allows
                     // nothing else there).
@@ -498,10 +520,13 @@ impl Evaluator<'_> {
             }
             NodeKind::ObjectRef | NodeKind::LooksLike => {
                 let mut children = &node.children[..];
-                if let Some((leading, after)) =
-                    children.split_first().filter(|(c, _)| c.kind == NodeKind::LeadingDirectives)
+                if let Some((leading, after)) = children
+                    .split_first()
+                    .filter(|(c, _)| c.kind == NodeKind::LeadingDirectives)
                 {
-                    self.each_item(&leading.children, &mut |ev, item| Err(ev.unknown_item(item, "an object")))?;
+                    self.each_item(&leading.children, &mut |ev, item| {
+                        Err(ev.unknown_item(item, "an object"))
+                    })?;
                     children = after;
                 }
                 let (first, rest) = children.split_first().expect("object {} has a body");
@@ -523,7 +548,9 @@ impl Evaluator<'_> {
             }
             _ => unreachable!("{:?} is not an object", node.kind),
         };
-        self.each_item(modifiers, &mut |ev, m| ev.object_modifier(&mut object, m, node))?;
+        self.each_item(modifiers, &mut |ev, m| {
+            ev.object_modifier(&mut object, m, node)
+        })?;
         // (Each object made is new to trace(), min_extent … : a modified copy is asked anew.)
         self.next_object_id += 1;
         object.id = self.next_object_id;
@@ -533,7 +560,12 @@ impl Evaluator<'_> {
     /// `trace(O, A, D [, N])`, `inside(O, P)`, `min_extent(O)`, `max_extent(O)`: the first hit
     /// of the ray from A along D (and its normal in N; zero vectors when missed), whether P
     /// is inside, the bounding box's corners.
-    pub(super) fn object_question(&mut self, name: &str, args: &[Expr], span: Span) -> Result<Value> {
+    pub(super) fn object_question(
+        &mut self,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Value> {
         let arity_ok = match name {
             "trace" => (3..=4).contains(&args.len()),
             "inside" => args.len() == 2,
@@ -541,7 +573,9 @@ impl Evaluator<'_> {
         };
         if !arity_ok {
             let wanted = match name {
-                "trace" => "an object, a start point, a direction and optionally a vector for the normal",
+                "trace" => {
+                    "an object, a start point, a direction and optionally a vector for the normal"
+                }
                 "inside" => "an object and a point",
                 _ => "an object",
             };
@@ -553,14 +587,23 @@ impl Evaluator<'_> {
                 let origin = self.vec3(&args[1])?;
                 let direction = self.vec3(&args[2])?;
                 if direction.length_squared() == 0.0 {
-                    return Err(Diagnostic::error("`trace`: the direction is the zero vector", args[2].span));
+                    return Err(Diagnostic::error(
+                        "`trace`: the direction is the zero vector",
+                        args[2].span,
+                    ));
                 }
-                let (point, normal) = query.trace(origin, direction.normalize()).unwrap_or((DVec3::ZERO, DVec3::ZERO));
+                let (point, normal) = query
+                    .trace(origin, direction.normalize())
+                    .unwrap_or((DVec3::ZERO, DVec3::ZERO));
                 if let Some(n) = args.get(3) {
                     let ExprKind::Ident(var) = &n.kind else {
-                        return Err(Diagnostic::error("`trace` gives the normal to a variable named here", n.span));
+                        return Err(Diagnostic::error(
+                            "`trace` gives the normal to a variable named here",
+                            n.span,
+                        ));
                     };
-                    self.env.insert(var.clone(), Value::Vector(Vector::from_vec3(normal)));
+                    self.env
+                        .insert(var.clone(), Value::Vector(Vector::from_vec3(normal)));
                 }
                 Value::Vector(Vector::from_vec3(point))
             }
@@ -570,7 +613,11 @@ impl Evaluator<'_> {
             }
             _ => {
                 let (lo, hi) = query.extent();
-                Value::Vector(Vector::from_vec3(if name == "min_extent" { lo } else { hi }))
+                Value::Vector(Vector::from_vec3(if name == "min_extent" {
+                    lo
+                } else {
+                    hi
+                }))
             }
         })
     }
@@ -608,7 +655,11 @@ impl Evaluator<'_> {
 
     /// The parts of `object` placed in the world as the scene would hold them (for trace(),
     /// inside(), min_extent, max_extent).
-    pub(super) fn placed_parts(&mut self, object: &ObjectValue, span: Span) -> Result<Vec<ir::Object>> {
+    pub(super) fn placed_parts(
+        &mut self,
+        object: &ObjectValue,
+        span: Span,
+    ) -> Result<Vec<ir::Object>> {
         let objects = std::mem::take(&mut self.objects);
         let lights = std::mem::take(&mut self.lights);
         let next_medium = self.next_medium;
@@ -625,7 +676,11 @@ impl Evaluator<'_> {
     fn light_group(&mut self, group: &mut ObjectValue) {
         let id = self.next_light_group;
         self.next_light_group += 1;
-        for light in group.lights.iter_mut().filter(|l| l.group == Some(OWN_GROUP)) {
+        for light in group
+            .lights
+            .iter_mut()
+            .filter(|l| l.group == Some(OWN_GROUP))
+        {
             light.group = Some(id);
         }
         // (The members of a group inside see only that group's lights, as in POV-Ray.)
@@ -640,7 +695,9 @@ impl Evaluator<'_> {
     /// `isosurface { function {…} [contained_by {…}] settings… modifiers }`.
     fn isosurface(&mut self, node: &Node) -> Result<ObjectValue> {
         let mut iso = ir::Isosurface {
-            function: std::sync::Arc::new(crate::func::Function::internal(crate::func::Internal::R)),
+            function: std::sync::Arc::new(crate::func::Function::internal(
+                crate::func::Internal::R,
+            )),
             container: ir::Container::Box(DVec3::splat(-1.0), DVec3::splat(1.0)),
             threshold: 0.0,
             accuracy: 0.001,
@@ -707,7 +764,10 @@ impl Evaluator<'_> {
             Ok(())
         })?;
         let Some(function) = function else {
-            return Err(Diagnostic::error("an isosurface needs its function { … }", node.word_span));
+            return Err(Diagnostic::error(
+                "an isosurface needs its function { … }",
+                node.word_span,
+            ));
         };
         if function.params < 3 {
             return Err(Diagnostic::error(
@@ -739,7 +799,11 @@ impl Evaluator<'_> {
             match ev.eval(e)? {
                 Value::Float(f) => Ok(glam::DVec2::splat(f)),
                 Value::Vector(v) if v.len == 2 => Ok(glam::DVec2::new(v.c[0], v.c[1])),
-                other => Err(super::expr::type_error("a 2-D vector <u, v>", &other, e.span)),
+                other => Err(super::expr::type_error(
+                    "a 2-D vector <u, v>",
+                    &other,
+                    e.span,
+                )),
             }
         };
         let (a, b) = (uv(self, &node.args[0])?, uv(self, &node.args[1])?);
@@ -821,7 +885,10 @@ impl Evaluator<'_> {
     /// `blob { … }`: its threshold and components (which come before its modifiers, as in
     /// POV-Ray), then the modifiers.
     fn blob(&mut self, node: &Node) -> Result<ObjectValue> {
-        let mut blob = ir::Blob { threshold: 1.0, components: Vec::new() };
+        let mut blob = ir::Blob {
+            threshold: 1.0,
+            components: Vec::new(),
+        };
         let mut modifiers: Vec<Node> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
             let component = matches!(
@@ -935,7 +1002,10 @@ impl Evaluator<'_> {
             Ok(())
         })?;
         if blob.components.is_empty() {
-            return Err(Diagnostic::error("a blob needs at least one component", node.word_span));
+            return Err(Diagnostic::error(
+                "a blob needs at least one component",
+                node.word_span,
+            ));
         }
         let mut object = ObjectValue::single(Shape::Blob(Box::new(blob)));
         for m in &modifiers {
@@ -1000,7 +1070,9 @@ impl Evaluator<'_> {
                 };
                 let target = super::material::uv_entry(&mut texture);
                 match m.kind {
-                    NodeKind::Pigment => target.pigment = self.pigment(m, target.pigment.clone())?,
+                    NodeKind::Pigment => {
+                        target.pigment = self.pigment(m, target.pigment.clone())?
+                    }
                     NodeKind::Normal => {
                         target.normal = Some(Box::new(self.normal(m, target.normal.take())?))
                     }
@@ -1054,11 +1126,18 @@ impl Evaluator<'_> {
             NodeKind::FunctionImage if owner.word == "height_field" => {}
             NodeKind::Flag => match m.word.as_str() {
                 "no_shadow" => object.parts.iter_mut().for_each(|p| p.no_shadow = true),
-                "no_image" => object.parts.iter_mut().for_each(|p| p.sight.no_image = true),
-                "no_reflection" => object.parts.iter_mut().for_each(|p| p.sight.no_reflection = true),
-                "double_illuminate" => {
-                    object.parts.iter_mut().for_each(|p| p.sight.double_illuminate = true)
-                }
+                "no_image" => object
+                    .parts
+                    .iter_mut()
+                    .for_each(|p| p.sight.no_image = true),
+                "no_reflection" => object
+                    .parts
+                    .iter_mut()
+                    .for_each(|p| p.sight.no_reflection = true),
+                "double_illuminate" => object
+                    .parts
+                    .iter_mut()
+                    .for_each(|p| p.sight.double_illuminate = true),
                 // Radiosity is outside trace's subset: nothing to exclude the object from.
                 "no_radiosity" => {}
                 "global_lights" if owner.word == "light_group" => object.global_lights = true,
@@ -1127,7 +1206,8 @@ impl Evaluator<'_> {
         // Fresh light groups for this instance: two `object { G }` of one declared
         // light_group each light their own members, as in POV-Ray.
         let mut fresh: Vec<(u32, u32)> = Vec::new();
-        let mut renumber = |id: u32, next: &mut u32| match fresh.iter().find(|(old, _)| *old == id) {
+        let mut renumber = |id: u32, next: &mut u32| match fresh.iter().find(|(old, _)| *old == id)
+        {
             Some(&(_, new)) => new,
             None => {
                 let new = *next;
@@ -1189,8 +1269,7 @@ impl Evaluator<'_> {
                     Shape::Quadric(q) => q.mixed != DVec3::ZERO || q.square.min_element() <= 0.0,
                     _ => false,
                 };
-            let bounds =
-                (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
+            let bounds = (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
             let (sight, light_group) = (part.sight, part.light_group);
             let extras = (interior_texture.is_some()
                 || bounds.is_some()
@@ -1237,14 +1316,19 @@ impl Evaluator<'_> {
             }
         }
         let normals = if smooth { Some(n) } else { None };
-        let Some(normal_indices) = self.triangle_normals(mesh, &p, normals, in_mesh, node.word_span) else {
+        let Some(normal_indices) =
+            self.triangle_normals(mesh, &p, normals, in_mesh, node.word_span)
+        else {
             return Ok(());
         };
         let base = mesh.vertices.len() as u32;
         mesh.vertices.extend(p.iter().map(|v| v.as_vec3()));
         mesh.triangles.push([base, base + 1, base + 2]);
         // `uv_vectors UV1, UV2, UV3`; once any triangle has them, the others are at (0, 0).
-        let uv = node.children.iter().find(|c| c.kind == NodeKind::TriangleUv);
+        let uv = node
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::TriangleUv);
         if uv.is_some() || !mesh.uv_indices.is_empty() {
             let origin = |mesh: &mut Mesh| {
                 let i = mesh.uvs.iter().position(|v| *v == DVec2::ZERO);
@@ -1362,7 +1446,10 @@ impl Evaluator<'_> {
         }
         let mut at = 0;
         let section = |kind: NodeKind, at: &mut usize| -> Option<&Node> {
-            let n = sections.get(*at).map(|c| c.as_ref()).filter(|c| c.kind == kind)?;
+            let n = sections
+                .get(*at)
+                .map(|c| c.as_ref())
+                .filter(|c| c.kind == kind)?;
             *at += 1;
             Some(n)
         };
@@ -1383,10 +1470,15 @@ impl Evaluator<'_> {
         let (faces, face_textures, textures) = match texture_node {
             Some(list) => {
                 let textures = self.texture_list(list)?;
-                let (faces, face_textures) = self.faces_with_textures(face_node, vertices.len(), textures.len())?;
+                let (faces, face_textures) =
+                    self.faces_with_textures(face_node, vertices.len(), textures.len())?;
                 (faces, face_textures, textures)
             }
-            None => (self.index_list(face_node, vertices.len())?, Vec::new(), Vec::new()),
+            None => (
+                self.index_list(face_node, vertices.len())?,
+                Vec::new(),
+                Vec::new(),
+            ),
         };
         let normal_faces = match normal_index_node {
             Some(n) => self.index_list(n, normals.len())?,
@@ -1427,7 +1519,10 @@ impl Evaluator<'_> {
             Some(n) => {
                 let list = self.index_list(n, uvs.len())?;
                 if list.len() != faces.len() {
-                    return Err(Diagnostic::error("the number of uv indices must equal the number of faces", n.word_span));
+                    return Err(Diagnostic::error(
+                        "the number of uv indices must equal the number of faces",
+                        n.word_span,
+                    ));
                 }
                 list
             }
@@ -1441,10 +1536,20 @@ impl Evaluator<'_> {
                 ));
             }
         };
-        let (mut mesh, degenerate) =
-            assemble_mesh(&vertices, &normals, &faces, &normal_faces, &uv_faces, &face_textures);
+        let (mut mesh, degenerate) = assemble_mesh(
+            &vertices,
+            &normals,
+            &faces,
+            &normal_faces,
+            &uv_faces,
+            &face_textures,
+        );
         mesh.uvs = uvs;
-        if mesh.face_textures.iter().any(|f| f.iter().any(|&t| t != ir::OWN_TEXTURE)) {
+        if mesh
+            .face_textures
+            .iter()
+            .any(|f| f.iter().any(|&t| t != ir::OWN_TEXTURE))
+        {
             mesh.textures = textures;
         } else {
             mesh.face_textures.clear();
@@ -1588,7 +1693,11 @@ impl Evaluator<'_> {
             })?;
         }
         values.sort_by_key(|e| e.span.start);
-        Ok(Some(Node { args: values, children: Vec::new(), ..node.clone() }))
+        Ok(Some(Node {
+            args: values,
+            children: Vec::new(),
+            ..node.clone()
+        }))
     }
 
     /// `texture_list { N, texture {…} … }` (directives may make the textures).
@@ -1604,7 +1713,10 @@ impl Evaluator<'_> {
         })?;
         if n.trunc() != textures.len() as f64 {
             return Err(Diagnostic::error(
-                format!("`texture_list` announces {n} textures but lists {}", textures.len()),
+                format!(
+                    "`texture_list` announces {n} textures but lists {}",
+                    textures.len()
+                ),
                 node.args[0].span,
             ));
         }
@@ -1628,14 +1740,19 @@ impl Evaluator<'_> {
         let n = self.float(&node.args[0])?;
         let (mut faces, mut face_textures) = (Vec::new(), Vec::new());
         let mut pending: Vec<(u32, Span)> = Vec::new();
-        let close = |faces: &Vec<[u32; 3]>, face_textures: &mut Vec<[u32; 3]>, pending: &mut Vec<(u32, Span)>| {
+        let close = |faces: &Vec<[u32; 3]>,
+                     face_textures: &mut Vec<[u32; 3]>,
+                     pending: &mut Vec<(u32, Span)>| {
             if faces.len() > face_textures.len() {
                 face_textures.push(match pending.as_slice() {
                     [] => [ir::OWN_TEXTURE; 3],
                     [(t, _)] => [*t; 3],
                     [(a, _), (b, _), (c, _)] => [*a, *b, *c],
                     [.., (_, span)] => {
-                        return Err(Diagnostic::error("a face takes one texture index or three", *span));
+                        return Err(Diagnostic::error(
+                            "a face takes one texture index or three",
+                            *span,
+                        ));
                     }
                 });
             }
@@ -1650,7 +1767,10 @@ impl Evaluator<'_> {
                     for (slot, &c) in face.iter_mut().zip(&v.c[..3]) {
                         let i = c.trunc();
                         if !(i >= 0.0 && (i as usize) < limit) {
-                            return Err(Diagnostic::error(format!("index {i} is out of range (0..{limit})"), e.span));
+                            return Err(Diagnostic::error(
+                                format!("index {i} is out of range (0..{limit})"),
+                                e.span,
+                            ));
                         }
                         *slot = i as u32;
                     }
@@ -1672,7 +1792,10 @@ impl Evaluator<'_> {
         close(&faces, &mut face_textures, &mut pending)?;
         if n.trunc() != faces.len() as f64 {
             return Err(Diagnostic::error(
-                format!("`face_indices` announces {n} entries but lists {}", faces.len()),
+                format!(
+                    "`face_indices` announces {n} entries but lists {}",
+                    faces.len()
+                ),
                 node.args[0].span,
             ));
         }

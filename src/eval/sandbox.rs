@@ -77,7 +77,9 @@ impl Sandbox {
     /// exists), never a folder or a file outside.
     pub(crate) fn writable(&self, name: &str) -> Result<PathBuf, &'static str> {
         let folder = &self.search[0];
-        let root = folder.canonicalize().map_err(|_| "the scene's folder cannot be found")?;
+        let root = folder
+            .canonicalize()
+            .map_err(|_| "the scene's folder cannot be found")?;
         let path = folder.join(name);
         let file_name = path.file_name().ok_or("it names no file")?;
         let parent = path
@@ -188,7 +190,10 @@ mod tests {
         let sandbox = Sandbox::new(&root.join("scene"), &[root.join("outside")]);
         let scene = root.join("scene").canonicalize().unwrap();
         assert_eq!(sandbox.writable("new.txt"), Ok(scene.join("new.txt")));
-        assert_eq!(sandbox.writable("sub/../sub/y.txt"), Ok(scene.join("sub/y.txt")));
+        assert_eq!(
+            sandbox.writable("sub/../sub/y.txt"),
+            Ok(scene.join("sub/y.txt"))
+        );
         // Not into a -L folder, not through `..`, an absolute path, a link or a folder.
         assert!(sandbox.writable("../outside/secret.inc").is_err());
         assert!(sandbox.writable("/tmp/x.txt").is_err());

@@ -4,7 +4,9 @@
 
 use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
-use crate::ir::{Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline};
+use crate::ir::{
+    Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline,
+};
 use crate::syntax::{Expr, ExprKind, Node, NodeKind};
 use glam::DVec2;
 use std::sync::Arc;
@@ -15,24 +17,56 @@ pub(super) fn takes(shape: &str, word: &str) -> bool {
         "text" => matches!(word, "ttf" | "internal"),
         "prism" => matches!(
             word,
-            "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "linear_sweep"
-                | "conic_sweep" | "open" | "sturm"
+            "linear_spline"
+                | "quadratic_spline"
+                | "cubic_spline"
+                | "bezier_spline"
+                | "linear_sweep"
+                | "conic_sweep"
+                | "open"
+                | "sturm"
         ),
         "lathe" => matches!(
             word,
             "linear_spline" | "quadratic_spline" | "cubic_spline" | "bezier_spline" | "sturm"
         ),
         "sor" => matches!(word, "open" | "sturm"),
-        "sphere_sweep" => matches!(word, "linear_spline" | "cubic_spline" | "b_spline" | "tolerance"),
-        "bicubic_patch" => matches!(word, "type" | "flatness" | "u_steps" | "v_steps" | "accuracy" | "uv_vectors"),
+        "sphere_sweep" => matches!(
+            word,
+            "linear_spline" | "cubic_spline" | "b_spline" | "tolerance"
+        ),
+        "bicubic_patch" => matches!(
+            word,
+            "type" | "flatness" | "u_steps" | "v_steps" | "accuracy" | "uv_vectors"
+        ),
         "julia_fractal" => matches!(
             word,
-            "quaternion" | "hypercomplex" | "sqr" | "cube" | "max_iteration" | "precision" | "slice"
+            "quaternion"
+                | "hypercomplex"
+                | "sqr"
+                | "cube"
+                | "max_iteration"
+                | "precision"
+                | "slice"
         ),
         "height_field" => matches!(
             word,
-            "water_level" | "hierarchy" | "smooth" | "png" | "pgm" | "ppm" | "gif" | "tga" | "pot" | "jpeg"
-                | "tiff" | "sys" | "exr" | "hdr" | "bmp" | "iff"
+            "water_level"
+                | "hierarchy"
+                | "smooth"
+                | "png"
+                | "pgm"
+                | "ppm"
+                | "gif"
+                | "tga"
+                | "pot"
+                | "jpeg"
+                | "tiff"
+                | "sys"
+                | "exr"
+                | "hdr"
+                | "bmp"
+                | "iff"
         ),
         _ => false,
     }
@@ -45,7 +79,11 @@ enum Item<'n> {
 }
 
 fn items(node: &Node) -> Vec<Item<'_>> {
-    let mut items: Vec<(u32, Item)> = node.args.iter().map(|e| (e.span.start, Item::Value(e))).collect();
+    let mut items: Vec<(u32, Item)> = node
+        .args
+        .iter()
+        .map(|e| (e.span.start, Item::Value(e)))
+        .collect();
     items.extend(
         node.children
             .iter()
@@ -139,7 +177,10 @@ impl<'a> Evaluator<'a> {
             .iter()
             .position(|c| !is_word(c) && !super::object::is_directive(c.kind))
             .unwrap_or(node.children.len());
-        if !node.children[..end].iter().any(|c| super::object::is_directive(c.kind)) {
+        if !node.children[..end]
+            .iter()
+            .any(|c| super::object::is_directive(c.kind))
+        {
             return Ok(None);
         }
         let mut values: Vec<Expr> = node.args.clone();
@@ -226,7 +267,9 @@ impl<'a> Evaluator<'a> {
                         .collect::<Result<Vec<f64>>>()?,
                     _ => match self.eval(list)? {
                         Value::Vector(v) => v.c[..v.len].to_vec(),
-                        other => return Err(type_error("a list of coefficients", &other, list.span)),
+                        other => {
+                            return Err(type_error("a list of coefficients", &other, list.span));
+                        }
                     },
                 };
                 let polynomial = Polynomial::from_povray(degree, &coefficients).ok_or_else(|| {
@@ -248,11 +291,18 @@ impl<'a> Evaluator<'a> {
                     None => return Err(count(1, "polygon { N, P1, …, PN }").unwrap_err()),
                 };
                 if n < 3.0 {
-                    return Err(Diagnostic::error("a polygon needs at least three points", args[0].span));
+                    return Err(Diagnostic::error(
+                        "a polygon needs at least three points",
+                        args[0].span,
+                    ));
                 }
                 if args.len() - 1 != n as usize {
                     return Err(Diagnostic::error(
-                        format!("this polygon announces {} points and lists {}", n as usize, args.len() - 1),
+                        format!(
+                            "this polygon announces {} points and lists {}",
+                            n as usize,
+                            args.len() - 1
+                        ),
                         args[0].span,
                     ));
                 }
@@ -296,7 +346,10 @@ impl<'a> Evaluator<'a> {
                 count(2, "ovus { bottom_radius, top_radius }")?;
                 let (bottom, top) = (self.float(&args[0])?, self.float(&args[1])?);
                 if bottom < 0.0 || top < 0.0 {
-                    return Err(Diagnostic::error("both ovus radii must be positive", node.word_span));
+                    return Err(Diagnostic::error(
+                        "both ovus radii must be positive",
+                        node.word_span,
+                    ));
                 }
                 if top >= 2.0 * bottom {
                     // POV-Ray draws the sphere such an ovus would be.
@@ -340,12 +393,18 @@ impl<'a> Evaluator<'a> {
             .iter()
             .map(|i| match i {
                 Item::Value(e) => Ok(*e),
-                Item::Word(w) => Err(Diagnostic::error(format!("unexpected `{}` in {form}", w.word), w.span)),
+                Item::Word(w) => Err(Diagnostic::error(
+                    format!("unexpected `{}` in {form}", w.word),
+                    w.span,
+                )),
             })
             .collect::<Result<_>>()?;
         if values.len() != 4 {
             let at = values.get(4).map_or(node.word_span, |e| e.span);
-            return Err(Diagnostic::error(format!("`text` takes a font and three values: {form}"), at));
+            return Err(Diagnostic::error(
+                format!("`text` takes a font and three values: {form}"),
+                at,
+            ));
         }
         let (path, name) = if font.word == "ttf" {
             let name = self.string(values[0])?;
@@ -384,11 +443,19 @@ impl<'a> Evaluator<'a> {
             // keeps them.
             crate::font::Charset::Utf8 => string
                 .chars()
-                .map(|c| if u32::from(c) > 0xFFFF { 0xFFFD } else { u32::from(c) })
+                .map(|c| {
+                    if u32::from(c) > 0xFFFF {
+                        0xFFFD
+                    } else {
+                        u32::from(c)
+                    }
+                })
                 .collect(),
         };
         let text = crate::font::layout(&data, &codes, thickness, offset.truncate(), self.charset)
-            .map_err(|e| Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span))?;
+            .map_err(|e| {
+            Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span)
+        })?;
         Ok(Shape::Text(Box::new(text)))
     }
 
@@ -414,14 +481,23 @@ impl<'a> Evaluator<'a> {
     }
 
     /// A font file's bytes, read once per scene.
-    fn font_data(&mut self, path: &std::path::Path, name: &str, span: Span) -> Result<Arc<Vec<u8>>> {
+    fn font_data(
+        &mut self,
+        path: &std::path::Path,
+        name: &str,
+        span: Span,
+    ) -> Result<Arc<Vec<u8>>> {
         if let Some(data) = self.fonts.get(path) {
             return Ok(Arc::clone(data));
         }
         let cannot = |e: String| Diagnostic::error(format!("cannot read font {name}: {e}"), span);
-        let size = std::fs::metadata(path).map_err(|e| cannot(e.to_string()))?.len();
+        let size = std::fs::metadata(path)
+            .map_err(|e| cannot(e.to_string()))?
+            .len();
         if size > MAX_FONT_BYTES {
-            return Err(cannot(format!("{size} bytes; trace reads fonts up to {MAX_FONT_BYTES}")));
+            return Err(cannot(format!(
+                "{size} bytes; trace reads fonts up to {MAX_FONT_BYTES}"
+            )));
         }
         let data = Arc::new(std::fs::read(path).map_err(|e| cannot(e.to_string()))?);
         self.fonts.insert(path.to_path_buf(), Arc::clone(&data));
@@ -431,7 +507,8 @@ impl<'a> Evaluator<'a> {
     /// `prism { [spline] [sweep] h1, h2, N, <x, z>… [open] }`.
     fn prism(&mut self, node: &Node) -> Result<Shape> {
         let form = "prism { [linear_spline|quadratic_spline|cubic_spline|bezier_spline] [linear_sweep|conic_sweep] height1, height2, N, <x, z>… }";
-        let (mut spline, mut sweep, mut open, mut sturm) = (Spline::Linear, Sweep::Linear, false, false);
+        let (mut spline, mut sweep, mut open, mut sturm) =
+            (Spline::Linear, Sweep::Linear, false, false);
         let mut values = Vec::new();
         for item in items(node) {
             match item {
@@ -448,7 +525,10 @@ impl<'a> Evaluator<'a> {
             }
         }
         if values.len() < 3 {
-            return Err(Diagnostic::error(format!("`prism` takes {form}"), node.word_span));
+            return Err(Diagnostic::error(
+                format!("`prism` takes {form}"),
+                node.word_span,
+            ));
         }
         let (mut h1, mut h2) = (self.float(values[0])?, self.float(values[1])?);
         if h1 > h2 {
@@ -457,16 +537,25 @@ impl<'a> Evaluator<'a> {
         let n = self.float(values[2])?.max(0.0) as usize;
         let (minimum, message) = match spline {
             Spline::Linear => (3, "a prism with linear splines needs at least three points"),
-            Spline::Quadratic => (5, "a prism with quadratic splines needs at least five points"),
+            Spline::Quadratic => (
+                5,
+                "a prism with quadratic splines needs at least five points",
+            ),
             Spline::Cubic => (6, "a prism with cubic splines needs at least six points"),
-            Spline::Bezier => (4, "a prism with Bézier splines needs four points per segment"),
+            Spline::Bezier => (
+                4,
+                "a prism with Bézier splines needs four points per segment",
+            ),
         };
         if n < minimum || (spline == Spline::Bezier && n % 4 != 0) {
             return Err(Diagnostic::error(message, values[2].span));
         }
         if values.len() - 3 != n {
             return Err(Diagnostic::error(
-                format!("this prism announces {n} points and lists {}", values.len() - 3),
+                format!(
+                    "this prism announces {n} points and lists {}",
+                    values.len() - 3
+                ),
                 values[2].span,
             ));
         }
@@ -512,12 +601,18 @@ impl<'a> Evaluator<'a> {
         };
         if !closed {
             if spline == Spline::Linear {
-                self.warn(Diagnostic::warning("linear prism not closed: closing it (as POV-Ray does)", node.word_span));
+                self.warn(Diagnostic::warning(
+                    "linear prism not closed: closing it (as POV-Ray does)",
+                    node.word_span,
+                ));
                 let start = last_start(&points, same);
                 points.push(start);
             } else if spline == Spline::Bezier {
                 // POV-Ray warns and draws nothing.
-                self.warn(Diagnostic::warning("prism not closed: ignoring it (as POV-Ray does)", node.word_span));
+                self.warn(Diagnostic::warning(
+                    "prism not closed: ignoring it (as POV-Ray does)",
+                    node.word_span,
+                ));
                 points.clear();
             } else {
                 return Err(Diagnostic::error(
@@ -526,7 +621,8 @@ impl<'a> Evaluator<'a> {
                 ));
             }
         }
-        let segments = Prism::segments(spline, &points).map_err(|m| Diagnostic::error(m, values[2].span))?;
+        let segments =
+            Prism::segments(spline, &points).map_err(|m| Diagnostic::error(m, values[2].span))?;
         Ok(Shape::Prism(Box::new(Prism {
             sweep,
             degree: spline.degree(),
@@ -540,7 +636,11 @@ impl<'a> Evaluator<'a> {
     /// The values and words of a `lathe` or `sor`: its count N, the N points, the last spline
     /// word and whether `open` and `sturm` were given.
     #[allow(clippy::type_complexity)]
-    fn profile(&mut self, node: &Node, form: &str) -> Result<(Vec<DVec2>, Vec<Span>, Spline, bool, bool, Span)> {
+    fn profile(
+        &mut self,
+        node: &Node,
+        form: &str,
+    ) -> Result<(Vec<DVec2>, Vec<Span>, Spline, bool, bool, Span)> {
         let (mut spline, mut open, mut sturm) = (Spline::Linear, false, false);
         let mut values = Vec::new();
         for item in items(node) {
@@ -556,17 +656,27 @@ impl<'a> Evaluator<'a> {
             }
         }
         let Some((count, points)) = values.split_first() else {
-            return Err(Diagnostic::error(format!("`{}` takes {form}", node.word), node.word_span));
+            return Err(Diagnostic::error(
+                format!("`{}` takes {form}", node.word),
+                node.word_span,
+            ));
         };
         let n = self.float(count)?.max(0.0) as usize;
         if points.len() != n {
             return Err(Diagnostic::error(
-                format!("this {} announces {n} points and lists {}", node.word, points.len()),
+                format!(
+                    "this {} announces {n} points and lists {}",
+                    node.word,
+                    points.len()
+                ),
                 count.span,
             ));
         }
         let spans = points.iter().map(|e| e.span).collect();
-        let points = points.iter().map(|e| self.uv(e)).collect::<Result<Vec<_>>>()?;
+        let points = points
+            .iter()
+            .map(|e| self.uv(e))
+            .collect::<Result<Vec<_>>>()?;
         Ok((points, spans, spline, open, sturm, count.span))
     }
 
@@ -577,9 +687,15 @@ impl<'a> Evaluator<'a> {
         let n = points.len();
         let (minimum, message) = match spline {
             Spline::Linear => (2, "a lathe with linear splines needs at least two points"),
-            Spline::Quadratic => (3, "a lathe with quadratic splines needs at least three points"),
+            Spline::Quadratic => (
+                3,
+                "a lathe with quadratic splines needs at least three points",
+            ),
             Spline::Cubic => (4, "a lathe with cubic splines needs at least four points"),
-            Spline::Bezier => (4, "a lathe with Bézier splines needs four points per segment"),
+            Spline::Bezier => (
+                4,
+                "a lathe with Bézier splines needs four points per segment",
+            ),
         };
         if n < minimum || (spline == Spline::Bezier && n % 4 != 0) {
             return Err(Diagnostic::error(message, at));
@@ -587,7 +703,10 @@ impl<'a> Evaluator<'a> {
         // Only the end points may have a negative radius (POV-Ray's check).
         if let Some(i) = (1..n - 1).find(|&i| points[i].x < 0.0) {
             return Err(Diagnostic::error(
-                format!("point {} of this lathe has a negative radius (only the first and last may)", i + 1),
+                format!(
+                    "point {} of this lathe has a negative radius (only the first and last may)",
+                    i + 1
+                ),
                 spans[i],
             ));
         }
@@ -600,10 +719,14 @@ impl<'a> Evaluator<'a> {
 
     /// `sor { N, <r, y>… [open] }`.
     fn sor(&mut self, node: &Node) -> Result<Shape> {
-        let (points, spans, _, open, sturm, at) = self.profile(node, "sor { N, <radius, height>… [open] }")?;
+        let (points, spans, _, open, sturm, at) =
+            self.profile(node, "sor { N, <radius, height>… [open] }")?;
         let n = points.len();
         if n < 4 {
-            return Err(Diagnostic::error("a surface of revolution needs at least four points", at));
+            return Err(Diagnostic::error(
+                "a surface of revolution needs at least four points",
+                at,
+            ));
         }
         // POV-Ray's checks: no negative radius, heights rising from the second point to the
         // last but one.
@@ -629,7 +752,11 @@ impl<'a> Evaluator<'a> {
     /// `height_field { [png] "file" [smooth] [water_level W] [hierarchy on|off] }`.
     fn height_field(&mut self, node: &Node) -> Result<Shape> {
         let items = items(node);
-        if let Some(f) = node.children.iter().find(|c| c.kind == NodeKind::FunctionImage) {
+        if let Some(f) = node
+            .children
+            .iter()
+            .find(|c| c.kind == NodeKind::FunctionImage)
+        {
             let (width, depth, heights) = self.function_heights(f)?;
             let (smooth, water_level) = self.height_field_options(&items, 0)?;
             return Ok(Shape::HeightField(Box::new(crate::ir::HeightField {
@@ -668,9 +795,14 @@ impl<'a> Evaluator<'a> {
         let type_span = kind.map_or(file.span, |w| w.span);
         let (smooth, water_level) = self.height_field_options(&items, i)?;
         let (path, picture) = self.read_image(&name, file_type, type_span, file.span)?;
-        let cannot = |e: String| Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span);
+        let cannot = |e: String| {
+            Diagnostic::error(format!("cannot read height field {name}: {e}"), file.span)
+        };
         if picture.width < 2 || picture.height < 2 {
-            return Err(cannot(format!("{}×{} pixels: a height field needs at least 2×2", picture.width, picture.height)));
+            return Err(cannot(format!(
+                "{}×{} pixels: a height field needs at least 2×2",
+                picture.width, picture.height
+            )));
         }
         // PNG files go through POV-Ray's PNG reader's own conversions (heightfield.rs).
         let is_png = file_type.or_else(|| super::images::FileType::from_name(&name))
@@ -710,9 +842,17 @@ impl<'a> Evaluator<'a> {
                         i += 1;
                     }
                 }
-                Item::Word(w) => return Err(Diagnostic::error(format!("unexpected `{}` here", w.word), w.span)),
+                Item::Word(w) => {
+                    return Err(Diagnostic::error(
+                        format!("unexpected `{}` here", w.word),
+                        w.span,
+                    ));
+                }
                 Item::Value(e) => {
-                    return Err(Diagnostic::error("unexpected value in this height_field", e.span));
+                    return Err(Diagnostic::error(
+                        "unexpected value in this height_field",
+                        e.span,
+                    ));
                 }
             }
         }
@@ -727,7 +867,10 @@ impl<'a> Evaluator<'a> {
         let size = |ev: &mut Self, e: &Expr| -> Result<u32> {
             let v = (ev.float(e)? + 0.5).floor();
             if !(2.0..=4096.0).contains(&v) {
-                return Err(Diagnostic::error("a function height field is 2 to 4096 points a side", e.span));
+                return Err(Diagnostic::error(
+                    "a function height field is 2 to 4096 points a side",
+                    e.span,
+                ));
             }
             Ok(v as u32)
         };
@@ -738,7 +881,8 @@ impl<'a> Evaluator<'a> {
         };
         // A pigment: POV-Ray keeps its colours in a 16-bit image, whose grey is the height.
         if let Some(p) = f.children.iter().find(|c| c.kind == NodeKind::Pigment) {
-            let pigment = self.pigment(p, crate::ir::Pigment::solid(crate::ir::Colour::default()))?;
+            let pigment =
+                self.pigment(p, crate::ir::Pigment::solid(crate::ir::Colour::default()))?;
             let colour = (self.pigment_function)(&pigment, self.scene_defaults());
             let generator = self.noise_generator();
             let mut heights = Vec::with_capacity((width * depth) as usize);
@@ -747,7 +891,11 @@ impl<'a> Evaluator<'a> {
                     let q = point(x, z);
                     let c = colour.eval(&[q.x, q.y, q.z], generator);
                     let channel = super::heightfield::channel16;
-                    heights.push(super::heightfield::grey16([channel(c[0]), channel(c[1]), channel(c[2])]));
+                    heights.push(super::heightfield::grey16([
+                        channel(c[0]),
+                        channel(c[1]),
+                        channel(c[2]),
+                    ]));
                 }
             }
             return Ok((width, depth, heights));
@@ -786,17 +934,24 @@ impl<'a> Evaluator<'a> {
                         let mut corners = [[0.0; 2]; 4];
                         for corner in &mut corners {
                             let Some(Item::Value(e)) = items.get(i) else {
-                                return Err(Diagnostic::error("`uv_vectors` takes 4 uv vectors", w.span));
+                                return Err(Diagnostic::error(
+                                    "`uv_vectors` takes 4 uv vectors",
+                                    w.span,
+                                ));
                             };
                             i += 1;
                             let v = self.vec3(e)?;
                             *corner = [v.x, v.y];
                         }
-                        uv_corners = (corners != [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).then_some(corners);
+                        uv_corners = (corners != [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+                            .then_some(corners);
                         continue;
                     }
                     let Some(Item::Value(e)) = items.get(i) else {
-                        return Err(Diagnostic::error(format!("`{}` needs a value", w.word), w.span));
+                        return Err(Diagnostic::error(
+                            format!("`{}` needs a value", w.word),
+                            w.span,
+                        ));
                     };
                     i += 1;
                     let v = self.float(e)?;
@@ -811,15 +966,26 @@ impl<'a> Evaluator<'a> {
             }
         }
         match kind {
-            None => return Err(Diagnostic::error("a bicubic_patch needs its `type` (0 or 1)", node.word_span)),
+            None => {
+                return Err(Diagnostic::error(
+                    "a bicubic_patch needs its `type` (0 or 1)",
+                    node.word_span,
+                ));
+            }
             Some((t, span)) if t > 1 => {
-                self.warn(Diagnostic::warning("bicubic_patch type above 1: type 1 is used (as POV-Ray does)", span));
+                self.warn(Diagnostic::warning(
+                    "bicubic_patch type above 1: type 1 is used (as POV-Ray does)",
+                    span,
+                ));
             }
             _ => {}
         }
         if points.len() != 16 {
             return Err(Diagnostic::error(
-                format!("a bicubic_patch takes 16 control points, this one has {}", points.len()),
+                format!(
+                    "a bicubic_patch takes 16 control points, this one has {}",
+                    points.len()
+                ),
                 node.word_span,
             ));
         }
@@ -838,12 +1004,17 @@ impl<'a> Evaluator<'a> {
         let items = items(node);
         let vec4 = |ev: &mut Self, e: &Expr| -> Result<glam::DVec4> {
             match ev.eval(e)? {
-                Value::Vector(v) if v.len == 4 => Ok(glam::DVec4::new(v.c[0], v.c[1], v.c[2], v.c[3])),
+                Value::Vector(v) if v.len == 4 => {
+                    Ok(glam::DVec4::new(v.c[0], v.c[1], v.c[2], v.c[3]))
+                }
                 other => Err(type_error("a 4-D vector", &other, e.span)),
             }
         };
         let Some(Item::Value(first)) = items.first() else {
-            return Err(Diagnostic::error("`julia_fractal` starts with its 4-D parameter <a, b, c, d>", node.word_span));
+            return Err(Diagnostic::error(
+                "`julia_fractal` starts with its 4-D parameter <a, b, c, d>",
+                node.word_span,
+            ));
         };
         let mut j = crate::ir::JuliaFractal {
             c: vec4(self, first)?,
@@ -864,15 +1035,32 @@ impl<'a> Evaluator<'a> {
                 };
                 if matches!(
                     text,
-                    "exp" | "ln" | "sin" | "asin" | "cos" | "acos" | "tan" | "atan" | "sinh" | "asinh" | "cosh"
-                        | "acosh" | "tanh" | "atanh"
+                    "exp"
+                        | "ln"
+                        | "sin"
+                        | "asin"
+                        | "cos"
+                        | "acos"
+                        | "tan"
+                        | "atan"
+                        | "sinh"
+                        | "asinh"
+                        | "cosh"
+                        | "acosh"
+                        | "tanh"
+                        | "atanh"
                 ) {
                     return Err(Diagnostic::error(
-                        format!("unsupported: the julia_fractal function `{text}` (trace draws sqr and cube)"),
+                        format!(
+                            "unsupported: the julia_fractal function `{text}` (trace draws sqr and cube)"
+                        ),
                         e.span,
                     ));
                 }
-                return Err(Diagnostic::error("unexpected value in this julia_fractal", e.span));
+                return Err(Diagnostic::error(
+                    "unexpected value in this julia_fractal",
+                    e.span,
+                ));
             };
             let mut value = |ev: &mut Self| -> Result<&Expr> {
                 match items.get(i) {
@@ -881,7 +1069,10 @@ impl<'a> Evaluator<'a> {
                         let _ = ev;
                         Ok(*e)
                     }
-                    _ => Err(Diagnostic::error(format!("`{}` needs a value", w.word), w.span)),
+                    _ => Err(Diagnostic::error(
+                        format!("`{}` needs a value", w.word),
+                        w.span,
+                    )),
                 }
             };
             match w.word.as_str() {
@@ -962,10 +1153,17 @@ impl<'a> Evaluator<'a> {
             }
         }
         let Some((count, rest)) = values.split_first() else {
-            return Err(Diagnostic::error(format!("`sphere_sweep` takes {form}"), node.word_span));
+            return Err(Diagnostic::error(
+                format!("`sphere_sweep` takes {form}"),
+                node.word_span,
+            ));
         };
         let n = self.float(count)?;
-        let least = if spline == SweepSpline::Linear { 2.0 } else { 4.0 };
+        let least = if spline == SweepSpline::Linear {
+            2.0
+        } else {
+            4.0
+        };
         if n < least {
             return Err(Diagnostic::error(
                 "too few spheres for this sphere_sweep's spline (linear needs 2, the cubic ones 4)",
@@ -975,7 +1173,10 @@ impl<'a> Evaluator<'a> {
         let n = n as usize;
         if rest.len() % 2 != 0 || rest.len() / 2 != n {
             return Err(Diagnostic::error(
-                format!("this sphere_sweep announces {n} spheres and gives {} values (a centre and a radius each)", rest.len()),
+                format!(
+                    "this sphere_sweep announces {n} spheres and gives {} values (a centre and a radius each)",
+                    rest.len()
+                ),
                 count.span,
             ));
         }
@@ -983,7 +1184,11 @@ impl<'a> Evaluator<'a> {
         for pair in rest.chunks(2) {
             spheres.push((self.vec3(pair[0])?, self.float(pair[1])?));
         }
-        Ok(Shape::SphereSweep(Box::new(SphereSweep { spline, spheres, tolerance })))
+        Ok(Shape::SphereSweep(Box::new(SphereSweep {
+            spline,
+            spheres,
+            tolerance,
+        })))
     }
 
     /// A 2-D point `<a, b>` (a float is `<f, f>`).
@@ -1028,13 +1233,26 @@ mod tests {
         assert_eq!(all(3, 20).terms.len(), 20);
         let q = all(4, 35);
         let powers: Vec<[u8; 3]> = q.terms.iter().map(|t| t.1).collect();
-        assert_eq!(&powers[..6], &[[4, 0, 0], [3, 1, 0], [3, 0, 1], [3, 0, 0], [2, 2, 0], [2, 1, 1]]);
+        assert_eq!(
+            &powers[..6],
+            &[
+                [4, 0, 0],
+                [3, 1, 0],
+                [3, 0, 1],
+                [3, 0, 0],
+                [2, 2, 0],
+                [2, 1, 1]
+            ]
+        );
         assert_eq!(powers[20], [0, 4, 0]);
         assert_eq!(&powers[33..], &[[0, 0, 1], [0, 0, 0]]);
         assert!(Polynomial::from_povray(4, &[1.0; 34]).is_none());
         // Zero terms are left out.
         let mut c = [0.0; 35];
         c[34] = -1.0;
-        assert_eq!(Polynomial::from_povray(4, &c).unwrap().terms, vec![(-1.0, [0, 0, 0])]);
+        assert_eq!(
+            Polynomial::from_povray(4, &c).unwrap().terms,
+            vec![(-1.0, [0, 0, 0])]
+        );
     }
 }

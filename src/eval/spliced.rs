@@ -76,7 +76,9 @@ impl<'a> Evaluator<'a> {
             if resume && pos > 0 && pos >= blanked_to {
                 return Ok(Some(pos));
             }
-            if let Some(c) = tokens::conditional_at(&text, pos).filter(|c| !tokens::balanced(&text, c)) {
+            if let Some(c) =
+                tokens::conditional_at(&text, pos).filter(|c| !tokens::balanced(&text, c))
+            {
                 let chosen = self.choose(&text, &c, file, base)?;
                 blanked_to = blanked_to.max(keep(&mut text, &c, chosen));
                 continue;
@@ -93,17 +95,19 @@ impl<'a> Evaluator<'a> {
             }
             let (failed, read) = match syntax::statement_in(&text, pos, file, base, items) {
                 None => return Ok(None),
-                Some(Ok((node, end))) => match tokens::directive_after_unknown(&node, &text, base) {
-                    None => {
-                        self.one_item(&node, f)?;
-                        pos = end;
-                        continue;
+                Some(Ok((node, end))) => {
+                    match tokens::directive_after_unknown(&node, &text, base) {
+                        None => {
+                            self.one_item(&node, f)?;
+                            pos = end;
+                            continue;
+                        }
+                        // (Read, but with a directive where a value is: chosen below, or, if it
+                        // cannot be, the statement is evaluated as read, whose message names the
+                        // item.)
+                        Some(at) => (directive_in_value_error(file, base + at), Some((node, end))),
                     }
-                    // (Read, but with a directive where a value is: chosen below, or, if it
-                    // cannot be, the statement is evaluated as read, whose message names the
-                    // item.)
-                    Some(at) => (directive_in_value_error(file, base + at), Some((node, end))),
-                },
+                }
                 Some(Err(e)) => (e, None),
             };
             if let Some(c) = tokens::conditional_at(&text, pos) {
@@ -125,16 +129,24 @@ impl<'a> Evaluator<'a> {
                 }
                 _ => None,
             };
-            let chosen = culprit.as_ref().map(|c| (c, self.choose(&text, c, file, base)));
+            let chosen = culprit
+                .as_ref()
+                .map(|c| (c, self.choose(&text, c, file, base)));
             match (chosen, read) {
-                (Some((c, Ok(chosen))), _) => blanked_to = blanked_to.max(keep(&mut text, c, chosen)),
+                (Some((c, Ok(chosen))), _) => {
+                    blanked_to = blanked_to.max(keep(&mut text, c, chosen))
+                }
                 (_, Some((node, end))) => {
                     self.one_item(&node, f)?;
                     pos = end;
                 }
                 (None, None) => return Err(failed),
                 (Some((c, Err(why))), None) => {
-                    let head = Span::new(file, base + c.branches[0].head.start, base + c.branches[0].head.end);
+                    let head = Span::new(
+                        file,
+                        base + c.branches[0].head.start,
+                        base + c.branches[0].head.end,
+                    );
                     return Err(failed.with_note(format!(
                         "the directive at {} stands inside a statement, where trace chooses its branch as the statement starts, and it cannot be chosen there: {}",
                         self.location(head),
@@ -169,7 +181,12 @@ impl<'a> Evaluator<'a> {
             let holds = match nodes.first() {
                 Some(node) if node.kind == NodeKind::If => self.truth(&node.args[0])?,
                 Some(node) if node.kind == NodeKind::IfDef => self.ifdef_holds(node)?,
-                _ => return Err(Diagnostic::error("expected a condition here", Span::new(file, at, at + 1))),
+                _ => {
+                    return Err(Diagnostic::error(
+                        "expected a condition here",
+                        Span::new(file, at, at + 1),
+                    ));
+                }
             };
             if holds {
                 return Ok(Some(i));
@@ -192,13 +209,20 @@ impl<'a> Evaluator<'a> {
         let directive = format!("{} #end", &text[l.head.clone()]);
         let at = base + l.head.start;
         let nodes = syntax::parse_fragment_items(&directive, file, at)?;
-        let Some(node) = nodes.first().filter(|n| matches!(n.kind, NodeKind::While | NodeKind::For)) else {
-            return Err(Diagnostic::error("expected a loop here", Span::new(file, at, at + 1)));
+        let Some(node) = nodes
+            .first()
+            .filter(|n| matches!(n.kind, NodeKind::While | NodeKind::For))
+        else {
+            return Err(Diagnostic::error(
+                "expected a loop here",
+                Span::new(file, at, at + 1),
+            ));
         };
         let body = &text[l.body.clone()];
         let body_base = base + l.body.start;
         let mut pass = |ev: &mut Evaluator<'a>| {
-            ev.read_spliced(body.to_owned(), file, body_base, (items, loops), f, false).map(|_| ())
+            ev.read_spliced(body.to_owned(), file, body_base, (items, loops), f, false)
+                .map(|_| ())
         };
         match node.kind {
             NodeKind::While => {

@@ -77,7 +77,11 @@ fn flat_enough(p: &Net, flatness: f64) -> bool {
     }
     let n = n.normalize();
     let d = -n.dot(a);
-    let dist = p.iter().flatten().map(|q| (n.dot(*q) + d).abs()).fold(0.0, f64::max);
+    let dist = p
+        .iter()
+        .flatten()
+        .map(|q| (n.dot(*q) + d).abs())
+        .fold(0.0, f64::max);
     dist < flatness
 }
 
@@ -88,12 +92,22 @@ fn bernstein(t: f64) -> [f64; 4] {
 
 fn bernstein_slope(t: f64) -> [f64; 4] {
     let s = 1.0 - t;
-    [-3.0 * s * s, 3.0 * s * s - 6.0 * t * s, 6.0 * t * s - 3.0 * t * t, 3.0 * t * t]
+    [
+        -3.0 * s * s,
+        3.0 * s * s - 6.0 * t * s,
+        6.0 * t * s - 3.0 * t * t,
+        3.0 * t * t,
+    ]
 }
 
 /// The patch's unit normal at (u, v), or POV-Ray's <1, 0, 0> where it has none.
 fn normal_at(p: &Net, u: f64, v: f64) -> DVec3 {
-    let (bu, bv, du, dv) = (bernstein(u), bernstein(v), bernstein_slope(u), bernstein_slope(v));
+    let (bu, bv, du, dv) = (
+        bernstein(u),
+        bernstein(v),
+        bernstein_slope(u),
+        bernstein_slope(v),
+    );
     let (mut su, mut sv) = (DVec3::ZERO, DVec3::ZERO);
     for i in 0..4 {
         for j in 0..4 {
@@ -130,7 +144,16 @@ pub fn patch_mesh(
     uv_corners: Option<[[f64; 2]; 4]>,
 ) -> TriangleMesh {
     let mut pieces = Pieces::default();
-    subdivide(points, points, (0.0, 1.0), (0.0, 1.0), 0, (u_steps, v_steps), flatness, &mut pieces);
+    subdivide(
+        points,
+        points,
+        (0.0, 1.0),
+        (0.0, 1.0),
+        0,
+        (u_steps, v_steps),
+        flatness,
+        &mut pieces,
+    );
     if let Some(st) = uv_corners {
         let st = st.map(|c| glam::DVec2::new(c[0], c[1]));
         for p in &mut pieces.uvs {
@@ -142,7 +165,14 @@ pub fn patch_mesh(
     }
     let n = pieces.vertices.len() as u32 / 3;
     let triangles: Vec<[u32; 3]> = (0..n).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
-    TriangleMesh::new(pieces.vertices, triangles.clone(), pieces.normals, triangles.clone(), pieces.uvs, triangles)
+    TriangleMesh::new(
+        pieces.vertices,
+        triangles.clone(),
+        pieces.normals,
+        triangles.clone(),
+        pieces.uvs,
+        triangles,
+    )
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -166,20 +196,92 @@ fn subdivide(
     let next = depth + 1;
     if depth >= us {
         let (a, b) = split_v(p);
-        subdivide(whole, &a, (u0, u1), (v0, vm), next, (us, vs), flatness, mesh);
-        subdivide(whole, &b, (u0, u1), (vm, v1), next, (us, vs), flatness, mesh);
+        subdivide(
+            whole,
+            &a,
+            (u0, u1),
+            (v0, vm),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
+        subdivide(
+            whole,
+            &b,
+            (u0, u1),
+            (vm, v1),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
     } else if depth >= vs {
         let (a, b) = split_u(p);
-        subdivide(whole, &a, (u0, um), (v0, v1), next, (us, vs), flatness, mesh);
-        subdivide(whole, &b, (um, u1), (v0, v1), next, (us, vs), flatness, mesh);
+        subdivide(
+            whole,
+            &a,
+            (u0, um),
+            (v0, v1),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
+        subdivide(
+            whole,
+            &b,
+            (um, u1),
+            (v0, v1),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
     } else {
         let (left, right) = split_u(p);
         let (ll, ul) = split_v(&left);
         let (lr, ur) = split_v(&right);
-        subdivide(whole, &ll, (u0, um), (v0, vm), next, (us, vs), flatness, mesh);
-        subdivide(whole, &ul, (u0, um), (vm, v1), next, (us, vs), flatness, mesh);
-        subdivide(whole, &lr, (um, u1), (v0, vm), next, (us, vs), flatness, mesh);
-        subdivide(whole, &ur, (um, u1), (vm, v1), next, (us, vs), flatness, mesh);
+        subdivide(
+            whole,
+            &ll,
+            (u0, um),
+            (v0, vm),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
+        subdivide(
+            whole,
+            &ul,
+            (u0, um),
+            (vm, v1),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
+        subdivide(
+            whole,
+            &lr,
+            (um, u1),
+            (v0, vm),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
+        subdivide(
+            whole,
+            &ur,
+            (um, u1),
+            (vm, v1),
+            next,
+            (us, vs),
+            flatness,
+            mesh,
+        );
     }
 }
 
@@ -196,7 +298,9 @@ fn leaf(whole: &Net, q: &Net, (u0, u1): (f64, f64), (v0, v1): (f64, f64), mesh: 
         let [a, b, c] = tri.map(|k| corners[k]);
         let (e0, e1) = (b.0 - a.0, c.0 - a.0);
         let cross = e0.cross(e1);
-        if cross.length_squared() <= 1e-10 * e0.length_squared() * e1.length_squared() || cross.length() < 1e-10 {
+        if cross.length_squared() <= 1e-10 * e0.length_squared() * e1.length_squared()
+            || cross.length() < 1e-10
+        {
             continue;
         }
         for (p, u, v) in [a, b, c] {
@@ -224,7 +328,16 @@ mod tests {
         }
         let count = |u, v, f| {
             let mut pieces = Pieces::default();
-            subdivide(&net, &net, (0.0, 1.0), (0.0, 1.0), 0, (u, v), f, &mut pieces);
+            subdivide(
+                &net,
+                &net,
+                (0.0, 1.0),
+                (0.0, 1.0),
+                0,
+                (u, v),
+                f,
+                &mut pieces,
+            );
             pieces.vertices.len() / 3
         };
         assert_eq!(count(3, 3, 0.01), 2);

@@ -44,12 +44,23 @@ pub struct BlobElement {
 
 impl BlobElement {
     /// A sphere component (`transform`: the component's own transformations).
-    pub fn sphere(centre: DVec3, radius: f64, strength: f64, transform: Option<DMat4>) -> BlobElement {
+    pub fn sphere(
+        centre: DVec3,
+        radius: f64,
+        strength: f64,
+        transform: Option<DMat4>,
+    ) -> BlobElement {
         BlobElement::new(Reach::Sphere(centre), radius, strength, transform)
     }
 
     /// The three elements of a cylinder component from `a` to `b`: body and both ends.
-    pub fn cylinder(a: DVec3, b: DVec3, radius: f64, strength: f64, transform: Option<DMat4>) -> [BlobElement; 3] {
+    pub fn cylinder(
+        a: DVec3,
+        b: DVec3,
+        radius: f64,
+        strength: f64,
+        transform: Option<DMat4>,
+    ) -> [BlobElement; 3] {
         let axis = b - a;
         let length = axis.length();
         let w = axis / length;
@@ -70,7 +81,9 @@ impl BlobElement {
             r2: radius * radius,
             strength,
             to_local: transform.map(|m| m.inverse()),
-            normal_to_blob: transform.map_or(DMat3::IDENTITY, |m| DMat3::from_mat4(m).inverse().transpose()),
+            normal_to_blob: transform.map_or(DMat3::IDENTITY, |m| {
+                DMat3::from_mat4(m).inverse().transpose()
+            }),
         }
     }
 
@@ -187,7 +200,9 @@ impl BlobElement {
             Reach::Base => (DVec3::splat(-r), DVec3::new(r, r, 0.0)),
             Reach::Apex(len) => (DVec3::new(-r, -r, len), DVec3::new(r, r, len + r)),
         };
-        let Some(to_local) = self.to_local else { return (lo, hi) };
+        let Some(to_local) = self.to_local else {
+            return (lo, hi);
+        };
         let m = to_local.inverse();
         (0..8).fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), i| {
             let corner = DVec3::new(
@@ -223,8 +238,15 @@ impl Blob {
             .iter()
             .filter(|e| e.strength > 0.0)
             .map(BlobElement::bounds)
-            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(a, b), (lo, hi)| (a.min(lo), b.max(hi)));
-        let bounds = if bounds.0.x > bounds.1.x { (DVec3::ZERO, DVec3::ZERO) } else { bounds };
+            .fold(
+                (DVec3::INFINITY, DVec3::NEG_INFINITY),
+                |(a, b), (lo, hi)| (a.min(lo), b.max(hi)),
+            );
+        let bounds = if bounds.0.x > bounds.1.x {
+            (DVec3::ZERO, DVec3::ZERO)
+        } else {
+            bounds
+        };
         Blob {
             threshold,
             elements: elements.into_boxed_slice(),
@@ -281,7 +303,9 @@ impl Blob {
                     } else {
                         active -= 1;
                     }
-                    let Some(&(next, _)) = events.get(k + 1) else { break };
+                    let Some(&(next, _)) = events.get(k + 1) else {
+                        break;
+                    };
                     if active == 0 || next - t < 1e-10 {
                         continue;
                     }
@@ -350,15 +374,24 @@ mod tests {
         let b = Blob::new(0.25, vec![BlobElement::sphere(DVec3::ZERO, 1.0, 1.0, None)]);
         let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
         let r = 0.5f64.sqrt();
-        assert!((c.first().unwrap() - (5.0 - r)).abs() < 1e-9, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - (5.0 - r)).abs() < 1e-9,
+            "{:?}",
+            c.as_slice()
+        );
         let mut all = Vec::new();
-        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| {
+            all.push(t)
+        });
         assert_eq!(all.len(), 2);
         assert!(b.contains(DVec3::new(0.5, 0.0, 0.0)));
         assert!(!b.contains(DVec3::new(0.8, 0.0, 0.0)));
         let (n, _) = b.normals(DVec3::new(-r, 0.0, 0.0), 0);
         assert!(n.normalize().dot(DVec3::NEG_X) > 0.9999);
-        assert!(b.intersect(&Ray::new(DVec3::new(-5.0, 0.9, 0.0), DVec3::X)).is_empty());
+        assert!(
+            b.intersect(&Ray::new(DVec3::new(-5.0, 0.9, 0.0), DVec3::X))
+                .is_empty()
+        );
     }
 
     /// Two spheres that merge: a ray along their axis crosses the joined surface twice.
@@ -370,7 +403,9 @@ mod tests {
         ];
         let b = Blob::new(0.5, two.clone());
         let mut all = Vec::new();
-        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| {
+            all.push(t)
+        });
         assert_eq!(all.len(), 2, "{all:?}");
         assert!(b.contains(DVec3::ZERO));
         // A negative component at the middle cuts them apart.
@@ -378,7 +413,9 @@ mod tests {
         cut.push(BlobElement::sphere(DVec3::ZERO, 0.6, -2.0, None));
         let b = Blob::new(0.5, cut);
         let mut all = Vec::new();
-        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| all.push(t));
+        b.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X), |t, _| {
+            all.push(t)
+        });
         assert_eq!(all.len(), 4, "{all:?}");
         assert!(!b.contains(DVec3::ZERO));
     }
@@ -393,10 +430,17 @@ mod tests {
         assert!((c.first().unwrap() - (5.0 - r)).abs() < 1e-9);
         // Down the axis: the far end's half sphere.
         let c = b.intersect(&Ray::new(DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y));
-        assert!((c.first().unwrap() - (3.0 - r)).abs() < 1e-9, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - (3.0 - r)).abs() < 1e-9,
+            "{:?}",
+            c.as_slice()
+        );
         // A transformed (stretched) sphere component is an ellipsoid.
         let m = DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0));
-        let b = Blob::new(0.25, vec![BlobElement::sphere(DVec3::ZERO, 1.0, 1.0, Some(m))]);
+        let b = Blob::new(
+            0.25,
+            vec![BlobElement::sphere(DVec3::ZERO, 1.0, 1.0, Some(m))],
+        );
         let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
         assert!((c.first().unwrap() - (5.0 - 2.0 * r)).abs() < 1e-9);
     }

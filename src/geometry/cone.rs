@@ -22,7 +22,6 @@ pub struct Cone {
 }
 
 impl Cone {
-
     /// Normal (not unit length, canonical frame) at `p` on the given part.
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         match part {
@@ -34,7 +33,6 @@ impl Cone {
             }
         }
     }
-
 }
 
 impl super::shape::Surface for Cone {

@@ -13,7 +13,6 @@ pub struct Cuboid {
 }
 
 impl Cuboid {
-
     /// Outward unit normal at `p` on the face of axis `part` (from [`Cuboid::intersect`]).
     pub fn normal(&self, p: DVec3, part: u32) -> DVec3 {
         let axis = (part as usize).min(2);
@@ -22,7 +21,6 @@ impl Cuboid {
         n[axis] = if p[axis] >= centre { 1.0 } else { -1.0 };
         n
     }
-
 }
 
 impl super::shape::Surface for Cuboid {

@@ -18,7 +18,6 @@ pub struct Disc {
 }
 
 impl Disc {
-
     /// Unit normal.
     pub fn normal(&self) -> DVec3 {
         self.normal

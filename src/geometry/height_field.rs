@@ -35,7 +35,13 @@ type Smooth = (Box<[[i16; 3]]>, DMat3, DMat3);
 impl HeightField {
     /// A height field of `w × d` points (row z = 0 first); `water`: the water level in raw
     /// units; `smooth`: the object's transformation when normals are smoothed.
-    pub fn new(w: usize, d: usize, heights: Arc<Vec<u16>>, water: f64, smooth: Option<DMat4>) -> HeightField {
+    pub fn new(
+        w: usize,
+        d: usize,
+        heights: Arc<Vec<u16>>,
+        water: f64,
+        smooth: Option<DMat4>,
+    ) -> HeightField {
         let (lo, hi) = heights
             .iter()
             .fold((u16::MAX, 0), |(lo, hi), &v| (lo.min(v), hi.max(v)));
@@ -81,13 +87,30 @@ impl HeightField {
             sum += n;
         }
         let n = sum.normalize_or(DVec3::Y);
-        [(32767.0 * n.x) as i16, (32767.0 * n.y) as i16, (32767.0 * n.z) as i16]
+        [
+            (32767.0 * n.x) as i16,
+            (32767.0 * n.y) as i16,
+            (32767.0 * n.z) as i16,
+        ]
     }
 
     /// The crossings with cell (x, z)'s two triangles within [lo, hi].
-    fn cell(&self, ray: &Ray, x: usize, z: usize, lo: f64, hi: f64, f: &mut impl FnMut(f64)) -> bool {
+    fn cell(
+        &self,
+        ray: &Ray,
+        x: usize,
+        z: usize,
+        lo: f64,
+        hi: f64,
+        f: &mut impl FnMut(f64),
+    ) -> bool {
         let (x, z) = (x.min(self.w - 2), z.min(self.d - 2));
-        let (y1, y2, y3, y4) = (self.h(x, z), self.h(x + 1, z), self.h(x, z + 1), self.h(x + 1, z + 1));
+        let (y1, y2, y3, y4) = (
+            self.h(x, z),
+            self.h(x + 1, z),
+            self.h(x, z + 1),
+            self.h(x + 1, z + 1),
+        );
         let (fx, fz) = (x as f64, z as f64);
         let mut found = false;
         let mut triangle = |n: DVec3, p0: DVec3, second: bool| {
@@ -111,8 +134,16 @@ impl HeightField {
                 f(t);
             }
         };
-        triangle(DVec3::new(y1 - y2, 1.0, y1 - y3), DVec3::new(fx, y1, fz), false);
-        triangle(DVec3::new(y3 - y4, 1.0, y2 - y4), DVec3::new(fx + 1.0, y4, fz + 1.0), true);
+        triangle(
+            DVec3::new(y1 - y2, 1.0, y1 - y3),
+            DVec3::new(fx, y1, fz),
+            false,
+        );
+        triangle(
+            DVec3::new(y3 - y4, 1.0, y2 - y4),
+            DVec3::new(fx + 1.0, y4, fz + 1.0),
+            true,
+        );
         found
     }
 
@@ -212,7 +243,9 @@ impl super::shape::Surface for HeightField {
             let y4 = self.h(px + 1, pz + 1);
             DVec3::new(self.h(px, pz + 1) - y4, 1.0, self.h(px + 1, pz) - y4)
         };
-        let Some((normals, m, to_world)) = &self.smooth else { return (flat, flat) };
+        let Some((normals, m, to_world)) = &self.smooth else {
+            return (flat, flat);
+        };
         // POV-Ray blends the corner normals after carrying each into the world; the renderer
         // carries the result there again, so it is handed back in object terms.
         let corner = |x: usize, z: usize| {
@@ -226,7 +259,12 @@ impl super::shape::Surface for HeightField {
 
     /// POV-Ray's test: below the surface of the cell's triangle (or the water level).
     fn contains(&self, p: DVec3) -> bool {
-        if p.x < 0.0 || p.z < 0.0 || p.x >= (self.w - 1) as f64 || p.z >= (self.d - 1) as f64 || p.y >= self.top {
+        if p.x < 0.0
+            || p.z < 0.0
+            || p.x >= (self.w - 1) as f64
+            || p.z >= (self.d - 1) as f64
+            || p.y >= self.top
+        {
             return false;
         }
         if p.y < self.floor {
@@ -236,11 +274,20 @@ impl super::shape::Surface for HeightField {
         let h = |x, z| self.h(x, z).max(self.floor);
         let (v, n) = if fx + fz < 1.0 {
             let y1 = h(px, pz);
-            (DVec3::new(px as f64, y1, pz as f64), DVec3::new(y1 - h(px + 1, pz), 1.0, y1 - h(px, pz + 1)))
+            (
+                DVec3::new(px as f64, y1, pz as f64),
+                DVec3::new(y1 - h(px + 1, pz), 1.0, y1 - h(px, pz + 1)),
+            )
         } else {
-            let (x, z) = ((p.x.ceil() as usize).min(self.w - 1), (p.z.ceil() as usize).min(self.d - 1));
+            let (x, z) = (
+                (p.x.ceil() as usize).min(self.w - 1),
+                (p.z.ceil() as usize).min(self.d - 1),
+            );
             let y1 = h(x, z);
-            (DVec3::new(x as f64, y1, z as f64), DVec3::new(h(x - 1, z) - y1, 1.0, h(x, z - 1) - y1))
+            (
+                DVec3::new(x as f64, y1, z as f64),
+                DVec3::new(h(x - 1, z) - y1, 1.0, h(x, z - 1) - y1),
+            )
         };
         p.dot(n) < v.dot(n)
     }
@@ -273,18 +320,35 @@ mod tests {
         let hf = ramp();
         // Straight down at x = 0.5: height 50.
         let c = hf.intersect(&Ray::new(DVec3::new(0.5, 1000.0, 0.5), DVec3::NEG_Y));
-        assert!((c.first().unwrap() - 950.0).abs() < 1e-9, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - 950.0).abs() < 1e-9,
+            "{:?}",
+            c.as_slice()
+        );
         // Along x at height 150: meets the ramp at x = 1.5.
         let c = hf.intersect(&Ray::new(DVec3::new(-1.0, 150.0, 1.2), DVec3::X));
-        assert!((c.first().unwrap() - 2.5).abs() < 1e-9, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - 2.5).abs() < 1e-9,
+            "{:?}",
+            c.as_slice()
+        );
         let (n, _) = hf.normals(DVec3::new(1.5, 150.0, 1.2), 0);
         assert!(n.x < 0.0 && n.y > 0.0);
         // Above the top: nothing.
-        assert!(hf.intersect(&Ray::new(DVec3::new(-1.0, 250.0, 1.2), DVec3::X)).is_empty());
+        assert!(
+            hf.intersect(&Ray::new(DVec3::new(-1.0, 250.0, 1.2), DVec3::X))
+                .is_empty()
+        );
         assert!(hf.contains(DVec3::new(1.5, 100.0, 1.2)));
         assert!(!hf.contains(DVec3::new(1.5, 200.0, 1.2)));
         // Water at 120 raises the floor: the low part is not there.
-        let wet = HeightField::new(3, 3, Arc::new((0..9).map(|i| (i % 3) as u16 * 100).collect()), 120.0, None);
+        let wet = HeightField::new(
+            3,
+            3,
+            Arc::new((0..9).map(|i| (i % 3) as u16 * 100).collect()),
+            120.0,
+            None,
+        );
         let c = wet.intersect(&Ray::new(DVec3::new(0.5, 1000.0, 0.5), DVec3::NEG_Y));
         assert!(c.is_empty(), "{:?}", c.as_slice());
     }

@@ -38,7 +38,11 @@ impl Container {
                     let side = |high: bool| 1 + 2 * axis as u32 + u32::from(high);
                     if d[axis].abs() > EPSILON {
                         let negative = d[axis] < 0.0;
-                        let (far, near) = if negative { (lo[axis], hi[axis]) } else { (hi[axis], lo[axis]) };
+                        let (far, near) = if negative {
+                            (lo[axis], hi[axis])
+                        } else {
+                            (hi[axis], lo[axis])
+                        };
                         let t = (far - p[axis]) / d[axis];
                         if t < tmin {
                             return None;
@@ -74,7 +78,12 @@ impl Container {
                     return None;
                 }
                 let half = half2.sqrt();
-                Some(((closest - half) / length, (closest + half) / length, SURFACE, SURFACE))
+                Some((
+                    (closest - half) / length,
+                    (closest + half) / length,
+                    SURFACE,
+                    SURFACE,
+                ))
             }
         }
     }
@@ -318,7 +327,13 @@ mod tests {
         Arc::new(
             Function::new(
                 3,
-                vec![Op::Arg(0), Op::Arg(1), Op::Arg(2), Op::Const(r), Op::Internal(Internal::Sphere, 4)],
+                vec![
+                    Op::Arg(0),
+                    Op::Arg(1),
+                    Op::Arg(2),
+                    Op::Const(r),
+                    Op::Internal(Internal::Sphere, 4),
+                ],
             )
             .unwrap(),
         )
@@ -342,7 +357,10 @@ mod tests {
         let n = iso.normals(p, part).0.normalize();
         assert!(n.dot(p.normalize()) > 0.999, "{n}");
         assert!(iso.contains(DVec3::ZERO) && !iso.contains(DVec3::splat(1.5)));
-        assert!(iso.intersect(&Ray::new(DVec3::new(1.5, 0.0, -5.0), DVec3::Z)).is_empty());
+        assert!(
+            iso.intersect(&Ray::new(DVec3::new(1.5, 0.0, -5.0), DVec3::Z))
+                .is_empty()
+        );
     }
 
     /// A container that cuts the surface shows its wall where the function is inside.

@@ -45,7 +45,15 @@ fn hmul(a: DVec4, b: DVec4) -> DVec4 {
 
 impl JuliaFractal {
     /// A fractal of parameter `c`; `slice` need not be unit length (its w must not be 0).
-    pub fn new(c: DVec4, hypercomplex: bool, cube: bool, iterations: u32, precision: f64, slice: DVec4, distance: f64) -> JuliaFractal {
+    pub fn new(
+        c: DVec4,
+        hypercomplex: bool,
+        cube: bool,
+        iterations: u32,
+        precision: f64,
+        slice: DVec4,
+        distance: f64,
+    ) -> JuliaFractal {
         let (radius, exit) = if hypercomplex {
             (4.0, 16.0)
         } else {
@@ -67,7 +75,12 @@ impl JuliaFractal {
 
     fn start(&self, p: DVec3) -> DVec4 {
         let s = self.slice;
-        DVec4::new(p.x, p.y, p.z, (self.distance - s.x * p.x - s.y * p.y - s.z * p.z) / s.w)
+        DVec4::new(
+            p.x,
+            p.y,
+            p.z,
+            (self.distance - s.x * p.x - s.y * p.y - s.z * p.z) / s.w,
+        )
     }
 
     /// One iteration step.
@@ -87,7 +100,12 @@ impl JuliaFractal {
             let k = 3.0 * z.x * z.x - d;
             DVec4::new(z.x * (z.x * z.x - 3.0 * d), z.y * k, z.z * k, z.w * k) + c
         } else {
-            DVec4::new(z.x * z.x - d, 2.0 * z.x * z.y, 2.0 * z.x * z.z, 2.0 * z.x * z.w) + c
+            DVec4::new(
+                z.x * z.x - d,
+                2.0 * z.x * z.y,
+                2.0 * z.x * z.z,
+                2.0 * z.x * z.w,
+            ) + c
         }
     }
 
@@ -144,7 +162,11 @@ impl JuliaFractal {
             if n == 0 {
                 p = z0;
             }
-            let v = if self.cube { z } else { z * 2f64.powi(n as i32) };
+            let v = if self.cube {
+                z
+            } else {
+                z * 2f64.powi(n as i32)
+            };
             return DVec3::new(
                 p.dot(v),
                 DVec4::new(-p.y, p.x, -p.w, p.z).dot(v),
@@ -161,7 +183,12 @@ impl JuliaFractal {
                     let (a, b) = (x * x - d, 3.0 * x * x - d);
                     let t = 2.0 * (r.y * y + r.z * zz + r.w * w);
                     let u = 6.0 * x * r.x - t;
-                    DVec4::new(3.0 * (r.x * a - x * t), r.y * b + y * u, r.z * b + zz * u, r.w * b + w * u)
+                    DVec4::new(
+                        3.0 * (r.x * a - x * t),
+                        r.y * b + y * u,
+                        r.z * b + zz * u,
+                        r.w * b + w * u,
+                    )
                 } else {
                     DVec4::new(
                         r.x * x - r.y * y - r.z * zz - r.w * w,
@@ -310,16 +337,25 @@ mod tests {
     #[test]
     fn unit_ball() {
         let j = JuliaFractal::new(DVec4::ZERO, false, false, 20, 200.0, DVec4::W, 0.0);
-        let t = j.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X)).first().unwrap();
+        let t = j
+            .intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X))
+            .first()
+            .unwrap();
         assert!((t - 4.0).abs() < 1e-3, "{t}");
         let (n, _) = j.normals(DVec3::new(-1.0, 0.0, 0.0), 0);
         assert!(n.normalize().dot(DVec3::NEG_X) > 0.999, "{n}");
         assert!(j.contains(DVec3::new(0.5, 0.2, 0.1)));
         assert!(!j.contains(DVec3::new(1.2, 0.0, 0.0)));
-        assert!(j.intersect(&Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X)).is_empty());
+        assert!(
+            j.intersect(&Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X))
+                .is_empty()
+        );
         // Cubes too: |z|³ stays bounded inside the unit ball.
         let c = JuliaFractal::new(DVec4::ZERO, false, true, 20, 200.0, DVec4::W, 0.0);
-        let t = c.intersect(&Ray::new(DVec3::new(0.0, -5.0, 0.0), DVec3::Y)).first().unwrap();
+        let t = c
+            .intersect(&Ray::new(DVec3::new(0.0, -5.0, 0.0), DVec3::Y))
+            .first()
+            .unwrap();
         assert!((t - 4.0).abs() < 1e-3, "{t}");
     }
 }

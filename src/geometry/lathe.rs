@@ -122,7 +122,11 @@ impl super::shape::Surface for Lathe {
         let s = &self.segments[part as usize];
         let t = s.nearest(DVec2::new(rho, p.y), self.degree);
         // A negative end radius draws the profile mirrored: match the point's side.
-        let t = if at(&s.u, t) < 0.0 { s.nearest(DVec2::new(-rho, p.y), self.degree) } else { t };
+        let t = if at(&s.u, t) < 0.0 {
+            s.nearest(DVec2::new(-rho, p.y), self.degree)
+        } else {
+            t
+        };
         let (dr, dh) = (slope(&s.u, t), slope(&s.v, t));
         let n = DVec3::new(dh * p.x, -dr * rho, dh * p.z);
         (n, n)
@@ -170,7 +174,11 @@ impl super::shape::Surface for Lathe {
         let rho = (p.x * p.x + p.z * p.z).sqrt();
         let s = &self.segments[part as usize];
         let t = s.nearest(DVec2::new(rho, p.y), self.degree);
-        let t = if at(&s.u, t) < 0.0 { s.nearest(DVec2::new(-rho, p.y), self.degree) } else { t };
+        let t = if at(&s.u, t) < 0.0 {
+            s.nearest(DVec2::new(-rho, p.y), self.degree)
+        } else {
+            t
+        };
         let v = (t + part as f64) / self.segments.len() as f64;
         Some(DVec2::new(u, v.min(1.0)))
     }
@@ -183,13 +191,22 @@ mod tests {
 
     /// A cylinder of radius 1 from y = 0 to 2, drawn as one straight profile segment.
     fn tube() -> Lathe {
-        Lathe::new(1, vec![CurveSegment::new([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 2.0, 0.0])])
+        Lathe::new(
+            1,
+            vec![CurveSegment::new(
+                [0.0, 0.0, 0.0, 1.0],
+                [0.0, 0.0, 2.0, 0.0],
+            )],
+        )
     }
 
     #[test]
     fn hits_misses_and_inside() {
         let l = tube();
-        let c = l.intersect(&Ray::new(DVec3::new(-5.0, 1.0, 0.0), DVec3::new(1.0, 0.1, 0.0)));
+        let c = l.intersect(&Ray::new(
+            DVec3::new(-5.0, 1.0, 0.0),
+            DVec3::new(1.0, 0.1, 0.0),
+        ));
         assert_eq!(c.len(), 2, "{:?}", c.as_slice());
         assert!((c.as_slice()[0] - 4.0).abs() < 1e-9 && (c.as_slice()[1] - 6.0).abs() < 1e-9);
         // Horizontal: both crossings of the tube.
@@ -198,10 +215,19 @@ mod tests {
         let (n, _) = l.normals(DVec3::new(-1.0, 1.0, 0.0), c.parts()[0]);
         assert!(n.normalize().dot(DVec3::X).abs() > 0.999, "{n}");
         // Tangent and missing rays.
-        assert!(l.intersect(&Ray::new(DVec3::new(-5.0, 1.0, 1.5), DVec3::X)).is_empty());
-        assert!(l.intersect(&Ray::new(DVec3::new(-5.0, 3.0, 0.0), DVec3::X)).is_empty());
+        assert!(
+            l.intersect(&Ray::new(DVec3::new(-5.0, 1.0, 1.5), DVec3::X))
+                .is_empty()
+        );
+        assert!(
+            l.intersect(&Ray::new(DVec3::new(-5.0, 3.0, 0.0), DVec3::X))
+                .is_empty()
+        );
         // Down the axis: an open tube has no caps.
-        assert!(l.intersect(&Ray::new(DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y)).is_empty());
+        assert!(
+            l.intersect(&Ray::new(DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y))
+                .is_empty()
+        );
         // A profile that does not reach the axis encloses nothing nearer the axis than its
         // least radius (POV-Ray's test), and nothing beyond its greatest.
         assert!(!l.contains(DVec3::new(0.5, 1.0, 0.2)));
@@ -215,7 +241,14 @@ mod tests {
         let seg = |a: (f64, f64), b: (f64, f64)| {
             CurveSegment::new([0.0, 0.0, b.0 - a.0, a.0], [0.0, 0.0, b.1 - a.1, a.1])
         };
-        let l = Lathe::new(1, vec![seg((0.0, 0.0), (1.0, 0.0)), seg((1.0, 0.0), (1.0, 2.0)), seg((1.0, 2.0), (0.0, 2.0))]);
+        let l = Lathe::new(
+            1,
+            vec![
+                seg((0.0, 0.0), (1.0, 0.0)),
+                seg((1.0, 0.0), (1.0, 2.0)),
+                seg((1.0, 2.0), (0.0, 2.0)),
+            ],
+        );
         assert!(l.contains(DVec3::new(0.5, 1.0, 0.2)));
         assert!(!l.contains(DVec3::new(0.9, 1.0, 0.9)));
         let c = l.intersect(&Ray::new(DVec3::new(0.3, 5.0, 0.0), DVec3::NEG_Y));
@@ -226,7 +259,13 @@ mod tests {
     #[test]
     fn curved_profile() {
         // r(t) = 1 + t(1 − t)·2 (bulging to 1.5), y = 2t.
-        let l = Lathe::new(2, vec![CurveSegment::new([0.0, -2.0, 2.0, 1.0], [0.0, 0.0, 2.0, 0.0])]);
+        let l = Lathe::new(
+            2,
+            vec![CurveSegment::new(
+                [0.0, -2.0, 2.0, 1.0],
+                [0.0, 0.0, 2.0, 0.0],
+            )],
+        );
         let c = l.intersect(&Ray::new(DVec3::new(-5.0, 1.0, 0.0), DVec3::X));
         assert_eq!(c.len(), 2);
         assert!((c.as_slice()[0] - 3.5).abs() < 1e-9, "{:?}", c.as_slice());

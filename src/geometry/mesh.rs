@@ -128,7 +128,15 @@ impl TriangleMesh {
         uvs: Vec<glam::DVec2>,
         uv_indices: Vec<[u32; 3]>,
     ) -> TriangleMesh {
-        Self::with_corner_entries(vertices, triangles, normals, normal_indices, uvs, uv_indices, Vec::new())
+        Self::with_corner_entries(
+            vertices,
+            triangles,
+            normals,
+            normal_indices,
+            uvs,
+            uv_indices,
+            Vec::new(),
+        )
     }
 
     /// [`TriangleMesh::new`] with, per triangle, the material entries its corners take
@@ -213,7 +221,14 @@ impl TriangleMesh {
         }
         group_start.push(triangles_ordered.len() as u32);
         // (The input's copies go before the tree is built: at 1M triangles they are 40 MB.)
-        drop((triangles, normal_indices, uv_indices, corner_entries, order, groups));
+        drop((
+            triangles,
+            normal_indices,
+            uv_indices,
+            corner_entries,
+            order,
+            groups,
+        ));
         let tree = super::wide::WideBvh::new(
             bvh,
             &group_start,
@@ -254,18 +269,23 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut best: Option<(f64, u32)> = None;
         let mut tmax = ray.tmax;
-        self.tree.walk::<true>(ray, prune_value(ray.tmax), |first, lanes| {
-            let mut hit = false;
-            for i in lanes_of(first, lanes) {
-                let crossing = self.exact(&sheared, i, ray.tmin, tmax);
-                if let Some(t) = crossing {
-                    tmax = t;
-                    best = Some((t, i as u32));
-                    hit = true;
+        self.tree
+            .walk::<true>(ray, prune_value(ray.tmax), |first, lanes| {
+                let mut hit = false;
+                for i in lanes_of(first, lanes) {
+                    let crossing = self.exact(&sheared, i, ray.tmin, tmax);
+                    if let Some(t) = crossing {
+                        tmax = t;
+                        best = Some((t, i as u32));
+                        hit = true;
+                    }
                 }
-            }
-            if hit { prune_value(tmax) } else { f32::INFINITY }
-        });
+                if hit {
+                    prune_value(tmax)
+                } else {
+                    f32::INFINITY
+                }
+            });
         let mut out = Crossings::NONE;
         if let Some((t, i)) = best {
             out.push(t, i);
@@ -276,15 +296,16 @@ impl TriangleMesh {
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).
     pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
-            for i in lanes_of(first, lanes) {
-                let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
-                if let Some(t) = crossing {
-                    f(t, i as u32);
+        self.tree
+            .walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+                for i in lanes_of(first, lanes) {
+                    let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
+                    if let Some(t) = crossing {
+                        f(t, i as u32);
+                    }
                 }
-            }
-            f32::INFINITY
-        });
+                f32::INFINITY
+            });
     }
 
     /// The number of crossings along the ray.
@@ -298,16 +319,17 @@ impl TriangleMesh {
     pub fn occluded(&self, ray: &Ray) -> bool {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut found = false;
-        self.tree.walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
-            for i in lanes_of(first, lanes) {
-                let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
-                if crossing.is_some() {
-                    found = true;
-                    return -1.0;
+        self.tree
+            .walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+                for i in lanes_of(first, lanes) {
+                    let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
+                    if crossing.is_some() {
+                        found = true;
+                        return -1.0;
+                    }
                 }
-            }
-            f32::INFINITY
-        });
+                f32::INFINITY
+            });
         found
     }
 
@@ -331,7 +353,11 @@ impl TriangleMesh {
                 let n = ni.map(|i| self.normals[i as usize]);
                 let smooth = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
                 // Normals on both sides of the face (POV-Ray keeps such triangles) can cancel.
-                if smooth.length_squared() > 1e-20 { smooth } else { ng }
+                if smooth.length_squared() > 1e-20 {
+                    smooth
+                } else {
+                    ng
+                }
             }
             _ => ng,
         }
@@ -381,7 +407,6 @@ impl TriangleMesh {
         }
     }
 }
-
 
 impl super::shape::Surface for TriangleMesh {
     const NAME: &'static str = "Mesh";

@@ -25,13 +25,13 @@ mod polygon;
 mod polynomial;
 mod prism;
 mod quadric;
-mod sor;
 pub mod shape;
-mod spline;
-mod text;
+mod sor;
 mod sphere;
 mod sphere_sweep;
+mod spline;
 mod superellipsoid;
+mod text;
 mod torus;
 pub mod triangle;
 mod wide;
@@ -51,13 +51,13 @@ pub use plane::Plane;
 pub use polygon::Polygon;
 pub use polynomial::Polynomial;
 pub use prism::Prism;
-pub use spline::CurveSegment;
 pub use quadric::Quadric;
+pub use shape::{Shape, Surface};
 pub use sor::{Sor, SorPiece};
 pub use sphere::Sphere;
 pub use sphere_sweep::{SphereSweep, SweepCurve};
+pub use spline::CurveSegment;
 pub use superellipsoid::Superellipsoid;
-pub use shape::{Shape, Surface};
 pub use text::{Edge, Text};
 pub use torus::Torus;
 
@@ -282,7 +282,11 @@ pub fn longitude(x: f64, z: f64) -> f64 {
         if x > 0.0 { 0.0 } else { std::f64::consts::PI }
     } else {
         let a = (x / flat).acos();
-        if z < 0.0 { std::f64::consts::TAU - a } else { a }
+        if z < 0.0 {
+            std::f64::consts::TAU - a
+        } else {
+            a
+        }
     };
     theta / std::f64::consts::TAU
 }

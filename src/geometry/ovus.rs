@@ -88,7 +88,8 @@ impl Ovus {
         let mut below = 0;
         let lower = Self::sphere(o, d, DVec3::ZERO, self.bottom);
         if let Some((k1, k2)) = lower {
-            below = usize::from(y(k1) < self.bottom_vertical) + usize::from(y(k2) < self.bottom_vertical);
+            below = usize::from(y(k1) < self.bottom_vertical)
+                + usize::from(y(k2) < self.bottom_vertical);
             for k in [k1, k2] {
                 if y(k) < self.bottom_vertical && hit(k, BOTTOM) {
                     return;
@@ -117,7 +118,11 @@ impl Ovus {
         // axis, h their distance from it: a ray whose line passes farther from the axis has
         // no root to keep, and its quartic is not solved (a margin covers the rounding).
         let (dh2, ph_dot) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
-        let nearest2 = if dh2 > 0.0 { o.x * o.x + o.z * o.z - ph_dot * ph_dot / dh2 } else { o.x * o.x + o.z * o.z };
+        let nearest2 = if dh2 > 0.0 {
+            o.x * o.x + o.z * o.z - ph_dot * ph_dot / dh2
+        } else {
+            o.x * o.x + o.z * o.z
+        };
         let reach_h = (self.connecting * self.connecting + ROOT_TOLERANCE).sqrt() - self.horizontal;
         let margin = 1e-9 * (1.0 + self.connecting + self.horizontal + o.abs().max_element());
         if reach_h < 0.0 || nearest2.max(0.0).sqrt() > reach_h + margin {
@@ -127,7 +132,10 @@ impl Ovus {
         let centre = DVec3::new(0.0, self.vertical, 0.0);
         let line = ray.about(centre);
         let (shift, p) = (line.shift, line.origin - centre);
-        let (big2, small2) = (self.horizontal * self.horizontal, self.connecting * self.connecting);
+        let (big2, small2) = (
+            self.horizontal * self.horizontal,
+            self.connecting * self.connecting,
+        );
         let k1 = p.length_squared() - big2 - small2;
         let k2 = p.dot(d);
         let c = [
@@ -195,14 +203,18 @@ impl super::shape::Surface for Ovus {
         }
         if p.y > self.bottom_vertical && p.y < self.top_vertical {
             let h = (p.x * p.x + p.z * p.z).sqrt();
-            return (h + self.horizontal).powi(2) + (p.y - self.vertical).powi(2) < self.connecting.powi(2);
+            return (h + self.horizontal).powi(2) + (p.y - self.vertical).powi(2)
+                < self.connecting.powi(2);
         }
         false
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
         let r = self.bottom.max(self.top);
-        Some((DVec3::new(-r, -self.bottom, -r), DVec3::new(r, self.bottom + self.top, r)))
+        Some((
+            DVec3::new(-r, -self.bottom, -r),
+            DVec3::new(r, self.bottom + self.top, r),
+        ))
     }
 
     fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
@@ -221,7 +233,10 @@ impl super::shape::Surface for Ovus {
             return Some(glam::DVec2::ZERO);
         }
         let d = d / len;
-        Some(glam::DVec2::new(super::longitude(d.x, d.z), 0.5 + d.y.asin() / std::f64::consts::PI))
+        Some(glam::DVec2::new(
+            super::longitude(d.x, d.z),
+            0.5 + d.y.asin() / std::f64::consts::PI,
+        ))
     }
 }
 

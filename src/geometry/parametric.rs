@@ -75,8 +75,16 @@ impl Parametric {
             let mut table = Precomputed {
                 axes,
                 count,
-                low: [vec![0.0; count as usize], vec![0.0; count as usize], vec![0.0; count as usize]],
-                high: [vec![0.0; count as usize], vec![0.0; count as usize], vec![0.0; count as usize]],
+                low: [
+                    vec![0.0; count as usize],
+                    vec![0.0; count as usize],
+                    vec![0.0; count as usize],
+                ],
+                high: [
+                    vec![0.0; count as usize],
+                    vec![0.0; count as usize],
+                    vec![0.0; count as usize],
+                ],
             };
             p.precompute(&mut table, 1, count / 2, uv_min, uv_max);
             p.precomputed = Some(table);
@@ -236,7 +244,8 @@ impl Parametric {
 
     /// The (u, v) of a hit kept in a crossing's part: 16 bits each across the rectangle.
     fn encode(&self, uv: DVec2) -> u32 {
-        let q = ((uv - self.uv_min) / (self.uv_max - self.uv_min)).clamp(DVec2::ZERO, DVec2::ONE) * 65535.0;
+        let q = ((uv - self.uv_min) / (self.uv_max - self.uv_min)).clamp(DVec2::ZERO, DVec2::ONE)
+            * 65535.0;
         ((q.x.round() as u32) << 16) | q.y.round() as u32
     }
 
@@ -308,7 +317,11 @@ mod tests {
     fn flat_square() {
         let f = |code: Vec<Op>| Arc::new(Function::new(3, code).unwrap());
         let p = Parametric::new(
-            [f(vec![Op::Arg(0)]), f(vec![Op::Arg(1)]), f(vec![Op::Const(0.0)])],
+            [
+                f(vec![Op::Arg(0)]),
+                f(vec![Op::Arg(1)]),
+                f(vec![Op::Const(0.0)]),
+            ],
             2,
             Container::Box(DVec3::splat(-2.0), DVec3::splat(2.0)),
             DVec2::ZERO,
@@ -322,6 +335,9 @@ mod tests {
         assert!((t - 5.0).abs() < 0.01, "{t}");
         let n = p.normals(ray.at(t), part).0.normalize();
         assert!(n.z.abs() > 0.999, "{n}");
-        assert!(p.intersect(&Ray::new(DVec3::new(1.3, 0.6, -5.0), DVec3::Z)).is_empty());
+        assert!(
+            p.intersect(&Ray::new(DVec3::new(1.3, 0.6, -5.0), DVec3::Z))
+                .is_empty()
+        );
     }
 }

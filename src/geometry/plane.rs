@@ -13,12 +13,10 @@ pub struct Plane {
 }
 
 impl Plane {
-
     /// Outward unit normal.
     pub fn normal(&self) -> DVec3 {
         self.normal
     }
-
 }
 
 impl super::shape::Surface for Plane {

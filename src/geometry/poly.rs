@@ -131,7 +131,10 @@ pub fn any_root_in<const N: usize>(
     accept: impl Fn(f64) -> bool,
 ) -> bool {
     if degree <= 1 || lo > hi || c[degree] == 0.0 {
-        return roots_in(c, degree, lo, hi).as_slice().iter().any(|&t| accept(t));
+        return roots_in(c, degree, lo, hi)
+            .as_slice()
+            .iter()
+            .any(|&t| accept(t));
     }
     let d = derivative(c, degree);
     monotonic_pieces(c, &d, degree, (lo, hi), |piece| match piece {
@@ -144,7 +147,14 @@ pub fn any_root_in<const N: usize>(
 
 /// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to
 /// bisection whenever a step leaves the bracket.
-fn refine<const N: usize>(c: &[f64; N], d: &[f64; N], degree: usize, mut a: f64, mut b: f64, fa: f64) -> f64 {
+fn refine<const N: usize>(
+    c: &[f64; N],
+    d: &[f64; N],
+    degree: usize,
+    mut a: f64,
+    mut b: f64,
+    fa: f64,
+) -> f64 {
     let rising = fa < 0.0;
     let mut t = 0.5 * (a + b);
     for _ in 0..100 {
@@ -185,15 +195,29 @@ mod tests {
         for lift in [0.0, 0.5, 0.99, 1.1, 30.0] {
             let mut c = four;
             c[0] += lift;
-            for (lo, hi) in [(0.0, 10.0), (1.5, 2.5), (2.2, 2.8), (-5.0, 0.5), (3.9, 3.95)] {
+            for (lo, hi) in [
+                (0.0, 10.0),
+                (1.5, 2.5),
+                (2.2, 2.8),
+                (-5.0, 0.5),
+                (3.9, 3.95),
+            ] {
                 let found = roots_in(&c, 4, lo, hi);
                 for sure in [(lo, hi), (lo + 0.3, hi - 0.3), (f64::MAX, f64::MIN)] {
                     for cut in [f64::MIN, 2.5, 3.5] {
                         let accept = |t: f64| t > cut;
                         let expected = found.as_slice().iter().any(|&t| accept(t));
                         // (`sure` must lie where every root is accepted.)
-                        let sure = if cut > lo { (cut.max(sure.0), sure.1) } else { sure };
-                        assert_eq!(any_root_in(&c, 4, (lo, hi), sure, accept), expected, "{lift} {lo} {hi} {sure:?} {cut}");
+                        let sure = if cut > lo {
+                            (cut.max(sure.0), sure.1)
+                        } else {
+                            sure
+                        };
+                        assert_eq!(
+                            any_root_in(&c, 4, (lo, hi), sure, accept),
+                            expected,
+                            "{lift} {lo} {hi} {sure:?} {cut}"
+                        );
                     }
                 }
             }
@@ -262,7 +286,11 @@ mod tests {
         let roots = roots_in(&c, 10, 0.0, 1.0);
         assert_eq!(roots.len, 10, "{:?}", roots.as_slice());
         for (i, t) in roots.as_slice().iter().enumerate() {
-            assert!((t - (i + 1) as f64 * 0.09).abs() < 1e-9, "{:?}", roots.as_slice());
+            assert!(
+                (t - (i + 1) as f64 * 0.09).abs() < 1e-9,
+                "{:?}",
+                roots.as_slice()
+            );
         }
     }
 

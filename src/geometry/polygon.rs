@@ -166,11 +166,18 @@ mod tests {
         assert_eq!(s.intersect(&down(0.5, 0.5)).as_slice(), &[5.0]);
         assert!(s.intersect(&down(2.0, 2.0)).is_empty(), "the hole");
         assert!(s.intersect(&down(5.0, 2.0)).is_empty(), "outside");
-        assert!(s.intersect(&Ray::new(DVec3::new(-1.0, 2.0, 0.0), DVec3::X)).is_empty());
+        assert!(
+            s.intersect(&Ray::new(DVec3::new(-1.0, 2.0, 0.0), DVec3::X))
+                .is_empty()
+        );
         assert_eq!(s.normals(DVec3::ZERO, 0).0.abs(), DVec3::Z);
         // Collinear or not flat: never hit.
         let z = Ray::new(DVec3::new(0.2, 0.1, -5.0), DVec3::Z);
-        assert!(Polygon::new(&[DVec3::ZERO, DVec3::X, 2.0 * DVec3::X, DVec3::ZERO]).intersect(&z).is_empty());
+        assert!(
+            Polygon::new(&[DVec3::ZERO, DVec3::X, 2.0 * DVec3::X, DVec3::ZERO])
+                .intersect(&z)
+                .is_empty()
+        );
         let bent = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z, DVec3::ZERO];
         assert!(Polygon::new(&bent).intersect(&z).is_empty());
     }

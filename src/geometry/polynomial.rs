@@ -29,7 +29,9 @@ impl Polynomial {
     pub fn value(&self, p: DVec3) -> f64 {
         self.terms
             .iter()
-            .map(|(c, [i, j, k])| c * p.x.powi(*i as i32) * p.y.powi(*j as i32) * p.z.powi(*k as i32))
+            .map(|(c, [i, j, k])| {
+                c * p.x.powi(*i as i32) * p.y.powi(*j as i32) * p.z.powi(*k as i32)
+            })
             .sum()
     }
 
@@ -141,12 +143,19 @@ mod tests {
         let r = Ray::new(DVec3::new(0.0, 0.6, -4.0), DVec3::new(0.0, 0.0, 2.0));
         let c = s.intersect(&r);
         assert_eq!(c.as_slice().len(), 2);
-        assert!((c.as_slice()[0] - (4.0 - 0.8) / 2.0).abs() < 1e-12, "{:?}", c.as_slice());
+        assert!(
+            (c.as_slice()[0] - (4.0 - 0.8) / 2.0).abs() < 1e-12,
+            "{:?}",
+            c.as_slice()
+        );
         assert!((c.as_slice()[1] - (4.0 + 0.8) / 2.0).abs() < 1e-12);
         let p = r.at(c.as_slice()[0]);
         assert!((s.normals(p, 0).0.normalize() - p).length() < 1e-9);
         assert!(s.contains(DVec3::splat(0.5)) && !s.contains(DVec3::ONE));
-        assert!(s.intersect(&Ray::new(DVec3::new(2.0, 0.0, -4.0), DVec3::Z)).is_empty());
+        assert!(
+            s.intersect(&Ray::new(DVec3::new(2.0, 0.0, -4.0), DVec3::Z))
+                .is_empty()
+        );
         // The torus R = 1, r = 0.25: (x² + y² + z² + R² − r²)² − 4R²(x² + z²); a ray along x
         // through the centre crosses it four times, at ±0.75 and ±1.25.
         let k = 1.0 - 0.0625;

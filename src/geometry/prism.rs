@@ -31,7 +31,13 @@ const SIDE: u32 = 2;
 
 impl Prism {
     /// A prism of `degree` (1 to 3) segments between heights `h1 ≤ h2`.
-    pub fn new(conic: bool, degree: u8, (h1, h2): (f64, f64), closed: bool, segments: Vec<CurveSegment>) -> Prism {
+    pub fn new(
+        conic: bool,
+        degree: u8,
+        (h1, h2): (f64, f64),
+        closed: bool,
+        segments: Vec<CurveSegment>,
+    ) -> Prism {
         let (lo, hi) = segments.iter().fold(
             (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
             |(lo, hi), s| (lo.min(s.lo), hi.max(s.hi)),
@@ -93,7 +99,11 @@ impl Prism {
                 }
                 let k = (h - p.y) / d.y;
                 let q = p + k * d;
-                let (u, v) = if self.conic { (q.x / h, q.z / h) } else { (q.x, q.z) };
+                let (u, v) = if self.conic {
+                    (q.x / h, q.z / h)
+                } else {
+                    (q.x, q.z)
+                };
                 if self.in_curve(u, v) {
                     hit(k, part);
                 }
@@ -102,7 +112,11 @@ impl Prism {
         if d.x.abs() <= EPSILON && d.z.abs() <= EPSILON {
             return;
         }
-        let (k1, k2, k3) = (p.z * d.y - p.y * d.z, p.y * d.x - p.x * d.y, p.x * d.z - p.z * d.x);
+        let (k1, k2, k3) = (
+            p.z * d.y - p.y * d.z,
+            p.y * d.x - p.x * d.y,
+            p.x * d.z - p.z * d.x,
+        );
         for (j, s) in self.segments.iter().enumerate() {
             let c: [f64; 4] = if self.conic {
                 std::array::from_fn(|i| s.u[i] * k1 + s.v[i] * k2 + if i == 3 { k3 } else { 0.0 })
@@ -192,14 +206,24 @@ impl super::shape::Surface for Prism {
         }
         let (lo, hi) = if self.conic {
             // The curve scaled by each end height.
-            let corners = [self.lo * self.h1, self.hi * self.h1, self.lo * self.h2, self.hi * self.h2];
+            let corners = [
+                self.lo * self.h1,
+                self.hi * self.h1,
+                self.lo * self.h2,
+                self.hi * self.h2,
+            ];
             corners
                 .iter()
-                .fold((corners[0], corners[0]), |(lo, hi), c| (lo.min(*c), hi.max(*c)))
+                .fold((corners[0], corners[0]), |(lo, hi), c| {
+                    (lo.min(*c), hi.max(*c))
+                })
         } else {
             (self.lo, self.hi)
         };
-        Some((DVec3::new(lo.x, self.h1, lo.y), DVec3::new(hi.x, self.h2, hi.y)))
+        Some((
+            DVec3::new(lo.x, self.h1, lo.y),
+            DVec3::new(hi.x, self.h2, hi.y),
+        ))
     }
 
     fn for_each_crossing(&self, ray: &Ray, f: impl FnMut(f64, u32)) {
@@ -238,8 +262,14 @@ mod tests {
         let (n, _) = p.normals(DVec3::new(0.0, 1.0, 0.5), c.parts()[0]);
         assert!(n.normalize().dot(DVec3::X).abs() > 0.999);
         // Misses: above the top going sideways, and beside it.
-        assert!(p.intersect(&Ray::new(DVec3::new(-1.0, 3.0, 0.5), DVec3::X)).is_empty());
-        assert!(p.intersect(&Ray::new(DVec3::new(2.0, 5.0, 0.5), DVec3::NEG_Y)).is_empty());
+        assert!(
+            p.intersect(&Ray::new(DVec3::new(-1.0, 3.0, 0.5), DVec3::X))
+                .is_empty()
+        );
+        assert!(
+            p.intersect(&Ray::new(DVec3::new(2.0, 5.0, 0.5), DVec3::NEG_Y))
+                .is_empty()
+        );
         // Inside is half-open in y.
         assert!(p.contains(DVec3::new(0.5, 0.0, 0.5)));
         assert!(!p.contains(DVec3::new(0.5, 2.0, 0.5)));
@@ -262,7 +292,10 @@ mod tests {
         assert!(!p.contains(DVec3::new(1.5, 1.2, 0.2)));
         // Transformed: a prism moved up one unit is a translated object; its bounds.
         let (lo, hi) = p.bounds().unwrap();
-        assert_eq!((lo, hi), (DVec3::new(0.0, 0.0, 0.0), DVec3::new(2.0, 2.0, 2.0)));
+        assert_eq!(
+            (lo, hi),
+            (DVec3::new(0.0, 0.0, 0.0), DVec3::new(2.0, 2.0, 2.0))
+        );
     }
 
     /// Catmull-Rom circle-like curve: a ray along its axis of symmetry meets it twice.

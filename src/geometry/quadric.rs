@@ -53,7 +53,9 @@ impl super::shape::Surface for Quadric {
         let (s, m, l) = (self.square, self.mixed, self.linear);
         let (o, d) = (ray.origin, ray.direction);
         // POV-Ray's half-b form.
-        let a = d.x * (s.x * d.x + m.x * d.y + m.y * d.z) + d.y * (s.y * d.y + m.z * d.z) + d.z * s.z * d.z;
+        let a = d.x * (s.x * d.x + m.x * d.y + m.y * d.z)
+            + d.y * (s.y * d.y + m.z * d.z)
+            + d.z * s.z * d.z;
         let b = d.x * (s.x * o.x + 0.5 * (m.x * o.y + m.y * o.z + l.x))
             + d.y * (s.y * o.y + 0.5 * (m.x * o.x + m.z * o.z + l.y))
             + d.z * (s.z * o.z + 0.5 * (m.y * o.x + m.z * o.y + l.z));
@@ -120,9 +122,22 @@ mod tests {
         let p = r.at(c.as_slice()[0]);
         assert!((sphere().normals(p, 0).0.normalize() - p).length() < 1e-9);
         // Misses, tangent and inside.
-        assert!(sphere().intersect(&Ray::new(DVec3::new(2.0, 0.0, -5.0), DVec3::Z)).is_empty());
-        assert!(sphere().intersect(&Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z)).is_empty());
-        assert_eq!(sphere().intersect(&Ray::new(DVec3::ZERO, DVec3::Z)).as_slice(), &[1.0]);
+        assert!(
+            sphere()
+                .intersect(&Ray::new(DVec3::new(2.0, 0.0, -5.0), DVec3::Z))
+                .is_empty()
+        );
+        assert!(
+            sphere()
+                .intersect(&Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z))
+                .is_empty()
+        );
+        assert_eq!(
+            sphere()
+                .intersect(&Ray::new(DVec3::ZERO, DVec3::Z))
+                .as_slice(),
+            &[1.0]
+        );
         assert!(sphere().contains(DVec3::splat(0.5)));
         assert!(!sphere().contains(DVec3::splat(0.6)));
     }
@@ -145,8 +160,17 @@ mod tests {
             ..sphere()
         };
         assert!(cylinder.bounds().is_none());
-        assert!(cylinder.intersect(&Ray::new(DVec3::ZERO, DVec3::Y)).is_empty());
-        assert_eq!(cylinder.intersect(&Ray::new(DVec3::new(-3.0, 7.0, 0.0), DVec3::X)).as_slice(), &[2.0, 4.0]);
+        assert!(
+            cylinder
+                .intersect(&Ray::new(DVec3::ZERO, DVec3::Y))
+                .is_empty()
+        );
+        assert_eq!(
+            cylinder
+                .intersect(&Ray::new(DVec3::new(-3.0, 7.0, 0.0), DVec3::X))
+                .as_slice(),
+            &[2.0, 4.0]
+        );
     }
 
     #[test]

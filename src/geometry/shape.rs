@@ -12,10 +12,9 @@
 //! (`scene::build`), and the evaluator reads its syntax.
 
 use super::{
-    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Isosurface, JuliaFractal, Lathe, Ovus, Parametric, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep, Superellipsoid, Text,
-    Torus,
-    TriangleMesh,
-    counters,
+    Blob, Cone, Crossings, Cuboid, Disc, HeightField, Isosurface, JuliaFractal, Lathe, Ovus,
+    Parametric, Plane, Polygon, Polynomial, Prism, Quadric, Ray, Sor, Sphere, SphereSweep,
+    Superellipsoid, Text, Torus, TriangleMesh, counters,
 };
 use glam::DVec3;
 use std::sync::Arc;
@@ -288,7 +287,11 @@ mod tests {
     /// stay small.
     #[test]
     fn a_shape_stays_small() {
-        assert!(std::mem::size_of::<Shape>() <= 56, "{}", std::mem::size_of::<Shape>());
+        assert!(
+            std::mem::size_of::<Shape>() <= 56,
+            "{}",
+            std::mem::size_of::<Shape>()
+        );
         assert_eq!(KINDS.len(), TRIANGLE + 1);
         assert_eq!(KINDS[TRIANGLE], "Triangle");
     }

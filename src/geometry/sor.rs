@@ -23,7 +23,12 @@ pub struct SorPiece {
 impl SorPiece {
     /// The piece with coefficients `c` over heights `y1 ≤ y2`.
     pub fn new(c: [f64; 4], y1: f64, y2: f64) -> SorPiece {
-        let mut piece = SorPiece { c, y1, y2, radius: 0.0 };
+        let mut piece = SorPiece {
+            c,
+            y1,
+            y2,
+            radius: 0.0,
+        };
         let d = [c[2], 2.0 * c[1], 3.0 * c[0], 0.0, 0.0, 0.0, 0.0];
         let turning = roots_in(&d, 2, y1, y2);
         let most = turning
@@ -116,7 +121,9 @@ impl Sor {
         let rho2 = p.x * p.x + p.z * p.z;
         for (j, s) in self.pieces.iter().enumerate() {
             // The distances where the ray is inside the piece's cylinder and height range.
-            let Some((lo, hi)) = span(p, d, s.radius, s.y1, s.y2, -shift) else { continue };
+            let Some((lo, hi)) = span(p, d, s.radius, s.y1, s.y2, -shift) else {
+                continue;
+            };
             let [ca, cb, cc, _] = s.c;
             let (py, dy) = (p.y, d.y);
             // x² + z² = f(y) along the ray, as a cubic in the distance k.
@@ -243,7 +250,11 @@ mod tests {
         let c = s.intersect(&Ray::new(DVec3::new(0.2, 5.0, 0.0), DVec3::NEG_Y));
         assert_eq!(c.as_slice(), &[3.0, 5.0]);
         assert_eq!(c.parts(), &[CAP, BASE]);
-        assert!(can(false).intersect(&Ray::new(DVec3::new(0.2, 5.0, 0.0), DVec3::NEG_Y)).is_empty());
+        assert!(
+            can(false)
+                .intersect(&Ray::new(DVec3::new(0.2, 5.0, 0.0), DVec3::NEG_Y))
+                .is_empty()
+        );
         assert!(s.contains(DVec3::new(0.5, 1.0, 0.5)));
         assert!(!s.contains(DVec3::new(0.9, 1.0, 0.9)));
         assert!(!s.contains(DVec3::new(0.0, 2.5, 0.0)));

@@ -13,12 +13,10 @@ pub struct Sphere {
 }
 
 impl Sphere {
-
     /// Outward unit normal at a point on the sphere.
     pub fn normal(&self, p: DVec3) -> DVec3 {
         (p - self.centre).normalize()
     }
-
 }
 
 impl super::shape::Surface for Sphere {
@@ -58,7 +56,10 @@ impl super::shape::Surface for Sphere {
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
-        Some((self.centre - self.radius.abs(), self.centre + self.radius.abs()))
+        Some((
+            self.centre - self.radius.abs(),
+            self.centre + self.radius.abs(),
+        ))
     }
 
     /// POV-Ray's sphere coordinates: u the longitude from +x towards +z (0 to 1), v the

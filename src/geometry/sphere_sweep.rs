@@ -76,26 +76,36 @@ impl Segment {
             hull_radius: 0.0,
         };
         s.hull_centre = s.centre_at(0.5);
-        let reach: f64 = (1..=degree).map(|k| centre[k].length() * (1.0 - 0.5f64.powi(k as i32))).sum();
+        let reach: f64 = (1..=degree)
+            .map(|k| centre[k].length() * (1.0 - 0.5f64.powi(k as i32)))
+            .sum();
         let thickness: f64 = radius[..=degree].iter().map(|r| r.abs()).sum();
         s.hull_radius = (reach + thickness) * (1.0 + 1e-9) + 1e-12;
         s
     }
 
     fn centre_at(&self, u: f64) -> DVec3 {
-        (0..=self.degree).rev().fold(DVec3::ZERO, |acc, k| acc * u + self.centre[k])
+        (0..=self.degree)
+            .rev()
+            .fold(DVec3::ZERO, |acc, k| acc * u + self.centre[k])
     }
 
     fn radius_at(&self, u: f64) -> f64 {
-        (0..=self.degree).rev().fold(0.0, |acc, k| acc * u + self.radius[k])
+        (0..=self.degree)
+            .rev()
+            .fold(0.0, |acc, k| acc * u + self.radius[k])
     }
 
     fn centre_slope(&self, u: f64) -> DVec3 {
-        (1..=self.degree).rev().fold(DVec3::ZERO, |acc, k| acc * u + k as f64 * self.centre[k])
+        (1..=self.degree)
+            .rev()
+            .fold(DVec3::ZERO, |acc, k| acc * u + k as f64 * self.centre[k])
     }
 
     fn radius_slope(&self, u: f64) -> f64 {
-        (1..=self.degree).rev().fold(0.0, |acc, k| acc * u + k as f64 * self.radius[k])
+        (1..=self.degree)
+            .rev()
+            .fold(0.0, |acc, k| acc * u + k as f64 * self.radius[k])
     }
 
     /// `G(u) = |p − C(u)|² − r(u)²`, negative where `p` is inside the sphere at `u`.
@@ -121,7 +131,12 @@ impl Segment {
         let mut best = (value(0.0), 0.0);
         let candidates = roots_in(&slope, n - 1, 0.0, 1.0);
         let crossings = roots_in(&g, n, 0.0, 1.0);
-        for &u in candidates.as_slice().iter().chain(crossings.as_slice()).chain(&[1.0]) {
+        for &u in candidates
+            .as_slice()
+            .iter()
+            .chain(crossings.as_slice())
+            .chain(&[1.0])
+        {
             let v = value(u);
             if v < best.0 {
                 best = (v, u);
@@ -157,10 +172,14 @@ fn product(a: &[f64; 11], da: usize, b: &[f64; 11], db: usize) -> [f64; 11] {
 /// `[0, 1]` all have one sign (POV-Ray's shortcut before solving).
 fn no_root_inside(c: &[f64; 11], degree: usize) -> bool {
     // b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · c_j.
-    let choose = |n: usize, k: usize| -> f64 { (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64) };
+    let choose = |n: usize, k: usize| -> f64 {
+        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+    };
     let (mut positive, mut negative) = (true, true);
     for i in 0..=degree {
-        let b: f64 = (0..=i).map(|j| choose(i, j) / choose(degree, j) * c[j]).sum();
+        let b: f64 = (0..=i)
+            .map(|j| choose(i, j) / choose(degree, j) * c[j])
+            .sum();
         positive &= b >= 0.0;
         negative &= b <= 0.0;
         if !(positive || negative) {
@@ -243,7 +262,11 @@ impl SphereSweep {
                 }
             }
             SweepCurve::CatmullRom | SweepCurve::BSpline => {
-                let m = if curve == SweepCurve::CatmullRom { &CATMULL_ROM } else { &B_SPLINE };
+                let m = if curve == SweepCurve::CatmullRom {
+                    &CATMULL_ROM
+                } else {
+                    &B_SPLINE
+                };
                 for w in spheres.windows(4) {
                     let mut centre = [DVec3::ZERO; 4];
                     let mut radius = [0.0; 4];
@@ -257,15 +280,23 @@ impl SphereSweep {
                 }
             }
         }
-        let mut joints: Vec<(DVec3, f64)> = segments.iter().map(|s| (s.centre_at(0.0), s.radius_at(0.0))).collect();
+        let mut joints: Vec<(DVec3, f64)> = segments
+            .iter()
+            .map(|s| (s.centre_at(0.0), s.radius_at(0.0)))
+            .collect();
         if let Some(last) = segments.last() {
             joints.push((last.centre_at(1.0), last.radius_at(1.0)));
         }
         // POV-Ray's box: the modelling spheres, twice their radius for Catmull-Rom.
-        let grow = if curve == SweepCurve::CatmullRom { 2.0 } else { 1.0 };
-        let bounds = spheres.iter().fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &(c, r)| {
-            (lo.min(c - grow * r), hi.max(c + grow * r))
-        });
+        let grow = if curve == SweepCurve::CatmullRom {
+            2.0
+        } else {
+            1.0
+        };
+        let bounds = spheres.iter().fold(
+            (DVec3::INFINITY, DVec3::NEG_INFINITY),
+            |(lo, hi), &(c, r)| (lo.min(c - grow * r), hi.max(c + grow * r)),
+        );
         SphereSweep {
             segments: segments.into_boxed_slice(),
             joints: joints.into_boxed_slice(),
@@ -287,7 +318,11 @@ impl SphereSweep {
             if let Some(pair) = line.sphere(centre, r) {
                 for (k, normal) in pair {
                     if k.abs() < MAX_DISTANCE {
-                        out.push(Candidate { k, normal, part: (i as u32) << 2 | SPHERE });
+                        out.push(Candidate {
+                            k,
+                            normal,
+                            part: (i as u32) << 2 | SPHERE,
+                        });
                     }
                 }
             }
@@ -311,11 +346,18 @@ impl SphereSweep {
         let (o, d) = (line.near, line.d);
         // The discs that close the tube at u = 0 and u = 1.
         for (u, tag, sign) in [(0.0, START_DISC, -1.0), (1.0, END_DISC, 1.0)] {
-            let (c, r, dc, dr) = (s.centre_at(u), s.radius_at(u), s.centre_slope(u), s.radius_slope(u));
+            let (c, r, dc, dr) = (
+                s.centre_at(u),
+                s.radius_at(u),
+                s.centre_slope(u),
+                s.radius_slope(u),
+            );
             let along = d.dot(dc);
             if along.abs() > EPSILON {
                 let k = -((o - c).dot(dc) + r * dr) / along;
-                if (k + line.shift).abs() < MAX_DISTANCE && ((o - c) + k * d).length_squared() < r * r {
+                if (k + line.shift).abs() < MAX_DISTANCE
+                    && ((o - c) + k * d).length_squared() < r * r
+                {
                     out.push(Candidate {
                         k: k + line.shift,
                         normal: sign * dc,
@@ -358,7 +400,11 @@ impl SphereSweep {
             } else if let Some(pair) = line.sphere(s.centre_at(u), s.radius_at(u)) {
                 // (POV-Ray takes both crossings of the sphere at u for cubic tubes.)
                 for (k, normal) in pair {
-                    out.push(Candidate { k, normal, part: index | TUBE });
+                    out.push(Candidate {
+                        k,
+                        normal,
+                        part: index | TUBE,
+                    });
                 }
             }
         }
@@ -423,7 +469,9 @@ impl super::shape::Surface for SphereSweep {
     /// root in [0, 1] (so a point deeper than every sphere of a segment counts as outside, as
     /// in POV-Ray).
     fn contains(&self, p: DVec3) -> bool {
-        self.segments.iter().any(|s| roots_in(&s.gap(p), 2 * s.degree, 0.0, 1.0).len > 0)
+        self.segments
+            .iter()
+            .any(|s| roots_in(&s.gap(p), 2 * s.degree, 0.0, 1.0).len > 0)
     }
 
     fn bounds(&self) -> Option<(DVec3, DVec3)> {
@@ -452,12 +500,18 @@ mod tests {
     fn capsule() {
         let s = SphereSweep::new(
             SweepCurve::Linear,
-            &[(DVec3::new(-1.0, 0.0, 0.0), 0.5), (DVec3::new(1.0, 0.0, 0.0), 0.5)],
+            &[
+                (DVec3::new(-1.0, 0.0, 0.0), 0.5),
+                (DVec3::new(1.0, 0.0, 0.0), 0.5),
+            ],
             1e-6,
         );
         let across = hits(&s, DVec3::new(0.3, 5.0, 0.0), DVec3::NEG_Y);
         assert_eq!(across.len(), 2, "{across:?}");
-        assert!((across[0] - 4.5).abs() < 1e-9 && (across[1] - 5.5).abs() < 1e-9, "{across:?}");
+        assert!(
+            (across[0] - 4.5).abs() < 1e-9 && (across[1] - 5.5).abs() < 1e-9,
+            "{across:?}"
+        );
         let c = s.intersect(&Ray::new(DVec3::new(0.3, 5.0, 0.0), DVec3::NEG_Y));
         let (t, part) = c.first_part().unwrap();
         let n = s.normals(DVec3::new(0.3, 5.0 - t, 0.0), part).0.normalize();
@@ -465,7 +519,10 @@ mod tests {
         // Along the axis: in at x = −1.5, out at 1.5.
         let along = hits(&s, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
         assert_eq!(along.len(), 2, "{along:?}");
-        assert!((along[0] - 3.5).abs() < 1e-9 && (along[1] - 6.5).abs() < 1e-9, "{along:?}");
+        assert!(
+            (along[0] - 3.5).abs() < 1e-9 && (along[1] - 6.5).abs() < 1e-9,
+            "{along:?}"
+        );
         // Past the end: only the end sphere.
         let cap = hits(&s, DVec3::new(1.3, 5.0, 0.0), DVec3::NEG_Y);
         let half = (0.25f64 - 0.09).sqrt();
@@ -492,14 +549,18 @@ mod tests {
         assert!((n.x - 0.1875).abs() < 1e-6 && n.y > 0.98, "{n} at {p}");
         // The surface point lies on the sphere the normal comes from.
         let u = s.segments[0].touching(p);
-        assert!(((p - s.segments[0].centre_at(u)).length() - s.segments[0].radius_at(u)).abs() < 1e-9);
+        assert!(
+            ((p - s.segments[0].centre_at(u)).length() - s.segments[0].radius_at(u)).abs() < 1e-9
+        );
     }
 
     /// A B-spline sweep through a straight row of equal spheres is a straight tube; a
     /// Catmull-Rom one bends through its middle spheres.
     #[test]
     fn cubic_sweeps() {
-        let row: Vec<(DVec3, f64)> = (0..5).map(|i| (DVec3::new(i as f64, 0.0, 0.0), 0.3)).collect();
+        let row: Vec<(DVec3, f64)> = (0..5)
+            .map(|i| (DVec3::new(i as f64, 0.0, 0.0), 0.3))
+            .collect();
         let s = SphereSweep::new(SweepCurve::BSpline, &row, 1e-6);
         for x in [1.2, 1.5, 2.0, 2.7] {
             let h = hits(&s, DVec3::new(x, 4.0, 0.0), DVec3::NEG_Y);

@@ -79,4 +79,3 @@ impl CurveSegment {
         best.1
     }
 }
-

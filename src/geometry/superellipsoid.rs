@@ -57,7 +57,11 @@ fn g(a: f64, b: f64, p: f64) -> f64 {
         return 0.0;
     }
     let sum = 1.0 + power(small / big, p);
-    if sum == 1.0 { big } else { big * power(sum, 1.0 / p) }
+    if sum == 1.0 {
+        big
+    } else {
+        big * power(sum, 1.0 / p)
+    }
 }
 
 impl Superellipsoid {
@@ -70,7 +74,11 @@ impl Superellipsoid {
 
     /// POV-Ray's function: negative inside, zero on the surface.
     fn f(&self, p: DVec3) -> f64 {
-        g(g(p.x.abs(), p.y.abs(), self.power[0]), p.z.abs(), self.power[2]) - 1.0
+        g(
+            g(p.x.abs(), p.y.abs(), self.power[0]),
+            p.z.abs(),
+            self.power[2],
+        ) - 1.0
     }
 
     /// The crossing between `p0` (value `v0`) and `p1` (value `v1`) of opposite signs.
@@ -89,7 +97,11 @@ impl Superellipsoid {
             if v2 * v3 < 0.0 {
                 (v0, p0, v1, p1) = (v2, p2, v3, p3);
             } else {
-                let (v, p) = if v2.abs() < v3.abs() { (v2, p2) } else { (v3, p3) };
+                let (v, p) = if v2.abs() < v3.abs() {
+                    (v2, p2)
+                } else {
+                    (v3, p3)
+                };
                 if v0 * v < 0.0 {
                     (v1, p1) = (v, p);
                 } else {
@@ -101,7 +113,15 @@ impl Superellipsoid {
     }
 
     /// A crossing on a piece whose ends have the same sign: secant steps from its start.
-    fn check_hit2(&self, o: DVec3, d: DVec3, t0: f64, p0: DVec3, mut v0: f64, t1: f64) -> Option<f64> {
+    fn check_hit2(
+        &self,
+        o: DVec3,
+        d: DVec3,
+        t0: f64,
+        p0: DVec3,
+        mut v0: f64,
+        t1: f64,
+    ) -> Option<f64> {
         let (mut dt0, mut dt1) = (t0, t0 + 1e-4 * (t1 - t0));
         let maxdelta = t1 - t0;
         let mut i = 0;
@@ -133,7 +153,9 @@ impl Superellipsoid {
     fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) {
         let len = ray.direction.length();
         let (o, d) = (ray.origin, ray.direction / len);
-        let Some((t1, t2)) = box_span(o, d) else { return };
+        let Some((t1, t2)) = box_span(o, d) else {
+            return;
+        };
         if t2 < DEPTH_TOLERANCE {
             return;
         }
@@ -223,10 +245,18 @@ impl super::shape::Surface for Superellipsoid {
         if p.x.abs() > p.y.abs() {
             r = power((p.y / p.x).abs(), e);
             out.x = (1.0 - z2n) / p.x;
-            out.y = if p.y != 0.0 { (1.0 - z2n) * r / p.y } else { 0.0 };
+            out.y = if p.y != 0.0 {
+                (1.0 - z2n) * r / p.y
+            } else {
+                0.0
+            };
         } else if p.y != 0.0 {
             r = power((p.x / p.y).abs(), e);
-            out.x = if p.x != 0.0 { (1.0 - z2n) * r / p.x } else { 0.0 };
+            out.x = if p.x != 0.0 {
+                (1.0 - z2n) * r / p.x
+            } else {
+                0.0
+            };
             out.y = (1.0 - z2n) / p.y;
         }
         if p.z != 0.0 {
@@ -262,19 +292,32 @@ mod tests {
         let s = Superellipsoid::new(1.0, 1.0);
         let c = s.intersect(&Ray::new(DVec3::new(-5.0, 0.3, 0.2), DVec3::X));
         let expected = 5.0 - (1.0f64 - 0.09 - 0.04).sqrt();
-        assert!((c.first().unwrap() - expected).abs() < 1e-8, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - expected).abs() < 1e-8,
+            "{:?}",
+            c.as_slice()
+        );
         let mut all = Vec::new();
-        s.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.3, 0.2), DVec3::X), |t, _| all.push(t));
+        s.for_each_crossing(&Ray::new(DVec3::new(-5.0, 0.3, 0.2), DVec3::X), |t, _| {
+            all.push(t)
+        });
         assert_eq!(all.len(), 2);
         let (n, _) = s.normals(DVec3::new(0.6, 0.0, 0.8), 0);
         assert!(n.normalize().dot(DVec3::new(0.6, 0.0, 0.8)) > 0.9999);
         assert!(s.contains(DVec3::new(0.5, 0.5, 0.5)));
         assert!(!s.contains(DVec3::new(0.7, 0.7, 0.2)));
-        assert!(s.intersect(&Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X)).is_empty());
+        assert!(
+            s.intersect(&Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X))
+                .is_empty()
+        );
         // Small exponents: nearly a box, met near its face.
         let b = Superellipsoid::new(0.1, 0.1);
         let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.3, 0.2), DVec3::X));
-        assert!((c.first().unwrap() - 4.0).abs() < 1e-3, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - 4.0).abs() < 1e-3,
+            "{:?}",
+            c.as_slice()
+        );
         assert!(b.contains(DVec3::new(0.9, 0.9, 0.9)));
     }
 

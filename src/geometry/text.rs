@@ -164,7 +164,13 @@ impl Text {
                 continue;
             }
             let by_x = d.x.abs() >= EPSILON;
-            let along = |q: DVec2| if by_x { (q.x - p.x) / d.x } else { (q.y - p.y) / d.y };
+            let along = |q: DVec2| {
+                if by_x {
+                    (q.x - p.x) / d.x
+                } else {
+                    (q.y - p.y) / d.y
+                }
+            };
             let mut wall = |t: f64, i: usize| {
                 let z = p.z + t * d.z;
                 if (0.0..=self.depth).contains(&z) && keep(t) {
@@ -314,7 +320,12 @@ mod tests {
 
     fn line(a: (f64, f64), b: (f64, f64)) -> Edge {
         let (start, end) = (DVec2::new(a.0, a.1), DVec2::new(b.0, b.1));
-        Edge { start, control: start, end, curved: false }
+        Edge {
+            start,
+            control: start,
+            end,
+            curved: false,
+        }
     }
 
     /// A clockwise unit square with a counter-clockwise square hole.
@@ -342,15 +353,24 @@ mod tests {
         assert_eq!(c.as_slice(), &[1.0, 1.5]);
         assert_eq!(c.parts(), &[FRONT, BACK]);
         // Through the hole: nothing.
-        assert!(t.intersect(&Ray::new(DVec3::new(0.5, 0.5, -1.0), DVec3::Z)).is_empty());
+        assert!(
+            t.intersect(&Ray::new(DVec3::new(0.5, 0.5, -1.0), DVec3::Z))
+                .is_empty()
+        );
         // Sideways at mid depth: outer wall, hole's walls, outer wall.
         let c = t.intersect(&Ray::new(DVec3::new(-1.0, 0.5, 0.25), DVec3::X));
         assert_eq!(c.as_slice(), &[1.0, 1.25, 1.75, 2.0]);
         let (n, _) = t.normals(DVec3::new(0.0, 0.5, 0.25), c.parts()[0]);
         assert!(n.normalize().dot(DVec3::X) > 0.999, "{n}");
         // Miss above, and a ray beyond the depth.
-        assert!(t.intersect(&Ray::new(DVec3::new(-1.0, 1.5, 0.25), DVec3::X)).is_empty());
-        assert!(t.intersect(&Ray::new(DVec3::new(-1.0, 0.5, 0.75), DVec3::X)).is_empty());
+        assert!(
+            t.intersect(&Ray::new(DVec3::new(-1.0, 1.5, 0.25), DVec3::X))
+                .is_empty()
+        );
+        assert!(
+            t.intersect(&Ray::new(DVec3::new(-1.0, 0.5, 0.75), DVec3::X))
+                .is_empty()
+        );
         assert!(t.contains(DVec3::new(0.1, 0.5, 0.25)));
         assert!(!t.contains(DVec3::new(0.5, 0.5, 0.25)));
         assert!(!t.contains(DVec3::new(0.1, 0.5, 0.6)));
@@ -362,14 +382,23 @@ mod tests {
     fn curved_edges() {
         let start = DVec2::ZERO;
         let bump = vec![
-            Edge { start, control: DVec2::new(0.5, 1.0), end: DVec2::X, curved: true },
+            Edge {
+                start,
+                control: DVec2::new(0.5, 1.0),
+                end: DVec2::X,
+                curved: true,
+            },
             line((1.0, 0.0), (0.0, 0.0)),
         ];
         let t = Text::new(1.0, [bump]);
         assert!(t.contains(DVec3::new(0.5, 0.49, 0.5)));
         assert!(!t.contains(DVec3::new(0.5, 0.51, 0.5)));
         let c = t.intersect(&Ray::new(DVec3::new(0.5, 2.0, 0.5), DVec3::NEG_Y));
-        assert!((c.first().unwrap() - 1.5).abs() < 1e-12, "{:?}", c.as_slice());
+        assert!(
+            (c.first().unwrap() - 1.5).abs() < 1e-12,
+            "{:?}",
+            c.as_slice()
+        );
         let (n, _) = t.normals(DVec3::new(0.5, 0.5, 0.5), c.first_part().unwrap().1);
         assert!(n.normalize().dot(DVec3::Y).abs() > 0.999, "{n}");
     }

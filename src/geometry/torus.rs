@@ -22,7 +22,6 @@ pub struct Torus {
 }
 
 impl Torus {
-
     /// Coefficients of the quartic in `s` whose roots are where `o + s·d` (`|d| = 1`) meets the
     /// torus: with G = |p|² − R² − r², G² + 4R²(y² − r²) = 0. Their size grows with `|o|`, so
     /// [`Torus::intersect`] forms them near the torus.
@@ -89,7 +88,10 @@ impl Torus {
             Search::Any => {
                 // Inside the ray's own range, with room for the rounding of t.
                 let room = 1e-9 * (ray.tmax * length).abs().min(1e300).max(bound);
-                let sure = (ray.tmin * length - shift + room, ray.tmax * length - shift - room);
+                let sure = (
+                    ray.tmin * length - shift + room,
+                    ray.tmax * length - shift - room,
+                );
                 let hit = |s: f64| ray.contains((shift + s) / length);
                 return any_root_in(&c, 4, range, sure, hit);
             }
@@ -110,7 +112,6 @@ impl Torus {
         let g = p.length_squared() - self.major * self.major - self.minor * self.minor;
         g * p + DVec3::new(0.0, 2.0 * self.major * self.major * p.y, 0.0)
     }
-
 }
 
 impl super::shape::Surface for Torus {

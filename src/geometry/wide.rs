@@ -77,11 +77,19 @@ impl WideBvh {
         corners: impl Fn(usize) -> [DVec3; 3] + Sync + Send,
         (lo, hi): (DVec3, DVec3),
     ) -> WideBvh {
-        let centre = if lo.cmple(hi).all() { (lo + hi) * 0.5 } else { DVec3::ZERO };
+        let centre = if lo.cmple(hi).all() {
+            (lo + hi) * 0.5
+        } else {
+            DVec3::ZERO
+        };
         // Every stored coordinate is within half the box's largest side of the centre, give
         // or take its rounding to f32.
         let half = ((hi - lo) * 0.5).max_element();
-        let extent = if half.is_finite() { up(half) * (1.0 + 4.0 * UNIT) } else { 0.0 };
+        let extent = if half.is_finite() {
+            up(half) * (1.0 + 4.0 * UNIT)
+        } else {
+            0.0
+        };
         let mut tree = WideBvh {
             nodes: Vec::with_capacity(bvh.nodes.len() / 3 + 1),
             blocks: Vec::new(),
@@ -109,7 +117,12 @@ impl WideBvh {
                 entry
             } else {
                 // Open the widest inner child until there are four.
-                let mut kids = [node.first_index as usize, node.first_index as usize + 1, 0, 0];
+                let mut kids = [
+                    node.first_index as usize,
+                    node.first_index as usize + 1,
+                    0,
+                    0,
+                ];
                 let mut n = 2;
                 while n < 4 {
                     let area = |k: usize| bvh.nodes[k].aabb.half_area();
@@ -126,7 +139,11 @@ impl WideBvh {
                 }
                 let at = tree.nodes.len();
                 let empty = Vec4::splat(f32::NAN);
-                let mut new = Node { lo: [empty; 3], hi: [empty; 3], child: [EMPTY; 4] };
+                let mut new = Node {
+                    lo: [empty; 3],
+                    hi: [empty; 3],
+                    child: [EMPTY; 4],
+                };
                 for (i, &k) in kids[..n].iter().enumerate() {
                     let b = &bvh.nodes[k].aabb;
                     for axis in 0..3 {
@@ -317,7 +334,11 @@ impl FilterRay {
         // rounding, the product and the difference: under 9 units of the largest magnitude;
         // 16 leaves room for the exact test's own (double-precision) roundings.
         let magnitude = extent + o.abs().max_element() as f32;
-        let error = if magnitude < 1e15 { 16.0 * UNIT * magnitude } else { f32::INFINITY };
+        let error = if magnitude < 1e15 {
+            16.0 * UNIT * magnitude
+        } else {
+            f32::INFINITY
+        };
         let (ox, oy, oz) = (o.x, o.y, o.z);
         let (dx, dy, dz) = (d.x as f32, d.y as f32, d.z as f32);
         FilterRay {
@@ -366,7 +387,10 @@ impl FilterRay {
         let (kx, ky, kz) = (self.kx, self.ky, self.kz);
         let shear = |c: &[Vec4; 3]| {
             let z = c[kz] - self.origin[kz];
-            (c[kx] - self.origin[kx] - self.sx * z, c[ky] - self.origin[ky] - self.sy * z)
+            (
+                c[kx] - self.origin[kx] - self.sx * z,
+                c[ky] - self.origin[ky] - self.sy * z,
+            )
         };
         let (ax, ay) = shear(&block.corner[0]);
         let (bx, by) = shear(&block.corner[1]);
@@ -376,7 +400,13 @@ impl FilterRay {
         let w = bx * ay - by * ax;
         // |u − exact u| ≤ 4·E·S + 2·E² + 3·unit·2·S², with E the coordinate error and S the
         // largest sheared coordinate; rounded up generously.
-        let s = ax.abs().max(ay.abs()).max(bx.abs()).max(by.abs()).max(cx.abs()).max(cy.abs());
+        let s = ax
+            .abs()
+            .max(ay.abs())
+            .max(bx.abs())
+            .max(by.abs())
+            .max(cx.abs())
+            .max(cy.abs());
         let e = Vec4::splat(self.error);
         let bound = e * s * 5.0 + e * e * 3.0 + s * s * (8.0 * UNIT);
         let (lo, hi) = (-bound, bound);
@@ -396,7 +426,11 @@ struct Stack {
 
 impl Stack {
     fn new() -> Stack {
-        Stack { items: [(0, 0.0); 64], len: 0, spill: Vec::new() }
+        Stack {
+            items: [(0, 0.0); 64],
+            len: 0,
+            spill: Vec::new(),
+        }
     }
 
     #[inline(always)]
@@ -445,9 +479,15 @@ mod tests {
     /// Every triangle, tested exactly: the nearest crossing, whether any, and how many.
     fn brute(mesh: &[[DVec3; 3]], ray: &Ray) -> (Option<f64>, bool, usize) {
         let s = ShearedRay::new(ray.origin, ray.direction);
-        let ts: Vec<f64> =
-            mesh.iter().filter_map(|&[a, b, c]| s.intersect(a, b, c, ray.tmin, ray.tmax)).collect();
-        (ts.iter().copied().reduce(f64::min), !ts.is_empty(), ts.len())
+        let ts: Vec<f64> = mesh
+            .iter()
+            .filter_map(|&[a, b, c]| s.intersect(a, b, c, ray.tmin, ray.tmax))
+            .collect();
+        (
+            ts.iter().copied().reduce(f64::min),
+            !ts.is_empty(),
+            ts.len(),
+        )
     }
 
     #[test]
@@ -468,7 +508,13 @@ mod tests {
         // random points, exactly through corners and along edges (where the f32 filter must
         // not drop a triangle the exact test hits), and grazing.
         let mut rng = Rng(0x2545_F491_4F6C_DD1D);
-        for (offset, size) in [(0.0, 10.0), (1e4, 1.0), (1e6, 100.0), (3.0, 1e-4), (-2e5, 1e3)] {
+        for (offset, size) in [
+            (0.0, 10.0),
+            (1e4, 1.0),
+            (1e6, 100.0),
+            (3.0, 1e-4),
+            (-2e5, 1e3),
+        ] {
             let centre = DVec3::new(offset, -0.5 * offset, 0.25 * offset);
             // A grid of 24×24 cells (two triangles each), bumped, plus 300 random triangles.
             let n = 24;
@@ -497,9 +543,18 @@ mod tests {
                 }
                 faces.push([k, k + 1, k + 2]);
             }
-            let soup: Vec<[DVec3; 3]> =
-                faces.iter().map(|f| f.map(|i| vertices[i as usize])).collect();
-            let mesh = TriangleMesh::new(vertices.clone(), faces.clone(), vec![], vec![], vec![], vec![]);
+            let soup: Vec<[DVec3; 3]> = faces
+                .iter()
+                .map(|f| f.map(|i| vertices[i as usize]))
+                .collect();
+            let mesh = TriangleMesh::new(
+                vertices.clone(),
+                faces.clone(),
+                vec![],
+                vec![],
+                vec![],
+                vec![],
+            );
             for k in 0..3000 {
                 let origin = rng.point(centre, size * 3.0);
                 let target = match k % 4 {
@@ -525,9 +580,17 @@ mod tests {
                     ray.tmax = 1.0;
                 }
                 let (nearest, any, count) = brute(&soup, &ray);
-                assert_eq!(mesh.intersect(&ray).first(), nearest, "offset {offset}, ray {k}");
+                assert_eq!(
+                    mesh.intersect(&ray).first(),
+                    nearest,
+                    "offset {offset}, ray {k}"
+                );
                 assert_eq!(mesh.occluded(&ray), any, "offset {offset}, ray {k}");
-                assert_eq!(mesh.count_crossings(&ray), count, "offset {offset}, ray {k}");
+                assert_eq!(
+                    mesh.count_crossings(&ray),
+                    count,
+                    "offset {offset}, ray {k}"
+                );
             }
         }
     }

@@ -110,7 +110,10 @@ impl Tracer<'_> {
         if let Some(through) = &light.through {
             let ray = scene.spawn(hit, from, direction);
             let length = shadow_length(light, &ray, distance);
-            let first = through.iter().filter_map(|s| s.first_hit(&ray)).reduce(f64::min);
+            let first = through
+                .iter()
+                .filter_map(|s| s.first_hit(&ray))
+                .reduce(f64::min);
             match first {
                 Some(t) if t < length => reach = Some(t),
                 _ => return None,
@@ -152,8 +155,14 @@ impl Tracer<'_> {
         // A line light (one axis of size 1) gets a sliver of width, so that the hull is solid.
         let (h1, h2) = match (h1 == DVec3::ZERO, h2 == DVec3::ZERO) {
             (true, true) => return Blockers::Unknown,
-            (true, false) => (h2.any_orthogonal_vector().normalize() * (1e-6 * h2.length()), h2),
-            (false, true) => (h1, h1.any_orthogonal_vector().normalize() * (1e-6 * h1.length())),
+            (true, false) => (
+                h2.any_orthogonal_vector().normalize() * (1e-6 * h2.length()),
+                h2,
+            ),
+            (false, true) => (
+                h1,
+                h1.any_orthogonal_vector().normalize() * (1e-6 * h1.length()),
+            ),
             (false, false) => (h1, h2),
         };
         let corners = [c - h1 - h2, c + h1 - h2, c + h1 + h2, c - h1 + h2];
@@ -225,7 +234,8 @@ impl Tracer<'_> {
         let (a1, a2) = grid_axes(light, area, hit.point);
         // square_to_disc's bias moves points up to 0.001 beyond the square.
         let half = |size: u32| if size == 1 { 0.0 } else { 0.502 };
-        let blockers = self.area_blockers(light, (a1 * half(area.size1), a2 * half(area.size2)), hit);
+        let blockers =
+            self.area_blockers(light, (a1 * half(area.size1), a2 * half(area.size2)), hit);
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
@@ -286,7 +296,8 @@ impl Tracer<'_> {
             (true, n) => 0.502 + 0.5 / f64::from(n - 1),
             (false, _) => 0.502,
         };
-        let blockers = self.area_blockers(light, (a1 * reach(area.size1), a2 * reach(area.size2)), hit);
+        let blockers =
+            self.area_blockers(light, (a1 * reach(area.size1), a2 * reach(area.size2)), hit);
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
@@ -524,7 +535,12 @@ mod tests {
         // The same scene with a row of small spheres more: enough objects for a top-level
         // BVH, whose nodes the pyramid then culls.
         let row: String = (0..8)
-            .map(|k| format!("sphere {{ <{}, 0.15, 2.5>, 0.15 pigment {{ rgb 0.7 }} }}\n", f64::from(k) * 0.5 - 2.0))
+            .map(|k| {
+                format!(
+                    "sphere {{ <{}, 0.15, 2.5>, 0.15 pigment {{ rgb 0.7 }} }}\n",
+                    f64::from(k) * 0.5 - 2.0
+                )
+            })
             .collect();
         for (text, indexed) in [(text.to_string(), false), (format!("{text}{row}"), true)] {
             let options = crate::LoadOptions {
@@ -532,15 +548,22 @@ mod tests {
                 height: h,
                 ..crate::LoadOptions::default()
             };
-            let loaded = crate::load_str(std::path::Path::new("cull.rt"), text, &options).expect("loads");
+            let loaded =
+                crate::load_str(std::path::Path::new("cull.rt"), text, &options).expect("loads");
             let scene = crate::scene::Scene::build(&loaded.scene);
             let mut uncut = crate::scene::Scene::build(&loaded.scene);
             uncut.cull_shadow_rays = false;
             assert_eq!(scene.has_index(), indexed);
             for antialias in [
                 Antialias::Off,
-                Antialias::Adaptive { threshold: 0.1, depth: 3 },
-                Antialias::Sampled { threshold: 0.1, depth: 3 },
+                Antialias::Adaptive {
+                    threshold: 0.1,
+                    depth: 3,
+                },
+                Antialias::Sampled {
+                    threshold: 0.1,
+                    depth: 3,
+                },
             ] {
                 for sampled_lights in [false, true] {
                     let options = RenderOptions {
@@ -554,9 +577,15 @@ mod tests {
                     let pool = thread_pool(&options).expect("a pool");
                     let culled = render(&scene, &options, &pool);
                     let every_ray = render(&uncut, &options, &pool);
-                    let what = format!("{antialias:?}, sampled {sampled_lights}, index {}", scene.has_index());
+                    let what = format!(
+                        "{antialias:?}, sampled {sampled_lights}, index {}",
+                        scene.has_index()
+                    );
                     assert!(culled.film.pixels == every_ray.film.pixels, "{what}");
-                    assert!(culled.stats.counts.shadow < every_ray.stats.counts.shadow, "{what}");
+                    assert!(
+                        culled.stats.counts.shadow < every_ray.stats.counts.shadow,
+                        "{what}"
+                    );
                 }
             }
         }

@@ -250,8 +250,8 @@ pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
     let per_pixel = std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>();
     let band = (width as usize * band_rows).saturating_mul(per_pixel);
-    let writer = (width as usize * 64.min(height as usize))
-        .saturating_mul(std::mem::size_of::<[f32; 3]>());
+    let writer =
+        (width as usize * 64.min(height as usize)).saturating_mul(std::mem::size_of::<[f32; 3]>());
     band.saturating_add(writer)
 }
 
@@ -281,7 +281,9 @@ impl<'a> Bands<'a> {
     pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
         // The rays of a camera with one eye point all start inside the same objects: found once.
         let camera_interiors = match scene.camera.projection {
-            Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } | Projection::Mesh => None,
+            Projection::Orthographic
+            | Projection::Cylinder { kind: 3 | 4, .. }
+            | Projection::Mesh => None,
             _ => Some(Interiors::at(scene, scene.camera.location)),
         };
         let region = options.region();
@@ -338,10 +340,13 @@ impl<'a> Bands<'a> {
                         return None;
                     }
                     let (bx, by) = (blocks_x.start + i % columns, i / columns);
-                    let block = render_block(scene, options, interiors, bx * BLOCK_SIZE, by * BLOCK_SIZE);
+                    let block =
+                        render_block(scene, options, interiors, bx * BLOCK_SIZE, by * BLOCK_SIZE);
                     if let Some(p) = progress {
                         use std::sync::atomic::Ordering::Relaxed;
-                        let inside = |a: u32, n: u32, lo: u32, hi: u32| (a + n).min(hi).saturating_sub(a.max(lo));
+                        let inside = |a: u32, n: u32, lo: u32, hi: u32| {
+                            (a + n).min(hi).saturating_sub(a.max(lo))
+                        };
                         let pixels = inside(block.x0, block.width, region.x0, region.x1)
                             * inside(block.y0, block.height(), region.y0, region.y1);
                         p.pixels.fetch_add(u64::from(pixels), Relaxed);
@@ -388,7 +393,8 @@ impl<'a> Bands<'a> {
                 }
                 if extra > 0 {
                     let from = k * extra;
-                    values[at + stride - extra..at + stride].copy_from_slice(&b.aov[from..from + extra]);
+                    values[at + stride - extra..at + stride]
+                        .copy_from_slice(&b.aov[from..from + extra]);
                 }
             }
             self.stats.counts.add(&b.counts);
@@ -450,7 +456,14 @@ impl Corners<'_> {
         let s = self.steps as f64;
         let (w, h) = (self.options.width, self.options.height);
         self.samples += 1;
-        let value = sample(tracer, self.camera_interiors, w, h, gx as f64 / s - 0.5, gy as f64 / s - 0.5);
+        let value = sample(
+            tracer,
+            self.camera_interiors,
+            w,
+            h,
+            gx as f64 / s - 0.5,
+            gy as f64 / s - 0.5,
+        );
         let traced = (value, aa_encoded(value.truncate(), self.scene.gamma));
         let known = if border {
             &mut self.points
@@ -525,7 +538,13 @@ fn block_aovs(
     let mut out = Vec::with_capacity(xs.len() * ys.len() * aov_values(&options.aovs));
     for y in ys {
         for x in xs.clone() {
-            let ray = camera_ray(tracer.scene, options.width, options.height, x as f64, y as f64);
+            let ray = camera_ray(
+                tracer.scene,
+                options.width,
+                options.height,
+                x as f64,
+                y as f64,
+            );
             let (depth, n, albedo, object) = match ray {
                 Some(ray) => tracer.first_hit(&ray),
                 None => (f64::INFINITY, glam::DVec3::ZERO, Rgb::ZERO, 0),
@@ -645,7 +664,10 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             } else {
                 lat.tan()
             };
-            (along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction), (lon, lat))
+            (
+                along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction),
+                (lon, lat),
+            )
         }
         Projection::UltraWideAngle { angle } => {
             let angle = angle.to_radians();
@@ -681,7 +703,10 @@ fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<
             }
         }
         Projection::Mesh => (
-            scene.mesh_camera.as_ref().and_then(|m| m.ray(x, y, width, height, 0)),
+            scene
+                .mesh_camera
+                .as_ref()
+                .and_then(|m| m.ray(x, y, width, height, 0)),
             (0.0, 0.0),
         ),
         Projection::Spherical { h, v } => {
@@ -700,7 +725,10 @@ fn bent(scene: &Scene, ray: Option<Ray>, screen: (f64, f64)) -> Option<Ray> {
     match (&scene.camera_normal, ray) {
         (Some(n), Some(ray)) => {
             let bent = n.perturb(glam::DVec3::new(screen.0, screen.1, 0.0), ray.direction);
-            Some(Ray { direction: bent.normalize(), ..ray })
+            Some(Ray {
+                direction: bent.normalize(),
+                ..ray
+            })
         }
         (_, ray) => ray,
     }
@@ -708,7 +736,14 @@ fn bent(scene: &Scene, ray: Option<Ray>, screen: (f64, f64)) -> Option<Ray> {
 
 /// The colour seen through image position (x, y) by a `mesh_camera`: the mean of the rays
 /// its faces give the sample (transparent black when they give none, as in POV-Ray).
-fn mesh_sample(tracer: &mut Tracer, mesh: &crate::scene::meshcam::MeshCamera, w: u32, h: u32, x: f64, y: f64) -> Px {
+fn mesh_sample(
+    tracer: &mut Tracer,
+    mesh: &crate::scene::meshcam::MeshCamera,
+    w: u32,
+    h: u32,
+    x: f64,
+    y: f64,
+) -> Px {
     let scene = tracer.scene;
     let (mut sum, mut n) = (Px::ZERO, 0u32);
     for k in 0..mesh.rays_per_pixel() {
@@ -729,7 +764,14 @@ fn mesh_sample(tracer: &mut Tracer, mesh: &crate::scene::meshcam::MeshCamera, w:
 
 /// The colour seen through image position (x, y): one camera ray, or with focal blur
 /// POV-Ray's adaptive batches of rays through the lens (counted as camera rays).
-fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: u32, x: f64, y: f64) -> Px {
+fn sample(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    w: u32,
+    h: u32,
+    x: f64,
+    y: f64,
+) -> Px {
     let scene = tracer.scene;
     if let Some(mesh) = &scene.mesh_camera {
         return mesh_sample(tracer, mesh, w, h, x, y);
@@ -752,8 +794,9 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
         level += 1;
         for _ in 0..batch.min(max - n) {
             let (dx, dy) = crate::scene::blur::Blur::subpixel(seed, n as i32);
-            let ray = camera_ray(scene, w, h, x + dx, y + dy)
-                .map(|ray| through_lens(scene, blur, ray, blur.lens(n, x + dx + 0.5, y + dy - 0.5)));
+            let ray = camera_ray(scene, w, h, x + dx, y + dy).map(|ray| {
+                through_lens(scene, blur, ray, blur.lens(n, x + dx + 0.5, y + dy - 0.5))
+            });
             tracer.counts.camera += 1;
             let (colour, t) = match ray {
                 Some(_) => (trace_primary(tracer, camera_interiors, ray), 0.0),
@@ -767,7 +810,8 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
             n += 1;
         }
         let m = n as f64;
-        let settled = (0..4).all(|k| (s2[k] / m - (s1[k] / m).powi(2)) / m < blur.thresholds[n - 1]);
+        let settled =
+            (0..4).all(|k| (s2[k] / m - (s1[k] / m).powi(2)) / m < blur.thresholds[n - 1]);
         if (n as u32 >= blur.min && settled) || n >= max {
             break;
         }
@@ -778,7 +822,12 @@ fn sample(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, w: u32, h: 
 /// The ray of focal blur for the pinhole ray `ray`, leaving the lens at offset `defl`: the
 /// direction to the image plane (POV-Ray's unnormalised one for the perspective camera),
 /// carried to the sharp plane.
-fn through_lens(scene: &Scene, blur: &crate::scene::blur::Blur, ray: Ray, defl: glam::DVec3) -> Ray {
+fn through_lens(
+    scene: &Scene,
+    blur: &crate::scene::blur::Blur,
+    ray: Ray,
+    defl: glam::DVec3,
+) -> Ray {
     let c = &scene.camera;
     let to_plane = match c.projection {
         Projection::Perspective => {
@@ -787,7 +836,10 @@ fn through_lens(scene: &Scene, blur: &crate::scene::blur::Blur, ray: Ray, defl: 
         }
         _ => ray.direction,
     };
-    Ray::new(c.location + defl, (to_plane * blur.focal_ratio - defl).normalize())
+    Ray::new(
+        c.location + defl,
+        (to_plane * blur.focal_ratio - defl).normalize(),
+    )
 }
 
 /// Method 3's focal blur (`sampled_blur`): sample `n` of the pixel whose seed is `seed` looks
@@ -829,7 +881,11 @@ const LENS_FIRST_POINTS: u32 = 4;
 
 /// Traces a camera ray, which starts inside the objects that contain its origin (black where
 /// the projection has no ray, as in POV-Ray).
-fn trace_primary(tracer: &mut Tracer, camera_interiors: &Option<Interiors>, ray: Option<Ray>) -> Rgb {
+fn trace_primary(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    ray: Option<Ray>,
+) -> Rgb {
     let Some(ray) = ray else {
         tracer.see_through = 1.0;
         return Rgb::ZERO;
@@ -918,7 +974,10 @@ fn sampled_pixels(
                 }
                 let half = encoded.len() / 2;
                 let mean = |e: &[Rgb]| e.iter().fold(Rgb::ZERO, |s, &v| s + v) / half as f64;
-                let error = (mean(&encoded[..half]) - mean(&encoded[half..])).abs().element_sum() / 2.0;
+                let error = (mean(&encoded[..half]) - mean(&encoded[half..]))
+                    .abs()
+                    .element_sum()
+                    / 2.0;
                 if error < tolerance {
                     break;
                 }
@@ -948,8 +1007,9 @@ fn render_block(
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
     counters::take(); // (this block's counts start from zero)
-    let centre =
-        |tracer: &mut Tracer, x: u32, y: u32| sample(tracer, &camera_interiors, w, h, x as f64, y as f64);
+    let centre = |tracer: &mut Tracer, x: u32, y: u32| {
+        sample(tracer, &camera_interiors, w, h, x as f64, y as f64)
+    };
 
     // The block's pixels in row order, each from `f(x, y)`.
     let block_pixels = |f: &mut dyn FnMut(u32, u32) -> Px| -> Vec<Px> {
@@ -1057,7 +1117,14 @@ fn render_block(
                         continue;
                     }
                     traced += 1;
-                    sum += sample(tracer, &camera_interiors, w, h, x as f64 + ox, y as f64 + oy);
+                    sum += sample(
+                        tracer,
+                        &camera_interiors,
+                        w,
+                        h,
+                        x as f64 + ox,
+                        y as f64 + oy,
+                    );
                 }
             }
             value[index(x, y)] = sum / (n * n + 1) as f64;
@@ -1148,12 +1215,23 @@ mod tests {
                 let mut pixels = Vec::new();
                 let mut count = 0;
                 while let Some(band) = bands.next_band() {
-                    assert_eq!(band.y0 as usize, pixels.len() / w as usize, "bands in order");
+                    assert_eq!(
+                        band.y0 as usize,
+                        pixels.len() / w as usize,
+                        "bands in order"
+                    );
                     pixels.extend(band.values.chunks_exact(3).map(|v| [v[0], v[1], v[2]]));
                     count += 1;
                 }
-                assert_eq!(count, h.div_ceil(BLOCK_SIZE * rows), "{rows} rows of blocks a band");
-                assert!(pixels == whole.film.pixels, "{antialias:?}, {rows} rows of blocks");
+                assert_eq!(
+                    count,
+                    h.div_ceil(BLOCK_SIZE * rows),
+                    "{rows} rows of blocks a band"
+                );
+                assert!(
+                    pixels == whole.film.pixels,
+                    "{antialias:?}, {rows} rows of blocks"
+                );
                 assert_eq!(bands.stats.samples, whole.stats.samples);
                 assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
             }
@@ -1182,7 +1260,8 @@ mod tests {
                 height: h,
                 ..crate::LoadOptions::default()
             };
-            let loaded = crate::load_str(std::path::Path::new("m3.rt"), text, &options).expect("loads");
+            let loaded =
+                crate::load_str(std::path::Path::new("m3.rt"), text, &options).expect("loads");
             let scene = Scene::build(&loaded.scene);
             let render_with = |threads: usize, region: Option<Region>| {
                 let options = RenderOptions {
@@ -1207,17 +1286,30 @@ mod tests {
             assert_eq!(one.stats.samples, two.stats.samples);
             assert_eq!(one.stats.counts.shadow, two.stats.counts.shadow);
             let per_pixel = one.stats.samples as f64 / f64::from(w * h);
-            assert!(per_pixel_range.contains(&per_pixel), "{per_pixel} samples a pixel");
+            assert!(
+                per_pixel_range.contains(&per_pixel),
+                "{per_pixel} samples a pixel"
+            );
             for region in [
-                Region { x0: 0, y0: 32, x1: 90, y1: 64 },
-                Region { x0: 17, y0: 5, x1: 61, y1: 70 },
+                Region {
+                    x0: 0,
+                    y0: 32,
+                    x1: 90,
+                    y1: 64,
+                },
+                Region {
+                    x0: 17,
+                    y0: 5,
+                    x1: 61,
+                    y1: 70,
+                },
             ] {
                 let part = render_with(2, Some(region));
                 for y in region.y0..region.y1 {
                     for x in region.x0..region.x1 {
                         let whole = one.film.pixels[(y * w + x) as usize];
-                        let here =
-                            part.film.pixels[((y - region.y0) * region.width() + x - region.x0) as usize];
+                        let here = part.film.pixels
+                            [((y - region.y0) * region.width() + x - region.x0) as usize];
                         assert_eq!(whole, here, "pixel ({x}, {y}) of region {region:?}");
                     }
                 }
@@ -1243,16 +1335,26 @@ mod tests {
             height: n,
             ..crate::LoadOptions::default()
         };
-        let loaded = crate::load_str(std::path::Path::new("edge.rt"), text, &options).expect("loads");
+        let loaded =
+            crate::load_str(std::path::Path::new("edge.rt"), text, &options).expect("loads");
         let scene = Scene::build(&loaded.scene);
         // The covered fraction of pixel (i, j), by a 256 × 256 grid of points.
-        let (c, s) = (std::f64::consts::FRAC_PI_6.cos(), std::f64::consts::FRAC_PI_6.sin());
+        let (c, s) = (
+            std::f64::consts::FRAC_PI_6.cos(),
+            std::f64::consts::FRAC_PI_6.sin(),
+        );
         let exact = |i: u32, j: u32| {
-            let (x0, y0) = (f64::from(i) - f64::from(n) / 2.0, f64::from(n) / 2.0 - f64::from(j));
+            let (x0, y0) = (
+                f64::from(i) - f64::from(n) / 2.0,
+                f64::from(n) / 2.0 - f64::from(j),
+            );
             let mut inside = 0;
             for a in 0..256 {
                 for b in 0..256 {
-                    let (x, y) = (x0 + (f64::from(a) + 0.5) / 256.0, y0 - (f64::from(b) + 0.5) / 256.0);
+                    let (x, y) = (
+                        x0 + (f64::from(a) + 0.5) / 256.0,
+                        y0 - (f64::from(b) + 0.5) / 256.0,
+                    );
                     inside += usize::from(c * x + s * y > 0.3);
                 }
             }
@@ -1285,10 +1387,19 @@ mod tests {
         // like number of samples, 0.018 at depth 4 (17), 0.010 at 6 (37), 0.0049 at 8 (65): on
         // a straight edge a regular grid does as well, the nets win where a pattern is finer
         // than the pixels and the grid aliases, as on the chart's scenes.)
-        let coarse = error(Antialias::Sampled { threshold: 0.0, depth: 3 });
-        let fine = error(Antialias::Sampled { threshold: 0.0, depth: 7 });
+        let coarse = error(Antialias::Sampled {
+            threshold: 0.0,
+            depth: 3,
+        });
+        let fine = error(Antialias::Sampled {
+            threshold: 0.0,
+            depth: 7,
+        });
         assert!(fine < 0.006, "method 3 at depth 7: mean error {fine}");
-        assert!(fine < coarse / 3.0, "depth 7 {fine} against depth 3 {coarse}");
+        assert!(
+            fine < coarse / 3.0,
+            "depth 7 {fine} against depth 3 {coarse}"
+        );
     }
 
     #[test]

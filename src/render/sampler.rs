@@ -88,7 +88,10 @@ fn owen(x: u32, seed: u32) -> u32 {
 pub(super) fn offset(seed: u32, i: u32) -> (f64, f64) {
     let (x, y) = sobol(i);
     let to_unit = |v: u32| f64::from(v) / 4_294_967_296.0 - 0.5;
-    (to_unit(owen(x, seed)), to_unit(owen(y, mix(seed ^ 0x5bd1_e995))))
+    (
+        to_unit(owen(x, seed)),
+        to_unit(owen(y, mix(seed ^ 0x5bd1_e995))),
+    )
 }
 
 /// The most samples a pixel may take at anti-aliasing depth `depth` (1..=9): 4·2^(depth−1),
@@ -130,16 +133,27 @@ mod tests {
     fn offsets_are_in_the_pixel_and_differ_between_pixels() {
         let a: Vec<_> = (0..16).map(|i| offset(pixel_seed(3, 5, 0), i)).collect();
         let b: Vec<_> = (0..16).map(|i| offset(pixel_seed(4, 5, 0), i)).collect();
-        assert!(a.iter().chain(&b).all(|&(x, y)| (-0.5..0.5).contains(&x) && (-0.5..0.5).contains(&y)));
+        assert!(
+            a.iter()
+                .chain(&b)
+                .all(|&(x, y)| (-0.5..0.5).contains(&x) && (-0.5..0.5).contains(&y))
+        );
         assert_ne!(a, b);
-        assert_eq!(a, (0..16).map(|i| offset(pixel_seed(3, 5, 0), i)).collect::<Vec<_>>());
+        assert_eq!(
+            a,
+            (0..16)
+                .map(|i| offset(pixel_seed(3, 5, 0), i))
+                .collect::<Vec<_>>()
+        );
     }
 
     #[test]
     fn sobol_dimension_one_starts_as_its_direction_numbers_give() {
         // The second dimension's direction numbers ½, ¾, 5/8, … combined in binary (not Gray
         // code) order.
-        let y: Vec<f64> = (0..8).map(|i| f64::from(sobol(i).1) / 4_294_967_296.0).collect();
+        let y: Vec<f64> = (0..8)
+            .map(|i| f64::from(sobol(i).1) / 4_294_967_296.0)
+            .collect();
         assert_eq!(y, [0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875]);
     }
 }

@@ -5,8 +5,8 @@
 use super::lights::LightSample;
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, FogKind, Material, ObjectId, PatternSurface as Surface, Rgb, Scene, SurfaceHit, filter_colour,
-    interior_fade,
+    Colour, FogKind, Material, ObjectId, PatternSurface as Surface, Rgb, Scene, SurfaceHit,
+    filter_colour, interior_fade,
 };
 use glam::{DMat3, DVec3};
 
@@ -272,14 +272,24 @@ impl<'a> Tracer<'a> {
             return (f64::INFINITY, DVec3::ZERO, Rgb::ZERO, 0);
         };
         let surface = self.scene.surface(&ray, &hit);
-        let n = if surface.normal.dot(ray.direction) > 0.0 { -surface.normal } else { surface.normal };
+        let n = if surface.normal.dot(ray.direction) > 0.0 {
+            -surface.normal
+        } else {
+            surface.normal
+        };
         let material = self.scene.material(surface.material);
         let albedo = albedo(material, &surface, surface.texture_point);
         (hit.t, n, albedo, surface.object.0 + 1)
     }
 
     /// [`Tracer::trace`] for a reflected ray.
-    fn trace_reflected(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
+    fn trace_reflected(
+        &mut self,
+        ray: &Ray,
+        level: u32,
+        weight: f64,
+        interiors: &Interiors,
+    ) -> Rgb {
         let was = std::mem::replace(&mut self.reflected, true);
         let colour = self.trace(ray, level, weight, interiors);
         self.reflected = was;
@@ -333,8 +343,26 @@ impl<'a> Tracer<'a> {
         // perturbs it (POV-Ray's PNormal, below).
         let mut seen = hit.surface.normal;
         match &material.map {
-            None => self.shade_layers(material, ray, t, hit, level, weight, interiors, (&mut seen, None)),
-            Some(_) => self.shade_mapped(material, ray, t, hit, level, weight, interiors, (&mut seen, None)),
+            None => self.shade_layers(
+                material,
+                ray,
+                t,
+                hit,
+                level,
+                weight,
+                interiors,
+                (&mut seen, None),
+            ),
+            Some(_) => self.shade_mapped(
+                material,
+                ray,
+                t,
+                hit,
+                level,
+                weight,
+                interiors,
+                (&mut seen, None),
+            ),
         }
     }
 
@@ -354,7 +382,16 @@ impl<'a> Tracer<'a> {
         (seen, warp): (&mut DVec3, Option<&'a DMat3>),
     ) -> Rgb {
         let Some(map) = &material.map else {
-            return self.shade_layers(material, ray, t, hit, level, weight, interiors, (seen, warp));
+            return self.shade_layers(
+                material,
+                ray,
+                t,
+                hit,
+                level,
+                weight,
+                interiors,
+                (seen, warp),
+            );
         };
         let surface = Surface {
             normal: *seen,
@@ -367,7 +404,16 @@ impl<'a> Tracer<'a> {
                 texture_point,
                 ..*hit
             };
-            self.shade_mapped(entry, ray, t, hit, level, weight, interiors, (&mut *seen, warp))
+            self.shade_mapped(
+                entry,
+                ray,
+                t,
+                hit,
+                level,
+                weight,
+                interiors,
+                (&mut *seen, warp),
+            )
         })
     }
 
@@ -394,11 +440,7 @@ impl<'a> Tracer<'a> {
         let d = ray.direction;
         // Shade the side facing the ray (decided by the shading normal, as POV-Ray decides it:
         // a smooth triangle seen at a grazing angle may face away by its smooth normal).
-        let facing = if hit.normal.dot(d) > 0.0 {
-            -1.0
-        } else {
-            1.0
-        };
+        let facing = if hit.normal.dot(d) > 0.0 { -1.0 } else { 1.0 };
         let raw = hit.normal * facing;
 
         // Relative indices for this crossing (POV-Ray §9.1).
@@ -413,7 +455,8 @@ impl<'a> Tracer<'a> {
 
         // Each layer (top first) adds its light as seen through the layers above it, `filter`
         // (POV-Ray's ComputeLightedTexture); a texture has one layer unless layered.
-        let (n, colour, top_reflec) = self.layer_at(material, hit, d, raw, crossing.fresnel_eta, (seen, warp));
+        let (n, colour, top_reflec) =
+            self.layer_at(material, hit, d, raw, crossing.fresnel_eta, (seen, warp));
         let top_colour = colour;
         // (What the lower layers saw, replayed for their reflections below.)
         let mut replay = *seen;
@@ -493,8 +536,14 @@ impl<'a> Tracer<'a> {
                 if upper.finish.conserve_energy {
                     above *= (Rgb::ONE - upper_reflec).min(Rgb::ONE);
                 }
-                let (n_l, colour, reflec) =
-                    self.layer_at(layer, hit, d, raw, crossing.fresnel_eta, (&mut replay, warp));
+                let (n_l, colour, reflec) = self.layer_at(
+                    layer,
+                    hit,
+                    d,
+                    raw,
+                    crossing.fresnel_eta,
+                    (&mut replay, warp),
+                );
                 previous = (layer, reflec, colour);
                 let same_normal = (n_l - n).abs().max_element() <= 1e-10;
                 if total_internal_reflection && same_normal {
@@ -526,17 +575,21 @@ impl<'a> Tracer<'a> {
             1.0 - colour.filter - colour.transmit
         };
         let finish = &layer.finish;
-        let mut lit = pigment * finish.ambient * scene.ambient_light * att
-            + pigment * finish.emission * att;
+        let mut lit =
+            pigment * finish.ambient * scene.ambient_light * att + pigment * finish.emission * att;
         let object = scene.object(hit.object);
         let double = object.sight().double_illuminate;
         for index in 0..scene.lights.len() {
             if !object.lit_by(&scene.lights[index]) {
                 continue;
             }
-            let Some(sample) =
-                self.light_sample(index, hit, ray.origin, n, finish.diffuse_back > 0.0 || double)
-            else {
+            let Some(sample) = self.light_sample(
+                index,
+                hit,
+                ray.origin,
+                n,
+                finish.diffuse_back > 0.0 || double,
+            ) else {
                 continue;
             };
             // `crand`: the diffuse intensity less a random fraction (a hash of the point and
@@ -818,8 +871,12 @@ mod tests {
         for k in 1..=10 {
             text += &format!("sphere {{ <0.1, 0, 0>, {k} pigment {{ rgb 1 }} }}\n");
         }
-        let loaded = crate::load_str(std::path::Path::new("nest.rt"), text, &crate::LoadOptions::default())
-            .expect("loads");
+        let loaded = crate::load_str(
+            std::path::Path::new("nest.rt"),
+            text,
+            &crate::LoadOptions::default(),
+        )
+        .expect("loads");
         let scene = crate::scene::Scene::build(&loaded.scene);
         assert!(scene.has_index());
         let scan = |p: DVec3| {
@@ -834,7 +891,13 @@ mod tests {
             }
             list.ids[..list.len].to_vec()
         };
-        for p in [DVec3::ZERO, DVec3::new(0.0, 3.5, 0.0), DVec3::new(7.2, -1.0, 2.0), DVec3::new(0.0, -25.0, 0.0), DVec3::splat(40.0)] {
+        for p in [
+            DVec3::ZERO,
+            DVec3::new(0.0, 3.5, 0.0),
+            DVec3::new(7.2, -1.0, 2.0),
+            DVec3::new(0.0, -25.0, 0.0),
+            DVec3::splat(40.0),
+        ] {
             let found = Interiors::at(&scene, p);
             assert_eq!(found.ids[..found.len].to_vec(), scan(p), "{p}");
         }

@@ -142,7 +142,11 @@ impl ObjectIndex {
 
     /// Visits every bounded object in a leaf whose box `keep(min, max)` keeps, descending only
     /// into nodes it keeps (the node boxes hold their objects' boxes, rounded outward).
-    pub fn each_kept(&self, keep: impl Fn(glam::DVec3, glam::DVec3) -> bool, mut f: impl FnMut(u32)) {
+    pub fn each_kept(
+        &self,
+        keep: impl Fn(glam::DVec3, glam::DVec3) -> bool,
+        mut f: impl FnMut(u32),
+    ) {
         let nodes = &self.bvh.nodes;
         let Some(root) = nodes.first() else { return };
         let kept = |n: &obvhs::bvh2::node::Bvh2Node| {

@@ -4,8 +4,8 @@
 use super::query::fades;
 use super::*;
 use crate::geometry::{
-    Blob, BlobElement, Cone, Cuboid, Disc, Edge, HeightField, Lathe, Plane, Polygon, Polynomial, Prism, CurveSegment, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text,
-    Torus,
+    Blob, BlobElement, Cone, Cuboid, CurveSegment, Disc, Edge, HeightField, Lathe, Plane, Polygon,
+    Polynomial, Prism, Quadric, Sor, SorPiece, Sphere, Superellipsoid, Text, Torus,
 };
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -23,7 +23,10 @@ fn fingerprint(t: &ir::Texture) -> u64 {
     // with one pattern, each moved, would otherwise all be compared with one another.)
     let placed = |m: &Option<Box<ir::Transform>>| {
         m.as_ref().map_or(0u64, |m| {
-            m.matrix.to_cols_array().iter().fold(0u64, |h, v| (h ^ v.to_bits()).rotate_left(7))
+            m.matrix
+                .to_cols_array()
+                .iter()
+                .fold(0u64, |h, v| (h ^ v.to_bits()).rotate_left(7))
         })
     };
     let mut moved = t.normal.as_ref().map_or(0, |n| placed(&n.transform));
@@ -104,7 +107,11 @@ fn shared_ids<'a, T: Sync>(
 fn same_material(a: &ir::Texture, b: &ir::Texture) -> bool {
     match (&a.pigment.kind, &b.pigment.kind) {
         (ir::PigmentKind::Solid(ca), ir::PigmentKind::Solid(cb)) => {
-            ca == cb && a.finish == b.finish && a.normal == b.normal && a.under == b.under && a.map == b.map
+            ca == cb
+                && a.finish == b.finish
+                && a.normal == b.normal
+                && a.under == b.under
+                && a.map == b.map
         }
         _ => a == b,
     }
@@ -137,7 +144,9 @@ fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Text
 /// object's texture, entry 1 + i the mesh's texture i placed in the world by the object's
 /// transformation; each triangle's corners pick theirs.
 fn mesh_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Option<Material> {
-    let ir::Shape::Mesh(m) = &o.shape else { return None };
+    let ir::Shape::Mesh(m) = &o.shape else {
+        return None;
+    };
     if m.face_textures.is_empty() {
         return None;
     }
@@ -157,7 +166,9 @@ fn mesh_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Opt
 /// blob's texture, then one entry per textured component (placed in the world by the
 /// object's transformation); each element brings its component's entry.
 fn blob_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Option<Material> {
-    let ir::Shape::Blob(b) = &o.shape else { return None };
+    let ir::Shape::Blob(b) = &o.shape else {
+        return None;
+    };
     if b.components.iter().all(|c| c.texture.is_none()) {
         return None;
     }
@@ -177,11 +188,13 @@ fn blob_material(o: &ir::Object, defaults: crate::pattern::SceneDefaults) -> Opt
             None => 0,
         };
         match c.reach {
-            ir::BlobReach::Sphere(centre) => {
-                elements.push((BlobElement::sphere(centre, c.radius, c.strength, c.transform), entry))
-            }
+            ir::BlobReach::Sphere(centre) => elements.push((
+                BlobElement::sphere(centre, c.radius, c.strength, c.transform),
+                entry,
+            )),
             ir::BlobReach::Cylinder(a, e) => elements.extend(
-                BlobElement::cylinder(a, e, c.radius, c.strength, c.transform).map(|el| (el, entry)),
+                BlobElement::cylinder(a, e, c.radius, c.strength, c.transform)
+                    .map(|el| (el, entry)),
             ),
         }
     }
@@ -199,11 +212,20 @@ fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
 
 /// The bits of an interior, as a key for sharing equal ones.
 fn interior_key(i: &Interior) -> u64 {
-    [i.ior, i.fade_distance, i.fade_power, i.fade_colour.x, i.fade_colour.y, i.fade_colour.z]
-        .iter()
-        .fold(0u64, |h, v| {
-            (h ^ v.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
-        })
+    [
+        i.ior,
+        i.fade_distance,
+        i.fade_power,
+        i.fade_colour.x,
+        i.fade_colour.y,
+        i.fade_colour.z,
+    ]
+    .iter()
+    .fold(0u64, |h, v| {
+        (h ^ v.to_bits())
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .rotate_left(29)
+    })
 }
 
 impl Scene {
@@ -225,8 +247,11 @@ impl Scene {
     fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
         let (mut ids, textures) = material_ids(ir);
         let generator = ir.settings.noise_generator;
-        let (interior_ids, interiors) =
-            shared_ids(&ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(), interior_key, |a, b| a == b);
+        let (interior_ids, interiors) = shared_ids(
+            &ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(),
+            interior_key,
+            |a, b| a == b,
+        );
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
         let mut materials: Vec<Material> = textures
             .into_iter()
@@ -235,7 +260,9 @@ impl Scene {
         // A blob whose components have textures gets a material of its own that blends them
         // (both sides: POV-Ray ignores an interior texture there).
         for (o, id) in ir.objects.iter().zip(&mut ids) {
-            if let Some(m) = blob_material(o, pattern_defaults(ir)).or_else(|| mesh_material(o, pattern_defaults(ir))) {
+            if let Some(m) = blob_material(o, pattern_defaults(ir))
+                .or_else(|| mesh_material(o, pattern_defaults(ir)))
+            {
                 let own = MaterialId(materials.len() as u32);
                 materials.push(m);
                 *id = (own, own);
@@ -256,8 +283,12 @@ impl Scene {
             .zip(ids)
             .zip(interior_ids)
             .map(|((o, (material, back_material)), interior)| {
-                let (shape, transform) =
-                    build_shape(&o.shape, o.transform.as_ref().map(|t| t.matrix), &meshes, generator);
+                let (shape, transform) = build_shape(
+                    &o.shape,
+                    o.transform.as_ref().map(|t| t.matrix),
+                    &meshes,
+                    generator,
+                );
                 let mut object = Object {
                     shape,
                     bounded: false,
@@ -273,13 +304,13 @@ impl Scene {
                 };
                 let back_material = (back_material != material).then_some(back_material);
                 let bounds = o.bounds().map(|bounds| {
-                        let shapes = bounds
-                            .shapes
-                            .iter()
-                            .map(|b| bound_shape(&b.shape, b.transform.as_deref(), generator))
-                            .collect();
-                        (shapes, bounds.test_rays)
-                    });
+                    let shapes = bounds
+                        .shapes
+                        .iter()
+                        .map(|b| bound_shape(&b.shape, b.transform.as_deref(), generator))
+                        .collect();
+                    (shapes, bounds.test_rays)
+                });
                 let sight = o.sight();
                 let light_group = o.extras.as_ref().and_then(|e| e.light_group.clone());
                 if back_material.is_some()
@@ -310,8 +341,14 @@ impl Scene {
                 right: c.right,
                 up: c.up,
             },
-            blur: c.blur.as_ref().map(|b| super::blur::Blur::new(b, c.direction, c.up)),
-            camera_normal: c.normal.as_deref().map(|n| Normal::new(n, pattern_defaults(ir))),
+            blur: c
+                .blur
+                .as_ref()
+                .map(|b| super::blur::Blur::new(b, c.direction, c.up)),
+            camera_normal: c
+                .normal
+                .as_deref()
+                .map(|n| Normal::new(n, pattern_defaults(ir))),
             mesh_camera: c.mesh.as_ref().map(super::meshcam::MeshCamera::new),
             lights: ir
                 .lights
@@ -538,13 +575,30 @@ fn build_shape(
         ir::Shape::Polygon(points) => (Shape::Polygon(Box::new(Polygon::new(points))), transform),
         ir::Shape::Text(text) => (Shape::Text(Box::new(build_text(text))), transform),
         ir::Shape::Prism(p) => {
-            let segments = p.segments.iter().map(|s| CurveSegment::new(s.u, s.v)).collect();
-            let prism = Prism::new(p.sweep == ir::Sweep::Conic, p.degree, p.heights, p.closed, segments);
+            let segments = p
+                .segments
+                .iter()
+                .map(|s| CurveSegment::new(s.u, s.v))
+                .collect();
+            let prism = Prism::new(
+                p.sweep == ir::Sweep::Conic,
+                p.degree,
+                p.heights,
+                p.closed,
+                segments,
+            );
             (Shape::Prism(Box::new(prism)), transform)
         }
         ir::Shape::Lathe(l) => {
-            let segments = l.segments.iter().map(|s| CurveSegment::new(s.u, s.v)).collect();
-            (Shape::Lathe(Box::new(Lathe::new(l.degree, segments))), transform)
+            let segments = l
+                .segments
+                .iter()
+                .map(|s| CurveSegment::new(s.u, s.v))
+                .collect();
+            (
+                Shape::Lathe(Box::new(Lathe::new(l.degree, segments))),
+                transform,
+            )
         }
         ir::Shape::Sor(s) => {
             let pieces = s
@@ -558,15 +612,25 @@ fn build_shape(
             let mut elements = Vec::new();
             for c in &b.components {
                 match c.reach {
-                    ir::BlobReach::Sphere(centre) => {
-                        elements.push(BlobElement::sphere(centre, c.radius, c.strength, c.transform))
-                    }
-                    ir::BlobReach::Cylinder(a, e) => {
-                        elements.extend(BlobElement::cylinder(a, e, c.radius, c.strength, c.transform))
-                    }
+                    ir::BlobReach::Sphere(centre) => elements.push(BlobElement::sphere(
+                        centre,
+                        c.radius,
+                        c.strength,
+                        c.transform,
+                    )),
+                    ir::BlobReach::Cylinder(a, e) => elements.extend(BlobElement::cylinder(
+                        a,
+                        e,
+                        c.radius,
+                        c.strength,
+                        c.transform,
+                    )),
                 }
             }
-            (Shape::Blob(Box::new(Blob::new(b.threshold, elements))), transform)
+            (
+                Shape::Blob(Box::new(Blob::new(b.threshold, elements))),
+                transform,
+            )
         }
         ir::Shape::HeightField(h) => {
             let smooth = h.smooth.then(|| transform.unwrap_or(DMat4::IDENTITY));
@@ -641,10 +705,19 @@ fn build_shape(
             // distance, and its corner normals are world normals).
             let m = transform.unwrap_or(DMat4::IDENTITY);
             let points = b.points.map(|row| row.map(|p| m.transform_point3(p)));
-            let mesh = crate::geometry::bezier::patch_mesh(&points, b.u_steps, b.v_steps, b.flatness, b.uv_corners);
+            let mesh = crate::geometry::bezier::patch_mesh(
+                &points,
+                b.u_steps,
+                b.v_steps,
+                b.flatness,
+                b.uv_corners,
+            );
             (Shape::Mesh(Arc::new(mesh)), None)
         }
-        ir::Shape::Superellipsoid { e, n } => (Shape::Superellipsoid(Superellipsoid::new(*e, *n)), transform),
+        ir::Shape::Superellipsoid { e, n } => (
+            Shape::Superellipsoid(Superellipsoid::new(*e, *n)),
+            transform,
+        ),
         ir::Shape::Mesh(mesh) => {
             let built = &meshes[&(Arc::as_ptr(mesh) as usize)];
             (Shape::Mesh(Arc::clone(built)), transform)
@@ -673,12 +746,24 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
 /// The geometry of laid-out text: each glyph's curves as edges.
 fn build_text(text: &ir::Text) -> Text {
     let edge = |c: &ir::Curve| match *c {
-        ir::Curve::Line(start, end) => Edge { start, control: start, end, curved: false },
-        ir::Curve::Quad(start, control, end) => Edge { start, control, end, curved: true },
+        ir::Curve::Line(start, end) => Edge {
+            start,
+            control: start,
+            end,
+            curved: false,
+        },
+        ir::Curve::Quad(start, control, end) => Edge {
+            start,
+            control,
+            end,
+            curved: true,
+        },
     };
     Text::new(
         text.thickness,
-        text.glyphs.iter().map(|g| g.curves.iter().map(edge).collect()),
+        text.glyphs
+            .iter()
+            .map(|g| g.curves.iter().map(edge).collect()),
     )
 }
 
@@ -723,24 +808,41 @@ mod tests {
                     #for (i, 0, 999) object { B translate i*x } #end
                     #for (i, 0, 2) object { P translate i*y } #end
                     object { P translate 2*y }";
-        let loaded = crate::load_str(std::path::Path::new("t.rt"), text.to_string(), &Default::default())
-            .unwrap_or_else(|e| panic!("{e}"));
+        let loaded = crate::load_str(
+            std::path::Path::new("t.rt"),
+            text.to_string(),
+            &Default::default(),
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
         let (ids, textures) = material_ids(&loaded.scene);
-        assert!(ids[..1000].iter().all(|&(a, b)| a == ids[0].0 && b == a), "one material for the red boxes");
-        assert_eq!(textures.len(), 1 + 3, "the checkers moved three ways are three materials");
+        assert!(
+            ids[..1000].iter().all(|&(a, b)| a == ids[0].0 && b == a),
+            "one material for the red boxes"
+        );
+        assert_eq!(
+            textures.len(),
+            1 + 3,
+            "the checkers moved three ways are three materials"
+        );
         assert_eq!(ids[1003], ids[1002], "equally moved checkers share one");
         let t = std::time::Instant::now();
         let many: Vec<ir::Texture> = (0..20_000)
             .map(|i| {
                 let mut t = loaded.scene.objects[1000].texture.clone();
-                t.transform(ir::Transform { matrix: DMat4::from_translation(DVec3::splat(f64::from(i))) });
+                t.transform(ir::Transform {
+                    matrix: DMat4::from_translation(DVec3::splat(f64::from(i))),
+                });
                 t
             })
             .collect();
         let refs: Vec<&ir::Texture> = many.iter().collect();
         let (_, distinct) = shared_ids(&refs, fingerprint, same_material);
         assert_eq!(distinct.len(), 20_000);
-        assert!(t.elapsed().as_secs_f64() < 5.0, "not compared all with all: {:?}", t.elapsed());
+        assert!(
+            t.elapsed().as_secs_f64() < 5.0,
+            "not compared all with all: {:?}",
+            t.elapsed()
+        );
     }
 
     fn scene_with(shape: ir::Shape, transform: DMat4) -> Scene {

@@ -32,10 +32,7 @@ impl Material {
     pub fn new(t: &ir::Texture, scene: crate::pattern::SceneDefaults) -> Material {
         let mut m = Material {
             pigment: Pigment::new(&t.pigment, scene),
-            normal: t
-                .normal
-                .as_deref()
-                .map(|n| Box::new(Normal::new(n, scene))),
+            normal: t.normal.as_deref().map(|n| Box::new(Normal::new(n, scene))),
             under: t.under.iter().map(|l| Material::new(l, scene)).collect(),
             map: t.map.as_deref().map(|m| {
                 Box::new(MaterialMap {
@@ -44,7 +41,10 @@ impl Material {
                     pattern: m.pattern.with_scene(scene),
                     pattern_from_world: m.transform.as_ref().map(|t| t.matrix.inverse()),
                     world_from_pattern: m.transform.as_ref().map(|t| t.matrix),
-                    normal_to_pattern: m.transform.as_ref().map(|t| DMat3::from_mat4(t.matrix).transpose()),
+                    normal_to_pattern: m
+                        .transform
+                        .as_ref()
+                        .map(|t| DMat3::from_mat4(t.matrix).transpose()),
                     entries: m
                         .entries
                         .iter()
@@ -68,17 +68,20 @@ impl Material {
             uses_surface: false,
             uses_corners: false,
         };
-        m.uses_uv = m.layers().any(|l| {
-            l.pigment.uses_uv() || l.normal.as_ref().is_some_and(|n| n.uses_uv())
-        }) || m.map.as_ref().is_some_and(|map| {
-            map.pattern.kind == crate::pattern::PatternKind::UvMapping
-                || map.entries.iter().any(|(_, e)| e.uses_uv)
-        });
+        m.uses_uv = m
+            .layers()
+            .any(|l| l.pigment.uses_uv() || l.normal.as_ref().is_some_and(|n| n.uses_uv()))
+            || m.map.as_ref().is_some_and(|map| {
+                map.pattern.kind == crate::pattern::PatternKind::UvMapping
+                    || map.entries.iter().any(|(_, e)| e.uses_uv)
+            });
         m.uses_surface = m.uses_uv
             || m.layers().any(|l| l.pigment.uses_surface())
             || m.map.as_ref().is_some_and(|map| {
-                matches!(map.pattern.kind, crate::pattern::PatternKind::Slope(_) | crate::pattern::PatternKind::Aoi)
-                    || map.entries.iter().any(|(_, e)| e.uses_surface)
+                matches!(
+                    map.pattern.kind,
+                    crate::pattern::PatternKind::Slope(_) | crate::pattern::PatternKind::Aoi
+                ) || map.entries.iter().any(|(_, e)| e.uses_surface)
             });
         m.see_through = match &m.map {
             Some(map) => map.entries.iter().any(|(_, e)| e.may_be_transparent()),
@@ -90,7 +93,11 @@ impl Material {
     /// The surface of a blob whose components have textures: `entries` blended at each point
     /// by the fields of the `elements` acting there (each with its entry), in blob space
     /// (`blob_from_world` takes the world there).
-    pub fn blob_blend(entries: Vec<Material>, mut elements: Vec<(BlobElement, u32)>, blob_from_world: Option<DMat4>) -> Material {
+    pub fn blob_blend(
+        entries: Vec<Material>,
+        mut elements: Vec<(BlobElement, u32)>,
+        blob_from_world: Option<DMat4>,
+    ) -> Material {
         // Elements of one entry side by side, so that each entry is lit once.
         elements.sort_by_key(|(_, entry)| *entry);
         let see_through = entries.iter().any(Material::may_be_transparent);
@@ -103,7 +110,10 @@ impl Material {
             normal_to_pattern: None,
             entries: entries.into_iter().map(|m| (0.0, m)).collect(),
         };
-        let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
+        let defaults = crate::pattern::SceneDefaults {
+            generator: 2,
+            waves: 10,
+        };
         let mut m = Material::new(&ir::Texture::default(), defaults);
         m.map = Some(Box::new(map));
         m.see_through = see_through;
@@ -125,7 +135,10 @@ impl Material {
             normal_to_pattern: None,
             entries: entries.into_iter().map(|m| (0.0, m)).collect(),
         };
-        let defaults = crate::pattern::SceneDefaults { generator: 2, waves: 10 };
+        let defaults = crate::pattern::SceneDefaults {
+            generator: 2,
+            waves: 10,
+        };
         let mut m = Material::new(&ir::Texture::default(), defaults);
         m.map = Some(Box::new(map));
         m.see_through = see_through;
@@ -242,7 +255,10 @@ impl MaterialMap {
             }
             return sum / total;
         }
-        let v = self.pattern.wave.apply(self.pattern.raw_on(warped, surface));
+        let v = self
+            .pattern
+            .wave
+            .apply(self.pattern.raw_on(warped, surface));
         let (prev, cur, t) = pigment::search(&self.entries, v);
         let c = f(&self.entries[cur].1, at);
         if prev == cur {
@@ -299,7 +315,8 @@ impl MaterialMap {
         if warped == q {
             return p;
         }
-        self.world_from_pattern.map_or(warped, |m| m.transform_point3(warped))
+        self.world_from_pattern
+            .map_or(warped, |m| m.transform_point3(warped))
     }
 }
 

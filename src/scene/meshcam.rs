@@ -72,7 +72,10 @@ impl MeshCamera {
                 let (u, v) = (uv.map(|p| tenth(p.x)), uv.map(|p| tenth(p.y)));
                 let bit = 1u64 << (k % 64);
                 for (sets, t) in [(&mut u_sets, u), (&mut v_sets, v)] {
-                    let (lo, hi) = (t.into_iter().min().unwrap_or(0), t.into_iter().max().unwrap_or(-1));
+                    let (lo, hi) = (
+                        t.into_iter().min().unwrap_or(0),
+                        t.into_iter().max().unwrap_or(-1),
+                    );
                     for cell in lo.max(0)..=hi {
                         sets[cell as usize][k / 64] |= bit;
                     }
@@ -92,7 +95,11 @@ impl MeshCamera {
     /// Rays a pixel may average: distribution 1 gives only ray 0 a face (POV-Ray numbers
     /// ray k's face from k times the total count), so its further rays are never made.
     pub fn rays_per_pixel(&self) -> u32 {
-        if self.camera.distribution == 1 { 1 } else { self.camera.rays_per_pixel }
+        if self.camera.distribution == 1 {
+            1
+        } else {
+            self.camera.rays_per_pixel
+        }
     }
 
     /// Ray `k` of the sample at image position (x, y) (pixel units, as the other cameras
@@ -222,7 +229,10 @@ mod tests {
         for j in 0..=h {
             for i in 0..=w {
                 m.vertices.push(Vec3::new(i as f32, -(j as f32), 0.0));
-                m.uvs.push(DVec2::new(f64::from(i) / f64::from(w), 1.0 - f64::from(j) / f64::from(h)));
+                m.uvs.push(DVec2::new(
+                    f64::from(i) / f64::from(w),
+                    1.0 - f64::from(j) / f64::from(h),
+                ));
             }
         }
         for j in 0..h {
@@ -236,7 +246,11 @@ mod tests {
         m
     }
 
-    fn camera(distribution: u8, rays: u32, meshes: Vec<(ir::Mesh, Option<ir::Transform>)>) -> MeshCamera {
+    fn camera(
+        distribution: u8,
+        rays: u32,
+        meshes: Vec<(ir::Mesh, Option<ir::Transform>)>,
+    ) -> MeshCamera {
         MeshCamera::new(&Arc::new(ir::MeshCamera {
             rays_per_pixel: rays,
             distribution,
@@ -250,7 +264,11 @@ mod tests {
 
     /// The centroid of face `k` of `mesh`.
     fn centroid(mesh: &ir::Mesh, k: usize) -> DVec3 {
-        mesh.triangles[k].map(|i| mesh.vertices[i as usize].as_dvec3()).iter().sum::<DVec3>() / 3.0
+        mesh.triangles[k]
+            .map(|i| mesh.vertices[i as usize].as_dvec3())
+            .iter()
+            .sum::<DVec3>()
+            / 3.0
     }
 
     #[test]
@@ -261,7 +279,10 @@ mod tests {
         let cam = camera(0, 1, vec![(mesh.clone(), None)]);
         for (x, y, face) in [(0, 0, 0), (3, 0, 3), (0, 1, 0), (2, 1, 2), (1, 2, 5)] {
             let ray = cam.ray(x as f64, y as f64, 4, 3, 0).expect("a face");
-            assert!((ray.origin - centroid(&mesh, face)).length() < 1e-9, "pixel ({x}, {y})");
+            assert!(
+                (ray.origin - centroid(&mesh, face)).length() < 1e-9,
+                "pixel ({x}, {y})"
+            );
             assert!((ray.direction - DVec3::Z).length() < 1e-12);
         }
         // 12 faces for 4 × 4 pixels: the last row's faces do not exist.
@@ -272,7 +293,9 @@ mod tests {
     #[test]
     fn distribution_0_takes_ray_k_from_mesh_k_and_1_numbers_the_meshes_on() {
         let (a, b) = (grid(1, 1), grid(2, 1));
-        let moved = ir::Transform { matrix: glam::DMat4::from_translation(DVec3::new(0.0, 0.0, 5.0)) };
+        let moved = ir::Transform {
+            matrix: glam::DMat4::from_translation(DVec3::new(0.0, 0.0, 5.0)),
+        };
         let cam = camera(0, 2, vec![(a.clone(), None), (b.clone(), Some(moved))]);
         let second = cam.ray(1.0, 0.0, 2, 1, 1).expect("face 1 of mesh 1");
         assert!((second.origin - (centroid(&b, 1) + DVec3::new(0.0, 0.0, 5.0))).length() < 1e-9);
@@ -297,7 +320,10 @@ mod tests {
         assert!(cam.ray(2.0, 0.0, 6, 1, 0).is_none());
         for x in [1u32, 3, 5] {
             let ray = cam.ray(f64::from(x), 0.0, 6, 1, 0).expect("a face");
-            assert!((ray.origin - centroid(&full, x as usize)).length() < 1e-9, "pixel {x}");
+            assert!(
+                (ray.origin - centroid(&full, x as usize)).length() < 1e-9,
+                "pixel {x}"
+            );
         }
     }
 
@@ -306,7 +332,9 @@ mod tests {
         // Two meshes across an 8-pixel-wide image: pixel 5 is in the second strip, whose face
         // POV-Ray numbers from the whole image's column (5), not the strip's.
         let (a, b) = (grid(4, 1), grid(4, 1));
-        let moved = ir::Transform { matrix: glam::DMat4::from_translation(DVec3::new(10.0, 0.0, 0.0)) };
+        let moved = ir::Transform {
+            matrix: glam::DMat4::from_translation(DVec3::new(10.0, 0.0, 0.0)),
+        };
         let cam = camera(2, 1, vec![(a, None), (b.clone(), Some(moved))]);
         let ray = cam.ray(5.0, 0.0, 8, 1, 0).expect("a face");
         assert!((ray.origin - (centroid(&b, 5) + DVec3::new(10.0, 0.0, 0.0))).length() < 1e-9);
@@ -315,7 +343,9 @@ mod tests {
     #[test]
     fn offset_reversal_and_transformation_move_the_ray() {
         let mesh = grid(1, 1);
-        let scale = ir::Transform { matrix: glam::DMat4::from_scale(DVec3::new(1.0, 1.0, 2.0)) };
+        let scale = ir::Transform {
+            matrix: glam::DMat4::from_scale(DVec3::new(1.0, 1.0, 2.0)),
+        };
         let cam = MeshCamera::new(&Arc::new(ir::MeshCamera {
             rays_per_pixel: 1,
             distribution: 0,
@@ -341,12 +371,18 @@ mod tests {
         let mesh = grid(2, 2);
         let cam = camera(3, 1, vec![(mesh, None)]);
         for (x, y) in [(0u32, 0u32), (1, 1), (2, 3), (3, 2)] {
-            let ray = cam.ray(f64::from(x), f64::from(y), 4, 4, 0).expect("a face");
+            let ray = cam
+                .ray(f64::from(x), f64::from(y), 4, 4, 0)
+                .expect("a face");
             let yy = (f64::from(y) - 0.5).max(0.0);
             let xx = (f64::from(x) + 0.5).min(3.0);
             let (u, v) = ((xx - 0.5) / 4.0, 1.0 - (yy + 0.5) / 4.0);
             let expected = DVec3::new(2.0 * u, -2.0 * (1.0 - v), 0.0);
-            assert!((ray.origin - expected).length() < 1e-9, "pixel ({x}, {y}): {} against {expected}", ray.origin);
+            assert!(
+                (ray.origin - expected).length() < 1e-9,
+                "pixel ({x}, {y}): {} against {expected}",
+                ray.origin
+            );
         }
         // A sheet covering only u < ½ sees nothing on the right.
         let mut half = grid(2, 2);

@@ -22,16 +22,15 @@ mod probe;
 mod query;
 
 pub use crate::ir::{
-    AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
-    Rgb,
+    AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection, Rgb,
 };
-pub use material::{Material, filter_colour};
-pub use normal::Normal;
-pub use query::{ShadowHull, interior_fade};
-pub use pigment::{Pigment, pigment_function};
-pub use probe::object_query;
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
+pub use material::{Material, filter_colour};
+pub use normal::Normal;
+pub use pigment::{Pigment, pigment_function};
+pub use probe::object_query;
+pub use query::{ShadowHull, interior_fade};
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -308,7 +307,9 @@ impl Object {
             None => p,
             Some(t) => t.object_from_world.transform_point3(p),
         };
-        self.shape.uv(local, part).unwrap_or(glam::DVec2::new(p.x, p.y))
+        self.shape
+            .uv(local, part)
+            .unwrap_or(glam::DVec2::new(p.x, p.y))
     }
 
     /// The material entries of the corners of mesh triangle `part` and the weights world
@@ -326,7 +327,9 @@ impl Object {
 
     /// `no_image`, `no_reflection`, `double_illuminate`.
     pub fn sight(&self) -> crate::ir::Sight {
-        self.extra.as_ref().map_or_else(Default::default, |e| e.sight)
+        self.extra
+            .as_ref()
+            .map_or_else(Default::default, |e| e.sight)
     }
 
     /// Whether `light` lights the object (a group's lights light only its members, whom
@@ -344,7 +347,11 @@ impl Object {
     /// Whether a ray that was (`reflected`) or was not reflected on its way sees the object.
     fn seen_by(&self, reflected: bool) -> bool {
         let sight = self.sight();
-        !(if reflected { sight.no_reflection } else { sight.no_image })
+        !(if reflected {
+            sight.no_reflection
+        } else {
+            sight.no_image
+        })
     }
 
     fn admits(&self, ray: &Ray) -> bool {
@@ -406,4 +413,3 @@ fn world_bounds(lo: DVec3, hi: DVec3, m: Option<&DMat4>) -> (DVec3, DVec3) {
     let pad = 1e-9 * (wlo.abs().max(whi.abs()).max_element() + (whi - wlo).max_element());
     (wlo - pad, whi + pad)
 }
-

@@ -50,7 +50,10 @@ impl Normal {
     /// Whether the normal (or one in its map) is uv-mapped.
     pub fn uses_uv(&self) -> bool {
         self.pattern.kind == PatternKind::UvMapping
-            || self.map.as_ref().is_some_and(|m| m.iter().any(|(_, n)| n.uses_uv()))
+            || self
+                .map
+                .as_ref()
+                .is_some_and(|m| m.iter().any(|(_, n)| n.uses_uv()))
     }
 
     /// The perturbation as placed by the IR, its pattern using noise generator `generator`
@@ -73,11 +76,10 @@ impl Normal {
             accuracy: n.accuracy,
             no_bump_scale: n.no_bump_scale,
             slope_map: n.slope_map.as_ref().map(|m| m.clone().into_boxed_slice()),
-            map: n.map.as_ref().map(|m| {
-                m.iter()
-                    .map(|(v, e)| (*v, Normal::new(e, scene)))
-                    .collect()
-            }),
+            map: n
+                .map
+                .as_ref()
+                .map(|m| m.iter().map(|(v, e)| (*v, Normal::new(e, scene))).collect()),
         }
     }
 
@@ -93,7 +95,10 @@ impl Normal {
         // `uv_mapping`: the entry perturbs at the surface's (u, v, 0), whatever moved the normal.
         if self.pattern.kind == PatternKind::UvMapping {
             if let Some(map) = &self.map {
-                return map[0].1.perturb_on(surface.uv.extend(0.0), n, surface).normalize();
+                return map[0]
+                    .1
+                    .perturb_on(surface.uv.extend(0.0), n, surface)
+                    .normalize();
             }
         }
         let q = self.pattern_from_world.map_or(p, |m| m.transform_point3(p));
@@ -134,7 +139,11 @@ impl Normal {
                 let mut scale = 1.0;
                 for _ in 0..10 {
                     let d = dnoise(tp * scale);
-                    r += DVec3::new((d.x / scale).abs(), (d.y / scale).abs(), (d.z / scale).abs());
+                    r += DVec3::new(
+                        (d.x / scale).abs(),
+                        (d.y / scale).abs(),
+                        (d.z / scale).abs(),
+                    );
                     scale *= 2.0;
                 }
                 n += a * r;
@@ -206,7 +215,11 @@ mod tests {
             &crate::LoadOptions::default(),
         )
         .unwrap_or_else(|e| panic!("{body}: {e}"));
-        let n = loaded.scene.objects[0].texture.normal.as_deref().expect("a normal");
+        let n = loaded.scene.objects[0]
+            .texture
+            .normal
+            .as_deref()
+            .expect("a normal");
         Normal::new(
             n,
             crate::pattern::SceneDefaults {
@@ -230,7 +243,10 @@ mod tests {
             let normal = normal_of(body);
             setups += 1;
             for line in lines.filter(|l| !l.trim().is_empty()) {
-                let v: Vec<f64> = line.split_whitespace().map(|x| x.parse().unwrap()).collect();
+                let v: Vec<f64> = line
+                    .split_whitespace()
+                    .map(|x| x.parse().unwrap())
+                    .collect();
                 let got = normal.perturb(DVec3::new(v[0], v[1], v[2]), DVec3::NEG_Z);
                 let expected = DVec3::new(v[3], v[4], v[5]).normalize();
                 assert!(

@@ -242,7 +242,11 @@ pub(super) fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
     if prev == cur || v == entries[cur].0 {
         return (cur, cur, 0.0);
     }
-    (prev, cur, (v - entries[prev].0) / (entries[cur].0 - entries[prev].0))
+    (
+        prev,
+        cur,
+        (v - entries[prev].0) / (entries[cur].0 - entries[prev].0),
+    )
 }
 
 /// An image map (POV-Ray's `image_map`): the image's pixel, fully
@@ -279,13 +283,13 @@ mod tests {
     fn checker_picks_its_two_colours_by_unit_cube() {
         let p = Pigment::new(
             &ir::Pigment {
-            kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
-                pattern: Pattern::new(crate::pattern::PatternKind::Checker),
-                map: ir::PigmentMap::Colours(ColourMap {
-                    entries: vec![(0.0, c(0.2)), (1.0, c(0.7))],
-                }),
-            })),
-            transform: None,
+                kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
+                    pattern: Pattern::new(crate::pattern::PatternKind::Checker),
+                    map: ir::PigmentMap::Colours(ColourMap {
+                        entries: vec![(0.0, c(0.2)), (1.0, c(0.7))],
+                    }),
+                })),
+                transform: None,
             },
             crate::pattern::SceneDefaults {
                 generator: 2,
@@ -331,5 +335,4 @@ mod tests {
         assert_eq!(lookup(&map.entries, 0.1), c(0.0));
         assert_eq!(lookup(&map.entries, 0.5), c(1.0));
     }
-
 }

@@ -164,7 +164,11 @@ impl Scene {
             surface: crate::pattern::Surface {
                 point,
                 // (POV-Ray's slope and aoi see the normal turned to face the ray.)
-                normal: if normal.dot(ray.direction) > 0.0 { -normal } else { normal },
+                normal: if normal.dot(ray.direction) > 0.0 {
+                    -normal
+                } else {
+                    normal
+                },
                 direction: ray.direction,
                 uv,
                 corners,
@@ -178,13 +182,15 @@ impl Scene {
     /// cannot meet a shadow ray leaving its own surface (the ray starts off it, on the side
     /// it travels to), so a plane `from` is left out.
     pub fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>) {
-        let own_plane = |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
+        let own_plane =
+            |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
         match &self.index {
             Some(index) => {
                 let objects = &self.objects;
                 out.extend(
-                    (index.unbounded.iter().copied())
-                        .filter(|&i| !own_plane(i) && !hull.excludes_unbounded(&objects[i as usize])),
+                    (index.unbounded.iter().copied()).filter(|&i| {
+                        !own_plane(i) && !hull.excludes_unbounded(&objects[i as usize])
+                    }),
                 );
                 index.each_kept(|lo, hi| !hull.excludes(lo, hi), |i| out.push(i));
             }
@@ -459,7 +465,6 @@ impl Scene {
     }
 }
 
-
 /// Two crossings of a shadow ray closer than this, relative to the distances and coordinates
 /// involved, are taken for the same point (a few thousand times the rounding of a double).
 const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
@@ -500,7 +505,6 @@ fn may_hit(bounds: Option<(DVec3, DVec3)>, ray: &Ray, inv: DVec3) -> bool {
     near.partial_cmp(&far) != Some(std::cmp::Ordering::Greater)
 }
 
-
 /// The convex region that every shadow ray from near an apex (a shading point) to a point of
 /// a parallelogram (an area light's extent) runs through: the pyramid on the parallelogram,
 /// as five planes. Objects whose boxes lie wholly outside one plane cannot shadow the point
@@ -520,9 +524,9 @@ impl ShadowHull {
     /// it is degenerate (the apex in the parallelogram's plane, or a parallelogram of no
     /// area), where nothing may be culled.
     pub fn new(apex: DVec3, corners: [DVec3; 4]) -> Option<ShadowHull> {
-        let scale = corners
-            .iter()
-            .fold(apex.abs().max_element(), |m, c| m.max(c.abs().max_element()));
+        let scale = corners.iter().fold(apex.abs().max_element(), |m, c| {
+            m.max(c.abs().max_element())
+        });
         let margin = 1e-7 * (1.0 + scale);
         let plane = |n: DVec3, through: DVec3, inside: DVec3| -> Option<(DVec3, f64)> {
             let length = n.length();
@@ -563,7 +567,9 @@ impl ShadowHull {
             None => v,
             Some(t) => t.object_from_world.transform_point3(v),
         });
-        let scale = local.iter().fold(plane.distance.abs(), |m, v| m.max(v.abs().max_element()));
+        let scale = local
+            .iter()
+            .fold(plane.distance.abs(), |m, v| m.max(v.abs().max_element()));
         let margin = 1e-7 * (1.0 + scale);
         let side = local.map(|v| plane.normal.dot(v) - plane.distance);
         side.iter().all(|&s| s > margin) || side.iter().all(|&s| s < -margin)
@@ -602,7 +608,11 @@ mod hull_tests {
     fn hull() -> ShadowHull {
         // Apex at the origin, a 2 × 2 light at height 4.
         let c = |x: f64, z: f64| DVec3::new(x, 4.0, z);
-        ShadowHull::new(DVec3::ZERO, [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)]).expect("solid")
+        ShadowHull::new(
+            DVec3::ZERO,
+            [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)],
+        )
+        .expect("solid")
     }
 
     #[test]

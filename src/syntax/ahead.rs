@@ -176,7 +176,8 @@ fn spawn_helpers(source: &Arc<str>, file: FileId, starts: &[usize], helpers: usi
     for h in 0..helpers {
         let (to_caller, from_helper) = sync_channel(1);
         let (to_helper, from_caller) = channel::<Vec<Node>>();
-        let (source, starts, cancel) = (Arc::clone(source), Arc::clone(&starts), Arc::clone(&cancel));
+        let (source, starts, cancel) =
+            (Arc::clone(source), Arc::clone(&starts), Arc::clone(&cancel));
         let spawned = std::thread::Builder::new()
             .name("trace-parse".into())
             .stack_size(STACK_BYTES)

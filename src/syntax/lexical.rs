@@ -61,7 +61,10 @@ fn lone_hashes(text: &str) -> Option<String> {
             }
             b'#' => {
                 let next = skip_space(b, i + 1);
-                if !b.get(next).is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') {
+                if !b
+                    .get(next)
+                    .is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_')
+                {
                     out.get_or_insert_with(|| b.to_vec())[i] = b' ';
                 }
             }
@@ -97,7 +100,9 @@ fn choices(text: &str) -> Option<String> {
 /// `at`, if one stands there.
 fn choice(b: &[u8], at: usize) -> Option<Vec<(usize, &'static str)>> {
     let mut i = at + 3;
-    if b.get(i).is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_') {
+    if b.get(i)
+        .is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_')
+    {
         return None; // (#ifdef, #ifndef)
     }
     i = skip_space(b, i);
@@ -175,7 +180,10 @@ mod tests {
             "#macro M(U)\n   #if(U)\n      merge {\n   }#end\n      union {\n       \n      sphere { 0, 1 }\n   }\n#end\n"
         );
         assert_eq!(super::rewrite("#if (A) union { #else merge { #end"), None);
-        assert_eq!(super::rewrite("#if (A) sphere { 0, 1 } #else box { 0, 1 } #end"), None);
+        assert_eq!(
+            super::rewrite("#if (A) sphere { 0, 1 } #else box { 0, 1 } #end"),
+            None
+        );
     }
 
     #[test]

@@ -592,7 +592,11 @@ pub fn statement_in(
     base: usize,
     items: bool,
 ) -> Option<Result<(Node, usize), Diagnostic>> {
-    let rule = if items { Rule::next_item } else { Rule::next_statement };
+    let rule = if items {
+        Rule::next_item
+    } else {
+        Rule::next_statement
+    };
     let mut pairs = match SceneParser::parse(rule, &text[pos..]) {
         Ok(pairs) => pairs,
         Err(e) => return Some(Err(syntax_error_at(e, file, base + pos))),
@@ -783,7 +787,12 @@ fn too_deep(file: FileId, at: usize) -> Diagnostic {
 /// A map entry kept as text (`[V P rotate A*y]`, the whole of it from `[` to `]`, at byte
 /// `offset` of `file`) read as an entry of a `pigment_map`, `normal_map` or `texture_map`
 /// (`what`).
-pub fn parse_map_entry(text: &str, file: FileId, offset: usize, what: &str) -> Result<Node, Diagnostic> {
+pub fn parse_map_entry(
+    text: &str,
+    file: FileId,
+    offset: usize,
+    what: &str,
+) -> Result<Node, Diagnostic> {
     let rule = match what {
         "normal_map" => Rule::normal_entry_probe,
         "texture_map" => Rule::texture_entry_probe,
@@ -884,9 +893,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         macro_call => "a macro call",
         semicolon => "`;`",
         flag | translate | rotate | scale | matrix | transform | texture | pigment | normal
-        | finish => {
-            "an object modifier"
-        }
+        | finish => "an object modifier",
         rbrace => "`}`",
         kw_face_indices => {
             "`face_indices` (a mesh2's lists come in POV-Ray's order: vertex_vectors, normal_vectors, uv_vectors, face_indices, normal_indices, uv_indices)"
@@ -1107,9 +1114,12 @@ impl Lower {
             Rule::colour_item => NodeKind::ColourItem,
             Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
-            Rule::ident | Rule::name_ref | Rule::item_ref | Rule::file_word | Rule::spline_kind | Rule::bare_name => {
-                NodeKind::IdentRef
-            }
+            Rule::ident
+            | Rule::name_ref
+            | Rule::item_ref
+            | Rule::file_word
+            | Rule::spline_kind
+            | Rule::bare_name => NodeKind::IdentRef,
             Rule::array_value => NodeKind::Array,
             Rule::deprecation => NodeKind::Deprecation,
             Rule::leading_directives => NodeKind::LeadingDirectives,
@@ -1154,9 +1164,18 @@ impl Lower {
             return node;
         }
         if rule == Rule::value_item {
-            node.word = pair.as_str().trim().trim_end_matches(',').trim_end().to_string();
+            node.word = pair
+                .as_str()
+                .trim()
+                .trim_end_matches(',')
+                .trim_end()
+                .to_string();
             node.word_span = span;
-            node.args = pair.into_inner().filter(|p| is_expr(p.as_rule())).map(|p| self.expr(p)).collect();
+            node.args = pair
+                .into_inner()
+                .filter(|p| is_expr(p.as_rule()))
+                .map(|p| self.expr(p))
+                .collect();
             return node;
         }
         if rule == Rule::item_ref || rule == Rule::bare_name {

@@ -94,7 +94,10 @@ impl<'a> Scanner<'a> {
     fn word(&mut self) -> Option<(&'a str, usize)> {
         let bytes = self.text.as_bytes();
         let start = self.at;
-        if !bytes.get(start).is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_') {
+        if !bytes
+            .get(start)
+            .is_some_and(|b| b.is_ascii_alphabetic() || *b == b'_')
+        {
             return None;
         }
         let mut end = start + 1;
@@ -156,7 +159,10 @@ impl<'a> Scanner<'a> {
         }
         let name_end = self.at;
         self.skip_blanks();
-        if !self.peek().is_some_and(|b| b == b'}' || b.is_ascii_alphabetic() || b == b'_') {
+        if !self
+            .peek()
+            .is_some_and(|b| b == b'}' || b.is_ascii_alphabetic() || b == b'_')
+        {
             return None;
         }
         let mut node = self.node(NodeKind::IdentRef, name, start);
@@ -270,11 +276,16 @@ impl<'a> Scanner<'a> {
 
     /// `texture { pigment/finish/transforms }`.
     fn texture(&mut self, start: usize) -> Option<Node> {
-        self.block(NodeKind::Texture, "texture", start, |s, word, item_start| match word {
-            "pigment" => s.pigment(item_start),
-            "finish" => s.finish(item_start),
-            _ => s.transform(word, item_start)?,
-        })
+        self.block(
+            NodeKind::Texture,
+            "texture",
+            start,
+            |s, word, item_start| match word {
+                "pigment" => s.pigment(item_start),
+                "finish" => s.finish(item_start),
+                _ => s.transform(word, item_start)?,
+            },
+        )
     }
 
     /// `word { item … }`, each item starting with a word that `item` reads (from the word and
@@ -406,7 +417,11 @@ mod tests {
     fn by_lane(text: &str) -> Option<(String, usize)> {
         let (node, end) = statement(text, 0, FileId(0))?;
         let lane = (format!("{node:?}"), end);
-        assert_eq!(Some(&lane), by_grammar(text).as_ref(), "the two readings of {text:?} differ");
+        assert_eq!(
+            Some(&lane),
+            by_grammar(text).as_ref(),
+            "the two readings of {text:?} differ"
+        );
         Some(lane)
     }
 
@@ -488,10 +503,47 @@ mod tests {
     #[test]
     fn near_misses_are_read_as_the_grammar_does_or_left_to_it() {
         const TOKENS: &[&str] = &[
-            "sphere", "box", "cone", "object", "Tree", "{", "}", "<", ">", ",", "1", "-2.5",
-            ".5", "3e2", "1e", "+4.", "pigment", "rgb", "color", "rgbt", "finish", "phong",
-            "diffuse", "translate", "no_shadow", "on", "(", "*", "-", ".", "/", " ", "\n",
-            "texture", "scale", "open", "conserve_energy", "x", "#", ";", "[",
+            "sphere",
+            "box",
+            "cone",
+            "object",
+            "Tree",
+            "{",
+            "}",
+            "<",
+            ">",
+            ",",
+            "1",
+            "-2.5",
+            ".5",
+            "3e2",
+            "1e",
+            "+4.",
+            "pigment",
+            "rgb",
+            "color",
+            "rgbt",
+            "finish",
+            "phong",
+            "diffuse",
+            "translate",
+            "no_shadow",
+            "on",
+            "(",
+            "*",
+            "-",
+            ".",
+            "/",
+            " ",
+            "\n",
+            "texture",
+            "scale",
+            "open",
+            "conserve_energy",
+            "x",
+            "#",
+            ";",
+            "[",
         ];
         let mut state = 0x2545_f491_4f6c_dd1du64;
         let mut next = |n: usize| {
@@ -533,6 +585,9 @@ mod tests {
         }
         // Some variants stay plain (a blank moved, a number replaced): the comparison above
         // then ran on them.
-        assert!(taken > cases / 20, "only {taken} of {cases} variants were taken");
+        assert!(
+            taken > cases / 20,
+            "only {taken} of {cases} variants were taken"
+        );
     }
 }

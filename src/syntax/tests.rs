@@ -83,9 +83,19 @@ fn colour_with_channel_modifiers() {
 #[test]
 fn declare_of_a_float_without_semicolon_is_marked() {
     let nodes = parse("#declare A = 1 sphere { 0, 1 }").expect("parses");
-    assert!(nodes[0].children.iter().any(|c| c.kind == NodeKind::MissingSemicolon));
+    assert!(
+        nodes[0]
+            .children
+            .iter()
+            .any(|c| c.kind == NodeKind::MissingSemicolon)
+    );
     let nodes = parse("#declare A = 1; sphere { 0, 1 }").expect("parses");
-    assert!(!nodes[0].children.iter().any(|c| c.kind == NodeKind::MissingSemicolon));
+    assert!(
+        !nodes[0]
+            .children
+            .iter()
+            .any(|c| c.kind == NodeKind::MissingSemicolon)
+    );
 }
 
 #[test]

@@ -100,7 +100,10 @@ fn string_end(b: &[u8], mut i: usize) -> usize {
 /// trace's grammar).
 fn comment_end(b: &[u8], i: usize) -> usize {
     if b[i + 1] == b'/' {
-        return b[i..].iter().position(|&c| c == b'\n').map_or(b.len(), |n| i + n);
+        return b[i..]
+            .iter()
+            .position(|&c| c == b'\n')
+            .map_or(b.len(), |n| i + n);
     }
     super::bulk::skip_block_comment(b, i, usize::MAX).unwrap_or(b.len())
 }
@@ -217,7 +220,9 @@ pub fn conditional_at(text: &str, pos: usize) -> Option<Conditional> {
 /// The `#while` or `#for` loop standing at byte `pos`, if one does and has its `#end`.
 pub fn loop_at(text: &str, pos: usize) -> Option<Loop> {
     let mut found = directives(text, pos);
-    let first = found.next().filter(|d| d.at == pos && matches!(d.word, "while" | "for"))?;
+    let first = found
+        .next()
+        .filter(|d| d.at == pos && matches!(d.word, "while" | "for"))?;
     let head = pos..parenthesis_end(text, first.after)?;
     let mut depth = 0usize;
     for d in found.filter(|d| d.at >= head.end) {
@@ -310,7 +315,11 @@ pub fn culprit(text: &str, from: usize, at: usize) -> Option<Culprit> {
                         return last_before;
                     }
                     let outside = open.iter().all(|&(_, c)| c);
-                    return Some(if outside { Culprit::Choose(start) } else { Culprit::InLoop(start) });
+                    return Some(if outside {
+                        Culprit::Choose(start)
+                    } else {
+                        Culprit::InLoop(start)
+                    });
                 }
                 if conditional && open.is_empty() {
                     last_before = Some(Culprit::Choose(start));
@@ -349,9 +358,19 @@ mod tests {
     fn a_conditional_and_its_branches() {
         let t = "#if (A) x #elseif ((B)) y #else z #end w";
         let c = conditional_at(t, 0).unwrap();
-        let parts: Vec<(&str, &str)> =
-            c.branches.iter().map(|b| (&t[b.head.clone()], &t[b.body.clone()])).collect();
-        assert_eq!(parts, [("#if (A)", " x "), ("#elseif ((B))", " y "), ("#else", " z ")]);
+        let parts: Vec<(&str, &str)> = c
+            .branches
+            .iter()
+            .map(|b| (&t[b.head.clone()], &t[b.body.clone()]))
+            .collect();
+        assert_eq!(
+            parts,
+            [
+                ("#if (A)", " x "),
+                ("#elseif ((B))", " y "),
+                ("#else", " z ")
+            ]
+        );
         assert_eq!(&t[c.end.clone()], "#end");
         assert_eq!(conditional_at(t, 1), None);
         assert_eq!(conditional_at("#if (A) x", 0), None);
@@ -384,7 +403,10 @@ mod tests {
         let len = t.len();
         keep_branch(&mut t, &c, Some(0));
         assert_eq!(t.len(), len);
-        assert_eq!(t.split_whitespace().collect::<Vec<_>>(), ["a", "union", "{", "b"]);
+        assert_eq!(
+            t.split_whitespace().collect::<Vec<_>>(),
+            ["a", "union", "{", "b"]
+        );
         let mut t = String::from("#if (A) x #else y #end");
         let c = conditional_at(&t, 0).unwrap();
         keep_branch(&mut t, &c, None);
