@@ -25,8 +25,7 @@
 //! stable interface and nothing installed by `cargo install` turns that feature on.
 
 #![warn(missing_docs)]
-// Items only the stability suite and benchmarks reach are dead without `internals`.
-#![cfg_attr(not(feature = "internals"), allow(dead_code))]
+
 
 pub mod diag;
 pub mod film;

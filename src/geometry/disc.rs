@@ -17,13 +17,6 @@ pub struct Disc {
     pub hole_radius: f64,
 }
 
-impl Disc {
-    /// Unit normal.
-    pub fn normal(&self) -> DVec3 {
-        self.normal
-    }
-}
-
 impl super::shape::Surface for Disc {
     const NAME: &'static str = "Disc";
 

@@ -224,6 +224,7 @@ impl Crossings {
     }
 
     /// Number of crossings.
+    #[cfg(any(test, feature = "internals"))]
     pub fn len(&self) -> usize {
         self.len
     }

@@ -12,13 +12,6 @@ pub struct Plane {
     pub distance: f64,
 }
 
-impl Plane {
-    /// Outward unit normal.
-    pub fn normal(&self) -> DVec3 {
-        self.normal
-    }
-}
-
 impl super::shape::Surface for Plane {
     const NAME: &'static str = "Plane";
 

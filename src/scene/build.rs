@@ -451,6 +451,7 @@ impl Scene {
 
     /// Whether a top-level BVH serves the ray queries (scenes of few objects test every
     /// object for every ray instead).
+    #[cfg(any(test, feature = "internals"))]
     pub fn has_index(&self) -> bool {
         self.index.is_some()
     }

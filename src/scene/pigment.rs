@@ -85,14 +85,6 @@ impl Pigment {
         }
     }
 
-    /// The colour everywhere, if the pigment is a solid colour.
-    pub fn solid(&self) -> Option<Colour> {
-        match &self.kind {
-            Kind::Solid(c) => Some(*c),
-            _ => None,
-        }
-    }
-
     /// Whether the pigment may let light through somewhere (filter or transmit non-zero).
     pub fn may_be_transparent(&self) -> bool {
         let see_through = |c: &Colour| c.filter != 0.0 || c.transmit != 0.0;

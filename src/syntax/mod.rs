@@ -406,6 +406,7 @@ pub fn is_identifier(word: &str) -> bool {
 }
 
 /// Parses a whole scene file into its top-level statements.
+#[cfg(test)]
 pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
     parse_items(text, file, 0, Rule::scene)
 }
