@@ -26,7 +26,6 @@
 
 #![warn(missing_docs)]
 
-
 pub mod diag;
 pub mod film;
 pub mod font;

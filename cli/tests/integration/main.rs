@@ -21,6 +21,15 @@ pub fn root() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
 }
 
+/// POV-Ray's standard include folder (Debian's `povray-includes`, or where `POVRAY_INCLUDE`
+/// points). A test that reads its files calls this and fails where it is missing, rather than
+/// passing without running; `.ci/run` installs it.
+pub fn povray_includes() -> PathBuf {
+    trace::standard_include_folder().expect(
+        "POV-Ray's include files are not installed: `apt-get install povray-includes`, or set POVRAY_INCLUDE",
+    )
+}
+
 /// Loads scene text at a given image size, panicking with the rendered diagnostic on error.
 pub fn load_text(text: &str, width: u32, height: u32) -> trace::ir::Scene {
     let options = trace::LoadOptions {

@@ -241,10 +241,7 @@ fn equal_finishes_and_interiors_are_stored_once() {
 /// (tests/scenes/ok/functions.povray.txt, captured from `povray` on the same scene).
 #[test]
 fn functions_give_povrays_values() {
-    let Some(include) = trace::standard_include_folder() else {
-        eprintln!("skipped: POV-Ray's include folder is not installed");
-        return;
-    };
+    let include = crate::povray_includes();
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let scene = root.join("tests/scenes/ok/functions.rt");
     let options = trace::LoadOptions {
@@ -399,10 +396,7 @@ fn missing_semicolons_follow_the_version() {
 /// as CSG at its place in shapes.inc.
 #[test]
 fn an_object_keyword_chosen_by_a_directive() {
-    let Some(include) = trace::standard_include_folder() else {
-        eprintln!("skipped: POV-Ray's include folder is not installed");
-        return;
-    };
+    let include = crate::povray_includes();
     let options = trace::LoadOptions {
         width: 8,
         height: 8,
