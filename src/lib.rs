@@ -171,8 +171,6 @@ pub fn load_str(path: &Path, text: String, options: &LoadOptions) -> Result<Load
 
 fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Result<Loaded, Error> {
     let mut sources = SourceMap::default();
-    // (An object keyword chosen by a directive, as shapes.inc writes it: see syntax::lexical.)
-    let text = syntax::lexical::rewrite(&text).unwrap_or(text);
     let file = sources.add(path, text);
     let services = eval::Services {
         pigment_function: scene::pigment_function,

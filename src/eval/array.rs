@@ -9,12 +9,20 @@
 use super::Evaluator;
 use super::value::{Array, Value};
 use crate::diag::{Diagnostic, Span};
-use crate::syntax::{Expr, ExprKind, Node, NodeKind};
+use crate::syntax::{Expr, ExprKind, Node, NodeKind, Slot};
 
 type Result<T> = std::result::Result<T, Diagnostic>;
 
 /// More elements than this in one array is an error (a typo such as `array[1e9]`, not a scene).
 const MAX_ELEMENTS: usize = 1 << 24;
+
+/// Where the array a name stands for is found: bound in the unit being evaluated (an element
+/// read), or among the declarations (an element assigned, or tested by `#ifdef`).
+#[derive(Clone, Copy)]
+enum Holder {
+    Bound(Slot),
+    Declared,
+}
 
 impl Evaluator<'_> {
     /// `array[d1][d2]… { … }`.
@@ -114,12 +122,18 @@ impl Evaluator<'_> {
     /// The row-major position of the element `name[subscripts…]` in each array along the way:
     /// an array's element may itself be an array, subscripted further (`A[1][2]` of an array
     /// of arrays).
-    fn element_path(&mut self, name: &str, name_span: Span, subs: &[&Expr]) -> Result<Vec<usize>> {
+    fn element_path(
+        &mut self,
+        name: &str,
+        holder: Holder,
+        name_span: Span,
+        subs: &[&Expr],
+    ) -> Result<Vec<usize>> {
         let mut indices = Vec::with_capacity(subs.len());
         for sub in subs {
             indices.push((self.float(sub)?.trunc(), sub.span));
         }
-        let mut array = match self.env.get(name) {
+        let mut array = match self.holder_value(name, holder) {
             Some(Value::Array(a)) => a,
             Some(other) => {
                 return Err(Diagnostic::error(
@@ -197,25 +211,35 @@ impl Evaluator<'_> {
             base = inner;
         }
         subs.reverse();
-        let ExprKind::Ident(name) = &base.kind else {
+        let ExprKind::Ident(name, name_slot) = &base.kind else {
             return Err(Diagnostic::error(
                 "only a declared array can be subscripted",
                 base.span,
             ));
         };
-        self.element(name, base.span, &subs, expr.span)
+        self.element(name, *name_slot, base.span, &subs, expr.span)
     }
 
-    /// A copy of the element `name[subs…]`.
+    /// The value `name` stands for, from `holder`.
+    fn holder_value(&self, name: &str, holder: Holder) -> Option<&Value> {
+        match holder {
+            Holder::Bound(slot) => self.bound(slot),
+            Holder::Declared => self.env.get(name).map(|v| &**v),
+        }
+    }
+
+    /// A copy of the element `name[subs…]`, `name` bound in `slot`.
     fn element(
         &mut self,
         name: &str,
+        name_slot: Slot,
         name_span: Span,
         subs: &[&Expr],
         span: Span,
     ) -> Result<Value> {
-        let path = self.element_path(name, name_span, subs)?;
-        match self.env.get(name) {
+        let holder = Holder::Bound(name_slot);
+        let path = self.element_path(name, holder, name_span, subs)?;
+        match self.holder_value(name, holder) {
             Some(Value::Array(a)) => match slot(a, &path) {
                 Some(v) => Ok(v.clone()),
                 None => Err(Diagnostic::error(
@@ -230,21 +254,21 @@ impl Evaluator<'_> {
     /// `T` or `A[i]` where an item may stand.
     pub(super) fn item_ref(&mut self, node: &Node) -> Result<Value> {
         if node.children.is_empty() {
-            return match self.env.get(&node.word) {
+            return match self.bound(node.slot) {
                 Some(v) => self.usable(&node.word, v.clone(), node.span),
                 None => Err(self.unknown_word(&node.word, node.span)),
             };
         }
         let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
-        self.element(&node.word, node.word_span, &subs, node.span)
+        self.element(&node.word, node.slot, node.word_span, &subs, node.span)
     }
 
     /// `#ifdef (A[i])`: whether the element has been assigned (out of range is an error, as in
     /// POV-Ray).
     pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
         let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
-        let path = self.element_path(&node.word, node.word_span, &subs)?;
-        let Some(Value::Array(array)) = self.env.get(&node.word) else {
+        let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
+        let Some(Value::Array(array)) = self.env.get(&node.word).map(|v| &**v) else {
             unreachable!("element_path checked that the name is an array");
         };
         Ok(slot(array, &path).is_some())
@@ -258,8 +282,9 @@ impl Evaluator<'_> {
         value: Value,
     ) -> Result<()> {
         let exprs: Vec<&Expr> = subs.iter().map(|s| &s.args[0]).collect();
-        let path = self.element_path(&name.word, name.span, &exprs)?;
-        let Some(Value::Array(array)) = self.env.get_mut(&name.word) else {
+        let path = self.element_path(&name.word, Holder::Declared, name.span, &exprs)?;
+        let Some(Value::Array(array)) = self.env.get_mut(&name.word).map(std::sync::Arc::make_mut)
+        else {
             unreachable!("element_path checked that the name is an array");
         };
         let (array, pos) = slot_mut(array, &path);
@@ -293,7 +318,7 @@ impl Evaluator<'_> {
                 Value::Array(a) => a.dims.clone(),
                 other => return Err(super::expr::type_error("an array", &other, args[0].span)),
             },
-            ExprKind::Ident(id) => match self.env.get(id) {
+            ExprKind::Ident(id, name_slot) => match self.bound(*name_slot) {
                 Some(Value::Array(a)) => a.dims.clone(),
                 Some(other) => {
                     return Err(super::expr::type_error("an array", other, args[0].span));

@@ -3,7 +3,7 @@
 use super::value::{Value, Vector, srgb_decode};
 use super::{Evaluator, keywords};
 use crate::diag::{Diagnostic, Span};
-use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, UnOp};
+use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, Slot, UnOp};
 
 /// Functions whose value is a string (evaluated by `Evaluator::string`).
 pub(super) const STRING_FUNCTIONS: [&str; 8] = [
@@ -71,17 +71,14 @@ impl Evaluator<'_> {
                 Ok(Value::Vector(Vector::new(&comps)))
             }
             ExprKind::Str(_) => Ok(Value::Str(self.string(expr)?)),
-            ExprKind::Call(name, _, _) if STRING_FUNCTIONS.contains(&name.as_str()) => {
+            ExprKind::Call(name, _, _, _) if STRING_FUNCTIONS.contains(&name.as_str()) => {
                 Ok(Value::Str(self.string(expr)?))
-            }
-            ExprKind::Call(name, name_span, args) if self.macros.contains_key(name) => {
-                self.macro_value(name, *name_span, args, expr.span)
             }
             ExprKind::PlainVector(c, len) => Ok(Value::Vector(Vector {
                 c: *c,
                 len: *len as usize,
             })),
-            ExprKind::Ident(name) => self.ident(name, expr.span),
+            ExprKind::Ident(name, slot) => self.ident(name, *slot, expr.span),
             ExprKind::Unary(op, operand) => {
                 let v = self.eval(operand)?;
                 match op {
@@ -110,7 +107,9 @@ impl Evaluator<'_> {
                     vb
                 })
             }
-            ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, expr.span),
+            ExprKind::Call(name, name_span, slot, args) => {
+                self.call(name, *name_span, *slot, args, expr.span)
+            }
             ExprKind::Member(base, name, span) => {
                 let v = self.eval(base)?;
                 self.member(&v, name, *span, base.span)
@@ -148,8 +147,9 @@ impl Evaluator<'_> {
         }
     }
 
-    pub(super) fn ident(&mut self, name: &str, span: Span) -> Result<Value> {
-        if let Some(v) = self.env.get(name) {
+    /// The value of the name `name` bound in `slot`, or of the built-in constant it names.
+    pub(super) fn ident(&mut self, name: &str, slot: Slot, span: Span) -> Result<Value> {
+        if let Some(v) = self.bound(slot) {
             return self.usable(name, v.clone(), span);
         }
         let v3 = |x, y, z| Value::Vector(Vector::new(&[x, y, z]));
@@ -348,8 +348,16 @@ impl Evaluator<'_> {
         }
     }
 
-    fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Value> {
-        match self.env.get(name) {
+    /// `name(args)`: a declared function or spline (bound in `slot`), or a built-in function.
+    pub(super) fn call(
+        &mut self,
+        name: &str,
+        name_span: Span,
+        slot: Slot,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Value> {
+        match self.bound(slot) {
             Some(Value::Function(f)) => {
                 let f = std::sync::Arc::clone(f);
                 return self.call_function(&f, name, args, span);
@@ -586,13 +594,13 @@ impl Evaluator<'_> {
         let f = match name {
             "defined" => {
                 want(1)?;
-                let ExprKind::Ident(id) = &args[0].kind else {
+                let ExprKind::Ident(_, slot) = &args[0].kind else {
                     return Err(Diagnostic::error(
                         "`defined` takes an identifier",
                         args[0].span,
                     ));
                 };
-                bool_value(self.env.contains_key(id))
+                bool_value(self.bound(*slot).is_some())
             }
             "strlen" => {
                 want(1)?;

@@ -241,7 +241,7 @@ impl Evaluator<'_> {
             NodeKind::FileClose => {
                 // Closing a name that is not an open file does nothing, as in POV-Ray.
                 let name = &item.children[0].word;
-                if let Some(Value::File(id)) = self.env.get(name) {
+                if let Some(Value::File(id)) = self.env.get(name).map(|v| &**v) {
                     let id = *id;
                     self.close_file(id, item.span)?;
                     self.env.remove(name);
@@ -265,7 +265,7 @@ impl Evaluator<'_> {
             ));
         }
         // Opening a name again first closes the file it held, as POV-Ray replaces the symbol.
-        if let Some(Value::File(id)) = self.env.get(&name_node.word) {
+        if let Some(Value::File(id)) = self.env.get(&name_node.word).map(|v| &**v) {
             let id = *id;
             self.close_file(id, item.span)?;
         }
@@ -321,7 +321,7 @@ impl Evaluator<'_> {
                 self.files.open.len() - 1
             }
         };
-        self.env.insert(name_node.word.clone(), Value::File(id));
+        self.set(name_node.word.clone(), Value::File(id));
         Ok(())
     }
 
@@ -336,7 +336,7 @@ impl Evaluator<'_> {
 
     /// The open file a `#read`/`#write` names.
     fn user_file(&self, node: &Node) -> Result<usize> {
-        match self.env.get(&node.word) {
+        match self.env.get(&node.word).map(|v| &**v) {
             Some(Value::File(id)) => Ok(*id),
             Some(other) => Err(super::expr::type_error(
                 "a file opened by #fopen",
@@ -378,7 +378,7 @@ impl Evaluator<'_> {
             };
             self.charge(1, "#read", target.span)?;
             if target.children.is_empty() {
-                self.env.insert(target.word.clone(), value);
+                self.set(target.word.clone(), value);
             } else {
                 let subs: Vec<&Node> = target.children.iter().collect();
                 self.assign_element(target, &subs, value)?;

@@ -9,7 +9,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::func::spline::{Spline, SplineKind};
 use crate::func::{Function, Internal, Math1, Math2, Native, Op};
 use crate::ir;
-use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, UnOp};
+use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, Slot, UnOp};
 use std::sync::Arc;
 
 impl Evaluator<'_> {
@@ -63,7 +63,7 @@ impl Evaluator<'_> {
         }
         let body = &node.args[0];
         // `function { internal(N) }`: one of POV-Ray's built-in functions.
-        if let ExprKind::Call(name, _, args) = &body.kind {
+        if let ExprKind::Call(name, _, _, args) = &body.kind {
             if name == "internal" {
                 check_arity("internal", 1, args.len(), body.span)?;
                 let n = self.float(&args[0])? as i64;
@@ -129,8 +129,10 @@ impl Evaluator<'_> {
         };
         let mut args = node.args.as_slice();
         let mut spline = match args.first().map(|e| &e.kind) {
-            Some(ExprKind::Ident(name)) if matches!(self.env.get(name), Some(Value::Spline(_))) => {
-                let Some(Value::Spline(s)) = self.env.get(name) else {
+            Some(ExprKind::Ident(_, slot))
+                if matches!(self.bound(*slot), Some(Value::Spline(_))) =>
+            {
+                let Some(Value::Spline(s)) = self.bound(*slot) else {
                     unreachable!()
                 };
                 let s = (**s).clone();
@@ -195,7 +197,7 @@ impl Evaluator<'_> {
         let v = match args.get(1) {
             Some(e) => {
                 let kind = match &e.kind {
-                    ExprKind::Ident(k) => SplineKind::named(k),
+                    ExprKind::Ident(k, _) => SplineKind::named(k),
                     _ => None,
                 }
                 .ok_or_else(|| {
@@ -247,7 +249,7 @@ impl Evaluator<'_> {
         };
         match &e.kind {
             ExprKind::Number(n) => code.push(Op::Const(*n)),
-            ExprKind::Ident(name) => {
+            ExprKind::Ident(name, slot) => {
                 // As in POV-Ray, u is the parameter x and v the parameter y.
                 let alias = |a: &str, b: &str| params.iter().position(|p| p == a || p == b);
                 let register = match name.as_str() {
@@ -259,7 +261,7 @@ impl Evaluator<'_> {
                     code.push(Op::Arg(i as u8));
                     return Ok(());
                 }
-                match self.ident(name, e.span)? {
+                match self.ident(name, *slot, e.span)? {
                     Value::Float(f) => code.push(Op::Const(f)),
                     Value::Function(_) => {
                         return Err(Diagnostic::error(
@@ -306,25 +308,19 @@ impl Evaluator<'_> {
                     BinOp::Or => Op::Or,
                 });
             }
-            ExprKind::Call(name, name_span, args) => {
-                self.compile_call(name, *name_span, args, e.span, params, code)?
-            }
-            // (A directive in a function's body is executed as the function is declared, as
-            // POV-Ray's reader does.)
-            ExprKind::Chosen(branches, otherwise) => {
-                let chosen = self.chosen(branches, otherwise)?;
-                self.compile(chosen, params, code)?;
+            ExprKind::Call(name, name_span, slot, args) => {
+                self.compile_call(name, *name_span, *slot, args, e.span, params, code)?
             }
             ExprKind::Ternary(..) => return not_here("`? :` (use select(a, b, c))", e.span),
             ExprKind::Member(base, member, member_span) => {
                 // `F(x, y, z).red`: one value of a vector function (a pigment's colour …).
-                let ExprKind::Call(name, name_span, args) = &base.kind else {
+                let ExprKind::Call(name, name_span, slot, args) = &base.kind else {
                     return not_here(
                         "a member (`.x`, `.red` …) of anything but a pigment or spline function's value",
                         e.span,
                     );
                 };
-                let f = match self.ident(name, *name_span)? {
+                let f = match self.ident(name, *slot, *name_span)? {
                     Value::Function(f) => f,
                     other => {
                         return Err(Diagnostic::error(
@@ -375,10 +371,12 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn compile_call(
         &mut self,
         name: &str,
         name_span: Span,
+        slot: Slot,
         args: &[Expr],
         span: Span,
         params: &[String],
@@ -421,7 +419,7 @@ impl Evaluator<'_> {
         } else if name == "sum" || name == "prod" {
             // sum(i, a, b, f): the term is a function of this one's parameters and i.
             check_arity(name, 4, args.len(), span)?;
-            let ExprKind::Ident(var) = &args[0].kind else {
+            let ExprKind::Ident(var, _) = &args[0].kind else {
                 return Err(Diagnostic::error(
                     format!("`{name}` counts with a name: {name}(i, a, b, f)"),
                     args[0].span,
@@ -457,7 +455,7 @@ impl Evaluator<'_> {
                 Op::Select4
             });
         } else {
-            match self.ident(name, name_span)? {
+            match self.ident(name, slot, name_span)? {
                 Value::Function(f) if f.vector.is_some() => {
                     return Err(Diagnostic::error(
                         format!(

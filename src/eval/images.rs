@@ -826,6 +826,7 @@ impl super::Evaluator<'_> {
     /// textures numbered 0, 1, … picked by the image's pixels (their palette index, or red).
     pub(super) fn material_map(&mut self, node: &Node) -> super::Result<ir::TextureMap> {
         let image_node = Node {
+            slot: node.slot,
             kind: NodeKind::ImageMap,
             span: node.span,
             word: "material_map".to_string(),

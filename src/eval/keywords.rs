@@ -803,6 +803,7 @@ const SUPPORTED: &[&str] = &[
     "read",
     "red",
     "reflection",
+    "render",
     "repeat",
     "rgb",
     "rgbf",
@@ -851,6 +852,7 @@ const SUPPORTED: &[&str] = &[
     "srgbf",
     "srgbft",
     "srgbt",
+    "statistics",
     "str",
     "strcmp",
     "strength",
@@ -984,7 +986,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "spherical_camera" | "cylinder_camera" => {
             "this camera type or item is not supported by trace yet"
         }
-        "render" | "statistics" => "file input/output is not supported by trace yet",
         "max_intersections" | "noise_generator_gs" | "subsurface_gs" => {
             "this global setting is outside trace's subset"
         }

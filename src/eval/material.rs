@@ -154,6 +154,7 @@ fn after_uv_mapping(node: &Node) -> Option<Node> {
         word_span: node.word_span,
         args: Vec::new(),
         children: node.children[i + 1..].to_vec(),
+        slot: node.slot,
     })
 }
 
@@ -452,15 +453,6 @@ impl Evaluator<'_> {
         // (Directives among the entries run where they stand; an entry a directive leaves
         // is read as `[v VALUE]`, the value a declared one or a colour: `[I/2 T1]`.)
         self.each_item(&node.children, &mut |ev, e| {
-            // An entry a directive left as text: read now that the map's kind is known.
-            let parsed;
-            let e = if e.kind == NodeKind::RawMapEntry {
-                let text = &ev.sources.file(e.span.file).text[e.span.start as usize..e.span.end as usize];
-                parsed = crate::syntax::parse_map_entry(text, e.span.file, e.span.start as usize, what)?;
-                &parsed
-            } else {
-                e
-            };
             if e.kind != NodeKind::MapEntry {
                 return Err(ev.unknown_item(e, what));
             }
@@ -955,7 +947,7 @@ impl Evaluator<'_> {
             "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
             "aoi" => PatternKind::Aoi,
             "density_file" => {
-                let df3 = matches!(args.first().map(|e| &e.kind), Some(crate::syntax::ExprKind::Ident(w)) if w == "df3");
+                let df3 = matches!(args.first().map(|e| &e.kind), Some(crate::syntax::ExprKind::Ident(w, _)) if w == "df3");
                 let (true, Some(file_expr)) = (df3, args.get(1)) else {
                     return Err(Diagnostic::error(
                         "`density_file` reads a DF3 file: density_file df3 \"file.df3\"",
@@ -1453,7 +1445,7 @@ impl Evaluator<'_> {
             .unwrap_or("x");
         rest.trim().is_empty()
             && matches!(
-                self.env.get(&item.word),
+                self.bound(item.slot),
                 Some(Value::Pigment(_) | Value::Colour(_) | Value::Vector(_) | Value::Float(_))
             )
     }

@@ -15,9 +15,9 @@ mod images;
 pub mod keywords;
 mod material;
 mod object;
+mod reader;
 mod sandbox;
 mod shapes;
-mod spliced;
 mod transform;
 mod value;
 
@@ -130,18 +130,6 @@ pub fn standard_include_folder() -> Option<std::path::PathBuf> {
             .map(std::path::PathBuf::from),
         )
         .find(|p| p.is_dir())
-}
-
-impl LoadOptions {
-    /// Threads that may parse ahead of evaluation: at most one a core when there are several
-    /// (the parser takes one fewer when the file's statements take its fast lane, see
-    /// `syntax::ahead`).
-    pub(crate) fn parse_helpers(&self) -> usize {
-        let threads = self
-            .threads
-            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-        if threads >= 2 { threads } else { 0 }
-    }
 }
 
 impl Default for LoadOptions {
@@ -260,11 +248,6 @@ pub fn evaluate(
     options: &LoadOptions,
     services: Services,
 ) -> Result<Evaluated> {
-    let statements = syntax::statements(
-        sources.file(file).text.clone(),
-        file,
-        options.parse_helpers(),
-    )?;
     let scene_dir = sources
         .file(file)
         .path
@@ -276,9 +259,9 @@ pub fn evaluate(
     let mut ev = Evaluator::new(options, sandbox, sources, services);
     ev.input_file_name = input_file_name;
     for (name, value) in &options.declares {
-        ev.env.insert(name.clone(), value::Value::Float(*value));
+        ev.set(name.clone(), value::Value::Float(*value));
     }
-    ev.each_statement(statements, &mut |ev, node| ev.statement(node))?;
+    ev.read_scene(file)?;
     ev.finish()
 }
 
@@ -398,14 +381,43 @@ pub(crate) struct FogItems {
     up: DVec3,
 }
 
+/// A table by name: the reader looks a word up in two of them for every word it reads, so the
+/// hash is a quick one (FNV-1a; names are short, and chosen by the scene, which is trusted
+/// not to attack its own load time).
+type Names<V> = HashMap<String, V, std::hash::BuildHasherDefault<NameHasher>>;
+
+/// FNV-1a, for [`Names`].
+#[derive(Default)]
+struct NameHasher(u64);
+
+impl std::hash::Hasher for NameHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        let mut h = if self.0 == 0 {
+            0xcbf2_9ce4_8422_2325
+        } else {
+            self.0
+        };
+        for &b in bytes {
+            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+        self.0 = h;
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
 /// The evaluation state: declarations, defaults and the scene gathered so far.
 pub(crate) struct Evaluator<'a> {
     options: &'a LoadOptions,
     sources: &'a mut SourceMap,
-    macros: HashMap<String, flow::Macro>,
-    /// Macro bodies parsed so far, by file and start.
-    macro_parses: HashMap<(u32, u32), flow::MacroParse>,
+    macros: Names<flow::Macro>,
     frames: Vec<flow::Frame>,
+    /// The directive reader's state: what is being read, the directive blocks open.
+    reader: reader::Reader,
+    /// The values of the words of the unit being evaluated, by slot (see `reader.rs`).
+    bindings: Vec<Option<Arc<Value>>>,
     include_depth: usize,
     /// Evaluation steps so far (see [`LoadOptions::max_steps`]).
     steps: u64,
@@ -415,7 +427,8 @@ pub(crate) struct Evaluator<'a> {
     sandbox: sandbox::Sandbox,
     sky_sphere: Option<ir::SkySphere>,
     fogs: Vec<ir::Fog>,
-    env: HashMap<String, Value>,
+    /// The declared names, as the reader sees them.
+    env: Names<Arc<Value>>,
     version: Option<f64>,
     /// `global_settings { noise_generator N }`, if given.
     noise_generator: Option<u8>,
@@ -475,16 +488,17 @@ impl<'a> Evaluator<'a> {
         Evaluator {
             options,
             sources,
-            macros: HashMap::new(),
-            macro_parses: HashMap::new(),
+            macros: Names::default(),
             frames: Vec::new(),
+            reader: Default::default(),
+            bindings: Vec::new(),
             include_depth: 0,
             steps: 0,
             debug_output: String::new(),
             sandbox,
             sky_sphere: None,
             fogs: Vec::new(),
-            env: HashMap::new(),
+            env: Names::default(),
             version: None,
             assumed_gamma: None,
             noise_generator: None,
@@ -620,6 +634,12 @@ impl<'a> Evaluator<'a> {
                 node.word_span,
             ),
         }
+    }
+
+    /// The value the word in `slot` of the unit being evaluated was bound to where it was
+    /// read (see `reader.rs`).
+    pub(super) fn bound(&self, slot: syntax::Slot) -> Option<&Value> {
+        self.bindings.get(slot.0 as usize)?.as_deref()
     }
 
     fn lookup(&mut self, ident: &Node) -> Result<Value> {
@@ -1052,8 +1072,8 @@ impl<'a> Evaluator<'a> {
     /// shadow).
     fn light(&mut self, node: &Node) -> Result<(ir::Light, Option<object::ObjectValue>)> {
         // `light_source { L transformations }` with a declared light `L`.
-        if let Some(syntax::ExprKind::Ident(name)) = node.args.first().map(|e| &e.kind) {
-            if let Some(Value::Object(o)) = self.env.get(name).cloned() {
+        if let Some(syntax::ExprKind::Ident(_, slot)) = node.args.first().map(|e| &e.kind) {
+            if let Some(Value::Object(o)) = self.bound(*slot).cloned() {
                 return self.declared_light(node, *o);
             }
         }

@@ -532,7 +532,11 @@ impl Evaluator<'_> {
                 let (first, rest) = children.split_first().expect("object {} has a body");
                 modifiers = rest;
                 match first.kind {
-                    NodeKind::MacroCall => self.macro_object(first)?,
+                    NodeKind::MacroCall => {
+                        // (A macro is called where the reader meets it: this names none.)
+                        let name = &first.children[0];
+                        return Err(self.unknown_word(&name.word, name.span));
+                    }
                     NodeKind::LightSource => {
                         let (light, looks) = self.light(first)?;
                         let mut object = looks.unwrap_or_else(ObjectValue::empty);
@@ -543,6 +547,7 @@ impl Evaluator<'_> {
                         Value::Object(o) => *o,
                         other => return Err(type_error("an object", &other, first.span)),
                     },
+                    NodeKind::Unknown => return Err(self.unknown_item(first, "an object")),
                     _ => self.object(first)?,
                 }
             }
@@ -596,14 +601,13 @@ impl Evaluator<'_> {
                     .trace(origin, direction.normalize())
                     .unwrap_or((DVec3::ZERO, DVec3::ZERO));
                 if let Some(n) = args.get(3) {
-                    let ExprKind::Ident(var) = &n.kind else {
+                    let ExprKind::Ident(var, _) = &n.kind else {
                         return Err(Diagnostic::error(
                             "`trace` gives the normal to a variable named here",
                             n.span,
                         ));
                     };
-                    self.env
-                        .insert(var.clone(), Value::Vector(Vector::from_vec3(normal)));
+                    self.set(var.clone(), Value::Vector(Vector::from_vec3(normal)));
                 }
                 Value::Vector(Vector::from_vec3(point))
             }
@@ -627,8 +631,8 @@ impl Evaluator<'_> {
         /// Objects kept ready at once (a loop making and asking new objects does not pile them up).
         const KEPT: usize = 64;
         // (A declared object asked again is not copied to find its id.)
-        if let ExprKind::Ident(name) = &e.kind
-            && let Some(Value::Object(o)) = self.env.get(name)
+        if let ExprKind::Ident(_, slot) = &e.kind
+            && let Some(Value::Object(o)) = self.bound(*slot)
             && let Some(q) = self.queries.get(&o.id)
         {
             return Ok(Arc::clone(q));
@@ -836,9 +840,9 @@ impl Evaluator<'_> {
                         let mut axes = [false; 3];
                         for e in &item.args[1..] {
                             match &e.kind {
-                                crate::syntax::ExprKind::Ident(w) if w == "x" => axes[0] = true,
-                                crate::syntax::ExprKind::Ident(w) if w == "y" => axes[1] = true,
-                                crate::syntax::ExprKind::Ident(w) if w == "z" => axes[2] = true,
+                                crate::syntax::ExprKind::Ident(w, _) if w == "x" => axes[0] = true,
+                                crate::syntax::ExprKind::Ident(w, _) if w == "y" => axes[1] = true,
+                                crate::syntax::ExprKind::Ident(w, _) if w == "z" => axes[2] = true,
                                 _ => return Err(Diagnostic::error("precompute names x, y and z", e.span)),
                             }
                         }
@@ -1122,6 +1126,8 @@ impl Evaluator<'_> {
             // shape table.
             NodeKind::Flag
                 if owner.kind == NodeKind::Shape && super::shapes::takes(&owner.word, &m.word) => {}
+            // A shape's values: read by the shape table.
+            NodeKind::Value if owner.kind == NodeKind::Shape => {}
             // A height field's function image: read by the shape table.
             NodeKind::FunctionImage if owner.word == "height_field" => {}
             NodeKind::Flag => match m.word.as_str() {

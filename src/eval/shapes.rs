@@ -79,19 +79,23 @@ enum Item<'n> {
 }
 
 fn items(node: &Node) -> Vec<Item<'_>> {
-    let mut items: Vec<(u32, Item)> = node
-        .args
+    node.children
         .iter()
-        .map(|e| (e.span.start, Item::Value(e)))
-        .collect();
-    items.extend(
-        node.children
-            .iter()
-            .filter(|c| c.kind == NodeKind::Flag && takes(&node.word, &c.word))
-            .map(|c| (c.span.start, Item::Word(c))),
-    );
-    items.sort_by_key(|(at, _)| *at);
-    items.into_iter().map(|(_, i)| i).collect()
+        .filter_map(|c| match c.kind {
+            NodeKind::Value => Some(Item::Value(&c.args[0])),
+            NodeKind::Flag if takes(&node.word, &c.word) => Some(Item::Word(c)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A shape's values, in order.
+fn values(node: &Node) -> Vec<&Expr> {
+    node.children
+        .iter()
+        .filter(|c| c.kind == NodeKind::Value)
+        .map(|c| &c.args[0])
+        .collect()
 }
 
 /// The spline a word names (`linear_spline` …).
@@ -161,7 +165,7 @@ impl<'a> Evaluator<'a> {
         if !item.args.is_empty() || !item.children.is_empty() || item.word.is_empty() {
             return None;
         }
-        match self.env.get(&item.word)? {
+        match self.bound(item.slot)? {
             v @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_)) => Some(v.clone()),
             _ => None,
         }
@@ -214,7 +218,7 @@ impl<'a> Evaluator<'a> {
 
     /// The IR shape of a `shape` node (`quadric { … }` …).
     pub(super) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
-        let args = node.args.as_slice();
+        let args = values(node);
         // The values a shape takes, in order, or a located error naming what is missing.
         let count = |n: usize, form: &str| -> Result<()> {
             if args.len() == n {
@@ -230,10 +234,10 @@ impl<'a> Evaluator<'a> {
             "quadric" => {
                 count(4, "quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }")?;
                 Shape::Quadric(Box::new(Quadric {
-                    square: self.vec3(&args[0])?,
-                    mixed: self.vec3(&args[1])?,
-                    linear: self.vec3(&args[2])?,
-                    constant: self.float(&args[3])?,
+                    square: self.vec3(args[0])?,
+                    mixed: self.vec3(args[1])?,
+                    linear: self.vec3(args[2])?,
+                    constant: self.float(args[3])?,
                 }))
             }
             "cubic" | "quartic" | "poly" => {
@@ -248,7 +252,7 @@ impl<'a> Evaluator<'a> {
                     "cubic" => 3,
                     "quartic" => 4,
                     _ => {
-                        let n = self.float(&args[0])?;
+                        let n = self.float(args[0])?;
                         if !(2.0..=6.0).contains(&n) {
                             return Err(Diagnostic::error(
                                 "unsupported: a poly of degree other than 2 to 6 (trace's root solver goes to 6)",
@@ -344,7 +348,7 @@ impl<'a> Evaluator<'a> {
             "julia_fractal" => self.julia_fractal(node)?,
             "ovus" => {
                 count(2, "ovus { bottom_radius, top_radius }")?;
-                let (bottom, top) = (self.float(&args[0])?, self.float(&args[1])?);
+                let (bottom, top) = (self.float(args[0])?, self.float(args[1])?);
                 if bottom < 0.0 || top < 0.0 {
                     return Err(Diagnostic::error(
                         "both ovus radii must be positive",
@@ -369,7 +373,7 @@ impl<'a> Evaluator<'a> {
             "sphere_sweep" => self.sphere_sweep(node)?,
             "superellipsoid" => {
                 count(1, "superellipsoid { <e, n> }")?;
-                let v = self.uv(&args[0])?;
+                let v = self.uv(args[0])?;
                 Shape::Superellipsoid { e: v.x, n: v.y }
             }
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
@@ -1030,7 +1034,7 @@ impl<'a> Evaluator<'a> {
             let Item::Word(w) = item else {
                 let Item::Value(e) = item else { unreachable!() };
                 let text = match &e.kind {
-                    crate::syntax::ExprKind::Ident(name) => name.as_str(),
+                    crate::syntax::ExprKind::Ident(name, _) => name.as_str(),
                     _ => "",
                 };
                 if matches!(

@@ -1,20 +1,18 @@
 //! The fast path for big `mesh2` lists.
 //!
-//! A mesh2 of a million triangles is tens of megabytes of `<x, y, z>` text. Before the text
-//! goes to pest, the bodies of `vertex_vectors`, `normal_vectors`, `face_indices`,
-//! `normal_indices` and `uv_indices` that are nothing but a count and plain numeric 3-vectors are read here
-//! directly into arrays, and blanked out of the copy pest parses (a marker byte, then spaces,
-//! so every other offset stays the same). Anything else in a body (an expression, a comment, a
-//! directive) leaves it to the grammar, so the meaning is the same either way.
-
-use std::collections::HashMap;
+//! A mesh2 of a million triangles is tens of megabytes of `<x, y, z>` text. Where the
+//! directive reader meets the bodies of `vertex_vectors`, `normal_vectors`, `face_indices`,
+//! `normal_indices` and `uv_indices` that are nothing but a count and plain numeric
+//! 3-vectors, it reads them here directly into arrays, and hands the grammar one marker byte
+//! in their place (`syntax::Unit::lists`). Anything else in a body (an expression, a comment,
+//! a directive) leaves it to the usual reading, so the meaning is the same either way
+//! (`parsing.rs` tests the two against each other).
 
 /// Lists shorter than this are left to the grammar (nothing to gain).
 const MIN_ENTRIES: usize = 16;
 
-/// The byte that replaces the first character of a list body read here; the grammar's
-/// `bulk_list` rule matches it and the blanks after it.
-pub const MARKER: u8 = 0x01;
+/// The text that stands for a list body read here; the grammar's `bulk_list` rule matches it.
+pub const MARKER: &str = "\u{1}";
 
 /// A list body read by the fast path.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,124 +27,22 @@ pub struct BulkList {
     pub offsets: Vec<u32>,
 }
 
-/// Lists read by the fast path, by the file offset of their body's first byte, and the text
-/// pest should parse (`None`: the original text, nothing was read or blanked; a leading
-/// byte-order mark is blanked too).
-pub struct Prescanned {
-    /// The text with the bodies blanked, if any was read.
-    pub text: Option<String>,
-    /// The lists read, by the file offset of their marker byte.
-    pub lists: HashMap<usize, BulkList>,
-}
-
-const KEYWORDS: [&[u8]; 5] = [
-    b"vertex_vectors",
-    b"normal_vectors",
-    b"face_indices",
-    b"normal_indices",
-    b"uv_indices",
+/// The words whose `{ … }` lists the fast path reads.
+pub const KEYWORDS: [&str; 5] = [
+    "vertex_vectors",
+    "normal_vectors",
+    "face_indices",
+    "normal_indices",
+    "uv_indices",
 ];
 
-/// Reads the plain list bodies of `text`, which starts at byte `offset` of its file.
-pub fn prescan(text: &str, offset: usize) -> Prescanned {
-    let bytes = text.as_bytes();
-    let mut lists = HashMap::new();
-    let mut blank: Vec<(usize, usize)> = Vec::new();
-    // Most files hold no list: a substring search (much faster than the scan) tells.
-    let mut i = if text.contains("_vectors") || text.contains("_indices") {
-        0
-    } else {
-        bytes.len()
-    };
-    while i < bytes.len() {
-        match bytes[i] {
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                // (Too deep a comment is check_nesting's error, reported before this runs.)
-                i = skip_block_comment(bytes, i, usize::MAX).unwrap_or(bytes.len());
-            }
-            b'"' => {
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'"' {
-                    i += if bytes[i] == b'\\' { 2 } else { 1 };
-                }
-                i += 1;
-            }
-            c if c.is_ascii_alphabetic() || c == b'_' => {
-                let start = i;
-                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
-                    i += 1;
-                }
-                if !KEYWORDS.contains(&&bytes[start..i]) {
-                    continue;
-                }
-                let mut j = skip_ws(bytes, i);
-                if bytes.get(j) != Some(&b'{') {
-                    continue;
-                }
-                j += 1;
-                if let Some((list, end)) = read_body(bytes, j, offset) {
-                    if list.values.len() >= MIN_ENTRIES {
-                        lists.insert(offset + j, list);
-                        blank.push((j, end));
-                        i = end;
-                    }
-                }
-            }
-            _ => i += 1,
-        }
-    }
-    let bom = text.starts_with('\u{FEFF}');
-    if blank.is_empty() && !bom {
-        return Prescanned { text: None, lists };
-    }
-    let mut copy = bytes.to_vec();
-    if bom {
-        // A byte-order mark becomes three blanks (offsets stay put).
-        copy[..3].fill(b' ');
-    }
-    for (start, end) in blank {
-        copy[start] = MARKER;
-        copy[start + 1..end].fill(b' ');
-    }
-    // Only ASCII bytes inside list bodies were replaced, by ASCII bytes.
-    let text = String::from_utf8(copy).expect("blanking ASCII keeps UTF-8 valid");
-    Prescanned {
-        text: Some(text),
-        lists,
-    }
-}
-
-/// The end of the (nested) block comment starting at `i`, or, if its nesting passes
-/// `max_depth`, `Err` with the offset of the `/*` that does.
-pub(super) fn skip_block_comment(
-    bytes: &[u8],
-    mut i: usize,
-    max_depth: usize,
-) -> Result<usize, usize> {
-    let mut depth = 0usize;
-    while i < bytes.len() {
-        if bytes[i..].starts_with(b"/*") {
-            depth += 1;
-            if depth > max_depth {
-                return Err(i);
-            }
-            i += 2;
-        } else if bytes[i..].starts_with(b"*/") {
-            depth -= 1;
-            i += 2;
-            if depth == 0 {
-                break;
-            }
-        } else {
-            i += 1;
-        }
-    }
-    Ok(i)
+/// The list body that starts at byte `pos` of `text` (just after its `{`), if it is a count
+/// and at least [`MIN_ENTRIES`] plain numeric 3-vectors ending before byte `end`: the list
+/// (its offsets those of `text`) and where its closing `}` stands.
+pub fn read_list(text: &str, pos: usize, end: usize) -> Option<(BulkList, usize)> {
+    let bytes = &text.as_bytes()[..end.min(text.len())];
+    let (list, close) = read_body(bytes, pos, 0)?;
+    (list.values.len() >= MIN_ENTRIES).then_some((list, close))
 }
 
 fn skip_ws(bytes: &[u8], mut i: usize) -> usize {
@@ -261,22 +157,22 @@ mod tests {
     }
 
     #[test]
-    fn reads_plain_lists_and_blanks_them_in_place() {
+    fn reads_plain_lists() {
         let text = format!(
-            "mesh2 {{ vertex_vectors {{ 20, {} }} face_indices {{ 1, <0,1,2> }} }}",
+            "vertex_vectors {{ 20, {} }} face_indices {{ 1, <0,1,2> }}",
             body(20)
         );
-        let p = prescan(&text, 100);
-        let copy = p.text.expect("one list read");
-        assert_eq!(copy.len(), text.len());
         let start = text.find("{ 20").unwrap() + 1;
-        let list = &p.lists[&(100 + start)];
+        let (list, close) = read_list(&text, start, text.len()).expect("a list");
         assert_eq!(list.count, 20.0);
         assert_eq!(list.values[3], [3.0, -3.5, 30.0]);
         assert_eq!(list.offsets.len(), 21);
-        assert_eq!(copy.as_bytes()[start], MARKER);
+        assert_eq!(&text[close..close + 1], "}");
         // The short face list is left to the grammar.
-        assert!(copy.contains("face_indices { 1, <0,1,2> }"));
+        let faces = text.find("{ 1,").unwrap() + 1;
+        assert!(read_list(&text, faces, text.len()).is_none());
+        // A list that does not end before `end` is not read.
+        assert!(read_list(&text, start, close).is_none());
     }
 
     #[test]
@@ -289,11 +185,10 @@ mod tests {
             "<1, 2, x>",
             "<1, 2, 3, 4>",
             "<1,2,3e>",
+            "#if (1) <1,2,3> #end",
         ] {
-            let text = format!("vertex_vectors {{ 21, {}, {odd} }}", body(20));
-            assert!(prescan(&text, 0).text.is_none(), "{odd}");
+            let text = format!("{{ 21, {}, {odd} }}", body(20));
+            assert!(read_list(&text, 1, text.len()).is_none(), "{odd}");
         }
-        let in_comment = format!("// vertex_vectors {{ 20, {} }}", body(20));
-        assert!(prescan(&in_comment, 0).text.is_none());
     }
 }

@@ -4,11 +4,12 @@
 //! uniform: every construct is a [`Node`] (a keyword with its expressions and child nodes), and
 //! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
 
-mod ahead;
 pub mod bulk;
-pub mod lexical;
-mod plain;
-pub mod tokens;
+pub mod lexer;
+pub mod plain;
+mod unit;
+
+pub use unit::{Piece, Slot, Unit};
 
 mod grammar {
     #[derive(pest_derive::Parser)]
@@ -307,6 +308,8 @@ pub struct Node {
     pub args: Vec<Expr>,
     /// Nested constructs in source order (modifiers, items of a block).
     pub children: Vec<Node>,
+    /// For a declared name ([`NodeKind::IdentRef`]): its binding in the unit read.
+    pub slot: Slot,
 }
 
 /// An expression with its span.
@@ -363,8 +366,8 @@ pub enum ExprKind {
     Number(f64),
     /// `<a, b, ...>`.
     Vector(Vec<Expr>),
-    /// An identifier or built-in constant.
-    Ident(String),
+    /// An identifier or built-in constant, with its binding in the unit read.
+    Ident(String, Slot),
     /// `-a`, `!a`.
     Unary(UnOp, Box<Expr>),
     /// `a + b` …
@@ -374,8 +377,8 @@ pub enum ExprKind {
     /// `#if (c) a [#elseif (d) b]* #else z #end` where a value is read: each condition with
     /// its value, then the value otherwise. Only the value chosen is evaluated.
     Chosen(Vec<(Expr, Expr)>, Box<Expr>),
-    /// `f(a, b)`; the function name and its span.
-    Call(String, Span, Vec<Expr>),
+    /// `f(a, b)`; the function name, its span and its binding in the unit read.
+    Call(String, Span, Slot, Vec<Expr>),
     /// `a[i]`: an array element.
     Index(Box<Expr>, Box<Expr>),
     /// `v.x`; the member name and its span.
@@ -405,57 +408,6 @@ pub fn is_identifier(word: &str) -> bool {
         .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
 }
 
-/// Parses a whole scene file into its top-level statements.
-#[cfg(test)]
-pub fn parse_scene(text: &str, file: FileId) -> Result<Vec<Node>, Diagnostic> {
-    parse_items(text, file, 0, Rule::scene)
-}
-
-/// The top-level statements of a file, parsed one at a time as they are asked for: the syntax
-/// tree of a statement is gone once it has been evaluated, which keeps memory flat on scenes
-/// of many statements.
-///
-/// On a big file, helper threads parse it in chunks meanwhile ([`ahead`]): each chunk starts
-/// where a statement probably ends; the statements it read are used if that guess proves
-/// right (the statement before ends exactly there) and dropped otherwise, so the statements
-/// are the same as one thread would read. Only a few chunks wait in memory at a time.
-pub struct Statements {
-    /// The text pest parses (the file's, or a copy with big lists blanked by [`bulk`]).
-    source: std::sync::Arc<str>,
-    /// Where the next statement may start.
-    pos: usize,
-    lower: Lower,
-    done: bool,
-    /// Chunks being parsed ahead, in file order.
-    ahead: ahead::Ahead,
-    /// Statements a chunk parsed ahead, handed over once `pos` reached its start.
-    ready: std::vec::IntoIter<Result<Node, Diagnostic>>,
-    /// Which helper parsed the statements in `ready`, if any.
-    ready_from: Option<usize>,
-}
-
-impl Statements {
-    /// Where the next statement starts (after an error, the statement that has it).
-    pub fn position(&self) -> usize {
-        self.pos
-    }
-
-    /// The file the statements are read from.
-    pub fn file(&self) -> FileId {
-        self.lower.file
-    }
-
-    /// Takes back a statement once evaluated: one a helper parsed goes back to that helper
-    /// to be freed (freeing memory another thread allocated makes the two threads contend
-    /// for the allocator's lock, which took more time than parsing on one thread).
-    pub fn spent(&mut self, statement: Node) {
-        match self.ready_from {
-            Some(helper) => self.ahead.give_back(helper, statement),
-            None => drop(statement),
-        }
-    }
-}
-
 /// Most rule calls pest may make for one statement (or fragment): a backstop against inputs
 /// that make the grammar backtrack exponentially (the fuzzer found several, each fixed in the
 /// grammar), ending with a located syntax error in seconds instead of running for hours. A
@@ -468,372 +420,165 @@ fn limit_parser_work() {
     ONCE.call_once(|| pest::set_call_limit(std::num::NonZeroUsize::new(MAX_PARSER_CALLS)));
 }
 
-/// Starts reading the statements of `file`, whose text is `text`, with up to `helpers` threads
-/// parsing ahead.
-pub fn statements(
-    text: std::sync::Arc<str>,
-    file: FileId,
-    helpers: usize,
-) -> Result<Statements, Diagnostic> {
-    statements_from(text, file, helpers, 0)
+/// What the directive reader asks the grammar to read a unit as (see [`Unit`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Head {
+    /// `[deprecated [once] "message"] Name[i]… =` after `#declare` or `#local`.
+    Declare,
+    /// `(I, start, end [, step])` after `#for`.
+    For,
+    /// `(low, high)` after `#range`.
+    Range,
+    /// `(Name)` or `(A[i])` after `#ifdef` or `#ifndef`.
+    Ifdef,
+    /// `Name(A, B …)` after `#macro`.
+    Macro,
+    /// `Name "file" read|write|append` after `#fopen`.
+    Fopen,
+    /// `(F, A, B[i] …)` after `#read`.
+    Read,
+    /// `(F, values …)` after `#write`.
+    Write,
+    /// `{ … }` after `#default`.
+    Default,
 }
 
-/// Like [`statements`], from byte `from` of the file on (where a statement starts).
-pub fn statements_from(
-    text: std::sync::Arc<str>,
-    file: FileId,
-    helpers: usize,
-    from: usize,
-) -> Result<Statements, Diagnostic> {
+/// A declared value's syntax: an item (`pigment {…}`, `array[3]`, `function {…}`, layered
+/// textures) or an expression.
+pub enum ValueSyntax {
+    /// An item.
+    Item(Node),
+    /// An expression (a number, vector, colour, string, declared name …).
+    Expr(Expr),
+}
+
+/// Parses `unit` with `rule`: the pairs of the entry rule's top pair and the lowering to use.
+fn parse_unit_with<T>(
+    unit: &Unit,
+    rule: Rule,
+    f: impl FnOnce(Pair<'_, Rule>, &Lower<'_>) -> T,
+) -> Result<T, Diagnostic> {
     limit_parser_work();
-    // (Blocks are counted from `from`: before it, a block opened by a directive's branch and
-    // closed after its `#end` would leave the count one too high to the end of the file.)
-    let block_ends: Vec<usize> = check_nesting(&text[from..], file, from)?
-        .into_iter()
-        .map(|end| end + from)
-        .collect();
-    let prescanned = bulk::prescan(&text, 0);
-    let source: std::sync::Arc<str> = match prescanned.text {
-        Some(copy) => copy.into(),
-        None => text,
+    check_nesting(unit)?;
+    let mut pairs = SceneParser::parse(rule, &unit.text).map_err(|e| unit_error(e, unit))?;
+    let top = pairs.next().expect("an entry rule yields one pair");
+    let lower = Lower {
+        file: FileId(0),
+        offset: 0,
+        bulk: std::cell::RefCell::new(
+            unit.lists
+                .iter()
+                .map(|(at, l)| (*at as usize, l.clone()))
+                .collect(),
+        ),
+        unit: Some(unit),
     };
-    // The fast path's lists are handed to the one parser that meets them, so a file with any
-    // is read by one thread (its time is in the lists, which the fast path reads).
-    let ahead = if prescanned.lists.is_empty() {
-        ahead::start(&source, file, &block_ends, helpers, from)
-    } else {
-        Default::default()
-    };
-    Ok(Statements {
-        source,
-        pos: from,
-        lower: Lower {
-            file,
-            offset: 0,
-            bulk: std::cell::RefCell::new(prescanned.lists),
-        },
-        done: false,
-        ahead,
-        ready: Vec::new().into_iter(),
-        ready_from: None,
+    Ok(f(top, &lower))
+}
+
+/// A syntax error in a unit, at the place in the file its position maps to.
+fn unit_error(e: pest::error::Error<Rule>, unit: &Unit) -> Diagnostic {
+    let mut d = syntax_error(e, FileId(0));
+    if let Some(span) = &mut d.span {
+        *span = unit.span(span.start as usize, span.end as usize);
+    }
+    d
+}
+
+/// The inner pairs of an entry rule's top pair, less its end of input.
+fn inner(top: Pair<'_, Rule>) -> impl Iterator<Item = Pair<'_, Rule>> {
+    top.into_inner().filter(|p| p.as_rule() != Rule::EOI)
+}
+
+/// Reads a statement unit (a top-level statement).
+pub fn parse_statement(unit: &Unit) -> Result<Node, Diagnostic> {
+    parse_unit_with(unit, Rule::unit_statement, |top, lower| {
+        lower.node(inner(top).next().expect("a statement"))
     })
 }
 
-impl Iterator for Statements {
-    type Item = Result<Node, Diagnostic>;
-
-    fn next(&mut self) -> Option<Result<Node, Diagnostic>> {
-        'next: loop {
-            if let Some(statement) = self.ready.next() {
-                return Some(statement);
-            }
-            self.ready_from = None;
-            if self.done {
-                return None;
-            }
-            // A chunk that starts here holds the next statements; one that starts behind began
-            // inside a statement (a wrong guess) and is dropped.
-            while let Some(start) = self.ahead.next_start().filter(|&s| s <= self.pos) {
-                let (helper, parsed) = self.ahead.take();
-                if let Some(parsed) = parsed.filter(|_| start == self.pos) {
-                    self.pos = parsed.end;
-                    self.done = parsed.last;
-                    self.ready = parsed.statements.into_iter();
-                    self.ready_from = Some(helper);
-                    continue 'next;
-                }
-            }
-            if let Some((node, end)) = plain::statement(&self.source, self.pos, self.lower.file) {
-                self.pos = end;
-                return Some(Ok(node));
-            }
-            return match next_statement(&self.source, self.pos, &mut self.lower) {
-                None => {
-                    self.done = true;
-                    None
-                }
-                Some(Err(e)) => {
-                    self.done = true;
-                    Some(Err(e))
-                }
-                Some(Ok((node, end))) => {
-                    self.pos = end;
-                    Some(Ok(node))
-                }
-            };
-        }
-    }
-}
-
-/// Parses the statement after byte `pos` of `source`: the statement and where it ends, or
-/// `None` at the end of the file.
-fn next_statement(
-    source: &str,
-    pos: usize,
-    lower: &mut Lower,
-) -> Option<Result<(Node, usize), Diagnostic>> {
-    let mut pairs = match SceneParser::parse(Rule::next_statement, &source[pos..]) {
-        Ok(pairs) => pairs,
-        Err(e) => return Some(Err(syntax_error_at(e, lower.file, pos))),
-    };
-    let top = pairs.next().expect("next_statement yields one pair");
-    let statement = top.into_inner().find(|p| p.as_rule() != Rule::EOI)?;
-    lower.offset = pos;
-    let end = pos + statement.as_span().end();
-    Some(Ok((lower.node(statement), end)))
-}
-
-/// Parses the statement (`items`: the item, as in a macro's body) after byte `pos` of
-/// `text`, a part of file `file` that starts at byte `base`: the statement and where it ends
-/// in `text`, or `None` at the end of `text`.
-pub fn statement_in(
-    text: &str,
-    pos: usize,
-    file: FileId,
-    base: usize,
-    items: bool,
-) -> Option<Result<(Node, usize), Diagnostic>> {
-    let rule = if items {
-        Rule::next_item
-    } else {
-        Rule::next_statement
-    };
-    let mut pairs = match SceneParser::parse(rule, &text[pos..]) {
-        Ok(pairs) => pairs,
-        Err(e) => return Some(Err(syntax_error_at(e, file, base + pos))),
-    };
-    let top = pairs.next().expect("the entry rule yields one pair");
-    let statement = top.into_inner().find(|p| p.as_rule() != Rule::EOI)?;
-    let lower = Lower {
-        file,
-        offset: base + pos,
-        bulk: Default::default(),
-    };
-    let end = pos + statement.as_span().end();
-    Some(Ok((lower.node(statement), end)))
-}
-
-/// Parses up to `batch` statements (8 or 64) after byte `pos` of `source`, each with where it
-/// ends. `None` if not even one parses (the end of the file, or an error, which a parse of
-/// one statement then reports as a single thread would); a syntax error in a later
-/// statement of the batch ends the batch before it.
-fn statement_batch(
-    source: &str,
-    pos: usize,
-    batch: usize,
-    lower: &mut Lower,
-) -> Option<Vec<(Node, usize)>> {
-    let rule = if batch >= 64 {
-        Rule::statements_64
-    } else {
-        Rule::statements_8
-    };
-    let top = SceneParser::parse(rule, &source[pos..]).ok()?.next()?;
-    lower.offset = pos;
-    Some(
-        top.into_inner()
-            .map(|statement| {
-                let end = pos + statement.as_span().end();
-                (lower.node(statement), end)
-            })
-            .collect(),
-    )
-}
-
-/// Parses the part `text` of a file, which starts at byte `offset`, as a sequence of items
-/// (a macro body used as statements or modifiers).
-pub fn parse_fragment_items(
-    text: &str,
-    file: FileId,
-    offset: usize,
-) -> Result<Vec<Node>, Diagnostic> {
-    parse_items(text, file, offset, Rule::items)
-}
-
-/// A macro body used as a value: directives to run, the expression, directives to run after.
-pub struct FragmentExpr {
-    /// Directives before the expression (typically `#local`s).
-    pub before: Vec<Node>,
-    /// The value.
-    pub expr: Expr,
-    /// Directives after the expression.
-    pub after: Vec<Node>,
-}
-
-/// Parses the part `text` of a file, which starts at byte `offset`, as one expression with
-/// directives around it (a macro body used as a value).
-pub fn parse_fragment_expr(
-    text: &str,
-    file: FileId,
-    offset: usize,
-) -> Result<FragmentExpr, Diagnostic> {
-    check_nesting(text, file, offset)?;
-    let mut pairs =
-        SceneParser::parse(Rule::expression, text).map_err(|e| syntax_error_at(e, file, offset))?;
-    let top = pairs.next().expect("the expression rule yields one pair");
-    let lower = Lower {
-        file,
-        offset,
-        bulk: Default::default(),
-    };
-    let (mut before, mut after, mut expr) = (Vec::new(), Vec::new(), None);
-    for p in top.into_inner().filter(|p| p.as_rule() != Rule::EOI) {
-        if matches!(p.as_rule(), Rule::expr | Rule::full_expr) {
-            expr = Some(lower.expr(p));
-        } else if expr.is_none() {
-            before.push(lower.node(p));
+/// Reads a declared value's unit.
+pub fn parse_value(unit: &Unit) -> Result<ValueSyntax, Diagnostic> {
+    parse_unit_with(unit, Rule::unit_value, |top, lower| {
+        let p = inner(top).next().expect("a value");
+        if is_expr(p.as_rule()) {
+            ValueSyntax::Expr(lower.expr(p))
         } else {
-            after.push(lower.node(p));
+            ValueSyntax::Item(lower.node(p))
         }
-    }
-    Ok(FragmentExpr {
-        before,
-        expr: expr.expect("the rule requires an expression"),
-        after,
     })
 }
 
-/// The syntax error that keeps the declared value starting at byte `offset` of `text` from
-/// being read, if the grammar finds one.
-pub fn explain_value(text: &str, file: FileId, offset: usize) -> Option<Diagnostic> {
-    SceneParser::parse(Rule::value_probe, &text[offset..])
-        .err()
-        .map(|e| syntax_error_at(e, file, offset))
+/// Reads a macro's arguments (with their parentheses).
+pub fn parse_args(unit: &Unit) -> Result<Vec<Expr>, Diagnostic> {
+    parse_unit_with(unit, Rule::unit_args, |top, lower| {
+        inner(top).map(|p| lower.expr(p)).collect()
+    })
+}
+
+/// Reads an expression unit (a condition, an included file's name …).
+pub fn parse_expr(unit: &Unit) -> Result<Expr, Diagnostic> {
+    parse_unit_with(unit, Rule::unit_expr, |top, lower| {
+        lower.expr(inner(top).next().expect("an expression"))
+    })
+}
+
+/// Reads a directive's head as a node (see [`Head`] for each one's children and values).
+pub fn parse_head(unit: &Unit, head: Head) -> Result<Node, Diagnostic> {
+    let rule = match head {
+        Head::Declare => Rule::declare_head,
+        Head::For => Rule::for_head,
+        Head::Range => Rule::range_args,
+        Head::Ifdef => Rule::ifdef_head,
+        Head::Macro => Rule::macro_head,
+        Head::Fopen => Rule::fopen_head,
+        Head::Read => Rule::read_args,
+        Head::Write => Rule::write_args,
+        Head::Default => Rule::default_body,
+    };
+    parse_unit_with(unit, rule, |top, lower| lower.node(top))
 }
 
 /// Deepest nesting of brackets, braces, parentheses, vector brackets and `?:` in one file.
 pub const MAX_NESTING: usize = 1000;
 
-/// Rejects text nested deeper than [`MAX_NESTING`] (the parser and evaluator recurse once per
-/// level, so unbounded nesting could exhaust the stack). Comments and strings are skipped;
-/// `<`, `>`, `?` and `:` are counted within one expression (the count restarts at `{ } ; #`).
-///
-/// Returns where top-level blocks end: the offsets (in `text`) just after each `}` that closes
-/// to depth 0 outside any `#if … #end`-style directive block. These are likely, not certain,
-/// statement ends; [`Statements`] uses them to guess where to start parsing ahead.
-pub fn check_nesting(text: &str, file: FileId, offset: usize) -> Result<Vec<usize>, Diagnostic> {
-    let bytes = text.as_bytes();
-    let (mut blocks, mut inline, mut directives) = (0usize, 0usize, 0usize);
-    let mut block_ends = Vec::new();
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    i += 1;
-                }
-                continue;
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                // Block comments nest in trace's grammar: count them as blocks too.
-                i = bulk::skip_block_comment(bytes, i, MAX_NESTING - blocks)
-                    .map_err(|at| too_deep(file, offset + at))?;
-                continue;
-            }
-            b'"' => {
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'"' {
-                    i += if bytes[i] == b'\\' { 2 } else { 1 };
-                }
-            }
-            b'(' | b'[' | b'{' => {
+/// Rejects a unit nested deeper than [`MAX_NESTING`] (the parser and evaluator recurse once
+/// per level, so unbounded nesting could exhaust the stack): brackets, braces, parentheses,
+/// and `<`, `>`, `?`, `:` within one expression (the count of these restarts at `{ } ;`).
+fn check_nesting(unit: &Unit) -> Result<(), Diagnostic> {
+    let text = &unit.text;
+    let mut lexer = lexer::Lexer::new(text, 0..text.len());
+    let (mut blocks, mut inline) = (0usize, 0usize);
+    // (A unit's text was lexed by the reader already: a lexing error cannot happen here.)
+    while let Ok(Some(t)) = lexer.next() {
+        if t.kind != lexer::TokenKind::Punct {
+            continue;
+        }
+        match t.text(text) {
+            "(" | "[" => blocks += 1,
+            "{" => {
                 blocks += 1;
-                if bytes[i] == b'{' {
-                    inline = 0;
-                }
+                inline = 0;
             }
-            b')' | b']' => blocks = blocks.saturating_sub(1),
-            b'}' => {
+            ")" | "]" => blocks = blocks.saturating_sub(1),
+            "}" => {
                 blocks = blocks.saturating_sub(1);
                 inline = 0;
-                if blocks == 0 && directives == 0 {
-                    block_ends.push(i + 1);
-                }
             }
-            b'<' | b'?' => inline += 1,
-            b'>' | b':' => inline = inline.saturating_sub(1),
-            b';' => inline = 0,
-            b'#' => {
-                inline = 0;
-                let word = &bytes[i + 1..];
-                let word = &word[..word
-                    .iter()
-                    .position(|b| !b.is_ascii_alphanumeric() && *b != b'_')
-                    .unwrap_or(word.len())];
-                match word {
-                    b"if" | b"ifdef" | b"ifndef" | b"while" | b"for" | b"switch" | b"macro" => {
-                        directives += 1
-                    }
-                    b"end" => directives = directives.saturating_sub(1),
-                    _ => {}
-                }
-            }
+            "<" | "?" => inline += 1,
+            ">" | ":" => inline = inline.saturating_sub(1),
+            ";" => inline = 0,
             _ => {}
         }
         if blocks + inline > MAX_NESTING {
-            return Err(too_deep(file, offset + i));
+            let at = t.start as usize;
+            return Err(Diagnostic::error(
+                format!("nested more than {MAX_NESTING} levels deep"),
+                unit.span(at, at + 1),
+            ));
         }
-        i += 1;
     }
-    Ok(block_ends)
-}
-
-fn too_deep(file: FileId, at: usize) -> Diagnostic {
-    Diagnostic::error(
-        format!("nested more than {MAX_NESTING} levels deep"),
-        Span::new(file, at, at + 1),
-    )
-}
-
-/// A map entry kept as text (`[V P rotate A*y]`, the whole of it from `[` to `]`, at byte
-/// `offset` of `file`) read as an entry of a `pigment_map`, `normal_map` or `texture_map`
-/// (`what`).
-pub fn parse_map_entry(
-    text: &str,
-    file: FileId,
-    offset: usize,
-    what: &str,
-) -> Result<Node, Diagnostic> {
-    let rule = match what {
-        "normal_map" => Rule::normal_entry_probe,
-        "texture_map" => Rule::texture_entry_probe,
-        _ => Rule::pigment_entry_probe,
-    };
-    let mut nodes = parse_items(text, file, offset, rule)?;
-    Ok(nodes.remove(0))
-}
-
-fn parse_items(
-    text: &str,
-    file: FileId,
-    offset: usize,
-    rule: Rule,
-) -> Result<Vec<Node>, Diagnostic> {
-    check_nesting(text, file, offset)?;
-    let prescanned = bulk::prescan(text, offset);
-    let source = prescanned.text.as_deref().unwrap_or(text);
-    let mut pairs =
-        SceneParser::parse(rule, source).map_err(|e| syntax_error_at(e, file, offset))?;
-    let top = pairs.next().expect("the entry rule always yields one pair");
-    let lower = Lower {
-        file,
-        offset,
-        bulk: std::cell::RefCell::new(prescanned.lists),
-    };
-    Ok(top
-        .into_inner()
-        .filter(|p| p.as_rule() != Rule::EOI)
-        .map(|p| lower.node(p))
-        .collect())
-}
-
-fn syntax_error_at(e: pest::error::Error<Rule>, file: FileId, offset: usize) -> Diagnostic {
-    let mut d = syntax_error(e, file);
-    if let Some(span) = &mut d.span {
-        span.start += offset as u32;
-        span.end += offset as u32;
-    }
-    d
+    Ok(())
 }
 
 fn syntax_error(e: pest::error::Error<Rule>, file: FileId) -> Diagnostic {
@@ -904,18 +649,32 @@ fn describe(rule: Rule) -> Option<&'static str> {
 }
 
 /// Lowering from pest pairs to the syntax tree, one method per family of rules.
-struct Lower {
+struct Lower<'u> {
     file: FileId,
     /// Byte offset of the parsed text in its file.
     offset: usize,
-    /// List bodies read by the fast path, by file offset.
+    /// List bodies read by the fast path, by file offset (by offset in the unit's text when
+    /// reading a unit).
     bulk: std::cell::RefCell<std::collections::HashMap<usize, bulk::BulkList>>,
+    /// The unit read, if the text is one: spans map through its pieces, words have slots.
+    unit: Option<&'u Unit>,
 }
 
-impl Lower {
+impl Lower<'_> {
     fn span(&self, pair: &Pair<'_, Rule>) -> Span {
         let s = pair.as_span();
-        Span::new(self.file, s.start() + self.offset, s.end() + self.offset)
+        match self.unit {
+            Some(unit) => unit.span(s.start(), s.end()),
+            None => Span::new(self.file, s.start() + self.offset, s.end() + self.offset),
+        }
+    }
+
+    /// The binding slot of the word starting where `pair` starts.
+    fn slot(&self, pair: &Pair<'_, Rule>) -> Slot {
+        match self.unit {
+            Some(unit) => unit.slot(pair.as_span().start()),
+            None => Slot::NONE,
+        }
     }
 
     fn node(&self, pair: Pair<'_, Rule>) -> Node {
@@ -934,7 +693,15 @@ impl Lower {
         }
         let kind = match rule {
             Rule::version => NodeKind::Version,
-            Rule::declare => NodeKind::Declare,
+            Rule::declare | Rule::declare_head => NodeKind::Declare,
+            Rule::for_head => NodeKind::For,
+            Rule::range_args => NodeKind::RangeHead,
+            Rule::ifdef_head => NodeKind::IfDef,
+            Rule::macro_head => NodeKind::MacroDef,
+            Rule::fopen_head => NodeKind::FileOpen,
+            Rule::read_args => NodeKind::FileRead,
+            Rule::write_args => NodeKind::FileWrite,
+            Rule::default_body => NodeKind::Default,
             Rule::default_block => NodeKind::Default,
             Rule::unknown_directive => NodeKind::UnknownDirective,
             Rule::camera => NodeKind::Camera,
@@ -1140,6 +907,7 @@ impl Lower {
             word_span: span,
             args: Vec::new(),
             children: Vec::new(),
+            slot: Slot::NONE,
         };
         if matches!(
             rule,
@@ -1157,6 +925,7 @@ impl Lower {
         ) {
             // A name, or a macro body kept as source text (its span) to be parsed at each call.
             node.word = pair.as_str().trim().to_string();
+            node.slot = self.slot(&pair);
             return node;
         }
         if rule == Rule::raw_map_entry {
@@ -1184,6 +953,7 @@ impl Lower {
             let name = inner.next().expect("item_ref starts with a name");
             node.word = name.as_str().to_string();
             node.word_span = self.span(&name);
+            node.slot = self.slot(&name);
             node.children = inner.map(|p| self.node(p)).collect();
             return node;
         }
@@ -1205,9 +975,23 @@ impl Lower {
             return node;
         }
         let mut first_word = true;
+        // A shape's values and its own words stand in one list, in order: each value as a
+        // `Value` child (its expression the child's one argument).
+        let values_in_order = rule == Rule::shape;
         for inner in pair.into_inner() {
             let r = inner.as_rule();
-            if is_expr(r) {
+            if is_expr(r) && values_in_order {
+                let e = self.expr(inner);
+                node.children.push(Node {
+                    kind: NodeKind::Value,
+                    span: e.span,
+                    word: String::new(),
+                    word_span: e.span,
+                    args: vec![e],
+                    children: Vec::new(),
+                    slot: Slot::NONE,
+                });
+            } else if is_expr(r) {
                 node.args.push(self.expr(inner));
             } else if is_word(r) {
                 // The construct's own keyword (or, for an unknown item, the word itself).
@@ -1229,7 +1013,8 @@ impl Lower {
                 }
             } else if !matches!(
                 r,
-                Rule::unknown_tail
+                Rule::EOI
+                    | Rule::unknown_tail
                     | Rule::skip_rest
                     | Rule::balanced
                     | Rule::semicolon
@@ -1346,11 +1131,17 @@ impl Lower {
                 e
             }
             Rule::bulk_list => {
-                let list = self.bulk.borrow_mut().remove(&(span.start as usize));
+                // (Lists are kept by where they stand in the text read: the file's offset,
+                // or the unit's.)
+                let at = match self.unit {
+                    Some(_) => pair.as_span().start(),
+                    None => span.start as usize,
+                };
+                let list = self.bulk.borrow_mut().remove(&at);
                 Expr {
                     // (Only a stray marker byte in the source has no list.)
                     kind: list.map_or_else(
-                        || ExprKind::Ident("\u{1}".into()),
+                        || ExprKind::Ident("\u{1}".into(), Slot::NONE),
                         |l| ExprKind::Bulk(Box::new(l)),
                     ),
                     span,
@@ -1428,16 +1219,17 @@ impl Lower {
                 span,
             },
             Rule::ident => Expr {
-                kind: ExprKind::Ident(pair.as_str().to_string()),
+                kind: ExprKind::Ident(pair.as_str().to_string(), self.slot(&pair)),
                 span,
             },
             Rule::call => {
                 let mut inner = pair.into_inner();
                 let name = inner.next().expect("call has a name");
                 let name_span = self.span(&name);
+                let slot = self.slot(&name);
                 let args = inner.map(|p| self.expr(p)).collect();
                 Expr {
-                    kind: ExprKind::Call(name.as_str().to_string(), name_span, args),
+                    kind: ExprKind::Call(name.as_str().to_string(), name_span, slot, args),
                     span,
                 }
             }

@@ -10,13 +10,17 @@
 //! expression, an identifier, a directive, an unknown word, a syntax error — gives up at once
 //! and the statement goes to the grammar, which reads it (or reports it) as always. The unit
 //! tests compare the two readings on every form the lane takes, byte offsets included.
+//!
+//! The directive reader (`eval::reader`) tries the lane where a statement starts; a name in
+//! `object { Name … }` is bound there (or, naming a macro, sends the statement to the usual
+//! reading).
 
 use super::{ColourPart, Expr, ExprKind, Node, NodeKind};
 use crate::diag::{FileId, Span};
 
 /// Reads the statement starting after the blanks at byte `pos` of `source`, if it is plain:
 /// its tree and the byte just after its closing `}`.
-pub(super) fn statement(source: &str, pos: usize, file: FileId) -> Option<(Node, usize)> {
+pub fn statement(source: &str, pos: usize, file: FileId) -> Option<(Node, usize)> {
     let mut s = Scanner {
         text: source,
         at: pos,
@@ -118,6 +122,7 @@ impl<'a> Scanner<'a> {
             word_span,
             args: Vec::new(),
             children: Vec::new(),
+            slot: super::Slot::NONE,
         }
     }
 
@@ -397,18 +402,35 @@ impl<'a> Scanner<'a> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{Lower, next_statement};
+    use super::super::lexer::{Lexer, TokenKind};
+    use super::super::{Unit, parse_statement};
     use super::*;
 
-    /// The grammar's reading of the statement at the start of `text`: tree and end.
+    /// The grammar's reading of the statement at the start of `text`, cut where the directive
+    /// reader cuts it (a word and its `{ … }` block): tree and end.
     fn by_grammar(text: &str) -> Option<(String, usize)> {
-        let mut lower = Lower {
-            file: FileId(0),
-            offset: 0,
-            bulk: Default::default(),
-        };
-        match next_statement(text, 0, &mut lower)? {
-            Ok((node, end)) => Some((format!("{node:?}"), end)),
+        let mut lexer = Lexer::new(text, 0..text.len());
+        let first = lexer.next().ok()??;
+        let mut end = first.end as usize;
+        let mut depth = 0;
+        while let Ok(Some(t)) = lexer.next() {
+            if t.kind == TokenKind::Directive {
+                return None;
+            }
+            end = t.end as usize;
+            match t.text(text) {
+                "{" => depth += 1,
+                "}" => depth -= 1,
+                _ => {}
+            }
+            if depth == 0 {
+                break;
+            }
+        }
+        let start = first.start as usize;
+        let unit = Unit::from_file_text(&text[start..end], FileId(0), start);
+        match parse_statement(&unit) {
+            Ok(node) => Some((format!("{node:?}"), end)),
             Err(_) => None,
         }
     }
