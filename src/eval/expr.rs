@@ -16,21 +16,6 @@ const EQUALITY_TOLERANCE: f64 = 1e-10;
 type Result<T> = std::result::Result<T, Diagnostic>;
 
 impl Evaluator<'_> {
-    /// The value `#if (c) a [#elseif (d) b]* #else z #end` leaves where a value is read: the
-    /// first whose condition holds (only the conditions up to it are evaluated), else `z`.
-    pub(super) fn chosen<'e>(
-        &mut self,
-        branches: &'e [(Expr, Expr)],
-        otherwise: &'e Expr,
-    ) -> Result<&'e Expr> {
-        for (c, v) in branches {
-            if self.truth(c)? {
-                return Ok(v);
-            }
-        }
-        Ok(otherwise)
-    }
-
     /// Whether a float counts as true (POV-Ray's |x| > 1e-10).
     pub(super) fn truth(&mut self, e: &Expr) -> Result<bool> {
         Ok(self.float(e)?.abs() > EQUALITY_TOLERANCE)
@@ -92,10 +77,6 @@ impl Evaluator<'_> {
                 }
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b),
-            ExprKind::Chosen(branches, otherwise) => {
-                let chosen = self.chosen(branches, otherwise)?;
-                self.eval(chosen)
-            }
             ExprKind::Ternary(c, a, b) => {
                 // POV-Ray evaluates both branches (it reads them), so a rand() in the one not
                 // taken still draws its number.

@@ -93,40 +93,6 @@ impl Evaluator<'_> {
     /// `spline { [S] [kind] t, V … }`: a declared spline copied first (its kind kept unless
     /// another is named), then the entries, as POV-Ray reads them.
     pub(super) fn spline(&mut self, node: &Node) -> Result<Spline> {
-        // Entries made by directives (`#for` over an array of points) join the written ones
-        // in the order they stand.
-        let flat;
-        let node = if node
-            .children
-            .iter()
-            .any(|c| super::object::is_directive(c.kind))
-        {
-            let mut args = node.args.clone();
-            let mut kinds = Vec::new();
-            for c in &node.children {
-                if !super::object::is_directive(c.kind) {
-                    kinds.push(c.clone());
-                    continue;
-                }
-                self.directive_values(c, &mut args, &mut |ev, item| {
-                    if item.kind == NodeKind::IdentRef && SplineKind::named(&item.word).is_some() {
-                        kinds.push(item.clone());
-                        Ok(())
-                    } else {
-                        Err(ev.unknown_item(item, "spline"))
-                    }
-                })?;
-            }
-            args.sort_by_key(|e| e.span.start);
-            flat = Node {
-                args,
-                children: kinds,
-                ..node.clone()
-            };
-            &flat
-        } else {
-            node
-        };
         let mut args = node.args.as_slice();
         let mut spline = match args.first().map(|e| &e.kind) {
             Some(ExprKind::Ident(_, slot))

@@ -423,14 +423,6 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.texture(body),
-            |ev, e| match ev.eval(e)? {
-                Value::Texture(t) => Ok(t),
-                Value::Pigment(p) => Ok(Texture {
-                    pigment: p,
-                    ..ev.default_texture.clone()
-                }),
-                other => Err(type_error("a texture", &other, e.span)),
-            },
         )
     }
 
@@ -444,25 +436,14 @@ impl Evaluator<'_> {
         average: bool,
         declared: impl Fn(Value) -> std::result::Result<Vec<(f64, T)>, Box<Value>>,
         mut entry: impl FnMut(&mut Self, &Node) -> Result<T>,
-        mut named: impl FnMut(&mut Self, &crate::syntax::Expr) -> Result<T>,
     ) -> Result<Vec<(f64, T)>> {
         if let Some(found) = self.declared_map(node, what, declared) {
             return found;
         }
         let mut entries = Vec::new();
-        // (Directives among the entries run where they stand; an entry a directive leaves
-        // is read as `[v VALUE]`, the value a declared one or a colour: `[I/2 T1]`.)
         self.each_item(&node.children, &mut |ev, e| {
             if e.kind != NodeKind::MapEntry {
                 return Err(ev.unknown_item(e, what));
-            }
-            if e.children.is_empty() {
-                let [v, value] = e.args.as_slice() else {
-                    return Err(Diagnostic::error(format!("a {what} entry made by a directive takes a value and a declared entry"), e.span));
-                };
-                let v = single(ev.float(v)?);
-                entries.push((v, named(ev, value)?));
-                return Ok(());
             }
             let value = match e.args.first() {
                 Some(v) => single(ev.float(v)?),
@@ -505,11 +486,11 @@ impl Evaluator<'_> {
         let mut list: Vec<(Pigment, crate::diag::Span)> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
-                // A colour left by a directive or a macro call in the pigment's body.
+                // A colour after a map entry's pattern (`[0.5 rgb 1]`).
                 NodeKind::ColourItem => {
                     pigment = ev.pigment_value(&item.args[0], pigment.clone())?
                 }
-                // A declared colour or pigment left alone by a directive (`#else Gray50 #end`).
+                // A declared colour or pigment standing alone among the items.
                 NodeKind::IdentRef | NodeKind::Unknown if ev.names_colour_alone(item) => {
                     let v = ev.lookup(item)?;
                     ev.warn_bare_colour(&v, item.word_span, "in a pigment");
@@ -1492,7 +1473,6 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.pigment(body, Pigment::solid(Colour::default())),
-            |ev, e| ev.pigment_value(e, Pigment::solid(Colour::default())),
         )
     }
 
@@ -1512,10 +1492,6 @@ impl Evaluator<'_> {
                 other => Err(Box::new(other)),
             },
             |ev, body| ev.normal(body, None),
-            |ev, e| match ev.eval(e)? {
-                Value::Normal(n) => Ok(n),
-                other => Err(type_error("a normal", &other, e.span)),
-            },
         )
     }
 

@@ -585,14 +585,6 @@ impl<'a> Evaluator<'a> {
                 node.word_span,
             );
         }
-        if let Some(directive) = node.word.strip_prefix('#') {
-            return Diagnostic::error(
-                format!(
-                    "this `#{directive}` holds something that cannot stand in {context} (each branch must hold what could stand here without it)"
-                ),
-                node.word_span,
-            );
-        }
         if node.word == "pigment" && context == "pigment" {
             return Diagnostic::error(
                 "unsupported: a pigment inside a pigment (a checker, map or pattern of pigments is not supported by trace yet)",

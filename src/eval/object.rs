@@ -72,28 +72,6 @@ pub struct ObjectValue {
 /// given when the group is complete).
 const OWN_GROUP: u32 = u32::MAX;
 
-/// Whether a node is a directive (run by `each_item` wherever it stands).
-pub(super) fn is_directive(kind: NodeKind) -> bool {
-    use NodeKind::*;
-    matches!(
-        kind,
-        Version
-            | Declare
-            | Local
-            | Undef
-            | If
-            | IfDef
-            | While
-            | For
-            | Switch
-            | Message
-            | MacroDef
-            | MacroCall
-            | Include
-            | UnknownDirective
-    )
-}
-
 /// Whether a node is an object statement.
 pub(crate) fn is_object(kind: NodeKind) -> bool {
     use NodeKind::*;
@@ -263,14 +241,6 @@ impl ObjectValue {
 impl Evaluator<'_> {
     /// Evaluates an object statement with its modifiers.
     pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
-        // A shape whose values come partly from directives (points made in a loop): its
-        // values and words laid out as if written in place.
-        let flat = if node.kind == NodeKind::Shape {
-            self.shape_values(node)?
-        } else {
-            None
-        };
-        let node = flat.as_ref().unwrap_or(node);
         let mut modifiers = &node.children[..];
         let mut object = match node.kind {
             NodeKind::Sphere => {
@@ -410,10 +380,10 @@ impl Evaluator<'_> {
             }
             NodeKind::Mesh => {
                 let mut mesh = Mesh::default();
-                let split = node.children.iter().position(|c| {
-                    !matches!(c.kind, NodeKind::Triangle | NodeKind::SmoothTriangle)
-                        && !is_directive(c.kind)
-                });
+                let split = node
+                    .children
+                    .iter()
+                    .position(|c| !matches!(c.kind, NodeKind::Triangle | NodeKind::SmoothTriangle));
                 let (triangles, rest) =
                     node.children.split_at(split.unwrap_or(node.children.len()));
                 self.each_item(triangles, &mut |ev, t| {
@@ -519,24 +489,9 @@ impl Evaluator<'_> {
                 group
             }
             NodeKind::ObjectRef | NodeKind::LooksLike => {
-                let mut children = &node.children[..];
-                if let Some((leading, after)) = children
-                    .split_first()
-                    .filter(|(c, _)| c.kind == NodeKind::LeadingDirectives)
-                {
-                    self.each_item(&leading.children, &mut |ev, item| {
-                        Err(ev.unknown_item(item, "an object"))
-                    })?;
-                    children = after;
-                }
-                let (first, rest) = children.split_first().expect("object {} has a body");
+                let (first, rest) = node.children.split_first().expect("object {} has a body");
                 modifiers = rest;
                 match first.kind {
-                    NodeKind::MacroCall => {
-                        // (A macro is called where the reader meets it: this names none.)
-                        let name = &first.children[0];
-                        return Err(self.unknown_word(&name.word, name.span));
-                    }
                     NodeKind::LightSource => {
                         let (light, looks) = self.light(first)?;
                         let mut object = looks.unwrap_or_else(ObjectValue::empty);
@@ -714,15 +669,7 @@ impl Evaluator<'_> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::Function => function = Some(ev.function(item)?),
-                // (A directive's body reads `function {…}` as a function pattern: in an
-                // isosurface it is the surface's function, as POV-Ray reads the tokens.)
-                NodeKind::Pattern
-                    if item.args.is_empty()
-                        && matches!(&item.children[..], [f] if f.kind == NodeKind::Function) =>
-                {
-                    function = Some(ev.function(&item.children[0])?)
-                }
-                // (`open` in a directive's body reads as a flag.)
+                // (`open` among the modifiers reads as a flag.)
                 NodeKind::Flag if item.word == "open" => iso.closed = false,
                 NodeKind::ContainedBy => {
                     let shape = &item.children[0];
@@ -907,10 +854,6 @@ impl Evaluator<'_> {
             }
             match item.kind {
                 NodeKind::BlobThreshold => blob.threshold = ev.float(&item.args[0])?,
-                // (`threshold` in a directive's body reads as an isosurface's setting.)
-                NodeKind::IsoSetting if item.word == "threshold" && item.args.len() == 1 => {
-                    blob.threshold = ev.float(&item.args[0])?
-                }
                 NodeKind::BlobComponent => {
                     let strength = ev.float(&item.args[0])?;
                     let radius = ev.float(&item.args[1])?;
@@ -1416,9 +1359,6 @@ impl Evaluator<'_> {
 
     /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
     fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
-        // Directives among the lists run first, in order (they may declare what a list
-        // uses); one that leaves an item there is refused.
-        // (Directives after the last list are the modifiers'.)
         let is_list = |c: &Node| {
             matches!(
                 c.kind,
@@ -1432,30 +1372,11 @@ impl Evaluator<'_> {
             )
         };
         let lists_end = node.children.iter().rposition(is_list).map_or(0, |p| p + 1);
-        let mut sections: Vec<std::borrow::Cow<'n, Node>> = Vec::new();
-        let mut i = 0;
-        for child in &node.children[..lists_end] {
-            if child.kind == NodeKind::TextureList {
-                // (Its directives make textures: run as it is read.)
-                sections.push(std::borrow::Cow::Borrowed(child));
-            } else if is_list(child) {
-                sections.push(match self.list_with_directives(child)? {
-                    Some(expanded) => std::borrow::Cow::Owned(expanded),
-                    None => std::borrow::Cow::Borrowed(child),
-                });
-            } else {
-                self.each_item(std::slice::from_ref(child), &mut |ev, item| {
-                    Err(ev.unknown_item(item, "a mesh2's lists"))
-                })?;
-            }
-            i += 1;
-        }
+        let sections = &node.children[..lists_end];
+        let i = lists_end;
         let mut at = 0;
         let section = |kind: NodeKind, at: &mut usize| -> Option<&Node> {
-            let n = sections
-                .get(*at)
-                .map(|c| c.as_ref())
-                .filter(|c| c.kind == kind)?;
+            let n = sections.get(*at).filter(|c| c.kind == kind)?;
             *at += 1;
             Some(n)
         };
@@ -1686,27 +1607,7 @@ impl Evaluator<'_> {
         Ok(out)
     }
 
-    /// A mesh2 list whose entries include directives (`#while` loops making vertices), with
-    /// the directives run and their values in their place; `None` when it has none.
-    fn list_with_directives(&mut self, node: &Node) -> Result<Option<Node>> {
-        if !node.children.iter().any(|c| is_directive(c.kind)) {
-            return Ok(None);
-        }
-        let mut values = node.args.clone();
-        for c in &node.children {
-            self.directive_values(c, &mut values, &mut |ev, item| {
-                Err(ev.unknown_item(item, &format!("`{}`", node.word)))
-            })?;
-        }
-        values.sort_by_key(|e| e.span.start);
-        Ok(Some(Node {
-            args: values,
-            children: Vec::new(),
-            ..node.clone()
-        }))
-    }
-
-    /// `texture_list { N, texture {…} … }` (directives may make the textures).
+    /// `texture_list { N, texture {…} … }`.
     fn texture_list(&mut self, node: &Node) -> Result<Vec<ir::Texture>> {
         let n = self.float(&node.args[0])?;
         let mut textures = Vec::new();

@@ -7,7 +7,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::ir::{
     Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline,
 };
-use crate::syntax::{Expr, ExprKind, Node, NodeKind};
+use crate::syntax::{Expr, Node, NodeKind};
 use glam::DVec2;
 use std::sync::Arc;
 
@@ -115,107 +115,7 @@ const MAX_JULIA_PRECISION: f64 = 10_000.0;
 /// The largest font file trace reads (POV-Ray's own fonts are below 100 kB).
 const MAX_FONT_BYTES: u64 = 64 << 20;
 
-/// A value produced by a directive among a shape's values, as an expression standing at
-/// `at` (the directive's place, so that the values keep their order among the others).
-fn value_expr(value: Value, span: Span, at: u32) -> Result<Expr> {
-    let span = Span { start: at, ..span };
-    let kind = match value {
-        Value::Float(f) => ExprKind::Number(f),
-        Value::Vector(v) => ExprKind::PlainVector(v.c, v.len as u8),
-        Value::Colour(c) => ExprKind::PlainVector(c, 5),
-        Value::Str(s) => ExprKind::Str(s),
-        other => {
-            return Err(Diagnostic::error(
-                format!("{} cannot stand among a shape's values", other.kind_name()),
-                span,
-            ));
-        }
-    };
-    Ok(Expr { kind, span })
-}
-
 impl<'a> Evaluator<'a> {
-    /// Runs the directive `c` standing among a construct's values (a shape's, a spline's):
-    /// the values it leaves join `values`, placed where the directive stands; every other item
-    /// it gives goes to `other`.
-    pub(super) fn directive_values(
-        &mut self,
-        c: &Node,
-        values: &mut Vec<Expr>,
-        other: &mut dyn FnMut(&mut Evaluator<'a>, &Node) -> Result<()>,
-    ) -> Result<()> {
-        let at = c.span.start;
-        self.each_item(std::slice::from_ref(c), &mut |ev, item| {
-            if item.kind == NodeKind::Value {
-                let v = ev.eval(&item.args[0])?;
-                values.push(value_expr(v, item.args[0].span, at)?);
-                Ok(())
-            } else if let Some(v) = ev.bare_number(item) {
-                // A declared float or vector named alone (`#declare P = B[J]; P`).
-                values.push(value_expr(v, item.word_span, at)?);
-                Ok(())
-            } else {
-                other(ev, item)
-            }
-        })
-    }
-
-    /// The value of a name standing alone as an item, if it names a float, vector or colour.
-    fn bare_number(&self, item: &Node) -> Option<Value> {
-        if !item.args.is_empty() || !item.children.is_empty() || item.word.is_empty() {
-            return None;
-        }
-        match self.bound(item.slot)? {
-            v @ (Value::Float(_) | Value::Vector(_) | Value::Colour(_)) => Some(v.clone()),
-            _ => None,
-        }
-    }
-
-    /// A shape node whose values include directives (`#while` loops making points), with the
-    /// directives run: their values take their place among the shape's values and anything
-    /// else they give joins the modifiers. `None` when there is no such directive.
-    pub(super) fn shape_values(&mut self, node: &Node) -> Result<Option<Node>> {
-        let is_word = |c: &Node| c.kind == NodeKind::Flag && takes(&node.word, &c.word);
-        let end = node
-            .children
-            .iter()
-            .position(|c| !is_word(c) && !super::object::is_directive(c.kind))
-            .unwrap_or(node.children.len());
-        if !node.children[..end]
-            .iter()
-            .any(|c| super::object::is_directive(c.kind))
-        {
-            return Ok(None);
-        }
-        let mut values: Vec<Expr> = node.args.clone();
-        let (mut children, mut extra) = (Vec::new(), Vec::new());
-        for c in &node.children[..end] {
-            if !super::object::is_directive(c.kind) {
-                children.push(c.clone());
-                continue;
-            }
-            let at = c.span.start;
-            self.directive_values(c, &mut values, &mut |_, item| {
-                if item.kind == NodeKind::Flag && takes(&node.word, &item.word) {
-                    let mut word = item.clone();
-                    word.span.start = at;
-                    children.push(word);
-                } else {
-                    extra.push(item.clone());
-                }
-                Ok(())
-            })?;
-        }
-        values.sort_by_key(|e| e.span.start);
-        children.extend(extra);
-        children.extend(node.children[end..].iter().cloned());
-        Ok(Some(Node {
-            args: values,
-            children,
-            ..node.clone()
-        }))
-    }
-
     /// The IR shape of a `shape` node (`quadric { … }` …).
     pub(super) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
         let args = values(node);

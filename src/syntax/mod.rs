@@ -27,11 +27,8 @@ use pest::iterators::Pair;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum NodeKind {
     // Directives and scene-wide items.
-    Version,
     Declare,
-    Local,
     Default,
-    UnknownDirective,
     Camera,
     LightSource,
     Background,
@@ -86,8 +83,6 @@ pub enum NodeKind {
     Function,
     /// `pattern { PATTERN modifiers }` in `function { }`: a pattern's value as a function.
     PatternFunction,
-    /// Where a declaration's or `#version`'s `;` is missing.
-    MissingSemicolon,
     /// `spline { … }`: kinds as IdentRef children, the rest (a declared spline, then the
     /// entries' parameters and values) as args.
     Spline,
@@ -187,9 +182,6 @@ pub enum NodeKind {
     PatternModifier,
     ColourMap,
     MapEntry,
-    /// A map entry left by a directive, kept as text: read by [`parse_map_entry`] once the
-    /// map's kind is known.
-    RawMapEntry,
     ImageMap,
     ImageType,
     /// `gamma G` or `gamma srgb` in an image_map: the file's encoding.
@@ -239,19 +231,9 @@ pub enum NodeKind {
     FadePower,
     FadeColour,
     // Directives.
-    Undef,
-    If,
-    ElseIf,
-    Else,
     IfDef,
-    While,
     For,
-    Switch,
-    SwitchClause,
-    CaseHead,
     RangeHead,
-    Include,
-    Message,
     /// `#fopen F "name" read|write|append`: children the file's name and the mode word.
     FileOpen,
     /// `#fclose F`.
@@ -262,14 +244,9 @@ pub enum NodeKind {
     FileWrite,
     /// One value of `#write`: an optional binary kind (`uint8` …) as a child, the value in args.
     WriteItem,
-    Body,
     MacroDef,
-    MacroBody,
-    MacroCall,
     /// `#declare X = texture {…} texture {…}`: layered textures.
     LayeredTexture,
-    /// A declared value the grammar cannot read.
-    Unparsed,
     /// `[i]` after a declared name (an array element).
     Subscript,
     /// A reference to a declared identifier where an item may stand (`texture { T }`); its
@@ -277,9 +254,6 @@ pub enum NodeKind {
     IdentRef,
     /// `deprecated [once] "message"` in a declaration.
     Deprecation,
-    /// Declarations between a declaration's `=` and its value (`#declare A = #declare B = …;
-    /// value`, as exporters write it): run before the value is read, as POV-Ray reads them.
-    LeadingDirectives,
     /// `array[N]…` with an optional [`NodeKind::ArrayInit`] child after the subscripts.
     Array,
     /// `{ a, b, … }`: the elements of an array, one [`NodeKind::ArrayElem`] each.
@@ -374,9 +348,6 @@ pub enum ExprKind {
     Binary(BinOp, Box<Expr>, Box<Expr>),
     /// `c ? a : b`.
     Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
-    /// `#if (c) a [#elseif (d) b]* #else z #end` where a value is read: each condition with
-    /// its value, then the value otherwise. Only the value chosen is evaluated.
-    Chosen(Vec<(Expr, Expr)>, Box<Expr>),
     /// `f(a, b)`; the function name, its span and its binding in the unit read.
     Call(String, Span, Slot, Vec<Expr>),
     /// `a[i]`: an array element.
@@ -632,12 +603,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         light_source => "`light_source`",
         background => "`background`",
         global_settings => "`global_settings`",
-        version | declare | default_block | unknown_directive => "a directive",
-        unknown_item | misplaced_item | unknown_tail | balanced | leftover | any_item | body => {
-            "a statement"
-        }
-        macro_call => "a macro call",
-        semicolon => "`;`",
+        default_block => "`default`",
+        unknown_item | misplaced_item | unknown_tail | balanced | leftover => "a statement",
         flag | translate | rotate | scale | matrix | transform | texture | pigment | normal
         | finish => "an object modifier",
         rbrace => "`}`",
@@ -692,8 +659,7 @@ impl Lower<'_> {
             }
         }
         let kind = match rule {
-            Rule::version => NodeKind::Version,
-            Rule::declare | Rule::declare_head => NodeKind::Declare,
+            Rule::declare_head => NodeKind::Declare,
             Rule::for_head => NodeKind::For,
             Rule::range_args => NodeKind::RangeHead,
             Rule::ifdef_head => NodeKind::IfDef,
@@ -703,7 +669,6 @@ impl Lower<'_> {
             Rule::write_args => NodeKind::FileWrite,
             Rule::default_body => NodeKind::Default,
             Rule::default_block => NodeKind::Default,
-            Rule::unknown_directive => NodeKind::UnknownDirective,
             Rule::camera => NodeKind::Camera,
             Rule::light_source => NodeKind::LightSource,
             Rule::background => NodeKind::Background,
@@ -745,10 +710,8 @@ impl Lower<'_> {
             Rule::blob => NodeKind::Blob,
             Rule::function_value => NodeKind::Function,
             Rule::pattern_function => NodeKind::PatternFunction,
-            Rule::missing_semicolon => NodeKind::MissingSemicolon,
             Rule::spline => NodeKind::Spline,
             Rule::pigment_pattern => NodeKind::PigmentPattern,
-            Rule::value_item => NodeKind::Value,
             Rule::function_image => NodeKind::FunctionImage,
             Rule::function_params => NodeKind::FunctionParams,
             Rule::isosurface => NodeKind::Isosurface,
@@ -831,7 +794,6 @@ impl Lower<'_> {
             Rule::pattern_modifier => NodeKind::PatternModifier,
             Rule::colour_map => NodeKind::ColourMap,
             Rule::map_entry => NodeKind::MapEntry,
-            Rule::raw_map_entry => NodeKind::RawMapEntry,
             Rule::image_map => NodeKind::ImageMap,
             Rule::image_use => NodeKind::ImageUse,
             Rule::image_type => NodeKind::ImageType,
@@ -856,31 +818,9 @@ impl Lower<'_> {
             Rule::fade_distance => NodeKind::FadeDistance,
             Rule::fade_power => NodeKind::FadePower,
             Rule::fade_colour => NodeKind::FadeColour,
-            Rule::undef => NodeKind::Undef,
-            Rule::if_directive => NodeKind::If,
-            Rule::elseif_clause => NodeKind::ElseIf,
-            Rule::else_clause => NodeKind::Else,
-            Rule::ifdef_directive => NodeKind::IfDef,
-            Rule::while_directive => NodeKind::While,
-            Rule::for_directive => NodeKind::For,
-            Rule::switch_directive => NodeKind::Switch,
-            Rule::switch_clause => NodeKind::SwitchClause,
-            Rule::case_head => NodeKind::CaseHead,
-            Rule::range_head => NodeKind::RangeHead,
-            Rule::include => NodeKind::Include,
-            Rule::message => NodeKind::Message,
-            Rule::fopen => NodeKind::FileOpen,
-            Rule::fclose => NodeKind::FileClose,
-            Rule::read_directive => NodeKind::FileRead,
-            Rule::write_directive => NodeKind::FileWrite,
             Rule::write_item => NodeKind::WriteItem,
-            Rule::body => NodeKind::Body,
-            Rule::macro_def => NodeKind::MacroDef,
-            Rule::macro_body => NodeKind::MacroBody,
-            Rule::macro_call => NodeKind::MacroCall,
             Rule::layered_texture => NodeKind::LayeredTexture,
             Rule::colour_item => NodeKind::ColourItem,
-            Rule::unparsed_value => NodeKind::Unparsed,
             Rule::subscript => NodeKind::Subscript,
             Rule::ident
             | Rule::name_ref
@@ -890,7 +830,6 @@ impl Lower<'_> {
             | Rule::bare_name => NodeKind::IdentRef,
             Rule::array_value => NodeKind::Array,
             Rule::deprecation => NodeKind::Deprecation,
-            Rule::leading_directives => NodeKind::LeadingDirectives,
             Rule::array_init => NodeKind::ArrayInit,
             Rule::array_elem => NodeKind::ArrayElem,
             Rule::unknown_item
@@ -913,8 +852,6 @@ impl Lower<'_> {
             rule,
             Rule::ident
                 | Rule::name_ref
-                | Rule::macro_body
-                | Rule::unparsed_value
                 | Rule::shape_word
                 | Rule::charset
                 | Rule::function_params
@@ -923,29 +860,9 @@ impl Lower<'_> {
                 | Rule::image_type
                 | Rule::magnet_form
         ) {
-            // A name, or a macro body kept as source text (its span) to be parsed at each call.
+            // A name, as written.
             node.word = pair.as_str().trim().to_string();
             node.slot = self.slot(&pair);
-            return node;
-        }
-        if rule == Rule::raw_map_entry {
-            // Read later as its map's kind of entry, from the source text of its span.
-            node.word_span = span;
-            return node;
-        }
-        if rule == Rule::value_item {
-            node.word = pair
-                .as_str()
-                .trim()
-                .trim_end_matches(',')
-                .trim_end()
-                .to_string();
-            node.word_span = span;
-            node.args = pair
-                .into_inner()
-                .filter(|p| is_expr(p.as_rule()))
-                .map(|p| self.expr(p))
-                .collect();
             return node;
         }
         if rule == Rule::item_ref || rule == Rule::bare_name {
@@ -1007,18 +924,9 @@ impl Lower<'_> {
                     kind: ExprKind::Number(if on { 1.0 } else { 0.0 }),
                     span,
                 });
-            } else if r == Rule::declare_kind {
-                if inner.as_str().trim() == "local" {
-                    node.kind = NodeKind::Local;
-                }
             } else if !matches!(
                 r,
-                Rule::EOI
-                    | Rule::unknown_tail
-                    | Rule::skip_rest
-                    | Rule::balanced
-                    | Rule::semicolon
-                    | Rule::rbrace
+                Rule::EOI | Rule::unknown_tail | Rule::balanced | Rule::rbrace
             ) {
                 // (The body of something unsupported is dropped: evaluation stops at its word.)
                 node.children.push(self.node(inner));
@@ -1095,23 +1003,6 @@ impl Lower<'_> {
                     };
                 }
                 e
-            }
-            Rule::chosen_value => {
-                let mut values: Vec<Expr> = pair
-                    .into_inner()
-                    .filter(|p| is_expr(p.as_rule()))
-                    .map(|p| self.expr(p))
-                    .collect();
-                let otherwise = values.pop().expect("a chosen value has its #else");
-                let mut pairs = Vec::with_capacity(values.len() / 2);
-                let mut values = values.into_iter();
-                while let (Some(c), Some(v)) = (values.next(), values.next()) {
-                    pairs.push((c, v));
-                }
-                Expr {
-                    kind: ExprKind::Chosen(pairs, Box::new(otherwise)),
-                    span,
-                }
             }
             Rule::postfix => {
                 let mut inner = pair.into_inner();
