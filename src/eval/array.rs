@@ -274,6 +274,19 @@ impl Evaluator<'_> {
         Ok(slot(array, &path).is_some())
     }
 
+    /// `#undef A[i]`: the element has no value again.
+    pub(super) fn unassign_element(&mut self, node: &Node) -> Result<()> {
+        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
+        let Some(Value::Array(array)) = self.env.get_mut(&node.word).map(std::sync::Arc::make_mut)
+        else {
+            unreachable!("element_path checked that the name is an array");
+        };
+        let (array, pos) = slot_mut(array, &path);
+        array.items[pos] = None;
+        Ok(())
+    }
+
     /// `#declare A[i]… = value`.
     pub(super) fn assign_element(
         &mut self,

@@ -209,6 +209,24 @@ impl Evaluator<'_> {
                     Value::Vector(Vector { c: out, len })
                 })
             }
+            // Strings compare by their characters' codes (POV-Ray's strcmp).
+            BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge | BinOp::Eq | BinOp::Ne
+                if matches!(va, Value::Str(_)) =>
+            {
+                let (Value::Str(x), Value::Str(y)) = (&va, &vb) else {
+                    return Err(type_error("a string", &vb, b.span));
+                };
+                let order = x.chars().cmp(y.chars());
+                let r = match op {
+                    BinOp::Lt => order.is_lt(),
+                    BinOp::Le => order.is_le(),
+                    BinOp::Gt => order.is_gt(),
+                    BinOp::Ge => order.is_ge(),
+                    BinOp::Eq => order.is_eq(),
+                    _ => order.is_ne(),
+                };
+                Ok(Value::Float(bool_value(r)))
+            }
             _ => {
                 let x = self.expect_float(&va, a.span)?;
                 let y = self.expect_float(&vb, b.span)?;
@@ -284,6 +302,15 @@ impl Evaluator<'_> {
                     let channels = kw.trim_start_matches('s');
                     // Which of filter/transmit this keyword sets, in the order the vector gives them.
                     let (filter, transmit) = match channels {
+                        // `rgb` of four or five values keeps the filter (and transmit) given,
+                        // as POV-Ray does, with its warning.
+                        "rgb" if len >= 4 => {
+                            self.warn(Diagnostic::warning(
+                                "`rgb` takes three values; the filter (and transmit) after them are kept, as in POV-Ray (which warns of a suspicious expression after rgb)",
+                                e.span,
+                            ));
+                            (Some(3), (len == 5).then_some(4))
+                        }
                         "rgb" => (None, None),
                         "rgbf" => (Some(3), None),
                         "rgbt" => (None, Some(3)),
@@ -307,6 +334,14 @@ impl Evaluator<'_> {
                         "blue" => c[2] = f,
                         "filter" => c[3] = f,
                         "transmit" => c[4] = f,
+                        // POV-Ray's old name of filter (before 2.0), read as filter.
+                        "alpha" => {
+                            self.warn(Diagnostic::warning(
+                                "`alpha` is POV-Ray's old name of `filter`: read as filter (POV-Ray warns too)",
+                                e.span,
+                            ));
+                            c[3] = f;
+                        }
                         _ => {
                             return Err(Diagnostic::error(
                                 format!("`{kw}` is not a colour channel that can be set"),

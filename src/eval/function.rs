@@ -20,13 +20,14 @@ impl Evaluator<'_> {
             .iter()
             .find(|c| c.kind == NodeKind::FunctionParams)
         {
-            Some(p) => p
-                .word
-                .trim_matches(|c| c == '(' || c == ')')
-                .split(',')
-                .map(|s| s.trim().to_string())
-                .filter(|s| !s.is_empty())
-                .collect(),
+            // (The words of `(a, b c)`, commas optional, as POV-Ray reads them.)
+            Some(p) => {
+                let mut lexer = crate::syntax::lexer::Lexer::new(&p.word, 0..p.word.len());
+                std::iter::from_fn(|| lexer.next().ok().flatten())
+                    .filter(|t| t.kind == crate::syntax::lexer::TokenKind::Word)
+                    .map(|t| t.text(&p.word).to_string())
+                    .collect()
+            }
             None => vec!["x".into(), "y".into(), "z".into()],
         };
         // `function { spline { … } }`: the spline of its parameter.

@@ -643,6 +643,13 @@ impl super::Evaluator<'_> {
         let (mut file_type, mut type_span, mut gamma) = (None, file_expr.span, None);
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
+                NodeKind::ImageOrientation => {
+                    ev.eval(&item.args[0])?;
+                    ev.warn(Diagnostic::warning(
+                        "an old orientation vector before the image (POV-Ray's syntax before 3.0): ignored, as POV-Ray ignores it",
+                        item.span,
+                    ));
+                }
                 NodeKind::ImageType => {
                     file_type = FileType::from_keyword(&item.word);
                     type_span = item.span;

@@ -524,7 +524,9 @@ const SUPPORTED: &[&str] = &[
     "adc_bailout",
     "agate",
     "agate_turb",
+    "all",
     "all_intersections",
+    "alpha",
     "altitude",
     "ambient",
     "ambient_light",
@@ -581,6 +583,7 @@ const SUPPORTED: &[&str] = &[
     "colour",
     "colour_map",
     "component",
+    "composite",
     "concat",
     "cone",
     "confidence",
@@ -717,6 +720,7 @@ const SUPPORTED: &[&str] = &[
     "max",
     "max_extent",
     "max_gradient",
+    "max_intersections",
     "max_iteration",
     "max_trace",
     "max_trace_level",
@@ -780,6 +784,7 @@ const SUPPORTED: &[&str] = &[
     "poly",
     "poly_wave",
     "polygon",
+    "pot",
     "pow",
     "ppm",
     "precision",
@@ -803,6 +808,7 @@ const SUPPORTED: &[&str] = &[
     "read",
     "red",
     "reflection",
+    "reflection_exponent",
     "render",
     "repeat",
     "rgb",
@@ -981,14 +987,12 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this light_source item is outside trace's subset"
         }
         "density_map" => LATER,
-        "iff" | "pot" => "trace reads png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr and hdr images",
+        "iff" => "trace reads png, jpeg, gif, pot, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "clipped_by" | "split_union" | "cutaway_textures" => LATER,
         "spherical_camera" | "cylinder_camera" => {
             "this camera type or item is not supported by trace yet"
         }
-        "max_intersections" | "noise_generator_gs" | "subsurface_gs" => {
-            "this global setting is outside trace's subset"
-        }
+        "noise_generator_gs" | "subsurface_gs" => "this global setting is outside trace's subset",
         "aa_level" | "aa_threshold" | "always_sample" | "anisotropy" | "autostop" | "collect"
         | "dispersion_samples" | "eccentricity" | "expand_thresholds" | "extinction" | "gather"
         | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
@@ -1002,14 +1006,12 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this shape or shape item is not supported by trace yet"
         }
         "ratio" | "width" => "this pattern or pattern modifier is not supported by trace yet",
-        "all" | "alpha" | "premultiplied" => "this image_map item is not supported by trace yet",
-        "reflection_exponent" | "refraction" | "translucency" => {
-            "this finish item is outside trace's subset"
-        }
+        "premultiplied" => "this image_map item is not supported by trace yet",
+        "refraction" | "translucency" => "this finish item is outside trace's subset",
         "hierarchy" => "this object item is not supported by trace yet",
         "area_illumination" => "this light_source item is not supported by trace yet",
         "bokeh" => "this camera item is not supported by trace yet",
-        "sred" | "sgreen" | "sblue" | "xyz" | "composite" | "dtag" => "not supported by trace yet",
+        "sred" | "sgreen" | "sblue" | "xyz" | "dtag" => "not supported by trace yet",
         _ => return None,
     })
 }

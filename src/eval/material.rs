@@ -228,6 +228,10 @@ impl Evaluator<'_> {
                     Value::Texture(t) => texture = t,
                     // `texture { P }` with a declared pigment: POV-Ray takes it as the pigment.
                     Value::Pigment(p) => texture.pigment = p,
+                    // `texture { P F }`: POV-Ray's old texture of declared pigments, normals and
+                    // finishes without their wrappers.
+                    Value::Finish(f) => texture.finish = ev.shared_finish(f),
+                    Value::Normal(n) => texture.normal = Some(Box::new(n)),
                     other => return Err(type_error("a texture", &other, item.span)),
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
@@ -1657,6 +1661,8 @@ impl Evaluator<'_> {
                     }
                 }
                 NodeKind::Reflection => ev.reflection(item, &mut f.reflection)?,
+                // POV-Ray's old spelling of `reflection { … exponent E }`.
+                NodeKind::ReflectionExponent => f.reflection.exponent = ev.float(arg(0))?,
                 NodeKind::Ior => {
                     return Err(Diagnostic::error(
                         "unsupported: `ior` inside finish (POV-Ray's old syntax); write `interior { ior … }`",

@@ -733,6 +733,15 @@ impl<'a> Evaluator<'a> {
                 self.background_alpha = 1.0 - c[4];
             }
             NodeKind::GlobalSettings => self.global_settings(node)?,
+            // POV-Ray's old places of these global settings, outside global_settings.
+            NodeKind::MaxTraceLevel => {
+                self.warn(Diagnostic::warning(
+                    "`max_trace_level` belongs in global_settings { … }: read there (POV-Ray warns too)",
+                    node.word_span,
+                ));
+                self.max_trace_level(node)?;
+            }
+            NodeKind::MaxIntersections => self.max_intersections(node)?,
             NodeKind::SkySphere => self.sky_sphere = Some(self.sky_sphere(node)?),
             _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
@@ -836,6 +845,23 @@ impl<'a> Evaluator<'a> {
         })
     }
 
+    /// `max_trace_level N`.
+    fn max_trace_level(&mut self, item: &Node) -> Result<()> {
+        let n = self.float(&item.args[0])?;
+        self.settings.max_trace_level = (n as i64).clamp(1, 256) as u32;
+        Ok(())
+    }
+
+    /// `max_intersections N`: no longer needed, ignored with a warning as in POV-Ray 3.7.
+    fn max_intersections(&mut self, item: &Node) -> Result<()> {
+        self.float(&item.args[0])?;
+        self.warn(Diagnostic::warning(
+            "`max_intersections` is no longer needed and has no effect (POV-Ray 3.7 says so too)",
+            item.word_span,
+        ));
+        Ok(())
+    }
+
     fn global_settings(&mut self, node: &Node) -> Result<()> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
@@ -864,10 +890,8 @@ impl<'a> Evaluator<'a> {
                         ev.assumed_gamma = Some(g);
                     }
                 }
-                NodeKind::MaxTraceLevel => {
-                    let n = ev.float(&item.args[0])?;
-                    ev.settings.max_trace_level = (n as i64).clamp(1, 256) as u32;
-                }
+                NodeKind::MaxTraceLevel => ev.max_trace_level(item)?,
+                NodeKind::MaxIntersections => ev.max_intersections(item)?,
                 NodeKind::AdcBailout => ev.settings.adc_bailout = ev.float(&item.args[0])?,
                 NodeKind::AmbientLight => {
                     let v = ev.eval(&item.args[0])?;

@@ -320,10 +320,12 @@ impl Evaluator<'_> {
                 let centre = self.vec3(&node.args[0])?;
                 let normal = self.nonzero(&node.args[1], "disc normal")?.normalize();
                 let radius = self.float(&node.args[2])?;
-                let hole_radius = match node.args.get(3) {
-                    Some(e) => self.float(e)?,
-                    None => 0.0,
-                };
+                // (Each value after the radius is the hole's radius again, as POV-Ray reads
+                // them: the last counts.)
+                let mut hole_radius = 0.0;
+                for e in &node.args[3..] {
+                    hole_radius = self.float(e)?;
+                }
                 ObjectValue::single(Shape::Disc {
                     centre,
                     normal,
@@ -440,6 +442,12 @@ impl Evaluator<'_> {
                 ObjectValue::single(Shape::Mesh(self.mesh_file(&node.args[0])?))
             }
             NodeKind::Union => {
+                if node.word == "composite" {
+                    self.warn(Diagnostic::warning(
+                        "`composite` is POV-Ray's old name of `union`: read as a union (POV-Ray warns too)",
+                        node.word_span,
+                    ));
+                }
                 // Members and the group's modifiers, in order (POV-Ray puts the modifiers last).
                 modifiers = &[];
                 let mut group = ObjectValue::empty();

@@ -40,7 +40,9 @@ const COLOUR_TYPES: [&str; 8] = [
     "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft",
 ];
 /// A colour's channels, each followed by its value.
-const CHANNELS: [&str; 6] = ["red", "green", "blue", "filter", "transmit", "gray"];
+const CHANNELS: [&str; 7] = [
+    "red", "green", "blue", "filter", "transmit", "gray", "alpha",
+];
 /// Directives that open a block closed by `#end`.
 const OPENERS: [&str; 7] = ["if", "ifdef", "ifndef", "while", "for", "switch", "macro"];
 
@@ -772,21 +774,29 @@ impl<'a> Evaluator<'a> {
         let Some(first) = self.next_token()? else {
             return Ok(None);
         };
-        // `declare` without its `#` (POV-Ray's older syntax): POV-Ray warns and declares.
-        if first.kind == TokenKind::Word
-            && first.binding.is_none()
-            && matches!(self.text_of(&first), "declare" | "local")
-        {
-            self.warn(Diagnostic::warning(
-                format!("`{0}` wants a `#` before it (`#{0}`)", self.text_of(&first)),
-                first.span(),
-            ));
-            let local = self.text_of(&first) == "local";
-            self.declare_directive(local, first.span())?;
-            return self.read_statement();
+        // Directives without their `#` (POV-Ray's older syntax), read at the top level as
+        // POV-Ray reads them.
+        if first.kind == TokenKind::Word && first.binding.is_none() && !first.stand_in {
+            let word = self.text_of(&first).to_string();
+            if matches!(word.as_str(), "declare" | "include" | "version" | "local") {
+                return self.directive_without_hash(&word, first.span());
+            }
         }
         let mut em = Emitter::default();
         self.emit(&mut em, &first);
+        if first.kind == TokenKind::Word
+            && first.binding.is_none()
+            && matches!(
+                self.text_of(&first),
+                "max_trace_level" | "max_intersections"
+            )
+        {
+            // Global settings POV-Ray reads outside global_settings: the word and its value.
+            if let Some(t) = self.next_token()? {
+                self.expression_from(&mut em, t)?;
+            }
+            return Ok(Some(Statement::Unit(em.finish())));
+        }
         if first.kind == TokenKind::Word && first.binding.is_none() && !first.stand_in {
             if let Some(next) = self.peek_token()? {
                 if next.is(self, "{") {
@@ -1242,13 +1252,38 @@ impl<'a> Evaluator<'a> {
                 self.branch(holds, at)
             }
             "ifdef" | "ifndef" => {
-                let head = self.parenthesis(at, &format!("#{word}"))?;
+                // (The name is read as written: a macro's name is not a call here.)
+                let head = match self.next_token()? {
+                    Some(open) if open.is(self, "(") => {
+                        let mut em = Emitter::default();
+                        self.emit(&mut em, &open);
+                        self.reader.raw_words = true;
+                        let name = self.next_token();
+                        self.reader.raw_words = false;
+                        let name = name?;
+                        let closes = name.as_ref().is_some_and(|n| n.is(self, ")"));
+                        if let Some(name) = name {
+                            self.emit(&mut em, &name);
+                        }
+                        if !closes {
+                            self.rest_of_group(&mut em, 1)?;
+                        }
+                        em.finish()
+                    }
+                    _ => {
+                        return Err(Diagnostic::error(format!("expected `(` after #{word}"), at));
+                    }
+                };
                 let node = self.parsed(&head, Parse::Head(Head::Ifdef), |u| {
                     syntax::parse_head(u, Head::Ifdef)
                 })?;
-                let defined = self
-                    .with_bindings(head.bindings.clone(), |ev| ev.defined(&node.children[0]))
-                    .map_err(|d| self.noted(d, Some(&head)))?;
+                // (A number or other value is never declared.)
+                let defined = match node.children.first() {
+                    Some(name) => self
+                        .with_bindings(head.bindings.clone(), |ev| ev.defined(name))
+                        .map_err(|d| self.noted(d, Some(&head)))?,
+                    None => false,
+                };
                 self.branch(defined == (word == "ifdef"), at)
             }
             "elseif" | "else" => match self.reader.blocks.last() {
@@ -1291,11 +1326,7 @@ impl<'a> Evaluator<'a> {
             "macro" => self.macro_directive(at),
             "include" => self.include_directive(at),
             "version" => self.version_directive(at),
-            "undef" => {
-                let (name, _) = self.raw_word(at, "a name after #undef")?;
-                self.env.remove(&name);
-                Ok(())
-            }
+            "undef" => self.undef_directive(at),
             "debug" | "warning" | "error" | "render" | "statistics" => {
                 let unit = self.operand_unit(at)?;
                 let text = self.string_of(&unit)?;
@@ -1390,14 +1421,101 @@ impl<'a> Evaluator<'a> {
                 self.with_bindings(body.bindings.clone(), |ev| ev.default_directive(&node))
                     .map_err(|d| self.noted(d, Some(&body)))
             }
+            // A `#` before a word that is no directive is nothing to POV-Ray: the word is read
+            // as if the `#` were not there (`#sphere { … }`).
             _ => {
-                let message = match super::keywords::reason(word) {
-                    Some(reason) => format!("unsupported: `#{word}` ({reason})"),
-                    None => format!("unknown directive `#{word}`"),
-                };
-                Err(Diagnostic::error(message, at))
+                let input = self.reader.inputs.last_mut().expect("an input");
+                input.pos = at.start as usize;
+                Ok(())
             }
         }
+    }
+
+    /// `declare`, `include`, `version` (and `local`) at the top level without their `#`.
+    fn directive_without_hash(&mut self, word: &str, at: Span) -> Result<Option<Statement>> {
+        let wants_hash = || {
+            Diagnostic::warning(
+                format!("`{word}` wants a `#` before it (`#{word}`; POV-Ray warns too)"),
+                at,
+            )
+        };
+        match word {
+            "declare" => {
+                self.warn(wants_hash());
+                self.declare_directive(false, at)?;
+            }
+            "include" => {
+                self.warn(wants_hash());
+                self.include_directive(at)?;
+            }
+            "version" => {
+                // `version V;` makes POV-Ray stop reading the scene there (it takes the `;`
+                // for the end of the file); without the `;` it reads on.
+                let unit = self.expression_unit(at)?;
+                let expr = self.parsed(&unit, Parse::Expr, syntax::parse_expr)?;
+                let v = self
+                    .with_bindings(unit.bindings.clone(), |ev| ev.float(&expr))
+                    .map_err(|d| self.noted(d, Some(&unit)))?;
+                self.version = Some(v);
+                if self.peek_held_is(";")? {
+                    self.warn(Diagnostic::warning(
+                        "`version` without its `#` but with a `;`: POV-Ray stops reading the scene here, and so does trace (write `#version`)",
+                        at,
+                    ));
+                    self.reader.inputs.clear();
+                    return Ok(None);
+                }
+                self.warn(wants_hash());
+            }
+            _ => {
+                return Err(Diagnostic::error(
+                    "`local` wants a `#` before it: `#local` (POV-Ray refuses it too)",
+                    at,
+                ));
+            }
+        }
+        self.read_statement()
+    }
+
+    /// `#undef Name` (or `#undef A[i]`: the element has no value again). An unknown name is
+    /// a warning, as in POV-Ray.
+    fn undef_directive(&mut self, at: Span) -> Result<()> {
+        let (name, name_span) = self.raw_word(at, "a name after #undef")?;
+        // (A directive after the name waits until the name is undefined.)
+        if self.peek_held_is("[")? {
+            let mut em = Emitter::default();
+            let name_tok = Tok {
+                kind: TokenKind::Word,
+                file: name_span.file,
+                start: name_span.start,
+                end: name_span.end,
+                run: self.reader.run,
+                context: None,
+                binding: None,
+                stand_in: false,
+                repeat: false,
+            };
+            self.emit(&mut em, &name_tok);
+            while self.peek_held_is("[")? {
+                let open = self.next_token()?.expect("peeked");
+                self.emit(&mut em, &open);
+                self.rest_of_group(&mut em, 1)?;
+            }
+            let em = em.finish();
+            let node = self.parsed(&em, Parse::Head(Head::Element), |u| {
+                syntax::parse_head(u, Head::Element)
+            })?;
+            return self
+                .with_bindings(em.bindings.clone(), |ev| ev.unassign_element(&node))
+                .map_err(|d| self.noted(d, Some(&em)));
+        }
+        if self.env.remove(&name).is_none() && self.macros.remove(&name).is_none() {
+            self.warn(Diagnostic::warning(
+                format!("`#undef {name}`: `{name}` is not declared (POV-Ray warns too)"),
+                name_span,
+            ));
+        }
+        Ok(())
     }
 
     /// A required group opened by `open` (`{` of `#default`).
@@ -1847,7 +1965,13 @@ impl<'a> Evaluator<'a> {
                 span,
             ));
         }
-        let path = self.find_file(&name, "include file", span)?;
+        // (A name without its extension finds the file with `.inc` after it, as in POV-Ray.)
+        let path = match self.find_file(&name, "include file", span) {
+            Err(e) if std::path::Path::new(&name).extension().is_none() => self
+                .find_file(&format!("{name}.inc"), "include file", span)
+                .map_err(|_| e)?,
+            found => found?,
+        };
         let text = crate::diag::read_source(&path)
             .map_err(|e| Diagnostic::error(format!("cannot read {}: {e}", path.display()), span))?;
         let file = self.sources.add(&path, text);
@@ -1948,7 +2072,10 @@ impl<'a> Evaluator<'a> {
             ev.bind_declared(&node, local, value)
         })
         .map_err(|d| self.noted(d, Some(&head)))?;
-        if !self.optional_semicolon()? && number {
+        if self.optional_semicolon()? {
+            // (A second `;` is read too, as POV-Ray reads it.)
+            self.optional_semicolon()?;
+        } else if number {
             self.missing_semicolon(value_span)?;
         }
         Ok(())

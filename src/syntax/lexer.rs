@@ -173,7 +173,8 @@ const CLASS: [u8; 256] = {
                 b'<' | b'>' | b'!' => PAIRED,
                 b'{' | b'}' | b'(' | b')' | b'[' | b']' | b',' | b';' | b'+' | b'-' | b'*'
                 | b'/' | b'=' | b'&' | b'|' | b'?' | b':' => PUNCT,
-                b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r' => BLANK,
+                // (NUL and Ctrl-Z are blanks too, as in POV-Ray.)
+                b' ' | b'\t' | b'\n' | 0x0b | 0x0c | b'\r' | 0 | 0x1a => BLANK,
                 _ => OTHER,
             }
         };
@@ -206,19 +207,25 @@ pub fn number_end(b: &[u8], mut i: usize, end: usize) -> usize {
             i += 1;
         }
     }
+    // (An exponent without digits is part of the number and counts for nothing: POV-Ray
+    // reads `1e` and `1e+` as 1.)
     if i < end && (b[i] == b'e' || b[i] == b'E') {
-        let mut j = i + 1;
-        if j < end && (b[j] == b'+' || b[j] == b'-') {
-            j += 1;
+        i += 1;
+        if i < end && (b[i] == b'+' || b[i] == b'-') {
+            i += 1;
         }
-        if j < end && b[j].is_ascii_digit() {
-            while j < end && b[j].is_ascii_digit() {
-                j += 1;
-            }
-            i = j;
+        while i < end && b[i].is_ascii_digit() {
+            i += 1;
         }
     }
     i
+}
+
+/// The value of a number token's text (a dangling exponent, `1e`, counts for nothing).
+pub fn number_value(text: &str) -> f64 {
+    let t = text.strip_suffix(['+', '-']).unwrap_or(text);
+    let t = t.strip_suffix(['e', 'E']).unwrap_or(text);
+    t.parse().unwrap_or(f64::NAN)
 }
 
 /// Just after the string starting at `b[i]` (`"`): a backslash escapes the byte after it.
@@ -326,11 +333,15 @@ mod tests {
                 (Word, "z"),
             ]
         );
-        // An exponent needs digits; `2x` is a number and a word.
+        // A dangling exponent belongs to the number (POV-Ray reads `1e` as 1); `2x` is a
+        // number and a word.
         assert_eq!(
-            tokens("1e 2x"),
-            [(Number, "1"), (Word, "e"), (Number, "2"), (Word, "x")]
+            tokens("1e 2x 3e+"),
+            [(Number, "1e"), (Number, "2"), (Word, "x"), (Number, "3e+")]
         );
+        assert_eq!(number_value("1e"), 1.0);
+        assert_eq!(number_value("3e+"), 3.0);
+        assert_eq!(number_value("2.5e-1"), 0.25);
     }
 
     #[test]

@@ -44,6 +44,8 @@ pub enum NodeKind {
     MaxTraceLevel,
     AdcBailout,
     AmbientLight,
+    /// `max_intersections N` (read and ignored, as POV-Ray 3.7 does).
+    MaxIntersections,
     // Camera items.
     Perspective,
     /// A camera type other than perspective, orthographic and cylinder: its keyword is the word.
@@ -165,6 +167,10 @@ pub enum NodeKind {
     Albedo,
     Reflection,
     Falloff,
+    /// `reflection_exponent E` in a finish (POV-Ray's old spelling).
+    ReflectionExponent,
+    /// A vector before an image_map's file (POV-Ray's old orientation, ignored).
+    ImageOrientation,
     Exponent,
     Fresnel,
     // Lights, patterns, interiors.
@@ -412,6 +418,8 @@ pub enum Head {
     Write,
     /// `{ … }` after `#default`.
     Default,
+    /// `Name[i]…` after `#undef`.
+    Element,
 }
 
 /// A declared value's syntax: an item (`pigment {…}`, `array[3]`, `function {…}`, layered
@@ -506,6 +514,7 @@ pub fn parse_head(unit: &Unit, head: Head) -> Result<Node, Diagnostic> {
         Head::Read => Rule::read_args,
         Head::Write => Rule::write_args,
         Head::Default => Rule::default_body,
+        Head::Element => Rule::element_head,
     };
     parse_unit_with(unit, rule, |top, lower| lower.node(top))
 }
@@ -668,6 +677,7 @@ impl Lower<'_> {
             Rule::read_args => NodeKind::FileRead,
             Rule::write_args => NodeKind::FileWrite,
             Rule::default_body => NodeKind::Default,
+            Rule::element_head => NodeKind::IdentRef,
             Rule::default_block => NodeKind::Default,
             Rule::camera => NodeKind::Camera,
             Rule::light_source => NodeKind::LightSource,
@@ -682,6 +692,7 @@ impl Lower<'_> {
             Rule::global_settings => NodeKind::GlobalSettings,
             Rule::assumed_gamma => NodeKind::AssumedGamma,
             Rule::max_trace_level => NodeKind::MaxTraceLevel,
+            Rule::max_intersections => NodeKind::MaxIntersections,
             Rule::adc_bailout => NodeKind::AdcBailout,
             Rule::ambient_light => NodeKind::AmbientLight,
             Rule::perspective => NodeKind::Perspective,
@@ -780,6 +791,8 @@ impl Lower<'_> {
             Rule::albedo => NodeKind::Albedo,
             Rule::reflection => NodeKind::Reflection,
             Rule::falloff => NodeKind::Falloff,
+            Rule::reflection_exponent => NodeKind::ReflectionExponent,
+            Rule::image_orientation => NodeKind::ImageOrientation,
             Rule::exponent => NodeKind::Exponent,
             Rule::fresnel => NodeKind::Fresnel,
             Rule::sky_sphere => NodeKind::SkySphere,
@@ -865,8 +878,8 @@ impl Lower<'_> {
             node.slot = self.slot(&pair);
             return node;
         }
-        if rule == Rule::item_ref || rule == Rule::bare_name {
-            let mut inner = pair.into_inner();
+        if matches!(rule, Rule::item_ref | Rule::bare_name | Rule::element_head) {
+            let mut inner = pair.into_inner().filter(|p| p.as_rule() != Rule::EOI);
             let name = inner.next().expect("item_ref starts with a name");
             node.word = name.as_str().to_string();
             node.word_span = self.span(&name);
@@ -915,6 +928,7 @@ impl Lower<'_> {
                 if first_word {
                     node.word = inner.as_str().to_string();
                     node.word_span = self.span(&inner);
+                    node.slot = self.slot(&inner);
                     first_word = false;
                 }
             } else if r == Rule::flag_value {
@@ -1071,7 +1085,7 @@ impl Lower<'_> {
                 let numbers: Vec<f64> = text[1..text.len() - 1]
                     .split(|c: char| c == ',' || c.is_whitespace())
                     .filter(|n| !n.is_empty())
-                    .map(|n| n.trim().parse().unwrap_or(f64::NAN))
+                    .map(|n| lexer::number_value(n.trim()))
                     .collect();
                 if numbers.len() <= 5 {
                     let mut c = [0.0; 5];
@@ -1102,7 +1116,7 @@ impl Lower<'_> {
                 }
             }
             Rule::plain_float | Rule::number => Expr {
-                kind: ExprKind::Number(pair.as_str().parse().unwrap_or(f64::NAN)),
+                kind: ExprKind::Number(lexer::number_value(pair.as_str())),
                 span,
             },
             Rule::vector => Expr {
@@ -1247,6 +1261,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_material
             | kw_mesh_file
             | kw_max_trace_level
+            | kw_max_intersections
             | kw_metallic
             | kw_no_image
             | kw_no_radiosity
@@ -1296,6 +1311,8 @@ fn is_word(rule: Rule) -> bool {
             | kw_torus
             | kw_triangle
             | kw_union
+            | kw_composite
+            | kw_reflection_exponent
             | kw_light_group
             | kw_global_lights
             | kw_vertex_vectors

@@ -11,6 +11,7 @@ mod hostile;
 mod ir_snapshots;
 mod keywords;
 mod layers;
+mod lenient;
 mod parsing;
 mod povray_cli;
 

@@ -1,0 +1,9 @@
+// LENIENCY semicolon_optional_v31: with #version 3.1 a float #declare without ";" is only a Possible Parse Error (with #version < 3.1 it is silent)
+// POV-Ray 3.7: Possible Parse Error "All #version and #declares ... require semi-colon", plus the end-of-parse "language version set to 3.1 or earlier" warning. Effect: red sphere
+#version 3.1;
+global_settings { assumed_gamma 1 }
+camera { location <0,0,-4> look_at 0 }
+light_source { <-5,5,-5> color rgb 1 }
+background { rgb 0.2 }
+#declare R = 1
+sphere { 0, R pigment { rgb <1,0,0> } }
