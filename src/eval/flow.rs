@@ -63,7 +63,6 @@ impl<'a> Evaluator<'a> {
         let value = match syntax {
             ValueSyntax::Expr(e) => self.eval(e),
             ValueSyntax::Item(item) => match item.kind {
-                NodeKind::LayeredTexture => self.layered_texture(item),
                 NodeKind::Array => return self.array_value(item),
                 NodeKind::Function => self.function(item).map(Value::Function),
                 NodeKind::IdentRef => self.lookup(item),
@@ -303,7 +302,7 @@ impl<'a> Evaluator<'a> {
 /// reported only if the scene uses it (standard include files declare many such things).
 impl Evaluator<'_> {
     /// `texture {…} texture {…} …`: each texture layered over the ones before it.
-    fn layered_texture(&mut self, item: &Node) -> Result<Value> {
+    pub(super) fn layered_texture(&mut self, item: &Node) -> Result<Value> {
         let mut layered: Option<crate::ir::Texture> = None;
         for t in item.children.iter().filter(|c| c.kind == NodeKind::Texture) {
             let t = self.texture(t)?;

@@ -1016,6 +1016,51 @@ pub fn reason(word: &str) -> Option<&'static str> {
     })
 }
 
+/// The keyword trace reads that `word` is probably a misspelling of (`pigmnt` → `pigment`):
+/// the nearest by edits (a letter added, dropped, changed, or two swapped), at most one edit
+/// for words of up to four letters and two for longer ones; `None` if none is that near.
+pub fn suggestion(word: &str) -> Option<&'static str> {
+    nearest(word, SUPPORTED.iter().copied())
+}
+
+/// The word of `words` nearest `word` by edits, as [`suggestion`] measures them.
+pub fn nearest<'w>(word: &str, words: impl Iterator<Item = &'w str>) -> Option<&'w str> {
+    let most = if word.chars().count() <= 4 { 1 } else { 2 };
+    words
+        .map(|k| (edits(word, k), k))
+        .filter(|&(d, _)| d > 0 && d <= most)
+        .min_by_key(|&(d, k)| (d, k.len().abs_diff(word.len())))
+        .map(|(_, k)| k)
+}
+
+/// The optimal-string-alignment distance between `a` and `b` (Levenshtein with adjacent
+/// swaps).
+fn edits(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    if a.len().abs_diff(b.len()) > 2 {
+        return usize::MAX;
+    }
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for j in 0..=b.len() {
+        d[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            d[i][j] = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    d[a.len()][b.len()]
+}
+
 /// docs/keywords.md: every POV-Ray 3.7 keyword with what trace does with it.
 pub fn markdown() -> String {
     let mut out = String::from(
@@ -1062,6 +1107,17 @@ pub fn markdown() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn misspelt_keywords_find_the_keyword_meant() {
+        assert_eq!(suggestion("pigmnt"), Some("pigment"));
+        assert_eq!(suggestion("trasnlate"), Some("translate"));
+        assert_eq!(suggestion("spere"), Some("sphere"));
+        assert_eq!(suggestion("finsh"), Some("finish"));
+        // Too far from every keyword, or a keyword already: nothing.
+        assert_eq!(suggestion("MyTexture"), None);
+        assert_eq!(suggestion("sphere"), None);
+    }
 
     #[test]
     fn every_povray_keyword_has_a_status_and_the_lists_are_sorted() {

@@ -265,6 +265,14 @@ pub fn evaluate(
     ev.finish()
 }
 
+/// `d` with a note naming the keyword `word` is probably a misspelling of, if one is near.
+fn suggest(d: Diagnostic, word: &str) -> Diagnostic {
+    match keywords::suggestion(word) {
+        Some(k) => d.with_note(format!("did you mean `{k}`?")),
+        None => d,
+    }
+}
+
 /// A key of the bits of `values` (equal values, equal keys).
 fn bits_key(values: impl IntoIterator<Item = f64>) -> u64 {
     values.into_iter().fold(0u64, |h, v| {
@@ -455,6 +463,10 @@ pub(crate) struct Evaluator<'a> {
     finishes: HashMap<u64, std::sync::Arc<ir::Finish>>,
     interiors: HashMap<u64, std::sync::Arc<ir::Interior>>,
     warnings: Vec<Diagnostic>,
+    /// The warnings given, by message and place (each is said once).
+    warned: std::collections::HashSet<(String, Option<Span>)>,
+    /// POV-Ray's standard include folder, whose files draw no warnings.
+    standard_includes: Option<std::path::PathBuf>,
     /// The state of each `seed()` stream, read and advanced by `rand()`.
     rand_streams: Vec<u32>,
     /// Names declared `deprecated`, with their message: the first use warns.
@@ -517,6 +529,8 @@ impl<'a> Evaluator<'a> {
             finishes: HashMap::new(),
             interiors: HashMap::new(),
             warnings: Vec::new(),
+            warned: Default::default(),
+            standard_includes: standard_include_folder().and_then(|f| f.canonicalize().ok()),
             rand_streams: Vec::new(),
             deprecated: HashMap::new(),
             mesh_files: HashMap::new(),
@@ -536,15 +550,38 @@ impl<'a> Evaluator<'a> {
         self.sandbox.locate(file, what, span)
     }
 
+    /// Adds a warning: once for each message and place (a warning about a declaration used a
+    /// thousand times is said once), and not at all about a file of POV-Ray's standard include
+    /// folder, which the user cannot change (POV-Ray says nothing about them either).
     fn warn(&mut self, d: Diagnostic) {
-        self.warnings.push(d);
+        if let Some(span) = d.span {
+            let path = &self.sources.file(span.file).path;
+            if self
+                .standard_includes
+                .as_ref()
+                .is_some_and(|folder| path.starts_with(folder))
+            {
+                return;
+            }
+        }
+        let key = (d.message.clone(), d.span);
+        if self.warned.insert(key) {
+            self.warnings.push(d);
+        }
     }
 
     /// The error for a word that is not valid where it stands.
     fn unknown_word(&self, word: &str, span: Span) -> Diagnostic {
         match keywords::reason(word) {
             Some(reason) => Diagnostic::error(format!("unsupported: `{word}` ({reason})"), span),
-            None => Diagnostic::error(format!("unknown identifier `{word}`"), span),
+            None => {
+                let d = Diagnostic::error(format!("unknown identifier `{word}`"), span);
+                // A declared name it is probably a misspelling of, else a keyword.
+                match keywords::nearest(word, self.env.keys().map(String::as_str)) {
+                    Some(name) => d.with_note(format!("did you mean `{name}`?")),
+                    None => suggest(d, word),
+                }
+            }
         }
     }
 
@@ -614,16 +651,19 @@ impl<'a> Evaluator<'a> {
                 format!("`{}` cannot stand here in {context}", node.word),
                 node.word_span,
             ),
-            None if self.env.contains_key(&node.word) => Diagnostic::error(
+            None if self.bound(node.slot).is_some() => Diagnostic::error(
                 format!(
                     "`{}` cannot stand here in {context} (wrap it, e.g. `texture {{ {} }}`)",
                     node.word, node.word
                 ),
                 node.word_span,
             ),
-            None => Diagnostic::error(
-                format!("unknown keyword `{}` in {context}", node.word),
-                node.word_span,
+            None => suggest(
+                Diagnostic::error(
+                    format!("unknown keyword `{}` in {context}", node.word),
+                    node.word_span,
+                ),
+                &node.word,
             ),
         }
     }
@@ -750,12 +790,15 @@ impl<'a> Evaluator<'a> {
             NodeKind::Unknown => {
                 return Err(match keywords::reason(&node.word) {
                     Some(_) => self.unknown_word(&node.word, node.word_span),
-                    None => Diagnostic::error(
-                        format!(
-                            "expected a statement (an object, camera, light_source, #declare …), found `{}`",
-                            node.word
+                    None => suggest(
+                        Diagnostic::error(
+                            format!(
+                                "expected a statement (an object, camera, light_source, #declare …), found `{}`",
+                                node.word
+                            ),
+                            node.word_span,
                         ),
-                        node.word_span,
+                        &node.word,
                     ),
                 });
             }
@@ -827,6 +870,7 @@ impl<'a> Evaluator<'a> {
                 Value::Finish(self.finish_block(node, base)?)
             }
             NodeKind::Texture => Value::Texture(self.texture(node)?),
+            NodeKind::LayeredTexture => self.layered_texture(node)?,
             NodeKind::Function => Value::Function(self.function(node)?),
             NodeKind::Spline => Value::Spline(Arc::new(self.spline(node)?)),
             NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),

@@ -450,7 +450,8 @@ impl<'a> Evaluator<'a> {
     /// The diagnostic with the macro calls and includes that led to where it points (those
     /// of `unit`'s piece holding it, or else those of the text being read).
     pub(super) fn noted(&self, d: Diagnostic, unit: Option<&Emitted>) -> Diagnostic {
-        if !d.notes.is_empty() {
+        // (Noted once: a diagnostic passing through several readers keeps the first notes.)
+        if d.notes.iter().any(|n| is_context_note(n)) {
             return d;
         }
         let d = match unit.and_then(|u| u.unclosed) {
@@ -467,6 +468,10 @@ impl<'a> Evaluator<'a> {
             .or_else(|| self.reader.inputs.last().and_then(|i| i.context.clone()));
         let mut d = d;
         let mut at = context;
+        if at.is_none() {
+            // (Marked as noted, with nothing to add.)
+            return d;
+        }
         while let Some(c) = at {
             d = d.with_note(match &c.macro_name {
                 Some(name) => format!("in macro {name}, called at {}", self.location(c.at)),
@@ -784,6 +789,15 @@ impl<'a> Evaluator<'a> {
         }
         let mut em = Emitter::default();
         self.emit(&mut em, &first);
+        if first.binding.is_some() && !first.stand_in {
+            // A declared object standing alone, or an array's element (`Cube[I]`).
+            while self.peek_held_is("[")? {
+                let open = self.next_token()?.expect("peeked");
+                self.emit(&mut em, &open);
+                self.rest_of_group(&mut em, 1)?;
+            }
+            return Ok(Some(Statement::Unit(em.finish())));
+        }
         if first.kind == TokenKind::Word
             && first.binding.is_none()
             && matches!(
@@ -2121,4 +2135,11 @@ fn pieces_key(pieces: &[Piece]) -> u64 {
             .into_iter()
             .fold(h, |h, x| (h ^ u64::from(x)).wrapping_mul(0x0100_0000_01b3))
     })
+}
+
+/// Whether a note says where the text came from (written by `Evaluator::noted`).
+fn is_context_note(note: &str) -> bool {
+    note.starts_with("in macro ")
+        || note.starts_with("included from ")
+        || note.starts_with("the bracket at ")
 }
