@@ -98,6 +98,12 @@ impl Evaluator<'_> {
             ExprKind::Colour(parts) => self.colour(parts),
             ExprKind::Index(..) => self.index_expr(expr),
             ExprKind::Item(node) => self.item_value(node),
+            ExprKind::Shifted(e, by) => {
+                self.slot_shift += by;
+                let v = self.eval(e);
+                self.slot_shift -= by;
+                v
+            }
             ExprKind::Bulk(_) => Err(Diagnostic::error(
                 "a list of mesh2 entries cannot stand here",
                 expr.span,

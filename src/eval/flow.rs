@@ -73,7 +73,15 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Binds a declaration's value: `node` is its head (name, subscripts, deprecation).
-    pub(super) fn bind_declared(&mut self, node: &Node, local: bool, value: Value) -> Result<()> {
+    /// `local` is, for `#local`, the number of macro and include frames open where the
+    /// directive stands: the name is local to the innermost of those (not to a macro called
+    /// while the value was read).
+    pub(super) fn bind_declared(
+        &mut self,
+        node: &Node,
+        local: Option<usize>,
+        value: Value,
+    ) -> Result<()> {
         let deprecation = node
             .children
             .first()
@@ -90,8 +98,8 @@ impl<'a> Evaluator<'a> {
             }
             return self.assign_element(&children[0], &subs, value);
         }
-        if local {
-            self.shadow(&name);
+        if let Some(depth) = local {
+            self.shadow_in(&name, depth);
         }
         match deprecation {
             Some(d) => {
@@ -125,7 +133,12 @@ impl<'a> Evaluator<'a> {
     /// Records the current value of `name` in the innermost macro frame (once), so that it is
     /// restored when the macro returns.
     pub(super) fn shadow(&mut self, name: &str) {
-        if let Some(frame) = self.frames.last_mut() {
+        self.shadow_in(name, self.frames.len());
+    }
+
+    /// [`Evaluator::shadow`] in the frame that was innermost when `depth` frames were open.
+    fn shadow_in(&mut self, name: &str, depth: usize) {
+        if let Some(frame) = depth.checked_sub(1).and_then(|i| self.frames.get_mut(i)) {
             if !frame.saved.iter().any(|(n, _)| n == name) {
                 frame
                     .saved

@@ -426,6 +426,8 @@ pub(crate) struct Evaluator<'a> {
     reader: reader::Reader,
     /// The values of the words of the unit being evaluated, by slot (see `reader.rs`).
     bindings: Vec<Option<Arc<Value>>>,
+    /// Added to slots while an expression read again is evaluated (`ExprKind::Shifted`).
+    slot_shift: u32,
     include_depth: usize,
     /// Evaluation steps so far (see [`LoadOptions::max_steps`]).
     steps: u64,
@@ -504,6 +506,7 @@ impl<'a> Evaluator<'a> {
             frames: Vec::new(),
             reader: Default::default(),
             bindings: Vec::new(),
+            slot_shift: 0,
             include_depth: 0,
             steps: 0,
             debug_output: String::new(),
@@ -671,7 +674,12 @@ impl<'a> Evaluator<'a> {
     /// The value the word in `slot` of the unit being evaluated was bound to where it was
     /// read (see `reader.rs`).
     pub(super) fn bound(&self, slot: syntax::Slot) -> Option<&Value> {
-        self.bindings.get(slot.0 as usize)?.as_deref()
+        if slot == syntax::Slot::NONE {
+            return None;
+        }
+        self.bindings
+            .get(slot.0 as usize + self.slot_shift as usize)?
+            .as_deref()
     }
 
     fn lookup(&mut self, ident: &Node) -> Result<Value> {

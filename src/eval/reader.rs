@@ -31,6 +31,8 @@ use std::collections::HashMap;
 use std::rc::Rc;
 use std::sync::Arc;
 
+mod quick;
+
 /// Evaluation steps a macro call costs (measured: a call of a one-line expression macro takes
 /// about as long as four loop passes).
 const MACRO_CALL_STEPS: u64 = 4;
@@ -122,6 +124,8 @@ pub(super) struct Tok {
     stand_in: bool,
     /// Read inside a loop or a macro body: its unit may be read again.
     repeat: bool,
+    /// A word read ahead while directives were held: not bound yet, no macro called.
+    unread: bool,
 }
 
 impl Tok {
@@ -183,6 +187,8 @@ pub(super) struct Reader {
     loops: usize,
     /// Parses of units read again and again (see `Evaluator::parsed`).
     parses: HashMap<(Parse, u64), CachedParse>,
+    /// Plain directives' readings, by where their text starts (see `quick`).
+    quick: HashMap<(FileId, usize), Rc<quick::Quick>>,
 }
 
 /// A top-level statement read: a unit for the grammar, or a plain statement the fast lane
@@ -442,8 +448,10 @@ impl<'a> Evaluator<'a> {
         f: impl FnOnce(&mut Self) -> T,
     ) -> T {
         let outer = std::mem::replace(&mut self.bindings, bindings);
+        let shift = std::mem::take(&mut self.slot_shift);
         let result = f(self);
         self.bindings = outer;
+        self.slot_shift = shift;
         result
     }
 
@@ -495,6 +503,17 @@ impl<'a> Evaluator<'a> {
                     self.run_directive(&t)?;
                     continue;
                 }
+                // A word read ahead while held, now read.
+                if t.unread && !self.reader.hold && !self.reader.raw_words {
+                    let t = Tok { unread: false, ..t };
+                    match self.word(t)? {
+                        Some(t) => {
+                            self.track_functions(&t);
+                            return Ok(Some(t));
+                        }
+                        None => continue,
+                    }
+                }
                 return Ok(Some(t));
             }
             let Some((raw, input)) = self.raw_token()? else {
@@ -513,6 +532,14 @@ impl<'a> Evaluator<'a> {
                 TokenKind::Directive => self.run_directive(&tok)?,
                 // (A `#` with no word after it is nothing to POV-Ray.)
                 TokenKind::Hash => {}
+                // (While held, a word is handed on unread: it may call a macro, which waits
+                // with the rest until the value before it is bound.)
+                TokenKind::Word if self.reader.hold => {
+                    return Ok(Some(Tok {
+                        unread: true,
+                        ..tok
+                    }));
+                }
                 TokenKind::Word if !self.reader.raw_words => {
                     if let Some(tok) = self.word(tok)? {
                         self.track_functions(&tok);
@@ -612,6 +639,7 @@ impl<'a> Evaluator<'a> {
             binding: None,
             stand_in: false,
             repeat: i.kind == InputKind::Macro || self.reader.loops > 0,
+            unread: false,
         }
     }
 
@@ -947,6 +975,7 @@ impl<'a> Evaluator<'a> {
             binding: None,
             stand_in: false,
             repeat: input.kind == InputKind::Macro || self.reader.loops > 0,
+            unread: false,
         };
         em.push_run(&first, &text, &mut words);
         Ok(true)
@@ -982,6 +1011,7 @@ impl<'a> Evaluator<'a> {
             binding: None,
             stand_in: false,
             repeat: false,
+            unread: false,
         };
         let (open_tok, close_tok) = (at(open, open + 1), at(close, close + 1));
         let file = input.file;
@@ -1508,6 +1538,7 @@ impl<'a> Evaluator<'a> {
                 binding: None,
                 stand_in: false,
                 repeat: false,
+                unread: false,
             };
             self.emit(&mut em, &name_tok);
             while self.peek_held_is("[")? {
@@ -1549,6 +1580,9 @@ impl<'a> Evaluator<'a> {
 
     /// A directive's condition, `(…)`, evaluated.
     fn condition(&mut self, at: Span, what: &str) -> Result<bool> {
+        if let Some(holds) = self.quick_condition()? {
+            return Ok(holds);
+        }
         let unit = self.parenthesis(at, what)?;
         let expr = self.parsed(&unit, Parse::Expr, syntax::parse_expr)?;
         self.with_bindings(unit.bindings.clone(), |ev| ev.truth(&expr))
@@ -1944,6 +1978,25 @@ impl<'a> Evaluator<'a> {
         Ok(())
     }
 
+    /// Ends the macro bodies that nothing but blanks and comments remain of (what the next
+    /// token read would do first).
+    fn settle(&mut self) {
+        while let Some(input) = self.reader.inputs.last() {
+            let rest =
+                crate::syntax::lexer::skip_trivia(input.text.as_bytes(), input.pos, input.end);
+            let here = self.reader.inputs.len() - 1;
+            if input.kind != InputKind::Macro
+                || !input.pushback.is_empty()
+                || rest != Ok(input.end)
+                || self.reader.blocks.last().is_some_and(|b| b.input == here)
+            {
+                return;
+            }
+            // (Cannot fail: no block is open in it.)
+            let _ = self.end_input();
+        }
+    }
+
     /// The current input ends: its blocks must be closed; a macro returns, an included file's
     /// scope closes.
     fn end_input(&mut self) -> Result<()> {
@@ -2034,6 +2087,11 @@ impl<'a> Evaluator<'a> {
     /// `#declare Name = value;` / `#local Name = value;` (also `Name[i]…`, and
     /// `deprecated [once] "message"` before the name).
     pub(super) fn declare_directive(&mut self, local: bool, at: Span) -> Result<()> {
+        // (A local name belongs to the macro or file the directive stands in.)
+        let local = local.then_some(self.frames.len());
+        if self.quick_declare(local)? {
+            return Ok(());
+        }
         // The head, to the `=`: the name as written, its subscripts read.
         let mut em = Emitter::default();
         self.reader.raw_words = true;
@@ -2081,7 +2139,9 @@ impl<'a> Evaluator<'a> {
         };
         let number = matches!(value, Value::Float(_) | Value::Vector(_) | Value::Colour(_));
         // (Bound before the `;` is looked for: reading on may run the next directive, which
-        // may use the name.)
+        // may use the name. A macro whose body gave the value and ends there returns first,
+        // as reading on would make it.)
+        self.settle();
         self.with_bindings(head.bindings.clone(), |ev| {
             ev.bind_declared(&node, local, value)
         })

@@ -5,6 +5,7 @@
 //! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
 
 pub mod bulk;
+mod incremental;
 pub mod lexer;
 pub mod plain;
 mod unit;
@@ -371,6 +372,10 @@ pub enum ExprKind {
     /// A vector of plain number literals (`<1, -2.5, 3>`), read without building a tree: the
     /// bulk of a large mesh. `len` components (2..=5) are used.
     PlainVector([f64; 5], u8),
+    /// An expression read before, read again where a loop made its text again (a big mesh2
+    /// list's entries, src/syntax/incremental.rs): its words' slots are the first reading's
+    /// moved on by this many words.
+    Shifted(std::sync::Arc<Expr>, u32),
 }
 
 /// Whether `word` is one of the keywords of trace's grammar.
@@ -471,6 +476,9 @@ fn inner(top: Pair<'_, Rule>) -> impl Iterator<Item = Pair<'_, Rule>> {
 
 /// Reads a statement unit (a top-level statement).
 pub fn parse_statement(unit: &Unit) -> Result<Node, Diagnostic> {
+    if let Some(node) = incremental::statement(unit) {
+        return Ok(node);
+    }
     parse_unit_with(unit, Rule::unit_statement, |top, lower| {
         lower.node(inner(top).next().expect("a statement"))
     })
@@ -478,6 +486,9 @@ pub fn parse_statement(unit: &Unit) -> Result<Node, Diagnostic> {
 
 /// Reads a declared value's unit.
 pub fn parse_value(unit: &Unit) -> Result<ValueSyntax, Diagnostic> {
+    if let Some(node) = incremental::statement(unit) {
+        return Ok(ValueSyntax::Item(node));
+    }
     parse_unit_with(unit, Rule::unit_value, |top, lower| {
         let p = inner(top).next().expect("a value");
         if is_expr(p.as_rule()) {
@@ -639,16 +650,17 @@ struct Lower<'u> {
 impl Lower<'_> {
     fn span(&self, pair: &Pair<'_, Rule>) -> Span {
         let s = pair.as_span();
+        let (start, end) = (s.start() + self.offset, s.end() + self.offset);
         match self.unit {
-            Some(unit) => unit.span(s.start(), s.end()),
-            None => Span::new(self.file, s.start() + self.offset, s.end() + self.offset),
+            Some(unit) => unit.span(start, end),
+            None => Span::new(self.file, start, end),
         }
     }
 
     /// The binding slot of the word starting where `pair` starts.
     fn slot(&self, pair: &Pair<'_, Rule>) -> Slot {
         match self.unit {
-            Some(unit) => unit.slot(pair.as_span().start()),
+            Some(unit) => unit.slot(pair.as_span().start() + self.offset),
             None => Slot::NONE,
         }
     }
@@ -1039,7 +1051,7 @@ impl Lower<'_> {
                 // (Lists are kept by where they stand in the text read: the file's offset,
                 // or the unit's.)
                 let at = match self.unit {
-                    Some(_) => pair.as_span().start(),
+                    Some(_) => pair.as_span().start() + self.offset,
                     None => span.start as usize,
                 };
                 let list = self.bulk.borrow_mut().remove(&at);

@@ -152,3 +152,92 @@ fn colour_types_are_the_eight_of_povray() {
     let nodes = parse("background { rgbx }").expect("parses");
     assert!(matches!(nodes[0].args[0].kind, ExprKind::Ident(..)));
 }
+
+/// A unit as the reader makes one for a loop: `head`, then `body` read `n` times from the
+/// same place of the file, then `tail`; every word has a slot.
+fn looped_unit(head: &str, body: &str, n: usize, tail: &str) -> Unit {
+    let mut unit = Unit::default();
+    let mut add = |text: &str, start: usize| {
+        if !unit.text.is_empty() {
+            unit.text.push(' ');
+        }
+        let at = unit.text.len();
+        unit.pieces.push(Piece {
+            at: at as u32,
+            len: text.len() as u32,
+            file: FileId(0),
+            start: start as u32,
+            src_len: text.len() as u32,
+        });
+        unit.text.push_str(text);
+        let mut lexer = lexer::Lexer::new(text, 0..text.len());
+        while let Ok(Some(t)) = lexer.next() {
+            if t.kind == lexer::TokenKind::Word {
+                unit.words.push(at as u32 + t.start);
+            }
+        }
+    };
+    add(head, 0);
+    for _ in 0..n {
+        add(body, head.len() + 10);
+    }
+    add(tail, head.len() + body.len() + 20);
+    unit
+}
+
+#[test]
+fn big_containers_read_item_by_item_as_the_whole_parse_reads_them() {
+    let cases = [
+        (
+            "union {",
+            "sphere { <I, mod(I, 3), 0>, R texture { pigment { color rgb <1, I/9, 0> } } } \
+             light_source { <0, 9, I> White } object { Thing translate x*I } translate <1, 2, 3>",
+            "rotate y*90 }",
+        ),
+        (
+            "light_group {",
+            "union { sphere { 0, 1 } box { -1, 1 scale I } } cylinder { 0, y, 0.1 open }",
+            "global_lights }",
+        ),
+        (
+            "mesh {",
+            "triangle { <0, 0, I>, <1, 0, I>, <0, 1, I> } \
+             smooth_triangle { <0,0,0>, y, <1,0,0>, y, <0,1,0>, y uv_vectors <0,0>, <1,0>, <0,1> }",
+            "inside_vector y texture { T } }",
+        ),
+        (
+            "mesh2 { vertex_vectors { N,",
+            "<I, 0, 0>, <I+1, 0, 0> <I, f(I), 0>,",
+            "} face_indices { 2, <0, 1, 2>, <1, 2, 3> } inside_vector <0, 0, 1> pigment { P } }",
+        ),
+        (
+            "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { N",
+            "<3*I, 3*I+1, 3*I+2>, 7",
+            "} normal_indices { 1, <0, 0, 0> } }",
+        ),
+    ];
+    for (head, body, tail) in cases {
+        for n in [0, 1, 3, 20] {
+            let unit = looped_unit(head, body, n, tail);
+            let whole = parse_unit_with(&unit, Rule::unit_statement, |top, lower| {
+                lower.node(inner(top).next().expect("a statement"))
+            })
+            .unwrap_or_else(|e| panic!("{head} … ×{n}: {}", e.message));
+            let mut items = incremental::read(&unit).unwrap_or_else(|| panic!("{head} … ×{n}"));
+            incremental::unshare(&mut items);
+            assert_eq!(format!("{items:?}"), format!("{whole:?}"), "{head} … ×{n}");
+        }
+    }
+    // Out of order or wrong: not read item by item (the whole parse reports it).
+    for text in [
+        "mesh2 { face_indices { 1, <0, 1, 2> } vertex_vectors { 1, 0 } }",
+        "mesh2 { vertex_vectors { 1, 0 } }",
+        "union { sphere { 0, 1 } sphere { } }",
+        "union { sphere { 0, 1 } } sphere { 0, 1 }",
+    ] {
+        assert!(
+            incremental::read(&looped_unit(text, "", 0, "")).is_none(),
+            "{text}"
+        );
+    }
+}

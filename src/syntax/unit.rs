@@ -91,11 +91,8 @@ impl Unit {
     /// The file and byte in it of byte `at` of the unit's text (the end of the text maps to
     /// the end of its last piece; a byte inside a stand-in, to the stand-in's start).
     pub fn source(&self, at: usize) -> (FileId, u32) {
+        let i = self.piece_at(at);
         let at = at as u32;
-        let i = self
-            .pieces
-            .partition_point(|p| p.at <= at)
-            .saturating_sub(1);
         let Some(p) = self.pieces.get(i) else {
             return (FileId(0), 0);
         };
@@ -115,21 +112,18 @@ impl Unit {
     /// piece.
     pub fn span(&self, start: usize, end: usize) -> Span {
         let (file, s) = self.source(start);
-        let (file_end, e) = self.source(end.max(start + 1) - 1);
-        let e = e + 1;
-        let e = if file_end == file && e >= s {
-            // (A stand-in's last byte maps to its start: its end is its source's end.)
-            self.pieces
-                .iter()
-                .find(|p| p.file == file && p.len != p.src_len && p.start + 1 == e)
-                .map_or(e, |p| p.start + p.src_len)
+        let last = end.max(start + 1) - 1;
+        let (file_end, e) = self.source(last);
+        let end_piece = self.pieces.get(self.piece_at(last));
+        let e = if file_end == file && e + 1 >= s {
+            match end_piece {
+                // (A stand-in's bytes map to its start: the span ends where its source ends.)
+                Some(p) if p.len != p.src_len => p.start + p.src_len,
+                _ => e + 1,
+            }
         } else {
-            let i = self
-                .pieces
-                .partition_point(|p| p.at <= start as u32)
-                .saturating_sub(1);
             self.pieces
-                .get(i)
+                .get(self.piece_at(start))
                 .map_or(s + 1, |p| (p.start + p.src_len).max(s))
         };
         Span {
@@ -137,6 +131,13 @@ impl Unit {
             start: s,
             end: e.max(s),
         }
+    }
+
+    /// The index of the piece holding byte `at` of the text (the one before, between pieces).
+    pub(super) fn piece_at(&self, at: usize) -> usize {
+        self.pieces
+            .partition_point(|p| p.at <= at as u32)
+            .saturating_sub(1)
     }
 }
 

@@ -1,6 +1,5 @@
-//! Directives that work on tokens, as POV-Ray's reader executes them (src/syntax/tokens.rs,
-//! src/eval/spliced.rs, the grammar's `chosen_value`): a scene written with them is the scene
-//! written without them. (Their pictures against POV-Ray's: examples/token_directives.rt.)
+//! Directives that work on tokens, as POV-Ray's reader executes them (src/eval/reader.rs):
+//! a scene written with them is the scene written without them. (Their pictures against POV-Ray's: examples/token_directives.rt.)
 
 use crate::load_text;
 
@@ -190,5 +189,54 @@ fn deeply_nested_directives_are_read_in_linear_time() {
             .to_string()
             .contains("deep.rt:")
     );
+    assert!(seconds < 20.0, "{seconds} s");
+}
+
+#[test]
+fn a_loops_plain_directives_mean_what_the_token_reader_makes_of_them() {
+    // Plain `#declare`s, `#local`s and conditions in a loop are read from a kept parse
+    // (src/eval/reader/quick.rs); a macro named in one sends it back to the token reader.
+    same(
+        "#macro Twice(A) (2*A) #end
+         #macro Lim() 4 #end
+         #declare V = array[3][2];
+         #declare I = 0;
+         #while (I < 3)
+           #local J = 0;
+           #while (J < 2)
+             #declare V[I][J] = I*10 + J; // a subscripted name
+             #local J = J + 1;
+           #end
+           #declare I = I + 1;
+         #end
+         #declare K = 0;
+         #declare S = 0;
+         #while (K < Lim())
+           #declare S = S + Twice(K);
+           #declare K = K + 1;
+         #end
+         #declare P = <0, 0, 0>;
+         #for (N, 1, 3)
+           #declare P = P + <N, -N/2, 0>*(1 + (N = 2));
+         #end
+         sphere { <V[2][1], V[1][0], S>, 1 translate P }",
+        "sphere { <21, 10, 12>, 1 translate <8, -4, 0> }",
+    );
+}
+
+#[test]
+fn a_loop_making_a_big_unions_items_is_read_item_by_item() {
+    // 20,000 spheres made by a loop inside a union's braces are one unit for the grammar:
+    // read item by item (src/syntax/incremental.rs), each sphere's text parsed once.
+    let text = format!(
+        "{SET}union {{ #for (I, 0, 19999) sphere {{ <mod(I, 100), div(I, 100), 0>, 0.4 }} #end }}"
+    );
+    let start = std::time::Instant::now();
+    let scene = trace::load_str(std::path::Path::new("big.rt"), text, &Default::default())
+        .expect("loads")
+        .scene;
+    let seconds = start.elapsed().as_secs_f64();
+    // (A union's members are the scene's objects, each its own.)
+    assert_eq!(scene.objects.len(), 20000, "{:?}", scene.objects.len());
     assert!(seconds < 20.0, "{seconds} s");
 }
