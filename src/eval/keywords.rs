@@ -1108,6 +1108,107 @@ pub fn markdown() -> String {
 mod tests {
     use super::*;
 
+    /// The identifiers quoted in `text` (`"word"`).
+    fn quoted(text: &str) -> Vec<&str> {
+        text.split('"')
+            .skip(1)
+            .step_by(2)
+            .filter(|w| {
+                w.starts_with(|c: char| c.is_ascii_lowercase())
+                    && w.bytes()
+                        .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_')
+            })
+            .collect()
+    }
+
+    /// The words the grammar reserves: its `kw_…` rules' and its `keyword` rule's (written
+    /// there as a first letter and the rests, `"b" ~ ("ackground" | "ox")`).
+    fn grammar_keywords(grammar: &str) -> Vec<String> {
+        let mut words: Vec<String> = grammar
+            .lines()
+            .filter(|l| l.starts_with("kw_"))
+            .flat_map(|l| quoted(l).into_iter().map(str::to_string))
+            .collect();
+        let start = grammar.find("\nkeyword = @{").expect("the keyword rule");
+        let end = start + grammar[start..].find("\n}\n").expect("its end");
+        for line in grammar[start..end].lines() {
+            let Some((first, rest)) = line.split_once(" ~ (") else {
+                continue;
+            };
+            let Some(letter) = quoted(first).pop() else {
+                continue;
+            };
+            words.extend(
+                rest.split('"')
+                    .skip(1)
+                    .step_by(2)
+                    .map(|r| format!("{letter}{r}")),
+            );
+        }
+        words.sort();
+        words.dedup();
+        words
+    }
+
+    #[test]
+    fn the_grammar_reserves_the_tables_words_and_no_refused_one() {
+        let grammar = include_str!("../../grammar/scene.pest");
+        let reserved = grammar_keywords(grammar);
+        assert!(reserved.len() > 150, "{}", reserved.len());
+        // trace's own words (its extension, documented in docs/language.md).
+        const EXTENSIONS: [&str; 1] = ["mesh_file"];
+        // Read by the grammar only to refuse where POV-Ray would do what trace does not:
+        // `albedo` before a finish's number, `area_illumination` on an area light (without
+        // one POV-Ray ignores it, and so does trace).
+        const READ_TO_REFUSE: [&str; 2] = ["albedo", "area_illumination"];
+        for word in &reserved {
+            let word = word.as_str();
+            if EXTENSIONS.contains(&word) {
+                continue;
+            }
+            match status(word) {
+                Some(Status::Supported) => {}
+                Some(Status::Unsupported(_)) if READ_TO_REFUSE.contains(&word) => {}
+                other => panic!("the grammar reserves `{word}`, which the table calls {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn every_supported_word_is_read_by_the_grammar_or_the_evaluator() {
+        // A supported word is named in the grammar, or by the evaluator, which reads
+        // identifiers such as `vlength`, `x` or `clock` by name.
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let mut named: Vec<String> = quoted(include_str!("../../grammar/scene.pest"))
+            .into_iter()
+            .map(str::to_string)
+            .collect();
+        let mut dirs = vec![root.join("src/eval"), root.join("src/syntax")];
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(&dir).expect("source folder") {
+                let path = entry.expect("entry").path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs")
+                    && !path.ends_with("keywords.rs")
+                {
+                    let text = std::fs::read_to_string(&path).expect("source");
+                    named.extend(quoted(&text).into_iter().map(str::to_string));
+                }
+            }
+        }
+        named.sort();
+        named.dedup();
+        let unread: Vec<&str> = SUPPORTED
+            .iter()
+            .copied()
+            .filter(|w| named.binary_search(&w.to_string()).is_err())
+            .collect();
+        assert!(unread.is_empty(), "supported but named nowhere: {unread:?}");
+        // And the table sorts (status() searches it).
+        assert!(SUPPORTED.windows(2).all(|w| w[0] < w[1]));
+    }
+
     #[test]
     fn misspelt_keywords_find_the_keyword_meant() {
         assert_eq!(suggestion("pigmnt"), Some("pigment"));
