@@ -809,6 +809,7 @@ const SUPPORTED: &[&str] = &[
     "red",
     "reflection",
     "reflection_exponent",
+    "refraction",
     "render",
     "repeat",
     "rgb",
@@ -1007,7 +1008,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         }
         "ratio" | "width" => "this pattern or pattern modifier is not supported by trace yet",
         "premultiplied" => "this image_map item is not supported by trace yet",
-        "refraction" | "translucency" => "this finish item is outside trace's subset",
+        "translucency" => "this finish item is outside trace's subset",
         "hierarchy" => "this object item is not supported by trace yet",
         "area_illumination" => "this light_source item is not supported by trace yet",
         "bokeh" => "this camera item is not supported by trace yet",

@@ -1663,11 +1663,25 @@ impl Evaluator<'_> {
                 NodeKind::Reflection => ev.reflection(item, &mut f.reflection)?,
                 // POV-Ray's old spelling of `reflection { … exponent E }`.
                 NodeKind::ReflectionExponent => f.reflection.exponent = ev.float(arg(0))?,
+                // POV-Ray's old interior items in a finish: moved to the object's interior
+                // when it is placed (`Evaluator::place`), with POV-Ray's warnings.
                 NodeKind::Ior => {
-                    return Err(Diagnostic::error(
-                        "unsupported: `ior` inside finish (POV-Ray's old syntax); write `interior { ior … }`",
+                    let ior = ev.float(arg(0))?;
+                    if ior <= 0.0 {
+                        return Err(Diagnostic::error("ior must be positive", arg(0).span));
+                    }
+                    f.legacy_ior = Some(ior);
+                    ev.warnings.push(Diagnostic::warning(
+                        "an index of refraction should be given in `interior { … }` (POV-Ray reads it there from a finish too)",
                         item.word_span,
-                    ))
+                    ));
+                }
+                NodeKind::Refraction => {
+                    f.legacy_refraction = ev.float(arg(0))?;
+                    ev.warnings.push(Diagnostic::warning(
+                        "`refraction` is not needed to turn refraction on; it multiplies the light passing through (fade_distance and fade_power in `interior { … }` attenuate it)",
+                        item.word_span,
+                    ));
                 }
                 _ => return Err(ev.unknown_item(item, "finish")),
             }
@@ -1723,6 +1737,14 @@ impl Evaluator<'_> {
                 NodeKind::FadeDistance => interior.fade_distance = ev.float(&item.args[0])?,
                 NodeKind::FadePower => interior.fade_power = ev.float(&item.args[0])?,
                 NodeKind::FadeColour => interior.fade_colour = ev.rgb_arg(&item.args[0])?,
+                // (Set again by a plain texture's finish when the object is placed.)
+                NodeKind::Refraction => {
+                    interior.refraction = ev.float(&item.args[0])?;
+                    ev.warnings.push(Diagnostic::warning(
+                        "`refraction` is not needed to turn refraction on; it multiplies the light passing through (fade_distance and fade_power attenuate it)",
+                        item.word_span,
+                    ));
+                }
                 _ => return Err(ev.unknown_item(item, "interior")),
             }
             Ok(())

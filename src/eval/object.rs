@@ -1211,8 +1211,20 @@ impl Evaluator<'_> {
             let interior_texture = part
                 .interior_texture
                 .or_else(|| object.interior_texture.clone());
+            // A plain texture's finish gives the interior POV-Ray's old items written there
+            // (its `ior` if given, its `refraction` always: POV-Ray's Post_Process).
+            let mut own = part.interior.or(object.interior);
+            let finish = &texture.finish;
+            if texture.map.is_none()
+                && (own.is_some() || finish.legacy_ior.is_some() || finish.legacy_refraction != 1.0)
+            {
+                let mut i = own.unwrap_or_default();
+                i.ior = finish.legacy_ior.unwrap_or(i.ior);
+                i.refraction = finish.legacy_refraction;
+                own = Some(i);
+            }
             // (Objects without an interior share one default interior.)
-            let interior = match part.interior.or(object.interior) {
+            let interior = match own {
                 Some(interior) => self.shared_interior(interior),
                 None => std::sync::Arc::clone(&self.default_interior),
             };

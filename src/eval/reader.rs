@@ -1979,9 +1979,12 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Ends the macro bodies that nothing but blanks and comments remain of (what the next
-    /// token read would do first).
-    fn settle(&mut self) {
+    /// token read would do first), down to `floor` inputs open.
+    fn settle(&mut self, floor: usize) {
         while let Some(input) = self.reader.inputs.last() {
+            if self.reader.inputs.len() <= floor {
+                return;
+            }
             let rest =
                 crate::syntax::lexer::skip_trivia(input.text.as_bytes(), input.pos, input.end);
             let here = self.reader.inputs.len() - 1;
@@ -2089,6 +2092,9 @@ impl<'a> Evaluator<'a> {
     pub(super) fn declare_directive(&mut self, local: bool, at: Span) -> Result<()> {
         // (A local name belongs to the macro or file the directive stands in.)
         let local = local.then_some(self.frames.len());
+        // (The inputs open here: a macro the value calls may end before the name is bound, not
+        // these; a macro's parameter named here is bound in its caller.)
+        let inputs = self.reader.inputs.len();
         if self.quick_declare(local)? {
             return Ok(());
         }
@@ -2141,7 +2147,7 @@ impl<'a> Evaluator<'a> {
         // (Bound before the `;` is looked for: reading on may run the next directive, which
         // may use the name. A macro whose body gave the value and ends there returns first,
         // as reading on would make it.)
-        self.settle();
+        self.settle(inputs);
         self.with_bindings(head.bindings.clone(), |ev| {
             ev.bind_declared(&node, local, value)
         })

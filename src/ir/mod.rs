@@ -897,7 +897,7 @@ impl Default for ColourMap {
 pub use crate::pattern::image::ImageMap;
 
 /// `interior { ior fade_distance fade_power fade_color }`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct Interior {
     /// Index of refraction (default 1).
     pub ior: f64,
@@ -907,6 +907,9 @@ pub struct Interior {
     pub fade_power: f64,
     /// `fade_color` (default black).
     pub fade_colour: Rgb,
+    /// What the light passing through the surface is multiplied by (default 1): POV-Ray's
+    /// old `refraction` (of a finish, which a plain texture's finish sets; or of an interior).
+    pub refraction: f64,
 }
 
 impl Default for Interior {
@@ -916,14 +919,30 @@ impl Default for Interior {
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: Rgb::ZERO,
+            refraction: 1.0,
         }
+    }
+}
+
+// (The old `refraction` is shown only when set: scenes without it read as before.)
+impl std::fmt::Debug for Interior {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Interior");
+        d.field("ior", &self.ior)
+            .field("fade_distance", &self.fade_distance)
+            .field("fade_power", &self.fade_power)
+            .field("fade_colour", &self.fade_colour);
+        if self.refraction != 1.0 {
+            d.field("refraction", &self.refraction);
+        }
+        d.finish()
     }
 }
 
 /// POV-Ray's finish, every default filled in (`Create_Finish`).
 ///
 /// `.rt`: `finish { ambient 0.1 diffuse 0.6 phong 1 ... }`.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, PartialEq)]
 pub struct Finish {
     /// Ambient colour (default 0.1).
     pub ambient: Rgb,
@@ -954,6 +973,40 @@ pub struct Finish {
     pub crand: f64,
     /// `irid { … }`: thin-film interference.
     pub irid: Irid,
+    /// POV-Ray's old `ior` written in a finish (`None` if not given): the evaluator moves it
+    /// to the interior of an object whose texture is plain (not a pattern of textures), as
+    /// POV-Ray does; the renderer reads it there.
+    pub legacy_ior: Option<f64>,
+    /// POV-Ray's old `refraction` of a finish (default 1): moved to the interior likewise.
+    pub legacy_refraction: f64,
+}
+
+// (The old interior items are shown only when given: scenes without them read as before.)
+impl std::fmt::Debug for Finish {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Finish");
+        d.field("ambient", &self.ambient)
+            .field("emission", &self.emission)
+            .field("diffuse", &self.diffuse)
+            .field("diffuse_back", &self.diffuse_back)
+            .field("brilliance", &self.brilliance)
+            .field("phong", &self.phong)
+            .field("phong_size", &self.phong_size)
+            .field("specular", &self.specular)
+            .field("roughness", &self.roughness)
+            .field("metallic", &self.metallic)
+            .field("reflection", &self.reflection)
+            .field("conserve_energy", &self.conserve_energy)
+            .field("crand", &self.crand)
+            .field("irid", &self.irid);
+        if let Some(ior) = self.legacy_ior {
+            d.field("legacy_ior", &ior);
+        }
+        if self.legacy_refraction != 1.0 {
+            d.field("legacy_refraction", &self.legacy_refraction);
+        }
+        d.finish()
+    }
 }
 
 /// `irid { amount thickness T turbulence V }`: a thin film's interference colours.
@@ -984,6 +1037,8 @@ impl Default for Finish {
             conserve_energy: false,
             crand: 0.0,
             irid: Irid::default(),
+            legacy_ior: None,
+            legacy_refraction: 1.0,
         }
     }
 }

@@ -447,10 +447,11 @@ impl<'a> Tracer<'a> {
         let object = &scene.objects[hit.object.0 as usize];
         let crossing = Crossing::new(scene, interiors, hit.object);
         let interior = scene.interior(object);
+        // (POV-Ray's old `refraction` multiplies whatever passes through, inside or not.)
         let fade = if crossing.inside && interior.fade_distance.abs() > 1e-10 {
-            interior_fade(interior, t * d.length())
+            interior_fade(interior, t * d.length()) * interior.refraction
         } else {
-            Rgb::ONE
+            Rgb::splat(interior.refraction)
         };
 
         // Each layer (top first) adds its light as seen through the layers above it, `filter`

@@ -219,6 +219,7 @@ fn interior_key(i: &Interior) -> u64 {
         i.fade_colour.x,
         i.fade_colour.y,
         i.fade_colour.z,
+        i.refraction,
     ]
     .iter()
     .fold(0u64, |h, v| {

@@ -234,6 +234,8 @@ pub enum NodeKind {
     /// `interior_texture { … }` (a texture's items).
     InteriorTexture,
     Ior,
+    /// `refraction F` (POV-Ray's old item, of a finish or an interior).
+    Refraction,
     FadeDistance,
     FadePower,
     FadeColour,
@@ -840,6 +842,7 @@ impl Lower<'_> {
             Rule::bounded_by => NodeKind::BoundedBy,
             Rule::interior_texture => NodeKind::InteriorTexture,
             Rule::ior => NodeKind::Ior,
+            Rule::refraction => NodeKind::Refraction,
             Rule::fade_distance => NodeKind::FadeDistance,
             Rule::fade_power => NodeKind::FadePower,
             Rule::fade_colour => NodeKind::FadeColour,
@@ -1364,6 +1367,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_bounded_by
             | kw_interior_texture
             | kw_ior
+            | kw_refraction
             | kw_fade_distance
             | kw_fade_power
             | kw_fade_color

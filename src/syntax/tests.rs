@@ -241,3 +241,17 @@ fn big_containers_read_item_by_item_as_the_whole_parse_reads_them() {
         );
     }
 }
+
+#[test]
+fn a_reserved_word_before_a_parenthesis_is_not_called() {
+    // `rotate (40)*x` after a cylinder's radius is a rotation (a blob component's strength
+    // may follow its radius without a comma, so a call here would be read as a fourth value).
+    for (text, values) in [
+        ("cylinder { 0, y, 1 rotate (40)*x }", 3),
+        ("sphere { 0, 1 scale (2) }", 2),
+    ] {
+        let nodes = parse(text).expect("parses");
+        assert_eq!(nodes[0].args.len(), values, "{text}");
+        assert_eq!(nodes[0].children.len(), 1, "{text}");
+    }
+}

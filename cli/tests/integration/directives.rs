@@ -240,3 +240,16 @@ fn a_loop_making_a_big_unions_items_is_read_item_by_item() {
     assert_eq!(scene.objects.len(), 20000, "{:?}", scene.objects.len());
     assert!(seconds < 20.0, "{seconds} s");
 }
+
+#[test]
+fn a_macros_last_declaration_of_a_parameter_changes_the_callers_name() {
+    // (POV-Ray's macro2.pov: the `#declare` ends the macro's body, and the name it binds is
+    // still the parameter, which stands for the caller's `T`.)
+    same(
+        "#macro Turn(S, D) #declare S = object { S rotate y*D } #end
+         #declare T = box { 0, 1 }
+         Turn(T, 90)
+         object { T pigment { rgb 1 } }",
+        "object { box { 0, 1 rotate y*90 } pigment { rgb 1 } }",
+    );
+}
