@@ -10,17 +10,24 @@ For each curve it fits the slope of log(time) and log(memory) against log(size) 
 sizes where the renderer's start-up no longer dominates (the upper half of each range).
 
 Writes docs/scale.csv, docs/scale.md (table and slopes) and docs/scale.svg (log-log time and
-memory). Usage: scripts/scale.py [--quick | --from-csv | --family F | --throughput]
+memory). Usage: scripts/scale.py [--quick | --from-csv | --family F | --throughput |
+                                   --realistic [N ...]]
   --quick:      small sizes only, written to target/;
   --from-csv:   the table and chart again from docs/scale.csv, without rendering;
   --family F:   measure family F (statements, loop or pixels) again and keep the other rows;
   --throughput: parse throughput on a generated 100 MB file of sphere statements, plain and
                 with an expression in each (so the grammar reads them instead of the fast
                 lane), with the default threads and one; prints MB/s, writes nothing.
+  --realistic:  the realistic file (realistic_scene: each object its own pigment and finish,
+                some an interior, comments, small expressions; about 130 bytes an object) at
+                N objects (default 100000 and 1000000): parse MB/s of trace, and trace's and
+                POV-Ray's parse time, whole time and memory in the same run, as ratios;
+                prints a Markdown table, writes nothing.
 """
 import csv
 import math
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -46,6 +53,60 @@ def loop_scene(n, path):
              "    pigment { rgb <mod(I, 7) / 7, mod(I, 11) / 11, mod(I, 13) / 13> } }",
              "#end"]
     speed.write(path, lines)
+
+
+def realistic_scene(n, path):
+    """n objects as a user's exported scene writes them: each its own pigment and finish,
+    one in ten an interior, a comment every few lines, small expressions (no rand)."""
+    rnd = random.Random(7)
+    side = 40.0
+    r = 0.5 * side / n ** (1 / 3)
+    out = [HEADER,
+           "camera { location <0, 30, -70> look_at 0 angle 50 right x*image_width/image_height }",
+           "light_source { <30, 60, -40>, rgb 1 }",
+           "plane { y, -25 pigment { rgb 0.8 } }",
+           "#declare Gloss = 0.4;"]
+    for i in range(n):
+        x, y, z = (rnd.uniform(-side / 2, side / 2) for _ in range(3))
+        c = [rnd.random() for _ in range(3)]
+        if i % 8 == 0:
+            out.append("// part %d" % i)
+        interior = " interior { ior 1.%d }" % (i % 5) if i % 10 == 0 else ""
+        out.append("sphere { <%.3f, %.3f, %.3f>, %.3f pigment { rgb <%.2f, %.2f, %.2f> }"
+                   " finish { phong Gloss*%d specular 0.1 }%s }"
+                   % (x, y, z, r, c[0], c[1], c[2], 1 + i % 2, interior))
+    speed.write(path, out)
+
+
+def povray_parse_seconds(stderr):
+    """POV-Ray's own parse time from its statistics (`Parse Time: … (5.123 seconds)`)."""
+    for line in stderr.splitlines():
+        if line.strip().startswith("Parse Time"):
+            return float(line.split("(")[1].split()[0])
+    return float("nan")
+
+
+def realistic(sizes):
+    """Parse speed and the whole render of the realistic file, trace against POV-Ray."""
+    print("| objects | MB | trace parse | MB/s | POV-Ray parse | parse ratio | trace total | POV-Ray total | total ratio | trace MiB | POV-Ray MiB | memory ratio |")
+    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in sizes:
+            path = os.path.join(tmp, "realistic.pov")
+            realistic_scene(n, path)
+            mb = os.path.getsize(path) / 1e6
+            cmd = [TRACE, path, "-o", os.path.join(tmp, "t.png"), "+W320", "+H240", "-A", "--stats"]
+            p = subprocess.run(["/usr/bin/time", "-f", "TIME %e %M"] + cmd, capture_output=True, text=True, check=True)
+            parse = float([l for l in p.stderr.splitlines() if l.startswith("Parse Time")][0].split()[2])
+            t_total, t_kb = [float(v) for v in p.stderr.splitlines()[-1].split()[1:3]]
+            p = subprocess.run(["/usr/bin/time", "-f", "TIME %e %M", "povray", "+I" + path,
+                                "+O" + os.path.join(tmp, "p.png"), "+W320", "+H240", "-A", "-D"],
+                               capture_output=True, text=True, check=True, cwd=tmp)
+            p_parse = povray_parse_seconds(p.stderr)
+            p_total, p_kb = [float(v) for v in p.stderr.splitlines()[-1].split()[1:3]]
+            print("| %d | %.0f | %.2f s | %.0f | %.2f s | %.2f | %.2f s | %.2f s | %.2f | %.0f | %.0f | %.2f |"
+                  % (n, mb, parse, mb / parse, p_parse, parse / p_parse, t_total, p_total,
+                     t_total / p_total, t_kb / 1024, p_kb / 1024, t_kb / p_kb), flush=True)
 
 
 def slope(points):
@@ -128,6 +189,10 @@ def main():
         return
     quick = "--quick" in sys.argv
     subprocess.run(["cargo", "build", "--release", "--quiet", "--manifest-path", os.path.join(ROOT, "Cargo.toml")], check=True)
+    if "--realistic" in sys.argv:
+        sizes = [int(a) for a in sys.argv[sys.argv.index("--realistic") + 1:]] or [100000, 1000000]
+        realistic(sizes)
+        return
     if "--throughput" in sys.argv:
         throughput()
         return

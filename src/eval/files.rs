@@ -66,93 +66,43 @@ enum Token {
     End,
 }
 
-/// Reads tokens of a data file's text from a byte offset.
+/// Reads tokens of a data file's text from a byte offset, with the scene's lexer (POV-Ray
+/// reads data files with its scene tokenizer too).
 struct Lexer<'t> {
     text: &'t str,
     pos: usize,
 }
 
 impl Lexer<'_> {
-    fn skip_blanks(&mut self) {
-        let bytes = self.text.as_bytes();
-        loop {
-            while self.pos < bytes.len() && bytes[self.pos].is_ascii_whitespace() {
-                self.pos += 1;
-            }
-            let rest = &self.text[self.pos..];
-            if rest.starts_with("//") {
-                self.pos += rest.find('\n').unwrap_or(rest.len());
-            } else if let Some(comment) = rest.strip_prefix("/*") {
-                self.pos += comment.find("*/").map_or(rest.len(), |i| i + 4);
-            } else {
-                return;
-            }
-        }
-    }
-
     /// The next token and where it starts.
     fn next(&mut self) -> std::result::Result<(Token, usize), (String, usize)> {
-        self.skip_blanks();
-        let start = self.pos;
-        let rest = &self.text[self.pos..];
-        let Some(c) = rest.chars().next() else {
-            return Ok((Token::End, start));
+        use crate::syntax::lexer::{self, TokenKind};
+        let end = self.text.len();
+        let t = lexer::Lexer::new(self.text, self.pos.min(end)..end)
+            .next()
+            .map_err(|e| (e.message.to_string(), e.at))?;
+        let Some(t) = t else {
+            self.pos = end;
+            return Ok((Token::End, end));
         };
-        if c.is_ascii_digit() || c == '.' {
-            let len = number_length(rest);
-            self.pos += len;
-            return match rest[..len].parse::<f64>() {
-                Ok(v) => Ok((Token::Number(v), start)),
-                Err(_) => Err((format!("`{}` is not a number", &rest[..len]), start)),
-            };
-        }
-        if c == '"' {
-            let mut end = 1;
-            let bytes = rest.as_bytes();
-            while end < bytes.len() && bytes[end] != b'"' {
-                if bytes[end] == b'\n' {
-                    break;
-                }
-                end += if bytes[end] == b'\\' { 2 } else { 1 };
+        let (start, text) = (t.start as usize, t.text(self.text));
+        self.pos = t.end as usize;
+        let token = match t.kind {
+            TokenKind::Number => match lexer::number_value(text) {
+                v if v.is_finite() => Token::Number(v),
+                _ => return Err((format!("`{text}` is not a number"), start)),
+            },
+            TokenKind::Str => Token::Str(unescape(&text[1..text.len() - 1])),
+            TokenKind::Word => Token::Word(text.to_string()),
+            // (One character a token here: `<=` is `<`, then `=`.)
+            _ => {
+                let c = text.chars().next().unwrap_or('#');
+                self.pos = start + c.len_utf8();
+                Token::Symbol(c)
             }
-            if end >= bytes.len() || bytes[end] != b'"' {
-                return Err(("this string has no end quote on its line".into(), start));
-            }
-            self.pos += end + 1;
-            return Ok((Token::Str(unescape(&rest[1..end])), start));
-        }
-        if c.is_alphabetic() || c == '_' {
-            let len = rest
-                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
-                .unwrap_or(rest.len());
-            self.pos += len;
-            return Ok((Token::Word(rest[..len].to_string()), start));
-        }
-        self.pos += c.len_utf8();
-        Ok((Token::Symbol(c), start))
+        };
+        Ok((token, start))
     }
-}
-
-/// Bytes of the float literal at the start of `s` (`12`, `1.5`, `.5`, `1e-3`).
-fn number_length(s: &str) -> usize {
-    let b = s.as_bytes();
-    let mut i = 0;
-    while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-        i += 1;
-    }
-    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-        let mut j = i + 1;
-        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-            j += 1;
-        }
-        if j < b.len() && b[j].is_ascii_digit() {
-            while j < b.len() && b[j].is_ascii_digit() {
-                j += 1;
-            }
-            i = j;
-        }
-    }
-    i
 }
 
 /// A string literal's text with POV-Ray's escapes replaced (`\"`, `\\`, `\n`, `\t`, `\r`,

@@ -794,9 +794,36 @@ impl<'a> Evaluator<'a> {
             node.slot = syntax::Slot(bindings.len() as u32);
             bindings.push(self.env.get(&node.word).cloned());
         }
-        node.children
+        node.args
             .iter_mut()
-            .all(|c| self.bind_names(c, bindings))
+            .all(|e| self.bind_expr_names(e, bindings))
+            && node
+                .children
+                .iter_mut()
+                .all(|c| self.bind_names(c, bindings))
+    }
+
+    /// Binds the names of an expression the fast lane read (its small expressions: names
+    /// and numbers joined by operators); `false` if one names a macro.
+    fn bind_expr_names(
+        &self,
+        e: &mut syntax::Expr,
+        bindings: &mut Vec<Option<Arc<Value>>>,
+    ) -> bool {
+        match &mut e.kind {
+            syntax::ExprKind::Ident(name, slot) => {
+                if self.macros.contains_key(name.as_str()) {
+                    return false;
+                }
+                *slot = syntax::Slot(bindings.len() as u32);
+                bindings.push(self.env.get(name.as_str()).cloned());
+                true
+            }
+            syntax::ExprKind::Binary(_, a, b) => {
+                self.bind_expr_names(a, bindings) && self.bind_expr_names(b, bindings)
+            }
+            _ => true,
+        }
     }
 
     /// The next top-level statement; `None` at the end of the scene.

@@ -45,54 +45,41 @@ pub fn read_list(text: &str, pos: usize, end: usize) -> Option<(BulkList, usize)
     (list.values.len() >= MIN_ENTRIES).then_some((list, close))
 }
 
-fn skip_ws(bytes: &[u8], mut i: usize) -> usize {
-    while i < bytes.len() && matches!(bytes[i], b' ' | b'\t' | b'\r' | b'\n') {
+/// Past the blanks and comments at `i` (the lexer's trivia; an unclosed comment is left
+/// where it starts, for the grammar to report).
+fn skip_ws(bytes: &[u8], i: usize) -> usize {
+    super::lexer::skip_trivia(bytes, i, bytes.len()).unwrap_or(i)
+}
+
+fn skip_spaces(bytes: &[u8], mut i: usize) -> usize {
+    while i < bytes.len() && matches!(bytes[i], b' ' | b'\t'..=b'\r') {
         i += 1;
     }
     i
 }
 
-/// A plain number at `i` (the grammar's `plain_number`): its value and end.
+/// A plain number at `i` (the grammar's `plain_number`, the lexer's number with a sign): its
+/// value and end.
 fn number(bytes: &[u8], mut i: usize) -> Option<(f64, usize)> {
     let start = i;
     if matches!(bytes.get(i), Some(b'+' | b'-')) {
         i += 1;
     }
-    let digits = |i: &mut usize| {
-        let s = *i;
-        while *i < bytes.len() && bytes[*i].is_ascii_digit() {
-            *i += 1;
-        }
-        *i - s
-    };
-    let int = digits(&mut i);
-    let mut frac = 0;
-    if bytes.get(i) == Some(&b'.') {
-        i += 1;
-        frac = digits(&mut i);
-    }
-    if int == 0 && frac == 0 {
+    let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
+    if !(digit(i) || bytes.get(i) == Some(&b'.') && digit(i + 1)) {
         return None;
     }
-    if matches!(bytes.get(i), Some(b'e' | b'E')) {
-        let mut k = i + 1;
-        if matches!(bytes.get(k), Some(b'+' | b'-')) {
-            k += 1;
-        }
-        if digits(&mut k) > 0 {
-            i = k;
-        }
-    }
-    // A number must end here: a letter or `_` right after it is some other token.
+    let i = super::lexer::number_end(bytes, i, bytes.len());
+    // A number must end here: a word character right after it is some other token.
     if bytes
         .get(i)
-        .is_some_and(|c| c.is_ascii_alphanumeric() || *c == b'_' || *c == b'.')
+        .is_some_and(|&c| super::lexer::is_word_byte(c) || c == b'.')
     {
         return None;
     }
     let text = std::str::from_utf8(&bytes[start..i]).ok()?;
     // An overflowing literal (1e400) is left to the grammar, whose evaluation reports it.
-    let value: f64 = text.parse().ok()?;
+    let value = super::lexer::number_value(text);
     value.is_finite().then_some((value, i))
 }
 
@@ -127,11 +114,12 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
         list.offsets.push((offset + i) as u32);
         let mut v = [0.0; 3];
         i += 1;
+        // (Blanks only inside a vector, as in the grammar's `plain_vector`.)
         for (k, slot) in v.iter_mut().enumerate() {
-            i = skip_ws(bytes, i);
+            i = skip_spaces(bytes, i);
             let (x, end) = number(bytes, i)?;
             *slot = x;
-            i = skip_ws(bytes, end);
+            i = skip_spaces(bytes, end);
             let want = if k < 2 { b',' } else { b'>' };
             if bytes.get(i) != Some(&want) {
                 return None;
@@ -171,6 +159,10 @@ mod tests {
         // The short face list is left to the grammar.
         let faces = text.find("{ 1,").unwrap() + 1;
         assert!(read_list(&text, faces, text.len()).is_none());
+        // Comments between entries are passed over, as the lexer passes over them.
+        let commented = text.replacen(", <", ", // note\n /* a /* nested */ one */ <", 3);
+        let (again, _) = read_list(&commented, start, commented.len()).expect("a list");
+        assert_eq!(again.values, list.values);
         // A list that does not end before `end` is not read.
         assert!(read_list(&text, start, close).is_none());
     }
@@ -181,10 +173,9 @@ mod tests {
             "<1, 2, 3> * 2",
             "<1, 2>",
             "<1 -2, 3>",
-            "// note\n<1,2,3>",
+            "<1, /* a comment */ 2, 3>",
             "<1, 2, x>",
             "<1, 2, 3, 4>",
-            "<1,2,3e>",
             "#if (1) <1,2,3> #end",
         ] {
             let text = format!("{{ 21, {}, {odd} }}", body(20));

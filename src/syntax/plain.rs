@@ -6,7 +6,8 @@
 //! the grammar's lowering builds (spans included), several times faster than pest's general
 //! rules. The lane is narrow on purpose: shapes with literal arguments; `pigment` with one
 //! literal colour; `finish` with literal items; `texture` of those; `translate`, `rotate`,
-//! `scale` by a literal; plain flags; `object { Name … }`. Anything else — a comment, an
+//! `scale` by a literal; plain flags; `object { Name … }`; comments between them (the one lexer's
+//! trivia and numbers: `lexer::skip_trivia`, `lexer::number_end`). Anything else — an
 //! expression, an identifier, a directive, an unknown word, a syntax error — gives up at once
 //! and the statement goes to the grammar, which reads it (or reports it) as always. The unit
 //! tests compare the two readings on every form the lane takes, byte offsets included.
@@ -15,7 +16,7 @@
 //! `object { Name … }` is bound there (or, naming a macro, sends the statement to the usual
 //! reading).
 
-use super::{ColourPart, Expr, ExprKind, Node, NodeKind};
+use super::{BinOp, ColourPart, Expr, ExprKind, Node, NodeKind};
 use crate::diag::{FileId, Span};
 
 /// Reads the statement starting after the blanks at byte `pos` of `source`, if it is plain:
@@ -66,6 +67,48 @@ const FLAGS: [&str; 6] = [
     "open",
 ];
 
+/// The words that name a value (the grammar's `value_kw`): left to the grammar.
+const VALUE_WORDS: [&str; 26] = [
+    "pi",
+    "x",
+    "y",
+    "z",
+    "t",
+    "u",
+    "v",
+    "true",
+    "false",
+    "yes",
+    "no",
+    "on",
+    "off",
+    "clock_on",
+    "clock_delta",
+    "clock",
+    "frame_number",
+    "initial_frame",
+    "final_frame",
+    "initial_clock",
+    "final_clock",
+    "image_width",
+    "image_height",
+    "version",
+    "input_file_name",
+    "now",
+];
+
+/// `left op right`, spanning both, as the grammar's lowering joins them.
+fn binary(op: BinOp, left: Expr, right: Expr) -> Expr {
+    let span = Span {
+        end: right.span.end,
+        ..left.span
+    };
+    Expr {
+        kind: ExprKind::Binary(op, Box::new(left), Box::new(right)),
+        span,
+    }
+}
+
 #[derive(Clone, Copy)]
 struct Scanner<'a> {
     text: &'a str,
@@ -82,8 +125,16 @@ impl<'a> Scanner<'a> {
         self.text.as_bytes().get(self.at).copied()
     }
 
-    /// The grammar's implicit whitespace (comments are left to the grammar).
+    /// The grammar's implicit whitespace: blanks and comments, as the lexer passes over them
+    /// (an unclosed comment stays, for the grammar to report).
     fn skip_blanks(&mut self) {
+        let bytes = self.text.as_bytes();
+        self.at = super::lexer::skip_trivia(bytes, self.at, bytes.len()).unwrap_or(self.at);
+    }
+
+    /// Blanks only, as inside the grammar's `plain_vector` (a vector with a comment in it is
+    /// the grammar's).
+    fn skip_spaces(&mut self) {
         let bytes = self.text.as_bytes();
         while self.at < bytes.len() && matches!(bytes[self.at], b' ' | b'\t'..=b'\r') {
             self.at += 1;
@@ -105,7 +156,7 @@ impl<'a> Scanner<'a> {
             return None;
         }
         let mut end = start + 1;
-        while end < bytes.len() && (bytes[end].is_ascii_alphanumeric() || bytes[end] == b'_') {
+        while end < bytes.len() && super::lexer::is_word_byte(bytes[end]) {
             end += 1;
         }
         self.at = end;
@@ -146,7 +197,7 @@ impl<'a> Scanner<'a> {
                 if i > 0 && self.eat(b',').is_some() {
                     self.skip_blanks();
                 }
-                node.args.push(self.literal()?);
+                node.args.push(self.value()?);
             }
             node
         };
@@ -188,6 +239,7 @@ impl<'a> Scanner<'a> {
                 "pigment" => self.pigment(start)?,
                 "finish" => self.finish(start)?,
                 "texture" => self.texture(start)?,
+                "interior" => self.interior(start)?,
                 _ => match self.transform(word, start) {
                     Some(node) => node?,
                     None => self.flag(word, start)?,
@@ -213,7 +265,7 @@ impl<'a> Scanner<'a> {
     fn with_literal(&mut self, kind: NodeKind, word: &str, start: usize) -> Option<Node> {
         let mut node = self.node(kind, word, start);
         self.skip_blanks();
-        node.args.push(self.literal()?);
+        node.args.push(self.value()?);
         node.span = self.span(start, self.at);
         Some(node)
     }
@@ -279,6 +331,24 @@ impl<'a> Scanner<'a> {
         })
     }
 
+    /// `interior { ior/fade_distance/fade_power value … }`.
+    fn interior(&mut self, start: usize) -> Option<Node> {
+        self.block(
+            NodeKind::Interior,
+            "interior",
+            start,
+            |s, word, item_start| {
+                let kind = match word {
+                    "ior" => NodeKind::Ior,
+                    "fade_distance" => NodeKind::FadeDistance,
+                    "fade_power" => NodeKind::FadePower,
+                    _ => return None,
+                };
+                s.with_literal(kind, word, item_start)
+            },
+        )
+    }
+
     /// `texture { pigment/finish/transforms }`.
     fn texture(&mut self, start: usize) -> Option<Node> {
         self.block(
@@ -335,17 +405,82 @@ impl<'a> Scanner<'a> {
             .then_some(Expr { kind, span })
     }
 
+    /// A literal, or a small expression: unsigned numbers and declared names joined by
+    /// `+ - * /` (products first, left to right), as the grammar's lowering builds it; a
+    /// name is bound where the reader takes the statement.
+    fn value(&mut self) -> Option<Expr> {
+        let save = *self;
+        if let Some(e) = self.literal() {
+            return Some(e);
+        }
+        *self = save;
+        let mut sum = self.product()?;
+        loop {
+            let op = match self.peek() {
+                Some(b'+') => BinOp::Add,
+                Some(b'-') => BinOp::Sub,
+                _ => break,
+            };
+            self.at += 1;
+            self.skip_blanks();
+            let right = self.product()?;
+            sum = binary(op, sum, right);
+        }
+        let next = self.peek()?;
+        (next == b',' || next == b'}' || next == b'_' || next.is_ascii_alphanumeric())
+            .then_some(sum)
+    }
+
+    /// Operands joined by `*` and `/`; leaves the scanner after the blanks that follow.
+    fn product(&mut self) -> Option<Expr> {
+        let mut product = self.operand()?;
+        loop {
+            let op = match self.peek() {
+                Some(b'*') => BinOp::Mul,
+                Some(b'/') if self.text.as_bytes().get(self.at + 1) != Some(&b'/') => BinOp::Div,
+                _ => return Some(product),
+            };
+            self.at += 1;
+            self.skip_blanks();
+            let right = self.operand()?;
+            product = binary(op, product, right);
+        }
+    }
+
+    /// An unsigned number, or a name (not a keyword, not called, indexed or a member's
+    /// base); leaves the scanner after the blanks that follow.
+    fn operand(&mut self) -> Option<Expr> {
+        let start = self.at;
+        let kind = match self.peek()? {
+            b'0'..=b'9' | b'.' => ExprKind::Number(self.number()?),
+            b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
+                let (name, _) = self.word()?;
+                if VALUE_WORDS.contains(&name) || super::is_keyword(name) {
+                    return None;
+                }
+                ExprKind::Ident(name.to_string(), super::Slot::NONE)
+            }
+            _ => return None,
+        };
+        let span = self.span(start, self.at);
+        self.skip_blanks();
+        if matches!(self.peek(), Some(b'(' | b'[' | b'.')) {
+            return None;
+        }
+        Some(Expr { kind, span })
+    }
+
     /// `<n, n, …>` of 2 to 5 plain numbers (commas optional before an unsigned number).
     fn vector(&mut self) -> Option<ExprKind> {
         self.eat(b'<')?;
         let mut c = [0.0; 5];
         let mut n = 0;
         loop {
-            self.skip_blanks();
+            self.skip_spaces();
             *c.get_mut(n)? = self.number()?;
             n += 1;
             let before = self.at;
-            self.skip_blanks();
+            self.skip_spaces();
             match self.peek()? {
                 b'>' => {
                     self.at += 1;
@@ -359,8 +494,8 @@ impl<'a> Scanner<'a> {
         (n >= 2).then_some(ExprKind::PlainVector(c, n as u8))
     }
 
-    /// The grammar's `plain_number`: `[+-]? (d+ (. d*)? | . d+) ([eE] [+-]? d+)?`, read as
-    /// the lowering reads it.
+    /// The grammar's `plain_number`: a sign, then the lexer's number, read as the lowering
+    /// reads it.
     fn number(&mut self) -> Option<f64> {
         let bytes = self.text.as_bytes();
         let start = self.at;
@@ -368,35 +503,12 @@ impl<'a> Scanner<'a> {
         if matches!(bytes.get(i), Some(b'+' | b'-')) {
             i += 1;
         }
-        let digits = |mut i: usize| {
-            while bytes.get(i).is_some_and(u8::is_ascii_digit) {
-                i += 1;
-            }
-            i
-        };
-        let int_end = digits(i);
-        if int_end > i {
-            i = int_end;
-            if bytes.get(i) == Some(&b'.') {
-                i = digits(i + 1);
-            }
-        } else if bytes.get(i) == Some(&b'.') && bytes.get(i + 1).is_some_and(u8::is_ascii_digit) {
-            i = digits(i + 1);
-        } else {
+        let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
+        if !(digit(i) || bytes.get(i) == Some(&b'.') && digit(i + 1)) {
             return None;
         }
-        if matches!(bytes.get(i), Some(b'e' | b'E')) {
-            let mut j = i + 1;
-            if matches!(bytes.get(j), Some(b'+' | b'-')) {
-                j += 1;
-            }
-            let exp_end = digits(j);
-            if exp_end > j {
-                i = exp_end;
-            }
-        }
-        self.at = i;
-        Some(self.text[start..i].parse().unwrap_or(f64::NAN))
+        self.at = super::lexer::number_end(bytes, i, bytes.len());
+        Some(super::lexer::number_value(&self.text[start..self.at]))
     }
 }
 
@@ -474,20 +586,39 @@ mod tests {
         "object { Tree pigment { rgb <1,0,0> } }",
         "object { _t2 scale 3 }",
         "sphere { <0,0,0>, 1 }\nsphere { <1,1,1>, 2 }",
+        // Comments, as the lexer passes over them.
+        "sphere { /* a /* nested */ c */ <0,0,0>, 1 // radius\n pigment { rgb 1 } }",
+        "sphere { <0,0,0>, /* r */ 1 finish { phong /* p */ 0.5 } }",
+        "/* c */ sphere { <0,0,0>, 1 }",
+        "sphere { <0,0,0>, 1 // c\n }",
+        // Small expressions of numbers and names.
+        "sphere { <0,0,0>, 0.5*2 }",
+        "sphere { <0,0,0>, R }",
+        "sphere { <0,0,0>, A + B*2 - C/4 }",
+        "sphere { <0,0,0>, 1 finish { phong Gloss*2 specular 0.1 } interior { ior 1.5 } }",
+        "sphere { <0,0,0>, 1 interior { ior N fade_distance 2 fade_power 1001 } translate D*3 }",
+        "cylinder { <0,0,0>, <0,1,0>, R/2/2 open }",
+        "sphere { <0,0,0>, R // c\n *2 }",
+        // A dangling exponent counts for nothing (POV-Ray reads `1E` as 1).
+        "sphere { <0,0,0> 1E }",
     ];
 
     /// Statements the lane leaves to the grammar (which reads them differently, or needs
     /// what the lane does not have).
     const LEFT: &[&str] = &[
-        "/* c */ sphere { <0,0,0>, 1 }",
-        "sphere { <0,0,0>, 1 // c\n }",
-        "sphere { <0,0,0>, 0.5*2 }",
         "sphere { <1 -2 3>, 1 }",
         "sphere { <0,0,0> -1 }",
         "sphere { <1 .5 3> +1E-2 }",
-        "sphere { <0,0,0> 1E }",
-        "sphere { <0,0,0>, R }",
         "sphere { <1,2,3>.x, 1 }",
+        "sphere { <0,0,0>, R.x }",
+        "sphere { <0,0,0>, F(2) }",
+        "sphere { <0,0,0>, A[1] }",
+        "sphere { <0,0,0>, 2*-R }",
+        "sphere { <0,0,0>, -R*2 }",
+        "sphere { <0,0,0>, R*pi }",
+        "sphere { <0,0,0>, (R) }",
+        "sphere { <0,0,0>, 1 interior { ior 1.5 caustics 1 } }",
+        "sphere { <0,0,0>, 1 finish { phong R*<1,1,1> } }",
         "sphere { <0,0,0>, 1 pigment { rgb <1,0,0> filter 0.5 } }",
         "sphere { <0,0,0>, 1 pigment { Red } }",
         "sphere { <0,0,0>, 1 pigment { color <1,0,0> } }",
