@@ -36,17 +36,13 @@ import speed  # (this folder: the sphere scenes of the speed table)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TRACE = os.path.join(ROOT, "target", "release", "trace")
-HEADER = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
 
 
 def loop_scene(n, path):
     """n spheres from a #for loop, placed by a formula (no rand: both renderers agree)."""
     side = 40.0
     r = 0.5 * side / n ** (1 / 3)
-    lines = [HEADER,
-             "camera { location <0, 30, -70> look_at 0 angle 50 right x*image_width/image_height }",
-             "light_source { <30, 60, -40>, rgb 1 }",
-             "plane { y, -25 pigment { rgb 0.8 } }",
+    lines = speed.scene_head() + [
              "#for (I, 0, %d)" % (n - 1),
              "  sphere { <mod(I * 7919, 10007) / 10007, mod(I * 104729, 10009) / 10009,"
              " mod(I * 1299709, 10037) / 10037> * %g - %g, %g" % (side, side / 2, r),
@@ -61,11 +57,7 @@ def realistic_scene(n, path):
     rnd = random.Random(7)
     side = 40.0
     r = 0.5 * side / n ** (1 / 3)
-    out = [HEADER,
-           "camera { location <0, 30, -70> look_at 0 angle 50 right x*image_width/image_height }",
-           "light_source { <30, 60, -40>, rgb 1 }",
-           "plane { y, -25 pigment { rgb 0.8 } }",
-           "#declare Gloss = 0.4;"]
+    out = speed.scene_head() + ["#declare Gloss = 0.4;"]
     for i in range(n):
         x, y, z = (rnd.uniform(-side / 2, side / 2) for _ in range(3))
         c = [rnd.random() for _ in range(3)]

@@ -29,14 +29,19 @@ TRACE = os.path.join(ROOT, "target", "release", "trace")
 HEADER = "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
 
 
+def scene_head():
+    """The lines before the objects of the generated sphere scenes: camera, light, floor."""
+    return [HEADER,
+            "camera { location <0, 30, -70> look_at 0 angle 50 right x*image_width/image_height }",
+            "light_source { <30, 60, -40>, rgb 1 }",
+            "plane { y, -25 pigment { rgb 0.8 } }"]
+
+
 def spheres(n, path):
     rnd = random.Random(1)
     side = 40.0
     r = 0.5 * side / n ** (1 / 3)
-    out = [HEADER,
-           "camera { location <0, 30, -70> look_at 0 angle 50 right x*image_width/image_height }",
-           "light_source { <30, 60, -40>, rgb 1 }",
-           "plane { y, -25 pigment { rgb 0.8 } }"]
+    out = scene_head()
     for _ in range(n):
         x, y, z = (rnd.uniform(-side / 2, side / 2) for _ in range(3))
         c = [rnd.random() for _ in range(3)]

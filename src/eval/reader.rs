@@ -196,6 +196,8 @@ pub(super) struct Reader {
 pub(super) enum Statement {
     Unit(Emitted),
     Plain(Node, Vec<Option<Arc<Value>>>),
+    /// A plain statement of a loop's or macro's body, read from its kept parse (see `quick`).
+    Kept(Rc<Node>, Vec<Option<Arc<Value>>>),
 }
 
 /// What a unit was parsed as (part of the parse cache's key).
@@ -396,6 +398,7 @@ impl<'a> Evaluator<'a> {
     fn run_statement(&mut self, statement: Statement) -> Result<()> {
         let (em, node, bindings) = match statement {
             Statement::Plain(node, bindings) => (None, Rc::new(node), bindings),
+            Statement::Kept(node, bindings) => (None, node, bindings),
             Statement::Unit(mut em) => {
                 let node = self.parsed(&em, Parse::Statement, syntax::parse_statement)?;
                 let bindings = std::mem::take(&mut em.bindings);
@@ -784,6 +787,31 @@ impl<'a> Evaluator<'a> {
         Some(Statement::Plain(node, bindings))
     }
 
+    /// Runs the directives before the next statement (a loop's `#end` that goes back to its
+    /// body, the next `#declare` …), as reading its first token would, so that the statement
+    /// starts where the fast lanes look for it.
+    fn leading_directives(&mut self) -> Result<()> {
+        loop {
+            let Some(input) = self.reader.inputs.last() else {
+                return Ok(());
+            };
+            if !input.pushback.is_empty() || self.reader.hold || self.reader.raw_words {
+                return Ok(());
+            }
+            let ahead = Lexer::new(&input.text, input.pos..input.end).next();
+            let Ok(Some(raw)) = ahead else {
+                return Ok(());
+            };
+            if raw.kind != TokenKind::Directive {
+                return Ok(());
+            }
+            let index = self.reader.inputs.len() - 1;
+            self.reader.inputs[index].pos = raw.end as usize;
+            let tok = self.tok(raw, index);
+            self.run_directive(&tok)?;
+        }
+    }
+
     /// Binds the declared names of a tree the fast lane read; `false` if one names a macro
     /// (the statement is then read the usual way, calling it).
     fn bind_names(&self, node: &mut Node, bindings: &mut Vec<Option<Arc<Value>>>) -> bool {
@@ -828,6 +856,10 @@ impl<'a> Evaluator<'a> {
 
     /// The next top-level statement; `None` at the end of the scene.
     fn read_statement(&mut self) -> Result<Option<Statement>> {
+        self.leading_directives()?;
+        if let Some(kept) = self.quick_statement() {
+            return Ok(Some(kept));
+        }
         if let Some(plain) = self.plain_statement() {
             return Ok(Some(plain));
         }

@@ -41,17 +41,7 @@ pub(super) fn statement(unit: &Unit) -> Option<Node> {
 pub(super) fn read(unit: &Unit) -> Option<Node> {
     let mut reader = Reader {
         unit,
-        lower: Lower {
-            file: FileId(0),
-            offset: 0,
-            bulk: std::cell::RefCell::new(
-                unit.lists
-                    .iter()
-                    .map(|(at, l)| (*at as usize, l.clone()))
-                    .collect(),
-            ),
-            unit: Some(unit),
-        },
+        lower: Lower::of_unit(unit),
         cache: HashMap::new(),
     };
     let first = reader.token(0)?;

@@ -448,18 +448,7 @@ fn parse_unit_with<T>(
     check_nesting(unit)?;
     let mut pairs = SceneParser::parse(rule, &unit.text).map_err(|e| unit_error(e, unit))?;
     let top = pairs.next().expect("an entry rule yields one pair");
-    let lower = Lower {
-        file: FileId(0),
-        offset: 0,
-        bulk: std::cell::RefCell::new(
-            unit.lists
-                .iter()
-                .map(|(at, l)| (*at as usize, l.clone()))
-                .collect(),
-        ),
-        unit: Some(unit),
-    };
-    Ok(f(top, &lower))
+    Ok(f(top, &Lower::of_unit(unit)))
 }
 
 /// A syntax error in a unit, at the place in the file its position maps to.
@@ -649,7 +638,22 @@ struct Lower<'u> {
     unit: Option<&'u Unit>,
 }
 
-impl Lower<'_> {
+impl<'u> Lower<'u> {
+    /// The lowering of a unit's text (from its start).
+    fn of_unit(unit: &'u Unit) -> Lower<'u> {
+        Lower {
+            file: FileId(0),
+            offset: 0,
+            bulk: std::cell::RefCell::new(
+                unit.lists
+                    .iter()
+                    .map(|(at, l)| (*at as usize, l.clone()))
+                    .collect(),
+            ),
+            unit: Some(unit),
+        }
+    }
+
     fn span(&self, pair: &Pair<'_, Rule>) -> Span {
         let s = pair.as_span();
         let (start, end) = (s.start() + self.offset, s.end() + self.offset);

@@ -253,3 +253,24 @@ fn a_macros_last_declaration_of_a_parameter_changes_the_callers_name() {
         "object { box { 0, 1 rotate y*90 } pigment { rgb 1 } }",
     );
 }
+
+#[test]
+fn a_loops_plain_statements_mean_what_the_token_reader_makes_of_them() {
+    // A loop body's plain statement is read from a kept parse (src/eval/reader/quick.rs),
+    // its names bound at each pass; a macro named in it sends it to the token reader.
+    same(
+        "#macro Half() 0.5 #end
+         #declare R = 0.25;
+         #for (I, 0, 2)
+           sphere { <I, 0, 0>, R pigment { rgb <I/2, 0, 1> } }
+           #declare R = R + 0.25;
+           cylinder { <I, 1, 0>, <I, 2, 0>, Half() }
+         #end",
+        "sphere { <0, 0, 0>, 0.25 pigment { rgb <0, 0, 1> } }
+         cylinder { <0, 1, 0>, <0, 2, 0>, 0.5 }
+         sphere { <1, 0, 0>, 0.5 pigment { rgb <0.5, 0, 1> } }
+         cylinder { <1, 1, 0>, <1, 2, 0>, 0.5 }
+         sphere { <2, 0, 0>, 0.75 pigment { rgb <1, 0, 1> } }
+         cylinder { <2, 1, 0>, <2, 2, 0>, 0.5 }",
+    );
+}

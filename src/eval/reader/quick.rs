@@ -10,7 +10,7 @@
 //! and evaluating the kept tree. Anything else (a macro call, `rand`, a value the token
 //! reader would end elsewhere) takes the token reader's way.
 
-use super::{Evaluator, FunctionState, InputKind};
+use super::{Evaluator, FunctionState, InputKind, Statement};
 use crate::diag::{Diagnostic, FileId};
 use crate::eval::Value;
 use crate::syntax::lexer::{Lexer, Token, TokenKind};
@@ -37,6 +37,12 @@ pub(super) enum Quick {
         words: Vec<Box<str>>,
         end: usize,
     },
+    /// A top-level statement `word { … }`: its tree, its words, and where its `}` ends.
+    Statement {
+        node: Rc<Node>,
+        words: Vec<Box<str>>,
+        end: usize,
+    },
     /// Not plain: read token by token.
     No,
 }
@@ -49,7 +55,15 @@ struct Scan<'t> {
     words: Vec<Token>,
 }
 
-impl Scan<'_> {
+impl<'t> Scan<'t> {
+    fn new(text: &'t str, pos: usize, end: usize) -> Scan<'t> {
+        Scan {
+            text,
+            lexer: Lexer::new(text, pos..end),
+            words: Vec::new(),
+        }
+    }
+
     /// The next token, if it may stand in a plain directive.
     fn next(&mut self) -> Option<Token> {
         let t = self.lexer.next().ok()??;
@@ -61,7 +75,7 @@ impl Scan<'_> {
                 self.words.push(t);
             }
             TokenKind::Number | TokenKind::Str => {}
-            TokenKind::Punct if !matches!(t.text(self.text), "{" | "}") => {}
+            TokenKind::Punct => {}
             _ => return None,
         }
         Some(t)
@@ -73,7 +87,7 @@ impl Scan<'_> {
         loop {
             let t = self.next()?;
             match t.text(self.text) {
-                ";" => return None,
+                ";" | "{" | "}" => return None,
                 "(" | "[" => depth += 1,
                 ")" | "]" => {
                     depth -= 1;
@@ -108,7 +122,7 @@ impl Scan<'_> {
                     match t.text(self.text) {
                         "(" | "[" => depth += 1,
                         ")" | "]" => depth -= 1,
-                        "<" | "<=" | ">=" | ";" => return None,
+                        "<" | "<=" | ">=" | ";" | "{" | "}" => return None,
                         ">" if depth == 0 => break,
                         ">" => return None,
                         _ => {}
@@ -230,6 +244,20 @@ impl Evaluator<'_> {
         Ok(true)
     }
 
+    /// A statement of a loop's or macro's body read from its kept parse, if its text is
+    /// plain (see [`scan_statement`]).
+    pub(super) fn quick_statement(&mut self) -> Option<Statement> {
+        let at = self.quick_input()?;
+        let q = self.quick(at, scan_statement);
+        let Quick::Statement { node, words, end } = &*q else {
+            return None;
+        };
+        let bindings = self.quick_bindings(words, false)?;
+        self.reader.inputs.last_mut().expect("an input").pos = *end;
+        self.reader.run += 1;
+        Some(Statement::Kept(Rc::clone(node), bindings))
+    }
+
     /// A directive's `(condition)` read quickly, if its text is plain: its truth.
     pub(super) fn quick_condition(&mut self) -> Result<Option<bool>> {
         let Some(at) = self.quick_input() else {
@@ -272,11 +300,7 @@ fn names(text: &str, words: &[Token]) -> Vec<Box<str>> {
 
 /// Scans `Name[…]… = value;` from `pos`.
 fn scan_declare(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
-    let mut s = Scan {
-        text,
-        lexer: Lexer::new(text, pos..end),
-        words: Vec::new(),
-    };
+    let mut s = Scan::new(text, pos, end);
     (|| {
         let name = s.next()?;
         if name.kind != TokenKind::Word || matches!(name.text(text), "deprecated" | "once") {
@@ -313,13 +337,51 @@ fn scan_declare(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick 
     .unwrap_or(Quick::No)
 }
 
+/// Texts of statements kept at most (a bigger one is read token by token).
+const MAX_STATEMENT: usize = 64 * 1024;
+
+/// Scans `word { … }` from `pos`: a statement with no directive, macro, `rand`, function or
+/// mesh2 list the fast lane would read (the reader's bulk lane keeps those).
+fn scan_statement(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
+    let mut s = Scan::new(text, pos, end);
+    (|| {
+        let first = s.next()?;
+        if first.kind != TokenKind::Word || s.next()?.text(text) != "{" {
+            return None;
+        }
+        let mut depth = 1;
+        let close = loop {
+            let t = s.next()?;
+            if t.end as usize - first.start as usize > MAX_STATEMENT {
+                return None;
+            }
+            match (t.kind, t.text(text)) {
+                (TokenKind::Punct, "{") => depth += 1,
+                (TokenKind::Punct, "}") => {
+                    depth -= 1;
+                    if depth == 0 {
+                        break t.end as usize;
+                    }
+                }
+                (TokenKind::Word, w) if syntax::bulk::KEYWORDS.contains(&w) => return None,
+                _ => {}
+            }
+        };
+        let node =
+            syntax::parse_statement(&unit_of(text, file, first.start as usize, close, &s.words))
+                .ok()?;
+        Some(Quick::Statement {
+            node: Rc::new(node),
+            words: names(text, &s.words),
+            end: close,
+        })
+    })()
+    .unwrap_or(Quick::No)
+}
+
 /// Scans `(condition)` from `pos`.
 fn scan_condition(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
-    let mut s = Scan {
-        text,
-        lexer: Lexer::new(text, pos..end),
-        words: Vec::new(),
-    };
+    let mut s = Scan::new(text, pos, end);
     (|| {
         let open = s.next()?;
         if open.text(text) != "(" {
