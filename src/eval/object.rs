@@ -594,11 +594,15 @@ impl Evaluator<'_> {
         /// Objects kept ready at once (a loop making and asking new objects does not pile them up).
         const KEPT: usize = 64;
         // (A declared object asked again is not copied to find its id.)
-        if let ExprKind::Ident(_, slot) = &e.kind
-            && let Some(Value::Object(o)) = self.bound(*slot)
-            && let Some(q) = self.queries.get(&o.id)
-        {
-            return Ok(Arc::clone(q));
+        let known = match &e.kind {
+            ExprKind::Ident(_, slot) => match self.bound(*slot) {
+                Some(Value::Object(o)) => self.queries.get(&o.id).cloned(),
+                _ => None,
+            },
+            _ => None,
+        };
+        if let Some(q) = known {
+            return Ok(q);
         }
         let object = match self.eval(e)? {
             Value::Object(o) => o,

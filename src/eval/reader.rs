@@ -1101,12 +1101,7 @@ impl<'a> Evaluator<'a> {
     /// A declared value's unit: an item to its closing `}` (textures layered after a
     /// texture), `array[…]` with its elements, `function (…) {…}`, or an expression.
     fn value_unit(&mut self, at: Span) -> Result<Emitted> {
-        let Some(first) = self.next_token()? else {
-            return Err(Diagnostic::error(
-                "expected a value, found the end of the file",
-                at,
-            ));
-        };
+        let first = self.value_start(at)?;
         let mut em = Emitter::default();
         if first.kind == TokenKind::Word && first.binding.is_none() && !first.stand_in {
             let word = self.text_of(&first).to_string();
@@ -1160,14 +1155,15 @@ impl<'a> Evaluator<'a> {
         Ok(em.finish())
     }
 
+    /// The first token of a value the directive at `at` reads (an error at the file's end).
+    fn value_start(&mut self, at: Span) -> Result<Tok> {
+        self.next_token()?
+            .ok_or_else(|| Diagnostic::error("expected a value, found the end of the file", at))
+    }
+
     /// An expression's unit whose first token is the next one (`#version`'s value).
     fn expression_unit(&mut self, at: Span) -> Result<Emitted> {
-        let Some(first) = self.next_token()? else {
-            return Err(Diagnostic::error(
-                "expected a value, found the end of the file",
-                at,
-            ));
-        };
+        let first = self.value_start(at)?;
         let mut em = Emitter::default();
         self.expression_from(&mut em, first)?;
         Ok(em.finish())
@@ -1175,12 +1171,7 @@ impl<'a> Evaluator<'a> {
 
     /// One operand's unit (`#include`'s file name, `#debug`'s text).
     fn operand_unit(&mut self, at: Span) -> Result<Emitted> {
-        let Some(first) = self.next_token()? else {
-            return Err(Diagnostic::error(
-                "expected a value, found the end of the file",
-                at,
-            ));
-        };
+        let first = self.value_start(at)?;
         let mut em = Emitter::default();
         self.operand_from(&mut em, first)?;
         Ok(em.finish())

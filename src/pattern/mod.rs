@@ -441,9 +441,11 @@ impl Pattern {
         for w in &self.warps {
             q = w.apply(q);
         }
-        if let Some(t) = &self.turbulence
-            && t.amount != DVec3::ZERO
-            && !matches!(self.kind, PatternKind::Marble | PatternKind::Wood)
+        let turbulent = !matches!(self.kind, PatternKind::Marble | PatternKind::Wood);
+        if let Some(t) = self
+            .turbulence
+            .as_ref()
+            .filter(|t| turbulent && t.amount != DVec3::ZERO)
         {
             let d = t.vector(q);
             q = DVec3::new(

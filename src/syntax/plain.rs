@@ -276,8 +276,9 @@ impl<'a> Scanner<'a> {
         self.skip_blanks();
         // (`hollow on` and the like are the grammar's.)
         let mut ahead = *self;
-        if let Some((next, _)) = ahead.word()
-            && matches!(next, "on" | "off" | "true" | "false" | "yes" | "no")
+        if ahead
+            .word()
+            .is_some_and(|(next, _)| matches!(next, "on" | "off" | "true" | "false" | "yes" | "no"))
         {
             return None;
         }
