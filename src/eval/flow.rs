@@ -48,7 +48,16 @@ impl<'a> Evaluator<'a> {
     pub(super) fn each_item(&mut self, items: &[Node], f: &mut Handler<'_, 'a>) -> Result<()> {
         for item in items {
             self.charge(1, "statement", item.word_span)?;
-            f(self, item)?;
+            match item.again() {
+                // (A member a loop made again: its words are bound `by` slots further on.)
+                Some((member, by)) => {
+                    self.slot_shift += by;
+                    let result = f(self, member);
+                    self.slot_shift -= by;
+                    result?
+                }
+                None => f(self, item)?,
+            }
         }
         Ok(())
     }
@@ -324,9 +333,9 @@ impl Evaluator<'_> {
                 None => t,
             });
         }
-        Ok(Value::Texture(
+        Ok(Value::Texture(Box::new(
             layered.expect("a layered texture has textures"),
-        ))
+        )))
     }
 }
 

@@ -225,13 +225,13 @@ impl Evaluator<'_> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Texture(t) => texture = t,
+                    Value::Texture(t) => texture = *t,
                     // `texture { P }` with a declared pigment: POV-Ray takes it as the pigment.
-                    Value::Pigment(p) => texture.pigment = p,
+                    Value::Pigment(p) => texture.pigment = *p,
                     // `texture { P F }`: POV-Ray's old texture of declared pigments, normals and
                     // finishes without their wrappers.
-                    Value::Finish(f) => texture.finish = ev.shared_finish(f),
-                    Value::Normal(n) => texture.normal = Some(Box::new(n)),
+                    Value::Finish(f) => texture.finish = ev.shared_finish(*f),
+                    Value::Normal(n) => texture.normal = Some(n),
                     other => return Err(type_error("a texture", &other, item.span)),
                 },
                 NodeKind::Pigment => texture.pigment = ev.pigment(item, texture.pigment.clone())?,
@@ -1108,7 +1108,7 @@ impl Evaluator<'_> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Normal(n) => normal = Some(n),
+                    Value::Normal(n) => normal = Some(*n),
                     other => return Err(type_error("a normal", &other, item.span)),
                 },
                 NodeKind::Normal => {
@@ -1615,7 +1615,7 @@ impl Evaluator<'_> {
             let arg = |i: usize| &item.args[i];
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Finish(declared) => f = declared,
+                    Value::Finish(declared) => f = *declared,
                     other => return Err(type_error("a finish", &other, item.span)),
                 },
                 NodeKind::Ambient => f.ambient = ev.rgb_arg(arg(0))?,
@@ -1725,7 +1725,7 @@ impl Evaluator<'_> {
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::IdentRef => match ev.lookup(item)? {
-                    Value::Interior(i) => interior = i,
+                    Value::Interior(i) => interior = *i,
                     other => return Err(type_error("an interior", &other, item.span)),
                 },
                 NodeKind::Ior => {
@@ -1788,7 +1788,7 @@ impl Evaluator<'_> {
 /// The pigment a colour or pigment value makes of `pigment` (see `Evaluator::pigment_value`).
 fn pigment_from(v: Value, span: crate::diag::Span, pigment: Pigment) -> Result<Pigment> {
     Ok(match v {
-        Value::Pigment(p) => p,
+        Value::Pigment(p) => *p,
         other => match colour5(&other) {
             Some(c) => Pigment {
                 kind: PigmentKind::Solid(to_colour(c)),

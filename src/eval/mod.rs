@@ -869,19 +869,21 @@ impl<'a> Evaluator<'a> {
             }
             NodeKind::Pigment => {
                 let base = self.default_texture.pigment.clone();
-                Value::Pigment(self.pigment(node, base)?)
+                Value::Pigment(Box::new(self.pigment(node, base)?))
             }
-            NodeKind::Normal => Value::Normal(self.normal(node, None)?),
+            NodeKind::Normal => Value::Normal(Box::new(self.normal(node, None)?)),
             NodeKind::SkySphere => Value::SkySphere(self.sky_sphere(node)?),
             NodeKind::Finish => {
                 let base = (*self.default_texture.finish).clone();
-                Value::Finish(self.finish_block(node, base)?)
+                Value::Finish(Box::new(self.finish_block(node, base)?))
             }
-            NodeKind::Texture => Value::Texture(self.texture(node)?),
+            NodeKind::Texture => Value::Texture(Box::new(self.texture(node)?)),
             NodeKind::LayeredTexture => self.layered_texture(node)?,
             NodeKind::Function => Value::Function(self.function(node)?),
             NodeKind::Spline => Value::Spline(Arc::new(self.spline(node)?)),
-            NodeKind::Interior => Value::Interior(self.interior(node, ir::Interior::default())?),
+            NodeKind::Interior => {
+                Value::Interior(Box::new(self.interior(node, ir::Interior::default())?))
+            }
             NodeKind::Material => Value::Material(Box::new(self.material(node)?)),
             NodeKind::ColourMap => Value::ColourMap(self.colour_map(node)?),
             NodeKind::PigmentMap => Value::PigmentMap(self.pigment_map(node, false)?),
@@ -889,7 +891,7 @@ impl<'a> Evaluator<'a> {
             NodeKind::NormalMap => Value::NormalMap(self.normal_map(node, false)?),
             NodeKind::SlopeMap => Value::SlopeMap(self.slope_map(node)?),
             NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
-            NodeKind::Transform => Value::Transform(self.transform(node)?),
+            NodeKind::Transform => Value::Transform(Box::new(self.transform(node)?)),
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
             }

@@ -103,7 +103,7 @@ impl Evaluator<'_> {
 
     fn declared_transform(&mut self, ident: &Node) -> Result<Transform, Diagnostic> {
         match self.lookup(ident)? {
-            super::Value::Transform(t) => Ok(t),
+            super::Value::Transform(t) => Ok(*t),
             other => Err(super::expr::type_error("a transform", &other, ident.span)),
         }
     }

@@ -38,17 +38,17 @@ pub enum Value {
     Vector(Vector),
     /// A colour: red, green, blue, filter, transmit.
     Colour([f64; 5]),
-    Pigment(ir::Pigment),
+    Pigment(Box<ir::Pigment>),
     /// A declared normal.
-    Normal(ir::Normal),
+    Normal(Box<ir::Normal>),
     /// A declared sky_sphere.
     SkySphere(ir::SkySphere),
-    Finish(ir::Finish),
-    Texture(ir::Texture),
+    Finish(Box<ir::Finish>),
+    Texture(Box<ir::Texture>),
     Object(Box<super::ObjectValue>),
-    Transform(ir::Transform),
+    Transform(Box<ir::Transform>),
     Camera(Box<super::CameraItems>),
-    Interior(ir::Interior),
+    Interior(Box<ir::Interior>),
     Fog(Box<super::FogItems>),
     /// `material {…}`: a texture, an interior texture and an interior, each only if given.
     Material(Box<MaterialValue>),
@@ -183,4 +183,15 @@ pub struct MaterialValue {
     pub interior_texture: Option<ir::Texture>,
     /// `interior {…}`.
     pub interior: Option<ir::Interior>,
+}
+
+#[cfg(test)]
+mod tests {
+    /// A value is small: an array of a million numbers (a height field a scene computes)
+    /// holds a million of them, and every word the reader binds keeps one alive. The large
+    /// materials are boxed.
+    #[test]
+    fn a_value_is_no_larger_than_a_vector() {
+        assert!(std::mem::size_of::<super::Value>() <= std::mem::size_of::<super::Vector>() + 8);
+    }
 }

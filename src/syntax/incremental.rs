@@ -80,6 +80,8 @@ struct Cached {
 #[derive(Clone)]
 enum Item {
     Node(Node),
+    /// A union's member: shared by the members read again from it (see [`again`]).
+    Member(Arc<Expr>),
     /// (Shared: a list's entries read again are [`ExprKind::Shifted`] to it.)
     Expr(Arc<Expr>),
 }
@@ -266,7 +268,7 @@ impl<'u> Reader<'u> {
     fn node(&mut self, rule: Rule, t: Token) -> Option<(Node, usize)> {
         match self.item(rule, t)? {
             (Item::Node(n), end) => Some((n, end)),
-            (Item::Expr(_), _) => None,
+            (Item::Expr(_) | Item::Member(_), _) => None,
         }
     }
 
@@ -274,7 +276,7 @@ impl<'u> Reader<'u> {
     fn expr(&mut self, rule: Rule, t: Token) -> Option<(Expr, usize)> {
         match self.item(rule, t)? {
             (Item::Expr(e), end) => Some((Arc::unwrap_or_clone(e), end)),
-            (Item::Node(_), _) => None,
+            (Item::Node(_) | Item::Member(_), _) => None,
         }
     }
 
@@ -292,6 +294,8 @@ impl<'u> Reader<'u> {
                 {
                     let shift = first_word as i64 - c.first_word as i64;
                     let item = match &c.item {
+                        // (Later items have later words: the shift is not negative.)
+                        Item::Member(e) => Item::Node(again(e, shift as u32)),
                         Item::Node(n) => {
                             let mut n = n.clone();
                             shift_node(&mut n, shift);
@@ -313,6 +317,12 @@ impl<'u> Reader<'u> {
         self.lower.offset = at;
         let item = if super::is_expr(pair.as_rule()) {
             Item::Expr(Arc::new(self.lower.expr(pair)))
+        } else if rule == Rule::union_item {
+            let node = self.lower.node(pair);
+            Item::Member(Arc::new(Expr {
+                span: node.span,
+                kind: ExprKind::Item(Box::new(node)),
+            }))
         } else {
             Item::Node(self.lower.node(pair))
         };
@@ -330,6 +340,10 @@ impl<'u> Reader<'u> {
                 });
             }
         }
+        let item = match item {
+            Item::Member(e) => Item::Node(again(&e, 0)),
+            other => other,
+        };
         Some((item, end))
     }
 
@@ -380,6 +394,23 @@ impl<'u> Reader<'u> {
             });
         }
         Some(key)
+    }
+}
+
+/// A union's member read again, `by` words after the one `shared` was read from: the node is
+/// shared, not copied (a union a loop filled holds many), and evaluation moves its slots.
+fn again(shared: &Arc<Expr>, by: u32) -> Node {
+    Node {
+        kind: NodeKind::Again,
+        span: shared.span,
+        word: String::new(),
+        word_span: shared.span,
+        args: vec![Expr {
+            span: shared.span,
+            kind: ExprKind::Shifted(Arc::clone(shared), by),
+        }],
+        children: Vec::new(),
+        slot: Slot::NONE,
     }
 }
 
@@ -437,6 +468,11 @@ fn shift_expr(e: &mut Expr, by: i64) {
 /// `node` with its shared entries copied, their slots moved (as a whole parse reads them).
 #[cfg(test)]
 pub(super) fn unshare(node: &mut Node) {
+    if let Some((inner, by)) = node.again() {
+        let mut copy = inner.clone();
+        shift_node(&mut copy, i64::from(by));
+        *node = copy;
+    }
     for e in &mut node.args {
         if let ExprKind::Shifted(inner, by) = &e.kind {
             let mut copy = (**inner).clone();

@@ -274,6 +274,9 @@ pub enum NodeKind {
     Unknown,
     /// A colour standing alone among items (from a directive's or a macro's body).
     ColourItem,
+    /// A union's member a loop made again: the member as first read, shared, and how far its
+    /// words' slots move ([`Node::again`]).
+    Again,
 }
 
 /// A construct: keyword, expressions, children.
@@ -293,6 +296,23 @@ pub struct Node {
     pub children: Vec<Node>,
     /// For a declared name ([`NodeKind::IdentRef`]): its binding in the unit read.
     pub slot: Slot,
+}
+
+impl Node {
+    /// For a member a loop made again ([`NodeKind::Again`]): the member as first read, and how
+    /// many words later this one's words are bound.
+    pub fn again(&self) -> Option<(&Node, u32)> {
+        match (self.kind, self.args.as_slice()) {
+            (NodeKind::Again, [shared]) => match &shared.kind {
+                ExprKind::Shifted(inner, by) => match &inner.kind {
+                    ExprKind::Item(node) => Some((node, *by)),
+                    _ => None,
+                },
+                _ => None,
+            },
+            _ => None,
+        }
+    }
 }
 
 /// An expression with its span.

@@ -228,6 +228,18 @@ fn big_containers_read_item_by_item_as_the_whole_parse_reads_them() {
             assert_eq!(format!("{items:?}"), format!("{whole:?}"), "{head} … ×{n}");
         }
     }
+    // A union's members read again share the node first read (a union a loop filled holds
+    // one node per place in the loop's body, not one per member).
+    let unit = looped_unit("union {", "sphere { <I, 0, 0>, R }", 50, "}");
+    let union = incremental::read(&unit).expect("read item by item");
+    let shared: Vec<_> = union.children.iter().filter_map(Node::again).collect();
+    assert_eq!(shared.len(), 50);
+    // (The last is read on its own: a different token follows it.)
+    let first = std::ptr::from_ref(shared[0].0);
+    assert!(shared[..49].iter().all(|(n, _)| std::ptr::eq(*n, first)));
+    // (Each member's words are bound three slots after the one before's: `sphere`, `I`, `R`.)
+    let shifts: Vec<u32> = shared[..49].iter().map(|(_, by)| *by).collect();
+    assert_eq!(shifts, (0..49).map(|i| 3 * i).collect::<Vec<u32>>());
     // Out of order or wrong: not read item by item (the whole parse reports it).
     for text in [
         "mesh2 { face_indices { 1, <0, 1, 2> } vertex_vectors { 1, 0 } }",
