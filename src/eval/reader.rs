@@ -228,6 +228,13 @@ pub(super) struct Emitted {
     unclosed: Option<Span>,
 }
 
+/// Whether a word bound to `binding` ends a value where a `(` follows it. In POV-Ray only a
+/// function or a spline is called with `(`: after any other declared value, a `(` starts the
+/// next one (`sphere { Centre (R + 1) }`), so the grammar is shown a comma there.
+fn ends_value(binding: Option<&Arc<Value>>) -> bool {
+    binding.is_some_and(|v| !matches!(**v, Value::Function(_) | Value::Spline(_)))
+}
+
 /// Builds a unit from the tokens handed to it.
 #[derive(Default)]
 struct Emitter {
@@ -239,6 +246,8 @@ struct Emitter {
     last: Option<(FileId, u32, u64)>,
     /// A bracket the scene ended without closing.
     unclosed: Option<Span>,
+    /// The last token was a word bound to a value that cannot be called (see [`ends_value`]).
+    ends_value: bool,
 }
 
 /// The text a value computed by the reader stands as: a word, bound to the value.
@@ -248,6 +257,14 @@ impl Emitter {
     /// Appends `tok` (of file text `text`) to the unit.
     fn push(&mut self, tok: &Tok, text: &str) {
         self.repeat |= tok.repeat;
+        if self.ends_value
+            && !tok.stand_in
+            && text.as_bytes().get(tok.start as usize) == Some(&b'(')
+        {
+            self.separate(tok);
+        }
+        self.ends_value =
+            (tok.stand_in || tok.kind == TokenKind::Word) && ends_value(tok.binding.as_ref());
         let u = &mut self.unit;
         if tok.stand_in {
             if !u.text.is_empty() {
@@ -303,6 +320,23 @@ impl Emitter {
             self.bindings.push(tok.binding.clone());
         }
         self.last = Some((tok.file, tok.end, tok.run));
+    }
+
+    /// A comma before `tok` (a `(` after a value that cannot be called): a piece of its own,
+    /// standing for no text of the file.
+    fn separate(&mut self, tok: &Tok) {
+        let u = &mut self.unit;
+        u.text.push(' ');
+        u.pieces.push(Piece {
+            at: u.text.len() as u32,
+            len: 1,
+            file: tok.file,
+            start: tok.start,
+            src_len: 0,
+        });
+        self.contexts.push(tok.context.clone());
+        u.text.push(',');
+        self.last = None;
     }
 
     /// A run of tokens read in one pass (`Evaluator::plain_run`): the text of `run` (its
@@ -981,6 +1015,8 @@ impl<'a> Evaluator<'a> {
         let mut run: Option<(usize, usize)> = None;
         let mut words: Vec<(u32, Option<Arc<Value>>)> = Vec::new();
         let mut stop = lexer.position();
+        // Whether the last token was a word bound to a value that cannot be called.
+        let mut last_ends_value = false;
         loop {
             let before = lexer.position();
             let t = match lexer.next() {
@@ -989,6 +1025,7 @@ impl<'a> Evaluator<'a> {
                 Ok(None) | Err(_) => break,
             };
             let word = t.text(&text);
+            let mut this_ends_value = false;
             match t.kind {
                 TokenKind::Word => {
                     if self.macros.contains_key(word)
@@ -998,7 +1035,15 @@ impl<'a> Evaluator<'a> {
                         stop = before;
                         break;
                     }
-                    words.push((t.start, self.env.get(word).cloned()));
+                    let binding = self.env.get(word).cloned();
+                    this_ends_value = ends_value(binding.as_ref());
+                    words.push((t.start, binding));
+                }
+                // (A `(` after a value that cannot be called is read the usual way: the
+                // grammar is shown a comma before it.)
+                TokenKind::Punct if word == "(" && last_ends_value => {
+                    stop = before;
+                    break;
                 }
                 TokenKind::Punct => match word {
                     "{" | "(" | "[" => open.push(Span::new(file, t.start as usize, t.end as usize)),
@@ -1014,6 +1059,7 @@ impl<'a> Evaluator<'a> {
                 }
             }
             run = Some((run.map_or(t.start as usize, |(s, _)| s), t.end as usize));
+            last_ends_value = this_ends_value;
             stop = lexer.position();
             if open.is_empty() {
                 break;
@@ -1037,6 +1083,8 @@ impl<'a> Evaluator<'a> {
             unread: false,
         };
         em.push_run(&first, &text, &mut words);
+        // (A run ending with such a word: a `(` after it starts another value.)
+        em.ends_value = last_ends_value;
         Ok(true)
     }
 
