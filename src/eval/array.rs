@@ -9,7 +9,8 @@
 use super::Evaluator;
 use super::value::{Array, Value};
 use crate::diag::{Diagnostic, Span};
-use crate::syntax::{Expr, ExprKind, Node, NodeKind, Slot};
+use crate::syntax::view::Element;
+use crate::syntax::{Expr, ExprKind, Node, NodeKind, Slot, View};
 
 type Result<T> = std::result::Result<T, Diagnostic>;
 
@@ -28,12 +29,11 @@ impl Evaluator<'_> {
     /// `array[d1][d2]… { … }`.
     pub(super) fn array_value(&mut self, node: &Node) -> Result<Value> {
         let mut dims = Vec::new();
-        for sub in node
-            .children
-            .iter()
-            .filter(|c| c.kind == NodeKind::Subscript)
-        {
-            let n = self.float(&sub.args[0])?.trunc();
+        for (sub, size) in node.children.iter().filter_map(|c| match c.view() {
+            View::Subscript(size) => Some((c, size)),
+            _ => None,
+        }) {
+            let n = self.float(size)?.trunc();
             if !(1.0..=MAX_ELEMENTS as f64).contains(&n) {
                 return Err(Diagnostic::error(
                     format!("an array dimension must be from 1 to {MAX_ELEMENTS}, found {n}"),
@@ -82,17 +82,22 @@ impl Evaluator<'_> {
             ));
         }
         for elem in elems {
-            let nested = elem
-                .children
-                .first()
-                .filter(|c| c.kind == NodeKind::ArrayInit);
+            let nested = match elem.view() {
+                View::ArrayElem(Element::Item(inner)) if inner.kind == NodeKind::ArrayInit => {
+                    Some(inner)
+                }
+                _ => None,
+            };
             match (nested, dims.len()) {
                 (Some(inner), n) if n > 1 => self.array_init(inner, &dims[1..], out)?,
                 (None, 1) => {
-                    let value = match elem.children.first() {
-                        Some(item) if item.kind == NodeKind::Array => self.array_value(item)?,
-                        Some(item) => self.item_value(item)?,
-                        None => self.eval(&elem.args[0])?,
+                    let value = match elem.view() {
+                        View::ArrayElem(Element::Item(item)) if item.kind == NodeKind::Array => {
+                            self.array_value(item)?
+                        }
+                        View::ArrayElem(Element::Item(item)) => self.item_value(item)?,
+                        View::ArrayElem(Element::Value(value)) => self.eval(value)?,
+                        _ => return Err(super::malformed(elem, "an array element")),
                     };
                     if let Some(Some(first)) = out.first() {
                         same_kind(first, &value, elem.span)?;
@@ -259,14 +264,14 @@ impl Evaluator<'_> {
                 None => Err(self.unknown_word(&node.word, node.span)),
             };
         }
-        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        let subs: Vec<&Expr> = subscripts(&node.children);
         self.element(&node.word, node.slot, node.word_span, &subs, node.span)
     }
 
     /// `#ifdef (A[i])`: whether the element has been assigned (out of range is an error, as in
     /// POV-Ray).
     pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
-        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
         let Some(Value::Array(array)) = self.env.get(&node.word).map(|v| &**v) else {
             unreachable!("element_path checked that the name is an array");
@@ -276,7 +281,7 @@ impl Evaluator<'_> {
 
     /// `#undef A[i]`: the element has no value again.
     pub(super) fn unassign_element(&mut self, node: &Node) -> Result<()> {
-        let subs: Vec<&Expr> = node.children.iter().map(|s| &s.args[0]).collect();
+        let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
         let Some(Value::Array(array)) = self.env.get_mut(&node.word).map(std::sync::Arc::make_mut)
         else {
@@ -294,7 +299,7 @@ impl Evaluator<'_> {
         subs: &[&Node],
         value: Value,
     ) -> Result<()> {
-        let exprs: Vec<&Expr> = subs.iter().map(|s| &s.args[0]).collect();
+        let exprs: Vec<&Expr> = subs.iter().filter_map(|s| subscript(s)).collect();
         let path = self.element_path(&name.word, Holder::Declared, name.span, &exprs)?;
         let Some(Value::Array(array)) = self.env.get_mut(&name.word).map(std::sync::Arc::make_mut)
         else {
@@ -402,4 +407,17 @@ fn same_kind(existing: &Value, new: &Value, span: Span) -> Result<()> {
         ),
         span,
     ))
+}
+
+/// The index of a subscript (`[i]`).
+fn subscript(node: &Node) -> Option<&Expr> {
+    match node.view() {
+        View::Subscript(index) => Some(index),
+        _ => None,
+    }
+}
+
+/// The indices of an element's subscripts (`A[i][j]`).
+fn subscripts(nodes: &[Node]) -> Vec<&Expr> {
+    nodes.iter().filter_map(subscript).collect()
 }

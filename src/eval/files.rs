@@ -13,7 +13,7 @@
 
 use super::{Evaluator, Result, Value, value::Vector};
 use crate::diag::{Diagnostic, FileId, Span};
-use crate::syntax::{Node, NodeKind};
+use crate::syntax::{Expr, Node, View};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -186,11 +186,11 @@ pub fn format_g(v: f64) -> String {
 impl Evaluator<'_> {
     /// `#fopen`, `#fclose`, `#read`, `#write`.
     pub(super) fn file_directive(&mut self, item: &Node) -> Result<()> {
-        match item.kind {
-            NodeKind::FileOpen => self.fopen(item),
-            NodeKind::FileClose => {
+        match item.view() {
+            View::FileOpen { name, file, mode } => self.fopen(item, name, file, mode),
+            View::FileClose { name } => {
                 // Closing a name that is not an open file does nothing, as in POV-Ray.
-                let name = &item.children[0].word;
+                let name = &name.word;
                 if let Some(Value::File(id)) = self.env.get(name).map(|v| &**v) {
                     let id = *id;
                     self.close_file(id, item.span)?;
@@ -198,20 +198,26 @@ impl Evaluator<'_> {
                 }
                 Ok(())
             }
-            NodeKind::FileRead => self.read_values(item),
-            _ => self.write_values(item),
+            View::FileRead { file, targets } => self.read_values(file, targets),
+            View::FileWrite { file, items } => self.write_values(item, file, items),
+            _ => Err(super::malformed(item, "a file directive")),
         }
     }
 
-    fn fopen(&mut self, item: &Node) -> Result<()> {
-        let name_node = &item.children[0];
-        let mode = item.children[1].word.as_str();
-        let name = self.string(&item.args[0])?;
-        let span = item.args[0].span;
+    fn fopen(
+        &mut self,
+        item: &Node,
+        name_node: &Node,
+        file: &Expr,
+        mode_node: &Node,
+    ) -> Result<()> {
+        let mode = mode_node.word.as_str();
+        let name = self.string(file)?;
+        let span = file.span;
         if !matches!(mode, "read" | "write" | "append") {
             return Err(Diagnostic::error(
                 format!("expected `read`, `write` or `append`, found `{mode}`"),
-                item.children[1].span,
+                mode_node.span,
             ));
         }
         // Opening a name again first closes the file it held, as POV-Ray replaces the symbol.
@@ -302,8 +308,7 @@ impl Evaluator<'_> {
     }
 
     /// `#read (F, A, B[i], …)`.
-    fn read_values(&mut self, item: &Node) -> Result<()> {
-        let file_node = &item.children[0];
+    fn read_values(&mut self, file_node: &Node, targets: &[Node]) -> Result<()> {
         let id = self.user_file(file_node)?;
         let Some(UserFile::Read { file, pos }) = &self.files.open[id] else {
             return Err(Diagnostic::error(
@@ -313,7 +318,7 @@ impl Evaluator<'_> {
         };
         let (file, mut pos) = (*file, *pos);
         let mut at_end = false;
-        for target in &item.children[1..] {
+        for target in targets {
             let text = self.sources.file(file).text.clone();
             let mut lexer = Lexer { text: &text, pos };
             let value = read_value(&mut lexer).map_err(|(message, at)| {
@@ -348,8 +353,7 @@ impl Evaluator<'_> {
     }
 
     /// `#write (F, value, …)`.
-    fn write_values(&mut self, item: &Node) -> Result<()> {
-        let file_node = &item.children[0];
+    fn write_values(&mut self, item: &Node, file_node: &Node, items: &[Node]) -> Result<()> {
         let id = self.user_file(file_node)?;
         if !matches!(self.files.open[id], Some(UserFile::Write { .. })) {
             return Err(Diagnostic::error(
@@ -358,9 +362,11 @@ impl Evaluator<'_> {
             ));
         }
         let mut bytes: Vec<u8> = Vec::new();
-        for w in &item.children[1..] {
-            let expr = &w.args[0];
-            match w.children.first() {
+        for w in items {
+            let View::WriteItem { value: expr, kind } = w.view() else {
+                return Err(super::malformed(w, "a value of #write"));
+            };
+            match kind {
                 Some(kind) => {
                     let v = self.eval(expr)?;
                     let Some((c, n)) = v.components() else {

@@ -10,7 +10,7 @@ use super::{
     expr::{STRING_FUNCTIONS, check_arity, type_error},
 };
 use crate::diag::{Diagnostic, Span};
-use crate::syntax::{self, ExprKind, Node, NodeKind, ValueSyntax};
+use crate::syntax::{self, ExprKind, Node, NodeKind, ValueSyntax, View};
 use std::sync::Arc;
 
 /// Longest string a string function may make (a string doubled in a loop stops here).
@@ -48,15 +48,15 @@ impl<'a> Evaluator<'a> {
     pub(super) fn each_item(&mut self, items: &[Node], f: &mut Handler<'_, 'a>) -> Result<()> {
         for item in items {
             self.charge(1, "statement", item.word_span)?;
-            match item.again() {
+            match item.view() {
                 // (A member a loop made again: its words are bound `by` slots further on.)
-                Some((member, by)) => {
+                View::Again { member, by } => {
                     self.slot_shift += by;
                     let result = f(self, member);
                     self.slot_shift -= by;
                     result?
                 }
-                None => f(self, item)?,
+                _ => f(self, item)?,
             }
         }
         Ok(())
@@ -91,13 +91,16 @@ impl<'a> Evaluator<'a> {
         local: Option<usize>,
         value: Value,
     ) -> Result<()> {
-        let deprecation = node
-            .children
-            .first()
-            .filter(|c| c.kind == NodeKind::Deprecation);
-        let children = &node.children[usize::from(deprecation.is_some())..];
-        let name = children[0].word.clone();
-        let subs: Vec<&Node> = children
+        let View::Declare {
+            deprecation,
+            name: name_node,
+            subscripts,
+        } = node.view()
+        else {
+            return Err(super::malformed(node, "a declaration"));
+        };
+        let name = name_node.word.clone();
+        let subs: Vec<&Node> = subscripts
             .iter()
             .filter(|c| c.kind == NodeKind::Subscript)
             .collect();
@@ -105,14 +108,17 @@ impl<'a> Evaluator<'a> {
             if let Value::Unsupported(d) = value {
                 return Err(*d);
             }
-            return self.assign_element(&children[0], &subs, value);
+            return self.assign_element(name_node, &subs, value);
         }
         if let Some(depth) = local {
             self.shadow_in(&name, depth);
         }
         match deprecation {
             Some(d) => {
-                let message = self.string(&d.args[0])?;
+                let View::Deprecation(message) = d.view() else {
+                    return Err(super::malformed(d, "deprecated"));
+                };
+                let message = self.string(message)?;
                 self.deprecated.insert(name.clone(), message);
             }
             None => {

@@ -9,7 +9,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::func::spline::{Spline, SplineKind};
 use crate::func::{Function, Internal, Math1, Math2, Native, Op};
 use crate::ir;
-use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, Slot, UnOp};
+use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, Slot, UnOp, View};
 use std::sync::Arc;
 
 impl Evaluator<'_> {
@@ -62,12 +62,19 @@ impl Evaluator<'_> {
                 .native_function(body)
                 .map(|n| Arc::new(Function::native(n)));
         }
-        let body = &node.args[0];
+        let View::Function { body: Some(body) } = node.view() else {
+            return Err(Diagnostic::error(
+                "this function has no body",
+                node.word_span,
+            ));
+        };
         // `function { internal(N) }`: one of POV-Ray's built-in functions.
         if let ExprKind::Call(name, _, _, args) = &body.kind {
             if name == "internal" {
-                check_arity("internal", 1, args.len(), body.span)?;
-                let n = self.float(&args[0])? as i64;
+                let [n] = args.as_slice() else {
+                    return Err(check_arity("internal", 1, args.len(), body.span).unwrap_err());
+                };
+                let n = self.float(n)? as i64;
                 return match Internal::numbered(n) {
                     Some(f) => Ok(Arc::new(Function::internal(f))),
                     None => Err(Diagnostic::error(
@@ -94,20 +101,24 @@ impl Evaluator<'_> {
     /// `spline { [S] [kind] t, V … }`: a declared spline copied first (its kind kept unless
     /// another is named), then the entries, as POV-Ray reads them.
     pub(super) fn spline(&mut self, node: &Node) -> Result<Spline> {
-        let mut args = node.args.as_slice();
-        let mut spline = match args.first().map(|e| &e.kind) {
-            Some(ExprKind::Ident(_, slot))
-                if matches!(self.bound(*slot), Some(Value::Spline(_))) =>
-            {
-                let Some(Value::Spline(s)) = self.bound(*slot) else {
-                    unreachable!()
-                };
-                let s = (**s).clone();
-                args = &args[1..];
-                s
-            }
-            _ => Spline::new(SplineKind::Linear),
+        let View::Spline { values } = node.view() else {
+            return Err(super::malformed(node, "a spline"));
         };
+        // (A declared spline first: copied.)
+        let declared = match values {
+            [
+                Expr {
+                    kind: ExprKind::Ident(_, slot),
+                    ..
+                },
+                rest @ ..,
+            ] => match self.bound(*slot) {
+                Some(Value::Spline(s)) => Some(((**s).clone(), rest)),
+                _ => None,
+            },
+            _ => None,
+        };
+        let (mut spline, args) = declared.unwrap_or((Spline::new(SplineKind::Linear), values));
         for item in &node.children {
             match SplineKind::named(&item.word) {
                 Some(named) if item.kind == NodeKind::IdentRef => spline = spline.with_kind(named),
@@ -116,24 +127,28 @@ impl Evaluator<'_> {
                 _ => return Err(self.unknown_item(item, "spline")),
             }
         }
-        if args.len() % 2 != 0 {
+        let pairs = args.chunks_exact(2);
+        if let [last] = pairs.remainder() {
             return Err(Diagnostic::error(
                 "a spline's entries come in pairs: a parameter, then its vector",
-                args[args.len() - 1].span,
+                last.span,
             ));
         }
-        let mut entries = Vec::with_capacity(args.len() / 2);
-        for pair in args.chunks(2) {
-            let t = self.float(&pair[0])?;
-            let v = self.eval(&pair[1])?;
+        let mut entries = Vec::with_capacity(pairs.len());
+        for pair in pairs {
+            let [t_expr, v_expr] = pair else {
+                continue;
+            };
+            let t = self.float(t_expr)?;
+            let v = self.eval(v_expr)?;
             let (values, terms) = match v {
                 // (A float stands for a vector of it, as POV-Ray promotes it.)
                 Value::Float(f) => ([f; 5], 1),
                 Value::Vector(v) => (v.c, v.len),
                 Value::Colour(c) => (c, 5),
-                other => return Err(type_error("a vector", &other, pair[1].span)),
+                other => return Err(type_error("a vector", &other, v_expr.span)),
             };
-            self.charge(1, "spline entry", pair[0].span)?;
+            self.charge(1, "spline entry", t_expr.span)?;
             entries.push((t, values, terms));
         }
         spline.extend(entries);

@@ -18,7 +18,7 @@ use super::value::Value;
 use crate::diag::Diagnostic;
 use crate::ir::{self, ImageMap, Pattern, PatternKind};
 use crate::pattern::image::{ImageUse, Interpolation, MapType};
-use crate::syntax::{Node, NodeKind};
+use crate::syntax::{Node, NodeKind, View};
 use std::path::Path;
 use std::sync::Arc;
 
@@ -628,7 +628,9 @@ impl super::Evaluator<'_> {
     /// (the colours of an image_map decoded to working gamma; the others' numbers as the file
     /// holds them, as POV-Ray reads them) and what it is for.
     pub(super) fn image_map(&mut self, node: &Node) -> super::Result<ImageRead> {
-        let file_expr = &node.args[0];
+        let (View::ImageMap(file_expr) | View::MaterialMap(file_expr)) = node.view() else {
+            return Err(super::malformed(node, "an image"));
+        };
         let file = &match self.eval(file_expr)? {
             Value::Str(s) => s,
             other => return Err(type_error("a file name (a string)", &other, file_expr.span)),
@@ -642,20 +644,20 @@ impl super::Evaluator<'_> {
         let mut see_through: Vec<SeeThrough> = Vec::new();
         let (mut file_type, mut type_span, mut gamma) = (None, file_expr.span, None);
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::ImageOrientation => {
-                    ev.eval(&item.args[0])?;
+            match (item.kind, item.view()) {
+                (_, View::ImageOrientation(value)) => {
+                    ev.eval(value)?;
                     ev.warn(Diagnostic::warning(
                         "an old orientation vector before the image (POV-Ray's syntax before 3.0): ignored, as POV-Ray ignores it",
                         item.span,
                     ));
                 }
-                NodeKind::ImageType => {
+                (NodeKind::ImageType, _) => {
                     file_type = FileType::from_keyword(&item.word);
                     type_span = item.span;
                 }
-                NodeKind::ImageGamma => {
-                    gamma = Some(match item.args.first() {
+                (_, View::ImageGamma { gamma: given }) => {
+                    gamma = Some(match given {
                         None => Encoding::Srgb,
                         Some(g) => {
                             let g_value = ev.float(g)?;
@@ -666,9 +668,9 @@ impl super::Evaluator<'_> {
                         }
                     })
                 }
-                NodeKind::Once => once = true,
-                NodeKind::MapType => {
-                    let t = ev.float(&item.args[0])?;
+                (NodeKind::Once, _) => once = true,
+                (_, View::MapType(value)) => {
+                    let t = ev.float(value)?;
                     map_type = match t as i64 {
                         1 => MapType::Spherical,
                         2 => MapType::Cylindrical,
@@ -679,20 +681,20 @@ impl super::Evaluator<'_> {
                         _ => {
                             return Err(Diagnostic::error(
                                 "invalid map_type: an image_map takes 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus)",
-                                item.args[0].span,
+                                value.span,
                             ));
                         }
                     };
                 }
-                NodeKind::Interpolate => {
-                    let n = ev.float(&item.args[0])?;
+                (_, View::Interpolate(value)) => {
+                    let n = ev.float(value)?;
                     interpolation = match n as i64 {
                         0 | 1 => {
                             // (POV-Ray 3.7 stops with "Cannot parse input" here; trace reads
                             // the scene and says so.)
                             ev.warn(Diagnostic::warning(
                                 format!("`interpolate {}` is refused by POV-Ray 3.7 (it takes 2, 3 or 4); read as no interpolation", n as i64),
-                                item.args[0].span,
+                                value.span,
                             ));
                             Interpolation::Nearest
                         }
@@ -702,28 +704,28 @@ impl super::Evaluator<'_> {
                         _ => {
                             return Err(Diagnostic::error(
                                 "invalid interpolate value: 2 (bilinear), 3 (bicubic) or 4 (normalised distance)",
-                                item.args[0].span,
+                                value.span,
                             ));
                         }
                     };
                 }
-                NodeKind::ImageSeeThrough if role == "image_map" => {
+                (_, View::ImageSeeThrough { index, amount }) if role == "image_map" => {
                     let filter = item.word == "filter";
-                    let (index, value) = match item.args.as_slice() {
-                        [v] => (None, ev.float(v)?),
-                        [i, v] => (Some(((ev.float(i)? + 0.01) as i64, i.span)), ev.float(v)?),
-                        _ => unreachable!("the grammar gives one or two values"),
+                    let index = match index {
+                        Some(i) => Some(((ev.float(i)? + 0.01) as i64, i.span)),
+                        None => None,
                     };
+                    let value = ev.float(amount)?;
                     see_through.push((filter, index, value as f32));
                 }
-                NodeKind::ImageUse if role != "image_map" => match item.word.as_str() {
+                (NodeKind::ImageUse, _) if role != "image_map" => match item.word.as_str() {
                     "use_alpha" if role == "image_pattern" => use_ = ImageUse::Alpha,
                     "use_alpha" => return Err(ev.unknown_item(item, role)),
                     "use_index" => (use_, use_index) = (ImageUse::Colour, true),
                     _ => (use_, use_index) = (ImageUse::Colour, false),
                 },
-                NodeKind::BumpSize if role == "bump_map" => {
-                    bump_size = Some(ev.float(&item.args[0])?)
+                (_, View::BumpSize(size)) if role == "bump_map" => {
+                    bump_size = Some(ev.float(size)?)
                 }
                 _ => return Err(ev.unknown_item(item, role)),
             }

@@ -13,7 +13,7 @@ use crate::pattern::fractal::{self, Fractal, FractalKind};
 use crate::pattern::image::ImageUse;
 use crate::pattern::pavement;
 use crate::pattern::{BlackHole, Mapping, MappingWarp};
-use crate::syntax::{Node, NodeKind};
+use crate::syntax::{Expr, Node, NodeKind, View};
 use std::sync::Arc;
 
 /// `mortar` as POV-Ray keeps it: 2e-10 less, in single precision.
@@ -38,38 +38,56 @@ impl Evaluator<'_> {
             .children
             .iter()
             .find(|c| c.kind == NodeKind::SlopeBlock);
-        let (args, point_at) = match block {
-            Some(b) => (
-                b.args.as_slice(),
-                b.children.iter().any(|c| c.kind == NodeKind::SlopePointAt),
-            ),
-            None => (item.args.as_slice(), false),
-        };
-        let Some(first) = args.first() else {
-            return Err(Diagnostic::error(
-                "`slope` needs a direction: slope y",
-                item.span,
-            ));
-        };
-        let range =
-            |ev: &mut Self, rest: &[crate::syntax::Expr], what: &str| -> Result<(f64, f64)> {
-                let low = rest
-                    .first()
-                    .map(|e| ev.float(e))
-                    .transpose()?
-                    .unwrap_or(0.0);
-                let high = rest.get(1).map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
-                if high != 0.0 && high == low {
-                    ev.warn(Diagnostic::warning(
-                        format!("zero {what} range, ignoring"),
-                        rest[1].span,
-                    ));
-                    return Ok((0.0, 0.0));
+        type Range<'e> = (Option<&'e Expr>, Option<&'e Expr>);
+        let (first, slope_limits, point_at): (_, Range<'_>, _) =
+            match (block.map(Node::view), item.view()) {
+                (
+                    Some(View::SlopeBlock {
+                        direction,
+                        low,
+                        high,
+                    }),
+                    _,
+                ) => {
+                    let point_at = block.is_some_and(|b| {
+                        b.children.iter().any(|c| c.kind == NodeKind::SlopePointAt)
+                    });
+                    (direction, (low, high), point_at)
                 }
-                Ok((low, high - low))
+                (
+                    None,
+                    View::Pattern {
+                        values: [direction, rest @ ..],
+                    },
+                ) => {
+                    let limits = match rest {
+                        [] => (None, None),
+                        [low] => (Some(low), None),
+                        [low, high, ..] => (Some(low), Some(high)),
+                    };
+                    (direction, limits, false)
+                }
+                _ => {
+                    return Err(Diagnostic::error(
+                        "`slope` needs a direction: slope y",
+                        item.span,
+                    ));
+                }
             };
+        let range = |ev: &mut Self, (low, high): Range<'_>, what: &str| -> Result<(f64, f64)> {
+            let low_value = low.map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
+            let high_value = high.map(|e| ev.float(e)).transpose()?.unwrap_or(0.0);
+            if let Some(high) = high.filter(|_| high_value != 0.0 && high_value == low_value) {
+                ev.warn(Diagnostic::warning(
+                    format!("zero {what} range, ignoring"),
+                    high.span,
+                ));
+                return Ok((0.0, 0.0));
+            }
+            Ok((low_value, high_value - low_value))
+        };
         let direction = self.vec3(first)?;
-        let slope_range = range(self, &args[1..], "slope")?;
+        let slope_range = range(self, slope_limits, "slope")?;
         let (mut altitude, mut altitude_range) = (glam::DVec3::ZERO, (0.0, 0.0));
         if let Some(alt) = block.and_then(|b| {
             b.children
@@ -82,8 +100,16 @@ impl Evaluator<'_> {
                     alt.word_span,
                 ));
             }
-            altitude = self.vec3(&alt.args[0])?;
-            altitude_range = range(self, &alt.args[1..], "gradient")?;
+            let View::SlopeAltitude {
+                altitude: a,
+                low,
+                high,
+            } = alt.view()
+            else {
+                return Err(super::malformed(alt, "altitude"));
+            };
+            altitude = self.vec3(a)?;
+            altitude_range = range(self, (low, high), "gradient")?;
         }
         if point_at {
             return Ok(crate::pattern::Slope {
@@ -135,7 +161,10 @@ impl crate::func::Native for InsideTest {
     }
 
     fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
-        let inside = self.0.inside(glam::DVec3::new(args[0], args[1], args[2]));
+        let &[x, y, z, ..] = args else {
+            return [0.0; 5];
+        };
+        let inside = self.0.inside(glam::DVec3::new(x, y, z));
         [f64::from(u8::from(inside)), 0.0, 0.0, 0.0, 0.0]
     }
 }
@@ -153,7 +182,7 @@ fn after_uv_mapping(node: &Node) -> Option<Node> {
         word: node.word.clone(),
         word_span: node.word_span,
         args: Vec::new(),
-        children: node.children[i + 1..].to_vec(),
+        children: node.children.iter().skip(i + 1).cloned().collect(),
         slot: node.slot,
     })
 }
@@ -261,7 +290,7 @@ impl Evaluator<'_> {
                 }
                 // `no_bump_scale` on a texture is its normal's (none: nothing), as in POV-Ray.
                 NodeKind::PatternModifier if item.word == "no_bump_scale" && texture.map.is_none() => {
-                    let on = match item.args.first() {
+                    let on = match super::modifier_value(item) {
                         Some(e) => ev.float(e)? != 0.0,
                         None => true,
                     };
@@ -449,17 +478,21 @@ impl Evaluator<'_> {
             if e.kind != NodeKind::MapEntry {
                 return Err(ev.unknown_item(e, what));
             }
-            let value = match e.args.first() {
-                Some(v) => single(ev.float(v)?),
-                None if average => 1.0,
-                None => {
+            let View::MapEntry { values, body: Some(body) } = e.view() else {
+                return Err(super::malformed(e, "a map entry"));
+            };
+            let value = match values {
+                [v] => single(ev.float(v)?),
+                [] if average => 1.0,
+                [_, _, ..] => return Err(super::malformed(e, "a map entry")),
+                [] => {
                     return Err(Diagnostic::error(
                         format!("this {what} entry needs its value first (only an average's entries may leave it out)"),
                         e.span,
                     ));
                 }
             };
-            entries.push((value, entry(ev, &e.children[0])?));
+            entries.push((value, entry(ev, body)?));
             Ok(())
         })?;
         if entries.is_empty() {
@@ -483,24 +516,26 @@ impl Evaluator<'_> {
                 transform: None,
             });
         }
-        if let Some(e) = node.args.first() {
+        if let View::Pigment { colour: Some(e) } | View::PigmentPattern { colour: Some(e) } =
+            node.view()
+        {
             pigment = self.pigment_value(e, pigment)?;
         }
         let mut map: Option<(PigmentMap, crate::diag::Span)> = None;
         let mut list: Vec<(Pigment, crate::diag::Span)> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
+            match (item.kind, item.view()) {
                 // A colour after a map entry's pattern (`[0.5 rgb 1]`).
-                NodeKind::ColourItem => {
-                    pigment = ev.pigment_value(&item.args[0], pigment.clone())?
+                (_, View::ColourItem(value)) => {
+                    pigment = ev.pigment_value(value, pigment.clone())?
                 }
                 // A declared colour or pigment standing alone among the items.
-                NodeKind::IdentRef | NodeKind::Unknown if ev.names_colour_alone(item) => {
+                (NodeKind::IdentRef | NodeKind::Unknown, _) if ev.names_colour_alone(item) => {
                     let v = ev.lookup(item)?;
                     ev.warn_bare_colour(&v, item.word_span, "in a pigment");
                     pigment = pigment_from(v, item.word_span, pigment.clone())?;
                 }
-                NodeKind::Pattern => {
+                (NodeKind::Pattern, _) => {
                     let (kind, rest) = ev.pattern_kind(item)?;
                     normal_only(&kind, item)?;
                     let map = PigmentMap::Colours(ev.pattern_map(item, &kind, rest)?);
@@ -510,14 +545,14 @@ impl Evaluator<'_> {
                     }));
                 }
                 // The colour of POV-Ray's low-quality previews: read, not used.
-                NodeKind::PatternModifier
+                (NodeKind::PatternModifier, _)
                     if matches!(item.word.as_str(), "quick_color" | "quick_colour") =>
                 {
-                    if let Some(e) = item.args.first() {
+                    if let Some(e) = super::modifier_value(item) {
                         ev.eval(e)?;
                     }
                 }
-                NodeKind::Warp => match &mut pigment.kind {
+                (NodeKind::Warp, _) => match &mut pigment.kind {
                     PigmentKind::Pattern(p) => ev.warp(item, &mut p.pattern, &mut pigment.transform)?,
                     _ => {
                         return Err(Diagnostic::error(
@@ -526,7 +561,7 @@ impl Evaluator<'_> {
                         ));
                     }
                 },
-                NodeKind::PatternModifier => match &mut pigment.kind {
+                (NodeKind::PatternModifier, _) => match &mut pigment.kind {
                     PigmentKind::Pattern(p) => ev.pattern_modifier(item, &mut p.pattern)?,
                     _ => {
                         return Err(Diagnostic::error(
@@ -535,7 +570,7 @@ impl Evaluator<'_> {
                         ));
                     }
                 },
-                NodeKind::ImageMap => {
+                (NodeKind::ImageMap, _) => {
                     let read = ev.image_map(item)?;
                     match read.kind {
                         ImageRole::Colours => {
@@ -557,16 +592,16 @@ impl Evaluator<'_> {
                         }
                     }
                 }
-                NodeKind::ColourMap => {
+                (NodeKind::ColourMap, _) => {
                     map = Some((PigmentMap::Colours(ev.colour_map(item)?), item.word_span))
                 }
-                NodeKind::PigmentMap => {
+                (NodeKind::PigmentMap, _) => {
                     let average = matches!(&pigment.kind,
                         PigmentKind::Pattern(p) if p.pattern.kind == PatternKind::Average);
                     map = Some((PigmentMap::Pigments(ev.pigment_map(item, average)?), item.word_span))
                 }
                 // `checker pigment {…} pigment {…}`: a discrete pattern's list of pigments.
-                NodeKind::Pigment => {
+                (NodeKind::Pigment, _) => {
                     let entry = ev.pigment(item, Pigment::solid(Colour::default()))?;
                     list.push((entry, item.word_span));
                 }
@@ -638,16 +673,27 @@ impl Evaluator<'_> {
         pattern: &mut Pattern,
         placement: &mut Option<Box<Transform>>,
     ) -> Result<()> {
-        let first = item
-            .children
-            .first()
-            .ok_or_else(|| Diagnostic::error("this warp is empty", item.word_span))?;
+        // (A warp's first item says what it is; the others modify it.)
+        let [first, modifiers @ ..] = item.children.as_slice() else {
+            return Err(Diagnostic::error("this warp is empty", item.word_span));
+        };
+        fn values(it: &Node) -> &[Expr] {
+            match it.view() {
+                View::WarpItem { values } => values,
+                _ => &[],
+            }
+        }
         let value = |ev: &mut Self, it: &Node| -> Result<glam::DVec3> {
-            let e = it.args.first().ok_or_else(|| {
-                Diagnostic::error(format!("`{}` needs a value", it.word), it.word_span)
-            })?;
+            let [e, ..] = values(it) else {
+                return Err(Diagnostic::error(
+                    format!("`{}` needs a value", it.word),
+                    it.word_span,
+                ));
+            };
             ev.vec3(e)
         };
+        let first_values = values(first);
+        let first_span = first_values.first().map_or(first.word_span, |e| e.span);
         let warp = match first.word.as_str() {
             "turbulence" | "octaves" | "omega" | "lambda" => {
                 let mut t = noise::Turbulence::default();
@@ -668,16 +714,13 @@ impl Evaluator<'_> {
                 let axes: Vec<usize> = (0..3).filter(|&i| v[i] != 0.0).collect();
                 let axis = match axes.as_slice() {
                     [a] => *a,
-                    [] => return Err(Diagnostic::error("no axis in repeat", first.args[0].span)),
+                    [] => return Err(Diagnostic::error("no axis in repeat", first_span)),
                     _ => {
-                        return Err(Diagnostic::error(
-                            "repeat along one axis only",
-                            first.args[0].span,
-                        ));
+                        return Err(Diagnostic::error("repeat along one axis only", first_span));
                     }
                 };
                 let (mut offset, mut flip) = (glam::DVec3::ZERO, glam::DVec3::ONE);
-                for it in &item.children[1..] {
+                for it in modifiers {
                     let v = value(self, it)?;
                     match it.word.as_str() {
                         "offset" => offset = v,
@@ -693,7 +736,7 @@ impl Evaluator<'_> {
                 }
             }
             "black_hole" => {
-                let (center, radius) = match first.args.as_slice() {
+                let (center, radius) = match first_values {
                     [c, r] => (self.vec3(c)?, self.float(r)?),
                     _ => {
                         return Err(Diagnostic::error(
@@ -712,9 +755,9 @@ impl Evaluator<'_> {
                     repeat: None,
                     uncertainty: None,
                 };
-                for it in &item.children[1..] {
+                for it in modifiers {
                     match it.word.as_str() {
-                        "inverse" if it.args.is_empty() => b.inverse = true,
+                        "inverse" if values(it).is_empty() => b.inverse = true,
                         "strength" => b.strength = value(self, it)?.x,
                         "falloff" => b.falloff = value(self, it)?.x,
                         "type" => b.kind = value(self, it)?.x as i32,
@@ -737,7 +780,7 @@ impl Evaluator<'_> {
                     orientation: glam::DVec3::Z,
                     dist_exp: 0.0,
                 };
-                match (first.word.as_str(), first.args.as_slice()) {
+                match (first.word.as_str(), first_values) {
                     (_, []) => {}
                     ("planar", [v, offset]) => {
                         m.orientation = self.vec3(v)?.normalize_or_zero();
@@ -748,11 +791,11 @@ impl Evaluator<'_> {
                     _ => {
                         return Err(Diagnostic::error(
                             format!("`{}` takes no value here", first.word),
-                            first.args[0].span,
+                            first_span,
                         ));
                     }
                 }
-                for it in &item.children[1..] {
+                for it in modifiers {
                     match (it.word.as_str(), &mut m.mapping) {
                         (
                             "orientation",
@@ -792,7 +835,9 @@ impl Evaluator<'_> {
         &mut self,
         item: &'n Node,
     ) -> Result<(PatternKind, &'n [crate::syntax::Expr])> {
-        let args = item.args.as_slice();
+        let View::Pattern { values: args } = item.view() else {
+            return Err(super::malformed(item, "a pattern"));
+        };
         // `function { … }`: a user function of the point.
         if let Some(f) = item.children.iter().find(|c| c.kind == NodeKind::Function) {
             return Ok((PatternKind::Function(self.function(f)?), args));
@@ -803,7 +848,12 @@ impl Evaluator<'_> {
             .iter()
             .find(|c| c.kind == NodeKind::ObjectPattern)
         {
-            let first = o.children.first().expect("the grammar gives the object");
+            let View::ObjectPattern { colours } = o.view() else {
+                return Err(super::malformed(o, "an object pattern"));
+            };
+            let [first, ..] = o.children.as_slice() else {
+                return Err(super::malformed(o, "an object pattern"));
+            };
             let object = match first.kind {
                 NodeKind::IdentRef => match self.lookup(first)? {
                     Value::Object(object) => *object,
@@ -814,7 +864,7 @@ impl Evaluator<'_> {
             let parts = self.placed_parts(&object, first.span)?;
             let query = (self.object_query)(parts);
             let inside = crate::func::NativeRef(Arc::new(InsideTest(query)));
-            return Ok((PatternKind::Object(inside), &o.args));
+            return Ok((PatternKind::Object(inside), colours));
         }
         // `pigment_pattern { … }`: a pigment's grey.
         if let Some(p) = item
@@ -826,12 +876,19 @@ impl Evaluator<'_> {
             let native = (self.pigment_function)(&pigment, self.scene_defaults());
             return Ok((PatternKind::Pigment(crate::func::NativeRef(native)), args));
         }
-        // The patterns that take an argument: a number (spiral arms) or a direction.
-        let first = || {
-            args.first().ok_or_else(|| {
-                Diagnostic::error(format!("`{}` needs a value after it", item.word), item.span)
-            })
+        // The patterns that take an argument: a number (spiral arms) or a direction; `rest`,
+        // the values after it.
+        let (first, rest) = match args {
+            [first, rest @ ..] => (Ok(first), rest),
+            [] => (
+                Err(Diagnostic::error(
+                    format!("`{}` needs a value after it", item.word),
+                    item.span,
+                )),
+                args,
+            ),
         };
+        let first = || first.clone();
         let kind = match item.word.as_str() {
             "gradient" => {
                 let e = first()?;
@@ -842,7 +899,7 @@ impl Evaluator<'_> {
                         e.span,
                     ));
                 }
-                return Ok((PatternKind::Gradient(axis.normalize()), &args[1..]));
+                return Ok((PatternKind::Gradient(axis.normalize()), rest));
             }
             "spiral1" | "spiral2" => {
                 // (POV-Ray keeps the number of arms as an integer.)
@@ -852,7 +909,7 @@ impl Evaluator<'_> {
                 } else {
                     PatternKind::Spiral2(arms)
                 };
-                return Ok((kind, &args[1..]));
+                return Ok((kind, rest));
             }
             "tiling" => {
                 let e = first()?;
@@ -863,23 +920,23 @@ impl Evaluator<'_> {
                         e.span,
                     ));
                 }
-                return Ok((PatternKind::Tiling(n), &args[1..]));
+                return Ok((PatternKind::Tiling(n), rest));
             }
             "mandel" => {
                 let n = self.float(first()?)? as i32;
                 let f = Fractal::new(FractalKind::Mandel, n);
-                return Ok((PatternKind::Fractal(Box::new(f)), &args[1..]));
+                return Ok((PatternKind::Fractal(Box::new(f)), rest));
             }
             "julia" => {
                 let c = self.uv(first()?)?.to_array();
-                let Some(n) = args.get(1) else {
+                let [n, rest @ ..] = rest else {
                     return Err(Diagnostic::error(
                         "`julia` needs its constant and a number of iterations: julia <0.3, 0.5>, 30",
                         item.span,
                     ));
                 };
                 let f = Fractal::new(FractalKind::Julia { c }, self.float(n)? as i32);
-                return Ok((PatternKind::Fractal(Box::new(f)), &args[2..]));
+                return Ok((PatternKind::Fractal(Box::new(f)), rest));
             }
             "magnet" => {
                 // `magnet 1|2 mandel N` or `magnet 1|2 julia <c>, N` (the second word reaches
@@ -904,17 +961,17 @@ impl Evaluator<'_> {
                     ));
                 }
                 let (julia, rest) = if which == "julia" {
-                    let c = args.get(1).ok_or_else(|| {
-                        Diagnostic::error(
+                    let [c, rest @ ..] = rest else {
+                        return Err(Diagnostic::error(
                             "`magnet … julia` needs its constant: magnet 1 julia <0.3, 0.5>, 30",
                             item.span,
-                        )
-                    })?;
-                    (Some(self.uv(c)?.to_array()), 2)
+                        ));
+                    };
+                    (Some(self.uv(c)?.to_array()), rest)
                 } else {
-                    (None, 1)
+                    (None, rest)
                 };
-                let Some(n) = args.get(rest) else {
+                let [n, rest @ ..] = rest else {
                     return Err(Diagnostic::error(
                         "`magnet` needs a number of iterations after it",
                         item.span,
@@ -927,13 +984,26 @@ impl Evaluator<'_> {
                     },
                     self.float(n)? as i32,
                 );
-                return Ok((PatternKind::Fractal(Box::new(f)), &args[rest + 1..]));
+                return Ok((PatternKind::Fractal(Box::new(f)), rest));
             }
             "pavement" => PatternKind::Pavement(pavement::Pavement::default()),
             "aoi" => PatternKind::Aoi,
             "density_file" => {
-                let df3 = matches!(args.first().map(|e| &e.kind), Some(crate::syntax::ExprKind::Ident(w, _)) if w == "df3");
-                let (true, Some(file_expr)) = (df3, args.get(1)) else {
+                let [
+                    Expr {
+                        kind: crate::syntax::ExprKind::Ident(df3, _),
+                        ..
+                    },
+                    file_expr,
+                    rest @ ..,
+                ] = args
+                else {
+                    return Err(Diagnostic::error(
+                        "`density_file` reads a DF3 file: density_file df3 \"file.df3\"",
+                        item.span,
+                    ));
+                };
+                let true = df3 == "df3" else {
                     return Err(Diagnostic::error(
                         "`density_file` reads a DF3 file: density_file df3 \"file.df3\"",
                         item.span,
@@ -949,7 +1019,7 @@ impl Evaluator<'_> {
                 };
                 let bytes = std::fs::read(&path).map_err(|e| cannot(&e))?;
                 let data = crate::pattern::density::parse(&name, &bytes).map_err(|e| cannot(&e))?;
-                return Ok((PatternKind::Density(Arc::new(data)), &args[2..]));
+                return Ok((PatternKind::Density(Arc::new(data)), rest));
             }
             "slope" => return Ok((PatternKind::Slope(Box::new(self.slope(item)?)), &[])),
             "agate" => PatternKind::Agate { turb: 1.0 },
@@ -1106,16 +1176,16 @@ impl Evaluator<'_> {
         // `checker normal {…}, normal {…}`: a discrete pattern's list of normals.
         let mut list: Vec<(ir::Normal, crate::diag::Span)> = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::IdentRef => match ev.lookup(item)? {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::Normal(n) => normal = Some(*n),
                     other => return Err(type_error("a normal", &other, item.span)),
                 },
-                NodeKind::Normal => {
+                (NodeKind::Normal, _) => {
                     let entry = ev.normal(item, None)?;
                     list.push((entry, item.word_span));
                 }
-                NodeKind::Pattern => {
+                (NodeKind::Pattern, _) => {
                     let (kind, rest) = ev.pattern_kind(item)?;
                     // (A discrete pattern without a list of normals bumps by the slope of its
                     // entry number, as in POV-Ray.)
@@ -1131,7 +1201,7 @@ impl Evaluator<'_> {
                     };
                     normal = Some(ir::Normal::new(Pattern::new(kind), amount));
                 }
-                NodeKind::ImageMap => {
+                (NodeKind::ImageMap, _) => {
                     let read = ev.image_map(item)?;
                     let (kind, amount) = match read.kind {
                         ImageRole::Bumps(size) => (
@@ -1150,7 +1220,7 @@ impl Evaluator<'_> {
                     };
                     normal = Some(ir::Normal::new(Pattern::new(kind), amount));
                 }
-                NodeKind::Unknown => return Err(ev.unknown_item(item, "normal")),
+                (NodeKind::Unknown, _) => return Err(ev.unknown_item(item, "normal")),
                 _ => {
                     let Some(n) = &mut normal else {
                         return Err(Diagnostic::error(
@@ -1158,27 +1228,27 @@ impl Evaluator<'_> {
                             item.word_span,
                         ));
                     };
-                    match item.kind {
-                        NodeKind::PatternModifier if item.word == "accuracy" => {
-                            let e = item.args.first().ok_or_else(|| {
+                    match (item.kind, item.view()) {
+                        (NodeKind::PatternModifier, _) if item.word == "accuracy" => {
+                            let e = super::modifier_value(item).ok_or_else(|| {
                                 Diagnostic::error("`accuracy` needs a value", item.word_span)
                             })?;
                             n.accuracy = f64::from(ev.float(e)? as f32);
                         }
-                        NodeKind::PatternModifier if item.word == "no_bump_scale" => {
-                            n.no_bump_scale = match item.args.first() {
+                        (NodeKind::PatternModifier, _) if item.word == "no_bump_scale" => {
+                            n.no_bump_scale = match super::modifier_value(item) {
                                 Some(e) => ev.float(e)? != 0.0,
                                 None => true,
                             };
                         }
-                        NodeKind::SlopeMap => n.slope_map = Some(ev.slope_map(item)?),
-                        NodeKind::NormalMap => {
+                        (NodeKind::SlopeMap, _) => n.slope_map = Some(ev.slope_map(item)?),
+                        (NodeKind::NormalMap, _) => {
                             let average = n.pattern.kind == PatternKind::Average;
                             n.map = Some(ev.normal_map(item, average)?)
                         }
-                        NodeKind::PatternModifier => ev.pattern_modifier(item, &mut n.pattern)?,
-                        NodeKind::Warp => ev.warp(item, &mut n.pattern, &mut n.transform)?,
-                        NodeKind::BumpSize => n.amount = ev.float(&item.args[0])?,
+                        (NodeKind::PatternModifier, _) => ev.pattern_modifier(item, &mut n.pattern)?,
+                        (NodeKind::Warp, _) => ev.warp(item, &mut n.pattern, &mut n.transform)?,
+                        (_, View::BumpSize(value)) => n.amount = ev.float(value)?,
                         _ if Self::is_transform(item) => {
                             let t = ev.transform(item)?;
                             t.append_to(&mut n.transform);
@@ -1234,8 +1304,12 @@ impl Evaluator<'_> {
     /// A pattern modifier (`frequency 2`, `turbulence 0.5`, `sine_wave`, `agate_turb 0.3` …)
     /// applied to `pattern`, with POV-Ray's precision (several are single-precision there).
     pub(super) fn pattern_modifier(&mut self, item: &Node, pattern: &mut Pattern) -> Result<()> {
+        let (value, factor) = match item.view() {
+            View::PatternModifier { value, factor } => (value, factor),
+            _ => return Err(super::malformed(item, "a pattern modifier")),
+        };
         let arg = || {
-            item.args.first().ok_or_else(|| {
+            value.ok_or_else(|| {
                 Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)
             })
         };
@@ -1259,7 +1333,7 @@ impl Evaluator<'_> {
             "scallop_wave" => pattern.wave.shape = WaveShape::Scallop,
             "cubic_wave" => pattern.wave.shape = WaveShape::Cubic,
             "poly_wave" => {
-                let e = match item.args.first() {
+                let e = match value {
                     Some(e) => single(self.float(e)?),
                     None => 1.0,
                 };
@@ -1373,7 +1447,7 @@ impl Evaluator<'_> {
                                 e.span,
                             ));
                         }
-                        let Some(factor) = item.args.get(1) else {
+                        let Some(factor) = factor else {
                             return Err(Diagnostic::error(
                                 format!("`{kind}` takes a type and a factor: {kind} {t}, 1"),
                                 item.span,
@@ -1528,12 +1602,25 @@ impl Evaluator<'_> {
         }
         let mut entries = Vec::new();
         for e in &node.children {
-            let value = single(self.float(&e.args[0])?);
-            let v = self.eval(&e.args[1])?;
+            let View::MapEntry {
+                values: [value, point_expr],
+                ..
+            } = e.view()
+            else {
+                return Err(super::malformed(e, "a slope_map entry"));
+            };
+            let value = single(self.float(value)?);
+            let v = self.eval(point_expr)?;
             let point = match &v {
                 Value::Vector(p) if p.len >= 2 => [p.c[0], p.c[1]],
                 Value::Float(f) => [*f, *f],
-                _ => return Err(type_error("a 2-vector <height, slope>", &v, e.args[1].span)),
+                _ => {
+                    return Err(type_error(
+                        "a 2-vector <height, slope>",
+                        &v,
+                        point_expr.span,
+                    ));
+                }
             };
             entries.push((value, point));
         }
@@ -1562,10 +1649,10 @@ impl Evaluator<'_> {
                 return Err(ev.unknown_item(entry, "color_map"));
             }
             // `[v C]`, or the old range form `[v1, v2 C1 C2]`, which is `[v1 C1] [v2 C2]`.
-            let points = match entry.args.as_slice() {
-                [v, c] => vec![(v, c)],
-                [v1, v2, c1, c2] => vec![(v1, c1), (v2, c2)],
-                _ => unreachable!("the grammar gives a map entry 2 or 4 expressions"),
+            let points = match entry.view() {
+                View::MapEntry { values: [v, c], .. } => vec![(v, c)],
+                View::MapEntry { values: [v1, v2, c1, c2], .. } => vec![(v1, c1), (v2, c2)],
+                _ => return Err(super::malformed(entry, "a color_map entry")),
             };
             for (value_expr, colour_expr) in points {
                 // (POV-Ray keeps map keys in single precision.)
@@ -1612,31 +1699,32 @@ impl Evaluator<'_> {
     /// `finish { [Name] items }`, modifying `finish`.
     pub(super) fn finish_block(&mut self, node: &Node, mut f: ir::Finish) -> Result<ir::Finish> {
         self.each_item(&node.children, &mut |ev, item| {
-            let arg = |i: usize| &item.args[i];
-            match item.kind {
-                NodeKind::IdentRef => match ev.lookup(item)? {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::Finish(declared) => f = *declared,
                     other => return Err(type_error("a finish", &other, item.span)),
                 },
-                NodeKind::Ambient => f.ambient = ev.rgb_arg(arg(0))?,
-                NodeKind::Emission => f.emission = ev.rgb_arg(arg(0))?,
-                NodeKind::Diffuse | NodeKind::Phong | NodeKind::Specular
+                (_, View::Ambient(value)) => f.ambient = ev.rgb_arg(value)?,
+                (_, View::Emission(value)) => f.emission = ev.rgb_arg(value)?,
+                (NodeKind::Diffuse | NodeKind::Phong | NodeKind::Specular, _)
                     if item.children.iter().any(|c| c.kind == NodeKind::Albedo) =>
                 {
-                    return Err(ev.unknown_word("albedo", item.children[0].word_span));
+                    let albedo = item.children.iter().find(|c| c.kind == NodeKind::Albedo);
+                    let span = albedo.map_or(item.word_span, |a| a.word_span);
+                    return Err(ev.unknown_word("albedo", span));
                 }
-                NodeKind::Diffuse => {
-                    f.diffuse = ev.float(arg(0))?;
-                    if let Some(back) = item.args.get(1) {
+                (_, View::Diffuse { amount, back }) => {
+                    f.diffuse = ev.float(amount)?;
+                    if let Some(back) = back {
                         f.diffuse_back = ev.float(back)?;
                     }
                 }
-                NodeKind::Brilliance => f.brilliance = ev.float(arg(0))?,
-                NodeKind::Phong => f.phong = ev.float(arg(0))?,
-                NodeKind::PhongSize => f.phong_size = ev.float(arg(0))?,
-                NodeKind::Specular => f.specular = ev.float(arg(0))?,
-                NodeKind::Roughness => {
-                    let r = ev.float(arg(0))?;
+                (_, View::Brilliance(value)) => f.brilliance = ev.float(value)?,
+                (_, View::Phong(value)) => f.phong = ev.float(value)?,
+                (_, View::PhongSize(value)) => f.phong_size = ev.float(value)?,
+                (_, View::Specular(value)) => f.specular = ev.float(value)?,
+                (_, View::Roughness(value)) => {
+                    let r = ev.float(value)?;
                     if r == 0.0 {
                         ev.warn(Diagnostic::warning(
                             "zero roughness: using 0.0001 instead",
@@ -1645,30 +1733,32 @@ impl Evaluator<'_> {
                     }
                     f.roughness = if r == 0.0 { 1e-4 } else { r };
                 }
-                NodeKind::Metallic => f.metallic = ev.optional_float(item, 1.0)?,
-                NodeKind::ConserveEnergy => f.conserve_energy = true,
-                NodeKind::Crand => f.crand = ev.float(arg(0))?,
-                NodeKind::Irid => {
-                    f.irid.amount = ev.float(arg(0))?;
+                (NodeKind::Metallic, _) => f.metallic = ev.optional_float(item, 1.0)?,
+                (NodeKind::ConserveEnergy, _) => f.conserve_energy = true,
+                (_, View::Crand(value)) => f.crand = ev.float(value)?,
+                (_, View::Irid(value)) => {
+                    f.irid.amount = ev.float(value)?;
                     for it in &item.children {
-                        match (it.kind, it.word.as_str()) {
-                            (NodeKind::Thickness, _) => f.irid.thickness = ev.float(&it.args[0])?,
-                            (NodeKind::PatternModifier, "turbulence") if !it.args.is_empty() => {
-                                f.irid.turbulence = ev.vec3(&it.args[0])?.x;
+                        match (it.view(), it.word.as_str()) {
+                            (View::Thickness(thickness), _) => {
+                                f.irid.thickness = ev.float(thickness)?;
+                            }
+                            (View::PatternModifier { value: Some(amount), .. }, "turbulence") => {
+                                f.irid.turbulence = ev.vec3(amount)?.x;
                             }
                             _ => return Err(ev.unknown_item(it, "irid")),
                         }
                     }
                 }
-                NodeKind::Reflection => ev.reflection(item, &mut f.reflection)?,
+                (NodeKind::Reflection, _) => ev.reflection(item, &mut f.reflection)?,
                 // POV-Ray's old spelling of `reflection { … exponent E }`.
-                NodeKind::ReflectionExponent => f.reflection.exponent = ev.float(arg(0))?,
+                (_, View::ReflectionExponent(value)) => f.reflection.exponent = ev.float(value)?,
                 // POV-Ray's old interior items in a finish: moved to the object's interior
                 // when it is placed (`Evaluator::place`), with POV-Ray's warnings.
-                NodeKind::Ior => {
-                    let ior = ev.float(arg(0))?;
+                (_, View::Ior(value)) => {
+                    let ior = ev.float(value)?;
                     if ior <= 0.0 {
-                        return Err(Diagnostic::error("ior must be positive", arg(0).span));
+                        return Err(Diagnostic::error("ior must be positive", value.span));
                     }
                     f.legacy_ior = Some(ior);
                     ev.warnings.push(Diagnostic::warning(
@@ -1676,8 +1766,8 @@ impl Evaluator<'_> {
                         item.word_span,
                     ));
                 }
-                NodeKind::Refraction => {
-                    f.legacy_refraction = ev.float(arg(0))?;
+                (_, View::Refraction(value)) => {
+                    f.legacy_refraction = ev.float(value)?;
                     ev.warnings.push(Diagnostic::warning(
                         "`refraction` is not needed to turn refraction on; it multiplies the light passing through (fade_distance and fade_power in `interior { … }` attenuate it)",
                         item.word_span,
@@ -1691,8 +1781,11 @@ impl Evaluator<'_> {
     }
 
     fn reflection(&mut self, node: &Node, r: &mut ir::Reflection) -> Result<()> {
-        let first = self.rgb_arg(&node.args[0])?;
-        match node.args.get(1) {
+        let View::Reflection { first, max } = node.view() else {
+            return Err(super::malformed(node, "a reflection"));
+        };
+        let first = self.rgb_arg(first)?;
+        match max {
             Some(second) => {
                 r.min = first;
                 r.max = self.rgb_arg(second)?;
@@ -1702,13 +1795,13 @@ impl Evaluator<'_> {
                 r.max = first;
             }
         }
-        let single = node.args.len() == 1;
+        let single = max.is_none();
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::Falloff => r.falloff = ev.float(&item.args[0])?,
-                NodeKind::Exponent => r.exponent = ev.float(&item.args[0])?,
-                NodeKind::Metallic => r.metallic = ev.optional_float(item, 1.0)?,
-                NodeKind::Fresnel => r.fresnel = ev.optional_float(item, 1.0)? != 0.0,
+            match (item.kind, item.view()) {
+                (_, View::Falloff(value)) => r.falloff = ev.float(value)?,
+                (_, View::Exponent(value)) => r.exponent = ev.float(value)?,
+                (NodeKind::Metallic, _) => r.metallic = ev.optional_float(item, 1.0)?,
+                (NodeKind::Fresnel, _) => r.fresnel = ev.optional_float(item, 1.0)? != 0.0,
                 _ => return Err(ev.unknown_item(item, "reflection")),
             }
             Ok(())
@@ -1723,23 +1816,23 @@ impl Evaluator<'_> {
     /// `interior { [Name] ior fade_distance fade_power fade_color }`.
     pub(super) fn interior(&mut self, node: &Node, mut interior: Interior) -> Result<Interior> {
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::IdentRef => match ev.lookup(item)? {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::Interior(i) => interior = *i,
                     other => return Err(type_error("an interior", &other, item.span)),
                 },
-                NodeKind::Ior => {
-                    interior.ior = ev.float(&item.args[0])?;
+                (_, View::Ior(value)) => {
+                    interior.ior = ev.float(value)?;
                     if interior.ior <= 0.0 {
-                        return Err(Diagnostic::error("ior must be positive", item.args[0].span));
+                        return Err(Diagnostic::error("ior must be positive", value.span));
                     }
                 }
-                NodeKind::FadeDistance => interior.fade_distance = ev.float(&item.args[0])?,
-                NodeKind::FadePower => interior.fade_power = ev.float(&item.args[0])?,
-                NodeKind::FadeColour => interior.fade_colour = ev.rgb_arg(&item.args[0])?,
+                (_, View::FadeDistance(value)) => interior.fade_distance = ev.float(value)?,
+                (_, View::FadePower(value)) => interior.fade_power = ev.float(value)?,
+                (_, View::FadeColour(value)) => interior.fade_colour = ev.rgb_arg(value)?,
                 // (Set again by a plain texture's finish when the object is placed.)
-                NodeKind::Refraction => {
-                    interior.refraction = ev.float(&item.args[0])?;
+                (_, View::Refraction(value)) => {
+                    interior.refraction = ev.float(value)?;
                     ev.warnings.push(Diagnostic::warning(
                         "`refraction` is not needed to turn refraction on; it multiplies the light passing through (fade_distance and fade_power attenuate it)",
                         item.word_span,

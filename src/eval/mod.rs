@@ -23,7 +23,7 @@ mod value;
 
 use crate::diag::{Diagnostic, FileId, SourceMap, Span};
 use crate::ir::{self, Gamma, Rgb, Texture, Transform};
-use crate::syntax::{self, Node, NodeKind};
+use crate::syntax::{self, Expr, Node, NodeKind, View};
 use glam::DVec3;
 pub use object::ObjectValue;
 use std::collections::HashMap;
@@ -266,6 +266,26 @@ pub fn evaluate(
 }
 
 /// `d` with a note naming the keyword `word` is probably a misspelling of, if one is near.
+/// The value of a pattern modifier (`turbulence 0.5`), if it has one.
+pub(super) fn modifier_value(node: &Node) -> Option<&Expr> {
+    match node.view() {
+        View::PatternModifier { value, .. } => value,
+        _ => None,
+    }
+}
+
+/// The error for a node whose values do not have its kind's layout (which the grammar does
+/// not make: `syntax::view`), where `what` was expected.
+pub(super) fn malformed(node: &Node, what: &str) -> Diagnostic {
+    Diagnostic::error(
+        format!(
+            "internal error: `{}` read as {what} has values out of place",
+            node.word
+        ),
+        node.word_span,
+    )
+}
+
 fn suggest(d: Diagnostic, word: &str) -> Diagnostic {
     match keywords::suggestion(word) {
         Some(k) => d.with_note(format!("did you mean `{k}`?")),
@@ -711,9 +731,9 @@ impl<'a> Evaluator<'a> {
     }
 
     fn statement(&mut self, node: &Node) -> Result<()> {
-        match node.kind {
+        match (node.kind, node.view()) {
             // A declared object standing alone: placed, as POV-Ray does.
-            NodeKind::IdentRef => match self.lookup(node)? {
+            (NodeKind::IdentRef, _) => match self.lookup(node)? {
                 Value::Object(object) => self.place(*object, node.word_span)?,
                 other => {
                     return Err(Diagnostic::error(
@@ -726,7 +746,7 @@ impl<'a> Evaluator<'a> {
                     ));
                 }
             },
-            NodeKind::Default => {
+            (NodeKind::Default, _) => {
                 self.each_item(&node.children, &mut |ev, child| {
                     match child.kind {
                         NodeKind::Texture => ev.default_texture = ev.texture(child)?,
@@ -745,7 +765,9 @@ impl<'a> Evaluator<'a> {
                                 && !child.children.is_empty() =>
                         {
                             for c in &child.children {
-                                ev.default_bump_size = f64::from(ev.float(&c.args[0])? as f32);
+                                if let View::BumpSize(size) = c.view() {
+                                    ev.default_bump_size = f64::from(ev.float(size)? as f32);
+                                }
                             }
                         }
                         NodeKind::Normal => {
@@ -757,45 +779,44 @@ impl<'a> Evaluator<'a> {
                     Ok(())
                 })?;
             }
-            NodeKind::Camera => {
+            (NodeKind::Camera, _) => {
                 let items = self.camera_items(node, CameraItems::default())?;
                 self.camera = Some(items);
             }
-            NodeKind::LightSource => {
+            (NodeKind::LightSource, _) => {
                 let (light, looks) = self.light(node)?;
                 self.lights.push(light);
                 if let Some(object) = looks {
                     self.place(object, node.word_span)?;
                 }
             }
-            NodeKind::Fog => {
+            (NodeKind::Fog, _) => {
                 let fog = self.fog(node)?;
                 self.fogs.push(fog);
             }
-            NodeKind::Background => {
-                let v = self.eval(&node.args[0])?;
-                let c = colour5(&v)
-                    .ok_or_else(|| expr::type_error("a colour", &v, node.args[0].span))?;
+            (_, View::Background(value)) => {
+                let v = self.eval(value)?;
+                let c = colour5(&v).ok_or_else(|| expr::type_error("a colour", &v, value.span))?;
                 // Without alpha output POV-Ray stores rgb·(1 − transmit) and ignores filter.
                 self.background = Rgb::new(c[0], c[1], c[2]) * (1.0 - c[4]);
                 self.background_alpha = 1.0 - c[4];
             }
-            NodeKind::GlobalSettings => self.global_settings(node)?,
+            (NodeKind::GlobalSettings, _) => self.global_settings(node)?,
             // POV-Ray's old places of these global settings, outside global_settings.
-            NodeKind::MaxTraceLevel => {
+            (_, View::MaxTraceLevel(level)) => {
                 self.warn(Diagnostic::warning(
                     "`max_trace_level` belongs in global_settings { … }: read there (POV-Ray warns too)",
                     node.word_span,
                 ));
-                self.max_trace_level(node)?;
+                self.max_trace_level(level)?;
             }
-            NodeKind::MaxIntersections => self.max_intersections(node)?,
-            NodeKind::SkySphere => self.sky_sphere = Some(self.sky_sphere(node)?),
+            (_, View::MaxIntersections(value)) => self.max_intersections(node, value)?,
+            (NodeKind::SkySphere, _) => self.sky_sphere = Some(self.sky_sphere(node)?),
             _ if object::is_object(node.kind) => {
                 let object = self.object(node)?;
                 self.place(object, node.word_span)?;
             }
-            NodeKind::Unknown => {
+            (NodeKind::Unknown, _) => {
                 return Err(match keywords::reason(&node.word) {
                     Some(_) => self.unknown_word(&node.word, node.word_span),
                     None => suggest(
@@ -824,18 +845,18 @@ impl<'a> Evaluator<'a> {
         };
         let mut moved = ir::Transform::IDENTITY;
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
-                NodeKind::IdentRef => match ev.lookup(item)? {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::SkySphere(s) => sky = s,
                     other => return Err(expr::type_error("a sky_sphere", &other, item.span)),
                 },
-                NodeKind::Pigment => sky
+                (NodeKind::Pigment, _) => sky
                     .pigments
                     .push(ev.pigment(item, ir::Pigment::solid(ir::Colour::default()))?),
-                NodeKind::Emission => {
-                    let v = ev.eval(&item.args[0])?;
-                    sky.emission = rgb(&v)
-                        .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                (_, View::Emission(value)) => {
+                    let v = ev.eval(value)?;
+                    sky.emission =
+                        rgb(&v).ok_or_else(|| expr::type_error("a colour", &v, value.span))?;
                 }
                 _ if Self::is_transform(item) => moved = moved.then(ev.transform(item)?),
                 _ => return Err(ev.unknown_item(item, "sky_sphere")),
@@ -900,15 +921,15 @@ impl<'a> Evaluator<'a> {
     }
 
     /// `max_trace_level N`.
-    fn max_trace_level(&mut self, item: &Node) -> Result<()> {
-        let n = self.float(&item.args[0])?;
+    fn max_trace_level(&mut self, level: &Expr) -> Result<()> {
+        let n = self.float(level)?;
         self.settings.max_trace_level = (n as i64).clamp(1, 256) as u32;
         Ok(())
     }
 
     /// `max_intersections N`: no longer needed, ignored with a warning as in POV-Ray 3.7.
-    fn max_intersections(&mut self, item: &Node) -> Result<()> {
-        self.float(&item.args[0])?;
+    fn max_intersections(&mut self, item: &Node, count: &Expr) -> Result<()> {
+        self.float(count)?;
         self.warn(Diagnostic::warning(
             "`max_intersections` is no longer needed and has no effect (POV-Ray 3.7 says so too)",
             item.word_span,
@@ -918,18 +939,18 @@ impl<'a> Evaluator<'a> {
 
     fn global_settings(&mut self, node: &Node) -> Result<()> {
         self.each_item(&node.children, &mut |ev, item| {
-            match item.kind {
+            match (item.kind, item.view()) {
                 // (`#default { … }` may stand here too, as POV-Ray reads it anywhere.)
-                NodeKind::Default => ev.statement(item)?,
-                NodeKind::Charset => {
+                (NodeKind::Default, _) => ev.statement(item)?,
+                (NodeKind::Charset, _) => {
                     ev.charset = if item.word.ends_with("ascii") {
                         crate::font::Charset::Ascii
                     } else {
                         crate::font::Charset::Utf8
                     };
                 }
-                NodeKind::AssumedGamma => {
-                    let g = ev.float(&item.args[0])?;
+                (_, View::AssumedGamma(value)) => {
+                    let g = ev.float(value)?;
                     if ev.assumed_gamma.is_some() {
                         ev.warn(Diagnostic::warning(
                             "a second assumed_gamma is ignored (as in POV-Ray)",
@@ -938,27 +959,27 @@ impl<'a> Evaluator<'a> {
                     } else if g <= 0.0 {
                         return Err(Diagnostic::error(
                             "assumed_gamma must be positive",
-                            item.args[0].span,
+                            value.span,
                         ));
                     } else {
                         ev.assumed_gamma = Some(g);
                     }
                 }
-                NodeKind::MaxTraceLevel => ev.max_trace_level(item)?,
-                NodeKind::MaxIntersections => ev.max_intersections(item)?,
-                NodeKind::AdcBailout => ev.settings.adc_bailout = ev.float(&item.args[0])?,
-                NodeKind::AmbientLight => {
-                    let v = ev.eval(&item.args[0])?;
-                    ev.settings.ambient_light = rgb(&v)
-                        .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                (_, View::MaxTraceLevel(level)) => ev.max_trace_level(level)?,
+                (_, View::MaxIntersections(count)) => ev.max_intersections(item, count)?,
+                (_, View::AdcBailout(value)) => ev.settings.adc_bailout = ev.float(value)?,
+                (_, View::AmbientLight(value)) => {
+                    let v = ev.eval(value)?;
+                    ev.settings.ambient_light =
+                        rgb(&v).ok_or_else(|| expr::type_error("a colour", &v, value.span))?;
                 }
-                NodeKind::IridWavelength => {
-                    let v = ev.eval(&item.args[0])?;
-                    ev.settings.irid_wavelength = rgb(&v)
-                        .ok_or_else(|| expr::type_error("a colour", &v, item.args[0].span))?;
+                (_, View::IridWavelength(value)) => {
+                    let v = ev.eval(value)?;
+                    ev.settings.irid_wavelength =
+                        rgb(&v).ok_or_else(|| expr::type_error("a colour", &v, value.span))?;
                 }
-                NodeKind::PatternModifier if item.word == "number_of_waves" => {
-                    let e = item.args.first().ok_or_else(|| {
+                (NodeKind::PatternModifier, _) if item.word == "number_of_waves" => {
+                    let e = modifier_value(item).ok_or_else(|| {
                         Diagnostic::error("`number_of_waves` needs a value", item.word_span)
                     })?;
                     let n = ev.float(e)?.trunc();
@@ -971,8 +992,8 @@ impl<'a> Evaluator<'a> {
                     }
                     ev.settings.number_of_waves = n.max(1.0) as u8;
                 }
-                NodeKind::PatternModifier if item.word == "noise_generator" => {
-                    let e = item.args.first().ok_or_else(|| {
+                (NodeKind::PatternModifier, _) if item.word == "noise_generator" => {
+                    let e = modifier_value(item).ok_or_else(|| {
                         Diagnostic::error("`noise_generator` needs a value", item.word_span)
                     })?;
                     let n = ev.float(e)?;
@@ -1010,9 +1031,8 @@ impl<'a> Evaluator<'a> {
             up: DVec3::Y,
         };
         self.each_item(&node.children, &mut |ev, item| {
-            let arg = |i: usize| &item.args[i];
-            match item.kind {
-                NodeKind::IdentRef => match ev.lookup(item)? {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::Fog(declared) => items = *declared,
                     // A declared colour or float (POV-Ray copies only fogs this way).
                     Value::Float(d) => {
@@ -1026,33 +1046,33 @@ impl<'a> Evaluator<'a> {
                         items.colour = value::to_colour(c);
                     }
                 },
-                NodeKind::FogDistance => {
-                    items.distance = ev.float(arg(0))?;
-                    items.distance_span = arg(0).span;
+                (_, View::FogDistance(value)) => {
+                    items.distance = ev.float(value)?;
+                    items.distance_span = value.span;
                 }
-                NodeKind::FogType => {
-                    let t = ev.float(arg(0))?.trunc();
+                (_, View::FogType(value)) => {
+                    let t = ev.float(value)?.trunc();
                     if t != 1.0 && t != 2.0 {
                         ev.warn(Diagnostic::warning(
                             "unknown fog_type: constant fog is used (as POV-Ray does)",
-                            arg(0).span,
+                            value.span,
                         ));
                     }
                     items.ground = t == 2.0;
                 }
-                NodeKind::FogAlt => {
-                    items.alt = ev.float(arg(0))?;
-                    items.alt_span = arg(0).span;
+                (_, View::FogAlt(value)) => {
+                    items.alt = ev.float(value)?;
+                    items.alt_span = value.span;
                 }
-                NodeKind::FogOffset => items.offset = ev.float(arg(0))?,
-                NodeKind::TurbDepth => items.turb_depth = ev.float(arg(0))?,
-                NodeKind::PatternModifier
+                (_, View::FogOffset(value)) => items.offset = ev.float(value)?,
+                (_, View::TurbDepth(value)) => items.turb_depth = ev.float(value)?,
+                (NodeKind::PatternModifier, _)
                     if matches!(
                         item.word.as_str(),
                         "turbulence" | "octaves" | "omega" | "lambda"
                     ) =>
                 {
-                    let e = item.args.first().ok_or_else(|| {
+                    let e = modifier_value(item).ok_or_else(|| {
                         Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)
                     })?;
                     let t = items.turbulence.get_or_insert_with(Default::default);
@@ -1064,8 +1084,8 @@ impl<'a> Evaluator<'a> {
                         _ => t.lambda = single(ev.float(e)?),
                     }
                 }
-                NodeKind::Up => items.up = ev.vec3(arg(0))?,
-                NodeKind::Translate => ev.warn(Diagnostic::warning(
+                (_, View::Up(value)) => items.up = ev.vec3(value)?,
+                (NodeKind::Translate, _) => ev.warn(Diagnostic::warning(
                     "a fog's up vector can't be translated (ignored, as in POV-Ray)",
                     item.word_span,
                 )),
@@ -1073,17 +1093,17 @@ impl<'a> Evaluator<'a> {
                     let t = ev.transform(item)?;
                     items.up = t.matrix.transform_vector3(items.up);
                 }
-                NodeKind::FogColour => {
-                    let v = ev.eval(arg(0))?;
+                (_, View::FogColour(value)) => {
+                    let v = ev.eval(value)?;
                     if let Value::Float(d) = v {
                         ev.warn(Diagnostic::warning(
                             "should use the distance keyword (a bare number is the fog's distance)",
-                            arg(0).span,
+                            value.span,
                         ));
                         items.distance = d;
                     } else {
                         let c = colour5(&v)
-                            .ok_or_else(|| expr::type_error("a colour", &v, arg(0).span))?;
+                            .ok_or_else(|| expr::type_error("a colour", &v, value.span))?;
                         items.colour = value::to_colour(c);
                     }
                 }
@@ -1142,14 +1162,17 @@ impl<'a> Evaluator<'a> {
     /// shadow).
     fn light(&mut self, node: &Node) -> Result<(ir::Light, Option<object::ObjectValue>)> {
         // `light_source { L transformations }` with a declared light `L`.
-        if let Some(syntax::ExprKind::Ident(_, slot)) = node.args.first().map(|e| &e.kind) {
+        let View::LightSource { location, colour } = node.view() else {
+            return Err(malformed(node, "a light_source"));
+        };
+        if let syntax::ExprKind::Ident(_, slot) = &location.kind {
             if let Some(Value::Object(o)) = self.bound(*slot).cloned() {
-                return self.declared_light(node, *o);
+                return self.declared_light(node, location, colour, *o);
             }
         }
-        let position = self.vec3(&node.args[0])?;
+        let position = self.vec3(location)?;
         // A light without a colour is black (POV-Ray accepts it silently).
-        let colour = match node.args.get(1) {
+        let colour = match colour {
             Some(e) => self.rgb_arg(e)?,
             None => Rgb::ZERO,
         };
@@ -1175,9 +1198,8 @@ impl<'a> Evaluator<'a> {
         let mut looks: Option<(object::ObjectValue, Transform)> = None;
         let mut through: Option<(object::ObjectValue, Transform, Span)> = None;
         self.each_item(&node.children, &mut |ev, item| {
-            let arg = |i: usize| &item.args[i];
-            match item.kind {
-                NodeKind::LooksLike if item.word == "looks_like" => {
+            match (item.kind, item.view()) {
+                (NodeKind::LooksLike, _) if item.word == "looks_like" => {
                     if looks.is_some() {
                         return Err(Diagnostic::error("only one looks_like per light_source", item.word_span));
                     }
@@ -1186,13 +1208,13 @@ impl<'a> Evaluator<'a> {
                     object.transform(Transform { matrix: glam::DMat4::from_translation(centre) }, false);
                     looks = Some((object, Transform::IDENTITY));
                 }
-                NodeKind::LooksLike => {
+                (NodeKind::LooksLike, _) => {
                     if through.is_some() {
                         return Err(Diagnostic::error("only one projected_through per light_source", item.word_span));
                     }
                     through = Some((ev.object(item)?, Transform::IDENTITY, item.word_span));
                 }
-                NodeKind::LightFlag => match item.word.as_str() {
+                (NodeKind::LightFlag, _) => match item.word.as_str() {
                     "spotlight" => {
                         light_type = LightType::Spot;
                         (radius, falloff, tightness) = (None, None, None);
@@ -1212,7 +1234,7 @@ impl<'a> Evaluator<'a> {
                         }
                     }
                 },
-                NodeKind::PointAt | NodeKind::Radius | NodeKind::Falloff | NodeKind::Tightness
+                (NodeKind::PointAt | NodeKind::Radius | NodeKind::Falloff | NodeKind::Tightness, _)
                     if !(matches!(light_type, LightType::Spot | LightType::Cylinder)
                         || parallel && item.kind == NodeKind::PointAt) =>
                 {
@@ -1229,26 +1251,26 @@ impl<'a> Evaluator<'a> {
                         item.word_span,
                     ));
                 }
-                NodeKind::PointAt => point_at = ev.vec3(arg(0))?,
-                NodeKind::Radius => radius = Some(ev.float(arg(0))?),
-                NodeKind::Falloff => falloff = Some(ev.float(arg(0))?),
-                NodeKind::Tightness => tightness = Some(ev.float(arg(0))?),
-                NodeKind::FadeDistance => fade_distance = ev.float(arg(0))?,
-                NodeKind::FadePower => fade_power = ev.float(arg(0))?,
-                NodeKind::AreaLight => {
-                    let axis1 = ev.vec3(arg(0))?;
-                    let axis2 = ev.vec3(arg(1))?;
-                    let size = |ev: &mut Self, i: usize| -> Result<u32> {
-                        let n = ev.float(&item.args[i])?;
+                (_, View::PointAt(value)) => point_at = ev.vec3(value)?,
+                (_, View::Radius(value)) => radius = Some(ev.float(value)?),
+                (_, View::Falloff(value)) => falloff = Some(ev.float(value)?),
+                (_, View::Tightness(value)) => tightness = Some(ev.float(value)?),
+                (_, View::FadeDistance(value)) => fade_distance = ev.float(value)?,
+                (_, View::FadePower(value)) => fade_power = ev.float(value)?,
+                (_, View::AreaLight { axis1, axis2, size1, size2 }) => {
+                    let axis1 = ev.vec3(axis1)?;
+                    let axis2 = ev.vec3(axis2)?;
+                    let size = |ev: &mut Self, e: &Expr| -> Result<u32> {
+                        let n = ev.float(e)?;
                         if !(1.0..=1024.0).contains(&n) {
                             return Err(Diagnostic::error(
                                 "area_light sizes must be between 1 and 1024",
-                                item.args[i].span,
+                                e.span,
                             ));
                         }
                         Ok(n as u32)
                     };
-                    let (size1, size2) = (size(ev, 2)?, size(ev, 3)?);
+                    let (size1, size2) = (size(ev, size1)?, size(ev, size2)?);
                     area = Some(ir::AreaLight {
                         axis1,
                         axis2,
@@ -1261,11 +1283,11 @@ impl<'a> Evaluator<'a> {
                         area_illumination: illumination,
                     });
                 }
-                NodeKind::Adaptive => {
+                (_, View::Adaptive(value)) => {
                     area_modifiers.push((item.word.clone(), item.word_span));
-                    adaptive = ev.float(arg(0))?.max(0.0) as u32;
+                    adaptive = ev.float(value)?.max(0.0) as u32;
                 }
-                NodeKind::AreaIllumination => {
+                (NodeKind::AreaIllumination, _) => {
                     area_modifiers.push((item.word.clone(), item.word_span));
                     illumination = ev.optional_float(item, 1.0)? != 0.0;
                 }
@@ -1384,15 +1406,17 @@ impl<'a> Evaluator<'a> {
     fn declared_light(
         &mut self,
         node: &Node,
+        name: &Expr,
+        colour: Option<&Expr>,
         mut object: object::ObjectValue,
     ) -> Result<(ir::Light, Option<object::ObjectValue>)> {
         let Some(light) = object.lights.pop().filter(|_| object.lights.is_empty()) else {
             return Err(Diagnostic::error(
                 "a light_source takes a declared light here (not another object)",
-                node.args[0].span,
+                name.span,
             ));
         };
-        if let Some(extra) = node.args.get(1) {
+        if let Some(extra) = colour {
             return Err(Diagnostic::error(
                 "unsupported: a colour after a declared light (give the light's colour where it is declared)",
                 extra.span,
@@ -1429,32 +1453,32 @@ impl<'a> Evaluator<'a> {
                     item.word_span,
                 ));
             }
-            match item.kind {
-                NodeKind::Perspective => c.projection = ir::Projection::Perspective,
-                NodeKind::Orthographic => c.projection = ir::Projection::Orthographic,
-                NodeKind::Location => c.location = ev.vec3(&item.args[0])?,
-                NodeKind::LookAt => c.look_at = Some(ev.vec3(&item.args[0])?),
-                NodeKind::Direction => c.direction = ev.vec3(&item.args[0])?,
-                NodeKind::Up => {
-                    c.up = ev.vec3(&item.args[0])?;
+            match (item.kind, item.view()) {
+                (NodeKind::Perspective, _) => c.projection = ir::Projection::Perspective,
+                (NodeKind::Orthographic, _) => c.projection = ir::Projection::Orthographic,
+                (_, View::Location(value)) => c.location = ev.vec3(value)?,
+                (_, View::LookAt(value)) => c.look_at = Some(ev.vec3(value)?),
+                (_, View::Direction(value)) => c.direction = ev.vec3(value)?,
+                (_, View::Up(value)) => {
+                    c.up = ev.vec3(value)?;
                     c.up_or_right_given = true;
                 }
-                NodeKind::Right => {
-                    c.right = ev.vec3(&item.args[0])?;
+                (_, View::Right(value)) => {
+                    c.right = ev.vec3(value)?;
                     c.up_or_right_given = true;
                 }
-                NodeKind::Sky => c.sky = ev.vec3(&item.args[0])?,
-                NodeKind::CameraBlur => ev.camera_blur(item, &mut c)?,
-                NodeKind::MeshCamera => {
+                (_, View::Sky(value)) => c.sky = ev.vec3(value)?,
+                (_, View::CameraBlur { value, max }) => ev.camera_blur(item, value, max, &mut c)?,
+                (NodeKind::MeshCamera, _) => {
                     c.mesh = Some(ev.mesh_camera(item)?);
                     c.projection = ir::Projection::Mesh;
                 }
-                NodeKind::Normal => {
+                (NodeKind::Normal, _) => {
                     let base = c.normal.take();
                     c.normal = Some(Box::new(ev.normal(item, base)?));
                 }
-                NodeKind::Angle => {
-                    let a = ev.float(&item.args[0])?;
+                (_, View::Angle { angle, vertical }) => {
+                    let a = ev.float(angle)?;
                     // (`angle 0` on a perspective or orthographic camera changes nothing, as
                     // in POV-Ray.)
                     if c.projection.is_planar() && a == 0.0 {
@@ -1463,17 +1487,17 @@ impl<'a> Evaluator<'a> {
                     if c.projection.is_planar() && !(a > 0.0 && a < 180.0) {
                         return Err(Diagnostic::error(
                             "camera angle must be between 0 and 180 degrees",
-                            item.args[0].span,
+                            angle.span,
                         ));
                     }
                     if a < 0.0 {
                         return Err(Diagnostic::error(
                             "camera angle must not be negative",
-                            item.args[0].span,
+                            angle.span,
                         ));
                     }
                     c.angle = Some((a, item.span));
-                    c.v_angle = match item.args.get(1) {
+                    c.v_angle = match vertical {
                         Some(v) if matches!(c.projection, ir::Projection::Spherical { .. }) => {
                             Some(ev.float(v)?)
                         }
@@ -1486,7 +1510,7 @@ impl<'a> Evaluator<'a> {
                         None => None,
                     };
                 }
-                NodeKind::IdentRef => match ev.lookup(item)? {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
                     Value::Camera(camera) => {
                         c = *camera;
                         declared = true;
@@ -1497,10 +1521,10 @@ impl<'a> Evaluator<'a> {
                     let t = ev.transform(item)?;
                     c.transform = Some(c.transform.unwrap_or(Transform::IDENTITY).then(t));
                 }
-                NodeKind::Unknown if item.word == "cylinder" => {
-                    let e = item.args.first().ok_or_else(|| {
-                        Diagnostic::error("`cylinder` needs its type, 1 to 4", item.word_span)
-                    })?;
+                (_, View::Unknown { values }) if item.word == "cylinder" => {
+                    let [e, ..] = values else {
+                        return Err(Diagnostic::error("`cylinder` needs its type, 1 to 4", item.word_span));
+                    };
                     let n = ev.float(e)?;
                     if !(1.0..5.0).contains(&n) {
                         return Err(Diagnostic::error(
@@ -1513,7 +1537,7 @@ impl<'a> Evaluator<'a> {
                         angle: 90.0,
                     };
                 }
-                NodeKind::CameraType
+                (NodeKind::CameraType, _)
                     if matches!(
                         item.word.as_str(),
                         "fisheye" | "ultra_wide_angle" | "omnimax" | "panoramic" | "spherical"
@@ -1527,13 +1551,13 @@ impl<'a> Evaluator<'a> {
                         _ => ir::Projection::Spherical { h: 360.0, v: 180.0 },
                     };
                 }
-                NodeKind::CameraType | NodeKind::Unknown if item.word == "mesh_camera" => {
+                (NodeKind::CameraType | NodeKind::Unknown, _) if item.word == "mesh_camera" => {
                     return Err(Diagnostic::error(
                         "`mesh_camera` takes a block: `mesh_camera { RAYS DISTRIBUTION mesh { … } }`",
                         item.word_span,
                     ));
                 }
-                NodeKind::CameraType | NodeKind::Unknown if item.word == "user_defined" => {
+                (NodeKind::CameraType | NodeKind::Unknown, _) if item.word == "user_defined" => {
                     return Err(Diagnostic::error(
                         "unsupported: the user_defined camera (this camera type is not supported by trace yet)",
                         item.word_span,
@@ -1546,11 +1570,15 @@ impl<'a> Evaluator<'a> {
         Ok(c)
     }
 
+    /// The value of `metallic [F]`, `fresnel [B]` or `area_illumination [B]`, or `default`
+    /// without one.
     fn optional_float(&mut self, node: &Node, default: f64) -> Result<f64> {
-        match node.args.first() {
-            Some(e) => self.float(e),
-            None => Ok(default),
-        }
+        let value = match node.view() {
+            View::Metallic { amount } => amount,
+            View::Fresnel { on } | View::AreaIllumination { on } => on,
+            _ => return Err(malformed(node, "a flag with an optional value")),
+        };
+        value.map_or(Ok(default), |e| self.float(e))
     }
 
     fn rgb_arg(&mut self, e: &syntax::Expr) -> Result<Rgb> {
@@ -1606,8 +1634,13 @@ impl<'a> Evaluator<'a> {
 /// orthographic rescale → transformations.
 impl Evaluator<'_> {
     /// One focal blur item of a camera, with POV-Ray's checks.
-    fn camera_blur(&mut self, item: &Node, c: &mut CameraItems) -> Result<()> {
-        let first = &item.args[0];
+    fn camera_blur(
+        &mut self,
+        item: &Node,
+        first: &Expr,
+        max: Option<&Expr>,
+        c: &mut CameraItems,
+    ) -> Result<()> {
         match item.word.as_str() {
             "aperture" => c.aperture = self.float(first)?,
             "focal_point" => c.focal_point = Some(self.vec3(first)?),
@@ -1619,7 +1652,7 @@ impl Evaluator<'_> {
                         first.span,
                     ));
                 }
-                c.blur_samples = match item.args.get(1) {
+                c.blur_samples = match max {
                     Some(e) => {
                         let b = self.float(e)?;
                         if a > b {
@@ -1650,10 +1683,10 @@ impl Evaluator<'_> {
                 }
             }
         }
-        if item.args.len() > 1 && item.word != "blur_samples" {
+        if let Some(extra) = max.filter(|_| item.word != "blur_samples") {
             return Err(Diagnostic::error(
                 format!("`{}` takes one value", item.word),
-                item.args[1].span,
+                extra.span,
             ));
         }
         Ok(())
@@ -1798,28 +1831,36 @@ impl Evaluator<'_> {
     /// `mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { … } … [smooth] }`, with
     /// POV-Ray's checks.
     fn mesh_camera(&mut self, node: &Node) -> Result<ir::MeshCamera> {
-        let rays = self.float(&node.args[0])?;
+        let View::MeshCamera {
+            rays: rays_expr,
+            distribution: distribution_expr,
+            max_distance,
+        } = node.view()
+        else {
+            return Err(malformed(node, "a mesh_camera"));
+        };
+        let rays = self.float(rays_expr)?;
         if rays.is_nan() || rays < 1.0 {
             return Err(Diagnostic::error(
                 "mesh_camera: rays per pixel may not be 0",
-                node.args[0].span,
+                rays_expr.span,
             ));
         }
-        let distribution = self.float(&node.args[1])?;
+        let distribution = self.float(distribution_expr)?;
         if !(0.0..4.0).contains(&distribution) {
             return Err(Diagnostic::error(
                 "mesh_camera: unrecognized distribution method (0 to 3)",
-                node.args[1].span,
+                distribution_expr.span,
             ));
         }
         let (rays, distribution) = (rays.min(u32::MAX as f64) as u32, distribution as u8);
         if distribution >= 2 && rays != 1 {
             return Err(Diagnostic::error(
                 "mesh_camera: rays per pixel must be 1 for distribution method 2 or 3",
-                node.args[0].span,
+                rays_expr.span,
             ));
         }
-        let max_distance = match node.args.get(2) {
+        let max_distance = match max_distance {
             Some(e) => self.float(e)?,
             None => 0.0,
         };
@@ -1863,7 +1904,7 @@ impl Evaluator<'_> {
         if distribution == 0 && rays as usize > meshes.len() {
             return Err(Diagnostic::error(
                 "mesh_camera: rays per pixel must be at most the number of meshes for distribution method 0",
-                node.args[0].span,
+                rays_expr.span,
             ));
         }
         if distribution == 3 && meshes.len() > 1 {

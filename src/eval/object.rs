@@ -7,7 +7,8 @@
 use super::{Evaluator, Result, Value, expr::type_error, value::Vector};
 use crate::diag::{Diagnostic, Span};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
-use crate::syntax::{Expr, ExprKind, Node, NodeKind};
+use crate::syntax::view::List;
+use crate::syntax::{Expr, ExprKind, Node, NodeKind, View};
 use glam::{DMat3, DVec2, DVec3};
 use std::sync::Arc;
 
@@ -98,9 +99,9 @@ pub(crate) fn is_object(kind: NodeKind) -> bool {
     )
 }
 
-/// A sphere or cylinder outside a blob takes no strength (its value after the first `n`).
-fn no_strength(node: &Node, n: usize) -> Result<()> {
-    match node.args.get(n) {
+/// A sphere or cylinder outside a blob takes no strength (a value after its `n` values).
+fn no_strength(node: &Node, n: usize, strength: Option<&Expr>) -> Result<()> {
+    match strength {
         Some(e) => Err(Diagnostic::error(
             format!(
                 "a strength belongs to a blob's components: this {} takes {n} values",
@@ -109,6 +110,40 @@ fn no_strength(node: &Node, n: usize) -> Result<()> {
             e.span,
         )),
         None => Ok(()),
+    }
+}
+
+/// A cone or cylinder from its ends (base, base radius, cap, cap radius); `open` among its
+/// modifiers leaves the caps off.
+fn cone(node: &Node, modifiers: &[Node], ends: (DVec3, f64, DVec3, f64)) -> Result<ObjectValue> {
+    let (base, base_radius, cap, cap_radius) = ends;
+    if base == cap {
+        return Err(Diagnostic::error(
+            "the two ends are the same point",
+            node.word_span,
+        ));
+    }
+    if base_radius == 0.0 && cap_radius == 0.0 {
+        return Err(Diagnostic::error("both radii are zero", node.word_span));
+    }
+    let open = modifiers
+        .iter()
+        .any(|m| m.kind == NodeKind::Flag && m.word == "open");
+    Ok(ObjectValue::single(Shape::Cone {
+        base,
+        base_radius,
+        cap,
+        cap_radius,
+        open,
+    }))
+}
+
+/// Whether a flag (`hollow`, `no_shadow` …) is on: without a value, or with one that is not
+/// `off` (the grammar reads `on`/`off`/`true`/`false`/`yes`/`no` as 1 and 0).
+fn flag_on(flag: &Node) -> bool {
+    match flag.view() {
+        View::Flag { on: Some(e) } => !matches!(e.kind, ExprKind::Number(v) if v == 0.0),
+        _ => true,
     }
 }
 
@@ -241,89 +276,96 @@ impl ObjectValue {
 impl Evaluator<'_> {
     /// Evaluates an object statement with its modifiers.
     pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
-        let mut modifiers = &node.children[..];
-        let mut object = match node.kind {
-            NodeKind::Sphere => {
-                no_strength(node, 2)?;
-                let centre = self.vec3(&node.args[0])?;
-                let radius = self.float(&node.args[1])?;
+        let mut modifiers = node.children.as_slice();
+        let mut object = match (node.kind, node.view()) {
+            (
+                _,
+                View::Sphere {
+                    centre,
+                    radius,
+                    strength,
+                },
+            ) => {
+                no_strength(node, 2, strength)?;
+                let centre = self.vec3(centre)?;
+                let radius = self.float(radius)?;
                 ObjectValue::single(Shape::Sphere { centre, radius })
             }
-            NodeKind::Blob => {
+            (NodeKind::Blob, _) => {
                 modifiers = &[];
                 self.blob(node)?
             }
-            NodeKind::Isosurface => {
+            (NodeKind::Isosurface, _) => {
                 modifiers = &[];
                 self.isosurface(node)?
             }
-            NodeKind::Parametric => {
+            (_, View::Parametric { uv_min, uv_max }) => {
                 modifiers = &[];
-                self.parametric(node)?
+                self.parametric(node, uv_min, uv_max)?
             }
-            NodeKind::Plane => {
-                let normal = self.nonzero(&node.args[0], "plane normal")?;
-                let distance = self.float(&node.args[1])?;
+            (_, View::Plane { normal, distance }) => {
+                let normal = self.nonzero(normal, "plane normal")?;
+                let distance = self.float(distance)?;
                 // POV-Ray normalises the normal first: `plane { <0,2,0>, 1 }` is y = 1.
                 ObjectValue::single(Shape::Plane {
                     normal: normal.normalize(),
                     distance,
                 })
             }
-            NodeKind::Box => {
-                let a = self.vec3(&node.args[0])?;
-                let b = self.vec3(&node.args[1])?;
+            (_, View::Box { corner1, corner2 }) => {
+                let a = self.vec3(corner1)?;
+                let b = self.vec3(corner2)?;
                 ObjectValue::single(Shape::Box {
                     min: a.min(b),
                     max: a.max(b),
                 })
             }
-            NodeKind::Cylinder | NodeKind::Cone => {
-                let is_cone = node.kind == NodeKind::Cone;
-                if !is_cone {
-                    no_strength(node, 3)?;
-                }
-                let a = &node.args;
-                let (base, base_radius, cap, cap_radius) = if is_cone {
-                    (
-                        self.vec3(&a[0])?,
-                        self.float(&a[1])?,
-                        self.vec3(&a[2])?,
-                        self.float(&a[3])?,
-                    )
-                } else {
-                    let (base, cap, radius) =
-                        (self.vec3(&a[0])?, self.vec3(&a[1])?, self.float(&a[2])?);
-                    (base, radius, cap, radius)
-                };
-                if base == cap {
-                    return Err(Diagnostic::error(
-                        "the two ends are the same point",
-                        node.word_span,
-                    ));
-                }
-                if base_radius == 0.0 && cap_radius == 0.0 {
-                    return Err(Diagnostic::error("both radii are zero", node.word_span));
-                }
-                let open = modifiers
-                    .iter()
-                    .any(|m| m.kind == NodeKind::Flag && m.word == "open");
-                ObjectValue::single(Shape::Cone {
+            (
+                _,
+                View::Cylinder {
+                    base,
+                    cap,
+                    radius,
+                    strength,
+                },
+            ) => {
+                no_strength(node, 3, strength)?;
+                let (base, cap, radius) = (self.vec3(base)?, self.vec3(cap)?, self.float(radius)?);
+                cone(node, modifiers, (base, radius, cap, radius))?
+            }
+            (
+                _,
+                View::Cone {
                     base,
                     base_radius,
                     cap,
                     cap_radius,
-                    open,
-                })
+                },
+            ) => {
+                let ends = (
+                    self.vec3(base)?,
+                    self.float(base_radius)?,
+                    self.vec3(cap)?,
+                    self.float(cap_radius)?,
+                );
+                cone(node, modifiers, ends)?
             }
-            NodeKind::Disc => {
-                let centre = self.vec3(&node.args[0])?;
-                let normal = self.nonzero(&node.args[1], "disc normal")?.normalize();
-                let radius = self.float(&node.args[2])?;
+            (
+                _,
+                View::Disc {
+                    centre,
+                    normal,
+                    radius,
+                    holes,
+                },
+            ) => {
+                let centre = self.vec3(centre)?;
+                let normal = self.nonzero(normal, "disc normal")?.normalize();
+                let radius = self.float(radius)?;
                 // (Each value after the radius is the hole's radius again, as POV-Ray reads
                 // them: the last counts.)
                 let mut hole_radius = 0.0;
-                for e in &node.args[3..] {
+                for e in holes {
                     hole_radius = self.float(e)?;
                 }
                 ObjectValue::single(Shape::Disc {
@@ -333,7 +375,7 @@ impl Evaluator<'_> {
                     hole_radius,
                 })
             }
-            NodeKind::Shape => {
+            (NodeKind::Shape, _) => {
                 let shape = self.shape_table(node)?;
                 let first = match &shape {
                     // POV-Ray turns every text by 0.001° about each axis before the scene's
@@ -353,18 +395,19 @@ impl Evaluator<'_> {
                 }
                 object
             }
-            NodeKind::Torus => {
-                let major = self.float(&node.args[0])?;
-                let minor = self.float(&node.args[1])?;
+            (_, View::Torus { major, minor }) => {
+                let minor_span = minor.span;
+                let major = self.float(major)?;
+                let minor = self.float(minor)?;
                 if minor <= 0.0 || major < 0.0 {
                     return Err(Diagnostic::error(
                         "torus radii must be positive",
-                        node.args[1].span,
+                        minor_span,
                     ));
                 }
                 ObjectValue::single(Shape::Torus { major, minor })
             }
-            NodeKind::Triangle | NodeKind::SmoothTriangle => {
+            (NodeKind::Triangle | NodeKind::SmoothTriangle, _) => {
                 let mut mesh = Mesh {
                     world_uv: true,
                     ..Mesh::default()
@@ -380,7 +423,7 @@ impl Evaluator<'_> {
                     object
                 }
             }
-            NodeKind::Mesh => {
+            (NodeKind::Mesh, _) => {
                 let mut mesh = Mesh::default();
                 let split = node
                     .children
@@ -432,16 +475,16 @@ impl Evaluator<'_> {
                     ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
                 }
             }
-            NodeKind::Mesh2 => {
+            (NodeKind::Mesh2, _) => {
                 let (mesh, rest) = self.mesh2(node)?;
                 modifiers = rest;
                 ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
             }
-            NodeKind::MeshFile => {
+            (_, View::MeshFile(file)) => {
                 modifiers = &node.children;
-                ObjectValue::single(Shape::Mesh(self.mesh_file(&node.args[0])?))
+                ObjectValue::single(Shape::Mesh(self.mesh_file(file)?))
             }
-            NodeKind::Union => {
+            (NodeKind::Union, _) => {
                 if node.word == "composite" {
                     self.warn(Diagnostic::warning(
                         "`composite` is POV-Ray's old name of `union`: read as a union (POV-Ray warns too)",
@@ -496,8 +539,20 @@ impl Evaluator<'_> {
                 }
                 group
             }
-            NodeKind::ObjectRef | NodeKind::LooksLike => {
-                let (first, rest) = node.children.split_first().expect("object {} has a body");
+            (
+                _,
+                View::ObjectRef {
+                    body: first,
+                    modifiers: rest,
+                },
+            )
+            | (
+                _,
+                View::LooksLike {
+                    body: first,
+                    modifiers: rest,
+                },
+            ) => {
                 modifiers = rest;
                 match first.kind {
                     NodeKind::LightSource => {
@@ -514,7 +569,7 @@ impl Evaluator<'_> {
                     _ => self.object(first)?,
                 }
             }
-            _ => unreachable!("{:?} is not an object", node.kind),
+            _ => return Err(super::malformed(node, "an object")),
         };
         self.each_item(modifiers, &mut |ev, m| {
             ev.object_modifier(&mut object, m, node)
@@ -534,36 +589,37 @@ impl Evaluator<'_> {
         args: &[Expr],
         span: Span,
     ) -> Result<Value> {
-        let arity_ok = match name {
-            "trace" => (3..=4).contains(&args.len()),
-            "inside" => args.len() == 2,
-            _ => args.len() == 1,
+        let (object, rest) = match (name, args) {
+            ("trace", [object, rest @ ..]) if matches!(rest.len(), 2 | 3) => (object, rest),
+            ("inside", [object, rest @ ..]) if rest.len() == 1 => (object, rest),
+            ("min_extent" | "max_extent", [object]) => (object, &[][..]),
+            _ => {
+                let wanted = match name {
+                    "trace" => {
+                        "an object, a start point, a direction and optionally a vector for the normal"
+                    }
+                    "inside" => "an object and a point",
+                    _ => "an object",
+                };
+                return Err(Diagnostic::error(format!("`{name}` takes {wanted}"), span));
+            }
         };
-        if !arity_ok {
-            let wanted = match name {
-                "trace" => {
-                    "an object, a start point, a direction and optionally a vector for the normal"
-                }
-                "inside" => "an object and a point",
-                _ => "an object",
-            };
-            return Err(Diagnostic::error(format!("`{name}` takes {wanted}"), span));
-        }
-        let query = self.object_query_of(&args[0])?;
-        Ok(match name {
-            "trace" => {
-                let origin = self.vec3(&args[1])?;
-                let direction = self.vec3(&args[2])?;
+        let query = self.object_query_of(object)?;
+        Ok(match rest {
+            [origin, direction, normal_to @ ..] => {
+                let origin = self.vec3(origin)?;
+                let direction_span = direction.span;
+                let direction = self.vec3(direction)?;
                 if direction.length_squared() == 0.0 {
                     return Err(Diagnostic::error(
                         "`trace`: the direction is the zero vector",
-                        args[2].span,
+                        direction_span,
                     ));
                 }
                 let (point, normal) = query
                     .trace(origin, direction.normalize())
                     .unwrap_or((DVec3::ZERO, DVec3::ZERO));
-                if let Some(n) = args.get(3) {
+                if let Some(n) = normal_to.first() {
                     let ExprKind::Ident(var, _) = &n.kind else {
                         return Err(Diagnostic::error(
                             "`trace` gives the normal to a variable named here",
@@ -574,8 +630,8 @@ impl Evaluator<'_> {
                 }
                 Value::Vector(Vector::from_vec3(point))
             }
-            "inside" => {
-                let p = self.vec3(&args[1])?;
+            [point] => {
+                let p = self.vec3(point)?;
                 Value::Float(if query.inside(p) { 1.0 } else { 0.0 })
             }
             _ => {
@@ -683,43 +739,37 @@ impl Evaluator<'_> {
                 NodeKind::Function => function = Some(ev.function(item)?),
                 // (`open` among the modifiers reads as a flag.)
                 NodeKind::Flag if item.word == "open" => iso.closed = false,
-                NodeKind::ContainedBy => {
-                    let shape = &item.children[0];
-                    iso.container = if shape.kind == NodeKind::Sphere {
-                        ir::Container::Sphere(ev.vec3(&shape.args[0])?, ev.float(&shape.args[1])?)
-                    } else {
-                        let (a, b) = (ev.vec3(&shape.args[0])?, ev.vec3(&shape.args[1])?);
-                        ir::Container::Box(a.min(b), a.max(b))
-                    };
-                }
+                NodeKind::ContainedBy => iso.container = ev.container(item)?,
                 NodeKind::IsoSetting => {
-                    let value = |ev: &mut Self, i: usize| -> Result<f64> {
-                        match item.args.get(i) {
-                            Some(e) => ev.float(e),
-                            None => Err(Diagnostic::error(format!("`{}` needs a value", item.word), item.word_span)),
-                        }
+                    let View::IsoSetting { values } = item.view() else {
+                        return Err(super::malformed(item, "an isosurface setting"));
                     };
-                    let takes = usize::from(!matches!(item.word.as_str(), "open" | "all_intersections"));
-                    let takes = if item.word == "evaluate" { 3 } else { takes };
-                    if let Some(extra) = item.args.get(takes) {
+                    let word = item.word.as_str();
+                    let takes = match word {
+                        "open" | "all_intersections" => 0,
+                        "evaluate" => 3,
+                        _ => 1,
+                    };
+                    if let Some(extra) = values.get(takes..).and_then(<[Expr]>::first) {
                         return Err(Diagnostic::error(
-                            format!("`{}` takes {takes} value{}", item.word, if takes == 1 { "" } else { "s" }),
+                            format!("`{word}` takes {takes} value{}", if takes == 1 { "" } else { "s" }),
                             extra.span,
                         ));
                     }
-                    match item.word.as_str() {
-                        "threshold" => iso.threshold = value(ev, 0)?,
-                        "accuracy" => iso.accuracy = value(ev, 0)?,
-                        "max_gradient" => iso.max_gradient = value(ev, 0)?,
-                        "max_trace" => iso.max_trace = value(ev, 0)?.max(1.0) as u32,
-                        "all_intersections" => iso.max_trace = 10,
-                        "open" => iso.closed = false,
-                        _ => {
+                    match (word, values) {
+                        ("threshold", [v]) => iso.threshold = ev.float(v)?,
+                        ("accuracy", [v]) => iso.accuracy = ev.float(v)?,
+                        ("max_gradient", [v]) => iso.max_gradient = ev.float(v)?,
+                        ("max_trace", [v]) => iso.max_trace = ev.float(v)?.max(1.0) as u32,
+                        ("all_intersections", []) => iso.max_trace = 10,
+                        ("open", []) => iso.closed = false,
+                        ("evaluate", _) => {
                             return Err(Diagnostic::error(
                                 "unsupported: `evaluate` on an isosurface (trace keeps max_gradient fixed)",
                                 item.word_span,
                             ));
                         }
+                        _ => return Err(Diagnostic::error(format!("`{word}` needs a value"), item.word_span)),
                     }
                 }
                 _ => modifiers.push(item.clone()),
@@ -752,8 +802,26 @@ impl Evaluator<'_> {
         Ok(object)
     }
 
+    /// `contained_by { box {…} | sphere {…} }`.
+    fn container(&mut self, contained_by: &Node) -> Result<ir::Container> {
+        let View::ContainedBy { shape } = contained_by.view() else {
+            return Err(super::malformed(contained_by, "contained_by"));
+        };
+        match shape.view() {
+            View::Sphere { centre, radius, .. } => Ok(ir::Container::Sphere(
+                self.vec3(centre)?,
+                self.float(radius)?,
+            )),
+            View::Box { corner1, corner2 } => {
+                let (a, b) = (self.vec3(corner1)?, self.vec3(corner2)?);
+                Ok(ir::Container::Box(a.min(b), a.max(b)))
+            }
+            _ => Err(super::malformed(shape, "a box or a sphere")),
+        }
+    }
+
     /// `parametric { function {…} ×3 <u1, v1>, <u2, v2> [contained_by {…}] settings… modifiers }`.
-    fn parametric(&mut self, node: &Node) -> Result<ObjectValue> {
+    fn parametric(&mut self, node: &Node, uv_min: &Expr, uv_max: &Expr) -> Result<ObjectValue> {
         let mut functions = Vec::new();
         let mut container = ir::Container::Box(DVec3::splat(-1.0), DVec3::splat(1.0));
         let (mut accuracy, mut max_gradient, mut precompute) = (0.001, 1.0, None);
@@ -769,35 +837,28 @@ impl Evaluator<'_> {
                 )),
             }
         };
-        let (a, b) = (uv(self, &node.args[0])?, uv(self, &node.args[1])?);
+        let (a, b) = (uv(self, uv_min)?, uv(self, uv_max)?);
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
                 NodeKind::Function => functions.push(ev.function(item)?),
-                NodeKind::ContainedBy => {
-                    let shape = &item.children[0];
-                    container = if shape.kind == NodeKind::Sphere {
-                        ir::Container::Sphere(ev.vec3(&shape.args[0])?, ev.float(&shape.args[1])?)
-                    } else {
-                        let (a, b) = (ev.vec3(&shape.args[0])?, ev.vec3(&shape.args[1])?);
-                        ir::Container::Box(a.min(b), a.max(b))
-                    };
-                }
-                NodeKind::IsoSetting => match item.word.as_str() {
-                    "accuracy" | "max_gradient" if item.args.len() == 1 => {
-                        let v = ev.float(&item.args[0])?;
+                NodeKind::ContainedBy => container = ev.container(item)?,
+                NodeKind::IsoSetting => match (item.word.as_str(), item.view()) {
+                    ("accuracy" | "max_gradient", View::IsoSetting { values: [v] }) => {
+                        let v = ev.float(v)?;
                         if item.word == "accuracy" {
                             accuracy = v;
                         } else {
                             max_gradient = v;
                         }
                     }
-                    "precompute" if !item.args.is_empty() && item.args.len() <= 4 => {
-                        let depth = ev.float(&item.args[0])?;
+                    ("precompute", View::IsoSetting { values: [depth, named @ ..] }) if named.len() <= 3 => {
+                        let depth_span = depth.span;
+                        let depth = ev.float(depth)?;
                         if !(1.0..=20.0).contains(&depth) {
-                            return Err(Diagnostic::error("precompute's depth is 1 to 20", item.args[0].span));
+                            return Err(Diagnostic::error("precompute's depth is 1 to 20", depth_span));
                         }
                         let mut axes = [false; 3];
-                        for e in &item.args[1..] {
+                        for e in named {
                             match &e.kind {
                                 crate::syntax::ExprKind::Ident(w, _) if w == "x" => axes[0] = true,
                                 crate::syntax::ExprKind::Ident(w, _) if w == "y" => axes[1] = true,
@@ -864,12 +925,12 @@ impl Evaluator<'_> {
                     item.word_span,
                 ));
             }
-            match item.kind {
-                NodeKind::BlobThreshold => blob.threshold = ev.float(&item.args[0])?,
-                NodeKind::BlobComponent => {
-                    let strength = ev.float(&item.args[0])?;
-                    let radius = ev.float(&item.args[1])?;
-                    let centre = ev.vec3(&item.args[2])?;
+            match (item.kind, item.view()) {
+                (_, View::BlobThreshold(threshold)) => blob.threshold = ev.float(threshold)?,
+                (_, View::BlobComponent { strength, radius, centre }) => {
+                    let strength = ev.float(strength)?;
+                    let radius = ev.float(radius)?;
+                    let centre = ev.vec3(centre)?;
                     blob.components.push(ir::BlobComponent {
                         reach: ir::BlobReach::Sphere(centre),
                         radius,
@@ -878,29 +939,31 @@ impl Evaluator<'_> {
                         texture: None,
                     });
                 }
-                NodeKind::Sphere | NodeKind::Cylinder => {
-                    let sphere = item.kind == NodeKind::Sphere;
-                    let n = if sphere { 2 } else { 3 };
-                    let Some(strength) = item.args.get(n) else {
+                (_, view @ (View::Sphere { strength, .. } | View::Cylinder { strength, .. })) => {
+                    let Some(strength) = strength else {
                         return Err(Diagnostic::error(
                             format!("a blob's {} takes a strength after its radius", item.word),
                             item.span,
                         ));
                     };
                     let strength = ev.float(strength)?;
-                    let reach = if sphere {
-                        ir::BlobReach::Sphere(ev.vec3(&item.args[0])?)
-                    } else {
-                        let (a, b) = (ev.vec3(&item.args[0])?, ev.vec3(&item.args[1])?);
-                        if (b - a).length() < 1e-10 {
-                            return Err(Diagnostic::error(
-                                "this blob cylinder's two ends are the same point",
-                                item.word_span,
-                            ));
+                    let (reach, radius) = match view {
+                        View::Cylinder { base, cap, radius, .. } => {
+                            let (a, b) = (ev.vec3(base)?, ev.vec3(cap)?);
+                            if (b - a).length() < 1e-10 {
+                                return Err(Diagnostic::error(
+                                    "this blob cylinder's two ends are the same point",
+                                    item.word_span,
+                                ));
+                            }
+                            (ir::BlobReach::Cylinder(a, b), radius)
                         }
-                        ir::BlobReach::Cylinder(a, b)
+                        View::Sphere { centre, radius, .. } => {
+                            (ir::BlobReach::Sphere(ev.vec3(centre)?), radius)
+                        }
+                        _ => return Err(super::malformed(item, "a blob component")),
                     };
-                    let radius = ev.float(&item.args[n - 1])?;
+                    let radius = ev.float(radius)?;
                     let mut transform: Option<Transform> = None;
                     let mut texture: Option<Texture> = None;
                     ev.each_item(&item.children, &mut |ev, m| {
@@ -1058,10 +1121,7 @@ impl Evaluator<'_> {
                 object.interior = Some(self.interior(m, base)?);
             }
             NodeKind::Flag if m.word == "hollow" => {
-                let on = m
-                    .args
-                    .first()
-                    .is_none_or(|e| !matches!(e.kind, ExprKind::Number(v) if v == 0.0));
+                let on = flag_on(m);
                 // On one object the last `hollow` counts; a group's goes to the members that
                 // have none of their own.
                 for part in &mut object.parts {
@@ -1073,10 +1133,7 @@ impl Evaluator<'_> {
                 }
             }
             // `no_shadow false` …: the flag is not set.
-            NodeKind::Flag
-                if m.args
-                    .first()
-                    .is_some_and(|e| matches!(e.kind, ExprKind::Number(v) if v == 0.0)) => {}
+            NodeKind::Flag if !flag_on(m) => {}
             // A shape's own words (`ttf`, `conic_sweep`, `open` of a prism…): read by the
             // shape table.
             NodeKind::Flag
@@ -1128,7 +1185,9 @@ impl Evaluator<'_> {
             NodeKind::ColourItem => {
                 // POV-Ray's quick colour: used only by its low-quality previews (+Q5 and
                 // below), ignored at the quality trace renders (checked against POV-Ray).
-                self.eval(&m.args[0])?;
+                if let View::ColourItem(colour) = m.view() {
+                    self.eval(colour)?;
+                }
                 self.warn(Diagnostic::warning(
                     "a colour among an object's items is POV-Ray's quick colour (for low-quality previews only): ignored; use pigment { … } to colour the object",
                     m.span,
@@ -1278,17 +1337,23 @@ impl Evaluator<'_> {
     /// their sides; a stand-alone smooth triangle keeps equal normals smooth and is dropped
     /// when they straddle its face, as POV-Ray does.)
     fn add_triangle(&mut self, mesh: &mut Mesh, node: &Node, in_mesh: bool) -> Result<()> {
-        let smooth = node.kind == NodeKind::SmoothTriangle;
-        let step = if smooth { 2 } else { 1 };
-        let mut p = [DVec3::ZERO; 3];
-        let mut n = [DVec3::ZERO; 3];
-        for i in 0..3 {
-            p[i] = self.vec3(&node.args[i * step])?;
-            if smooth {
-                n[i] = self.vec3(&node.args[i * step + 1])?;
+        let (p, normals) = match node.view() {
+            View::Triangle { a, b, c } => ([self.vec3(a)?, self.vec3(b)?, self.vec3(c)?], None),
+            View::SmoothTriangle {
+                a,
+                a_normal,
+                b,
+                b_normal,
+                c,
+                c_normal,
+            } => {
+                let (a, na) = (self.vec3(a)?, self.vec3(a_normal)?);
+                let (b, nb) = (self.vec3(b)?, self.vec3(b_normal)?);
+                let (c, nc) = (self.vec3(c)?, self.vec3(c_normal)?);
+                ([a, b, c], Some([na, nb, nc]))
             }
-        }
-        let normals = if smooth { Some(n) } else { None };
+            _ => return Err(super::malformed(node, "a triangle")),
+        };
         let Some(normal_indices) =
             self.triangle_normals(mesh, &p, normals, in_mesh, node.word_span)
         else {
@@ -1316,8 +1381,11 @@ impl Evaluator<'_> {
             }
             let corners = match uv {
                 Some(uv) => {
+                    let View::TriangleUv { a, b, c } = uv.view() else {
+                        return Err(super::malformed(uv, "uv_vectors"));
+                    };
                     let base = mesh.uvs.len() as u32;
-                    for e in &uv.args {
+                    for e in [a, b, c] {
                         let v = self.uv(e)?;
                         mesh.uvs.push(v);
                     }
@@ -1372,10 +1440,13 @@ impl Evaluator<'_> {
     }
 
     fn inside_vector<'n>(&mut self, mesh: &mut Mesh, rest: &'n [Node]) -> Result<&'n [Node]> {
-        match rest.first() {
-            Some(iv) if iv.kind == NodeKind::InsideVector => {
-                mesh.inside_vector = Some(self.nonzero(&iv.args[0], "inside_vector")?);
-                Ok(&rest[1..])
+        match rest {
+            [iv, after @ ..] if iv.kind == NodeKind::InsideVector => {
+                let View::InsideVector(direction) = iv.view() else {
+                    return Err(super::malformed(iv, "inside_vector"));
+                };
+                mesh.inside_vector = Some(self.nonzero(direction, "inside_vector")?);
+                Ok(after)
             }
             _ => Ok(rest),
         }
@@ -1383,36 +1454,12 @@ impl Evaluator<'_> {
 
     /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
     fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
-        let is_list = |c: &Node| {
-            matches!(
-                c.kind,
-                NodeKind::VertexVectors
-                    | NodeKind::NormalVectors
-                    | NodeKind::UvVectors
-                    | NodeKind::TextureList
-                    | NodeKind::FaceIndices
-                    | NodeKind::NormalIndices
-                    | NodeKind::UvIndices
-            )
+        let View::Mesh2(parts) = node.view() else {
+            return Err(super::malformed(node, "a mesh2"));
         };
-        let lists_end = node.children.iter().rposition(is_list).map_or(0, |p| p + 1);
-        let sections = &node.children[..lists_end];
-        let i = lists_end;
-        let mut at = 0;
-        let section = |kind: NodeKind, at: &mut usize| -> Option<&Node> {
-            let n = sections.get(*at).filter(|c| c.kind == kind)?;
-            *at += 1;
-            Some(n)
-        };
-        let vertex_node =
-            section(NodeKind::VertexVectors, &mut at).expect("grammar requires vertex_vectors");
-        let normal_node = section(NodeKind::NormalVectors, &mut at);
-        let uv_node = section(NodeKind::UvVectors, &mut at);
-        let texture_node = section(NodeKind::TextureList, &mut at);
-        let face_node =
-            section(NodeKind::FaceIndices, &mut at).expect("grammar requires face_indices");
-        let normal_index_node = section(NodeKind::NormalIndices, &mut at);
-        let uv_index_node = section(NodeKind::UvIndices, &mut at);
+        let (vertex_node, normal_node, uv_node) = (parts.vertices, parts.normals, parts.uvs);
+        let (texture_node, face_node) = (parts.textures, parts.faces);
+        let (normal_index_node, uv_index_node) = (parts.normal_indices, parts.uv_indices);
         let vertices = self.vector_list(vertex_node)?;
         let normals = match normal_node {
             Some(n) => self.vector_list(n)?,
@@ -1457,9 +1504,9 @@ impl Evaluator<'_> {
         // indices, and a single uv serves every corner, as in POV-Ray).
         let uvs = match uv_node {
             Some(n) => {
-                let count = self.list_count(n)?;
-                let mut uvs = Vec::with_capacity(count);
-                for e in &n.args[1..] {
+                let entries = self.list_entries(n)?;
+                let mut uvs = Vec::with_capacity(entries.len());
+                for e in entries {
                     uvs.push(self.uv(e)?);
                 }
                 uvs
@@ -1517,7 +1564,7 @@ impl Evaluator<'_> {
                 node.word_span,
             ));
         }
-        let rest = self.inside_vector(&mut mesh, &node.children[i..])?;
+        let rest = self.inside_vector(&mut mesh, parts.rest)?;
         Ok((mesh, rest))
     }
 
@@ -1564,13 +1611,13 @@ impl Evaluator<'_> {
 
     /// The entries of `vertex_vectors { n, V… }`, checking the count.
     fn vector_list(&mut self, node: &Node) -> Result<Vec<DVec3>> {
-        if let Some(list) = bulk_list(node) {
+        if let List::Bulk(list) = list_view(node)? {
             check_bulk_count(node, list)?;
             return Ok(list.values.iter().map(|v| DVec3::from_array(*v)).collect());
         }
-        let count = self.list_count(node)?;
-        let mut out = Vec::with_capacity(count);
-        for e in &node.args[1..] {
+        let entries = self.list_entries(node)?;
+        let mut out = Vec::with_capacity(entries.len());
+        for e in entries {
             out.push(self.vec3(e)?);
         }
         Ok(out)
@@ -1578,7 +1625,7 @@ impl Evaluator<'_> {
 
     /// The entries of `face_indices { n, <a,b,c>… }`, truncated to integers and range-checked.
     fn index_list(&mut self, node: &Node, limit: usize) -> Result<Vec<[u32; 3]>> {
-        if let Some(list) = bulk_list(node) {
+        if let List::Bulk(list) = list_view(node)? {
             check_bulk_count(node, list)?;
             let mut out = Vec::with_capacity(list.values.len());
             for (k, v) in list.values.iter().enumerate() {
@@ -1586,11 +1633,8 @@ impl Evaluator<'_> {
                 for (slot, &c) in face.iter_mut().zip(v) {
                     let i = c.trunc();
                     if !(i >= 0.0 && (i as usize) < limit) {
-                        let span = Span::new(
-                            node.span.file,
-                            list.offsets[k] as usize,
-                            list.offsets[k + 1] as usize,
-                        );
+                        let (start, end) = list.spans[k];
+                        let span = Span::new(node.span.file, start as usize, end as usize);
                         return Err(Diagnostic::error(
                             format!("index {i} is out of range (0..{limit})"),
                             span,
@@ -1602,9 +1646,9 @@ impl Evaluator<'_> {
             }
             return Ok(out);
         }
-        let count = self.list_count(node)?;
-        let mut out = Vec::with_capacity(count);
-        for e in &node.args[1..] {
+        let entries = self.list_entries(node)?;
+        let mut out = Vec::with_capacity(entries.len());
+        for e in entries {
             let v = match self.eval(e)? {
                 Value::Vector(v) if v.len == 3 => v,
                 Value::Float(_) => {
@@ -1633,7 +1677,10 @@ impl Evaluator<'_> {
 
     /// `texture_list { N, texture {…} … }`.
     fn texture_list(&mut self, node: &Node) -> Result<Vec<ir::Texture>> {
-        let n = self.float(&node.args[0])?;
+        let View::TextureList(count) = node.view() else {
+            return Err(super::malformed(node, "a texture_list"));
+        };
+        let n = self.float(count)?;
         let mut textures = Vec::new();
         self.each_item(&node.children, &mut |ev, item| {
             if item.kind != NodeKind::Texture {
@@ -1648,7 +1695,7 @@ impl Evaluator<'_> {
                     "`texture_list` announces {n} textures but lists {}",
                     textures.len()
                 ),
-                node.args[0].span,
+                count.span,
             ));
         }
         Ok(textures)
@@ -1663,12 +1710,15 @@ impl Evaluator<'_> {
         limit: usize,
         textures: usize,
     ) -> Result<(Faces, Faces)> {
-        if bulk_list(node).is_some() {
-            let faces = self.index_list(node, limit)?;
-            let own = vec![[ir::OWN_TEXTURE; 3]; faces.len()];
-            return Ok((faces, own));
-        }
-        let n = self.float(&node.args[0])?;
+        let (count, entries) = match list_view(node)? {
+            List::Bulk(_) => {
+                let faces = self.index_list(node, limit)?;
+                let own = vec![[ir::OWN_TEXTURE; 3]; faces.len()];
+                return Ok((faces, own));
+            }
+            List::Entries { count, entries } => (count, entries),
+        };
+        let n = self.float(count)?;
         let (mut faces, mut face_textures) = (Vec::new(), Vec::new());
         let mut pending: Vec<(u32, Span)> = Vec::new();
         let close = |faces: &Vec<[u32; 3]>,
@@ -1690,7 +1740,7 @@ impl Evaluator<'_> {
             pending.clear();
             Ok(())
         };
-        for e in &node.args[1..] {
+        for e in entries {
             match self.eval(e)? {
                 Value::Vector(v) if v.len == 3 => {
                     close(&faces, &mut face_textures, &mut pending)?;
@@ -1727,39 +1777,43 @@ impl Evaluator<'_> {
                     "`face_indices` announces {n} entries but lists {}",
                     faces.len()
                 ),
-                node.args[0].span,
+                count.span,
             ));
         }
         Ok((faces, face_textures))
     }
 
-    fn list_count(&mut self, node: &Node) -> Result<usize> {
-        let n = self.float(&node.args[0])?;
-        let given = node.args.len() - 1;
+    /// A list's entries (not read by a fast lane), their number checked against its count.
+    fn list_entries<'n>(&mut self, node: &'n Node) -> Result<&'n [Expr]> {
+        let List::Entries { count, entries } = list_view(node)? else {
+            return Err(super::malformed(node, "a list of entries"));
+        };
+        let n = self.float(count)?;
+        let given = entries.len();
         if n.trunc() != given as f64 {
             return Err(Diagnostic::error(
                 format!("`{}` announces {n} entries but lists {given}", node.word),
-                node.args[0].span,
+                count.span,
             ));
         }
-        Ok(given)
+        Ok(entries)
     }
 }
 
-/// The body of a list read by the syntax fast path, if it was.
-fn bulk_list(node: &Node) -> Option<&crate::syntax::bulk::BulkList> {
-    match node.args.as_slice() {
-        [
-            Expr {
-                kind: ExprKind::Bulk(list),
-                ..
-            },
-        ] => Some(list),
-        _ => None,
+/// A mesh2 list's body.
+fn list_view(node: &Node) -> Result<List<'_>> {
+    match node.view() {
+        View::VertexVectors(list)
+        | View::NormalVectors(list)
+        | View::UvVectors(list)
+        | View::FaceIndices(list)
+        | View::NormalIndices(list)
+        | View::UvIndices(list) => Ok(list),
+        _ => Err(super::malformed(node, "a mesh2 list")),
     }
 }
 
-/// The announced count of a fast-path list must match its entries (as in [`Evaluator::list_count`]).
+/// The announced count of a fast-path list must match its entries (as in [`Evaluator::list_entries`]).
 fn check_bulk_count(node: &Node, list: &crate::syntax::bulk::BulkList) -> Result<()> {
     let given = list.values.len();
     if list.count.trunc() != given as f64 {

@@ -25,7 +25,7 @@ use super::flow::{Frame, MAX_INCLUDE_DEPTH, MAX_MACRO_DEPTH, Macro};
 use super::{Evaluator, Result, Value};
 use crate::diag::{Diagnostic, FileId, Span};
 use crate::syntax::lexer::{Lexer, Token, TokenKind};
-use crate::syntax::{self, Head, Node, NodeKind, Piece, Unit};
+use crate::syntax::{self, Head, Node, NodeKind, Piece, Unit, View};
 use std::any::Any;
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -378,6 +378,22 @@ impl Emitter {
     fn last_span(&self) -> Option<Span> {
         let end = self.unit.text.len().checked_sub(1)?;
         Some(self.unit.span(end, end + 1))
+    }
+
+    /// An empty emitter with the buffers of a unit read before.
+    fn reusing(mut used: Emitted) -> Emitter {
+        used.unit.text.clear();
+        used.unit.pieces.clear();
+        used.unit.words.clear();
+        used.unit.lists.clear();
+        used.bindings.clear();
+        used.contexts.clear();
+        Emitter {
+            unit: used.unit,
+            bindings: used.bindings,
+            contexts: used.contexts,
+            ..Emitter::default()
+        }
     }
 
     fn finish(self) -> Emitted {
@@ -962,7 +978,7 @@ impl<'a> Evaluator<'a> {
     fn rest_of_group(&mut self, em: &mut Emitter, depth: usize) -> Result<()> {
         let mut open: Vec<Span> = vec![em.last_span().unwrap_or_default(); depth];
         while !open.is_empty() {
-            if self.plain_run(em, &mut open)? {
+            if self.plain_run(em, &mut open, None)? {
                 continue;
             }
             let Some(t) = self.next_token()? else {
@@ -983,8 +999,9 @@ impl<'a> Evaluator<'a> {
                 && t.binding.is_none()
                 && t.end - t.start >= 10
                 && syntax::bulk::KEYWORDS.contains(&self.text_of(&t))
+                && !self.bulk_list(em)
             {
-                self.bulk_list(em);
+                self.evaluated_list(em)?;
             }
         }
         Ok(())
@@ -995,7 +1012,15 @@ impl<'a> Evaluator<'a> {
     /// the current input, up to the group's end or to the first token that needs more (left to
     /// be read the usual way): the same unit as token by token, in one pass. `false` when no
     /// token was read so.
-    fn plain_run(&mut self, em: &mut Emitter, open: &mut Vec<Span>) -> Result<bool> {
+    ///
+    /// With `angles` (inside a vector, after its `<`): `<` and `>` outside brackets count as
+    /// the vector's own, and the run ends with the `>` that closes it.
+    fn plain_run(
+        &mut self,
+        em: &mut Emitter,
+        open: &mut Vec<Span>,
+        mut angles: Option<&mut usize>,
+    ) -> Result<bool> {
         let r = &self.reader;
         let Some(input) = r.inputs.last() else {
             return Ok(false);
@@ -1050,6 +1075,11 @@ impl<'a> Evaluator<'a> {
                     "}" | ")" | "]" => {
                         open.pop();
                     }
+                    "<" | ">" if open.is_empty() => {
+                        if let Some(a) = angles.as_deref_mut() {
+                            *a = if word == "<" { *a + 1 } else { *a - 1 };
+                        }
+                    }
                     _ => {}
                 },
                 TokenKind::Number | TokenKind::Str | TokenKind::Unknown => {}
@@ -1061,7 +1091,11 @@ impl<'a> Evaluator<'a> {
             run = Some((run.map_or(t.start as usize, |(s, _)| s), t.end as usize));
             last_ends_value = this_ends_value;
             stop = lexer.position();
-            if open.is_empty() {
+            let done = match angles.as_deref() {
+                Some(a) => *a == 0,
+                None => open.is_empty(),
+            };
+            if done {
                 break;
             }
         }
@@ -1091,22 +1125,22 @@ impl<'a> Evaluator<'a> {
     /// After a mesh2 list's word: its `{ … }`, if it is a plain list of many entries, read by
     /// the fast lane (`syntax::bulk`) straight from the text, a marker standing for its body
     /// in the unit.
-    fn bulk_list(&mut self, em: &mut Emitter) {
+    fn bulk_list(&mut self, em: &mut Emitter) -> bool {
         let Some(input) = self.reader.inputs.last() else {
-            return;
+            return false;
         };
         if !input.pushback.is_empty() {
-            return;
+            return false;
         }
         let b = input.text.as_bytes();
         let Ok(open) = crate::syntax::lexer::skip_trivia(b, input.pos, input.end) else {
-            return;
+            return false;
         };
         if b.get(open) != Some(&b'{') {
-            return;
+            return false;
         }
         let Some((list, close)) = syntax::bulk::read_list(&input.text, open + 1, input.end) else {
-            return;
+            return false;
         };
         let at = |start: usize, end: usize| Tok {
             kind: TokenKind::Punct,
@@ -1128,6 +1162,81 @@ impl<'a> Evaluator<'a> {
         em.push(&close_tok, &text);
         self.reader.inputs.last_mut().expect("an input").pos = close + 1;
         self.reader.run += 1;
+        true
+    }
+
+    /// After a mesh2 list's word whose body the fast lane left (entries a loop or a macro
+    /// makes, expressions): its `{ … }` read entry by entry, each entry evaluated where it
+    /// stands (as POV-Ray reads a list: the values its names have there are the values they
+    /// would have when the statement is evaluated). A list of 3-vectors becomes a list of the
+    /// fast lane's; in any other, each entry stands in the unit as one word bound to its value.
+    /// Either way the unit holds no entry's tokens: a list of a million entries a loop made
+    /// costs its values, not its text.
+    fn evaluated_list(&mut self, em: &mut Emitter) -> Result<()> {
+        if !self.peek_held_is("{")? {
+            return Ok(());
+        }
+        let open = self.next_token()?.expect("peeked");
+        let mut entries: Vec<(Value, Tok)> = Vec::new();
+        // (One emitter's buffers for every entry.)
+        let mut scratch = Emitter::default();
+        let close = loop {
+            let Some(t) = self.next_token()? else {
+                em.unclosed = Some(open.span());
+                break None;
+            };
+            if t.is(self, "}") {
+                break Some(t);
+            }
+            if t.is(self, ",") && !entries.is_empty() {
+                continue;
+            }
+            self.expression_from(&mut scratch, t.clone())?;
+            let mut entry = std::mem::take(&mut scratch).finish();
+            let expr = self.parsed(&entry, Parse::Expr, syntax::parse_expr)?;
+            let bindings = std::mem::take(&mut entry.bindings);
+            let (value, bindings) = self.with_bindings(bindings, |ev| {
+                let value = ev.eval(&expr);
+                (value, std::mem::take(&mut ev.bindings))
+            });
+            let value = value.map_err(|d| self.noted(d, Some(&entry)))?;
+            let span = entry.unit.span(0, entry.unit.text.len());
+            entry.bindings = bindings;
+            scratch = Emitter::reusing(entry);
+            let stand_in = Tok {
+                kind: TokenKind::Word,
+                end: if span.file == t.file {
+                    span.end.max(t.end)
+                } else {
+                    t.end
+                },
+                binding: None,
+                stand_in: true,
+                ..t
+            };
+            entries.push((value, stand_in));
+        };
+        self.reader.run += 1;
+        let text = Arc::clone(&self.sources.file(open.file).text);
+        em.push(&open, &text);
+        match close.as_ref().and_then(|c| vector_list(&entries, &open, c)) {
+            Some(list) => em.push_list(
+                list,
+                open.file,
+                open.end as usize,
+                close.as_ref().expect("closed").start as usize,
+            ),
+            None => {
+                for (value, mut tok) in entries {
+                    tok.binding = Some(Arc::new(value));
+                    em.push(&tok, &text);
+                }
+            }
+        }
+        if let Some(c) = &close {
+            em.push(c, &text);
+        }
+        Ok(())
     }
 
     /// A required `(…)` group (a condition, a macro's arguments …); `what` names the
@@ -1289,7 +1398,16 @@ impl<'a> Evaluator<'a> {
                 // group keeps whole).
                 self.emit(em, &tok);
                 let mut angles = 1usize;
+                let mut open = Vec::new();
                 while angles > 0 {
+                    if self.plain_run(em, &mut open, Some(&mut angles))? {
+                        // (Stopped inside brackets: the rest of them the usual way.)
+                        if !open.is_empty() {
+                            self.rest_of_group(em, open.len())?;
+                            open.clear();
+                        }
+                        continue;
+                    }
                     let Some(t) = self.next_token()? else {
                         return Ok(());
                     };
@@ -1420,11 +1538,11 @@ impl<'a> Evaluator<'a> {
                     syntax::parse_head(u, Head::Ifdef)
                 })?;
                 // (A number or other value is never declared.)
-                let defined = match node.children.first() {
-                    Some(name) => self
+                let defined = match node.view() {
+                    View::IfDef { name: Some(name) } => self
                         .with_bindings(head.bindings.clone(), |ev| ev.defined(name))
                         .map_err(|d| self.noted(d, Some(&head)))?,
-                    None => false,
+                    _ => false,
                 };
                 self.branch(defined == (word == "ifdef"), at)
             }
@@ -1803,21 +1921,30 @@ impl<'a> Evaluator<'a> {
         let node = self.parsed(&head, Parse::Head(Head::For), |u| {
             syntax::parse_head(u, Head::For)
         })?;
-        let var = node.children[0].word.clone();
+        let View::For {
+            counter,
+            start,
+            end,
+            step,
+        } = node.view()
+        else {
+            return Err(super::malformed(&node, "#for"));
+        };
+        let var = counter.word.clone();
         let (start, last, step) = self
             .with_bindings(head.bindings.clone(), |ev| {
-                let start = ev.float(&node.args[0])?;
-                let last = ev.float(&node.args[1])?;
-                let step = match node.args.get(2) {
-                    Some(e) => ev.float(e)?,
+                let start = ev.float(start)?;
+                let last = ev.float(end)?;
+                let step = match step {
+                    Some(e) => {
+                        let step = ev.float(e)?;
+                        if step == 0.0 {
+                            return Err(Diagnostic::error("#for step must not be zero", e.span));
+                        }
+                        step
+                    }
                     None => 1.0,
                 };
-                if step == 0.0 {
-                    return Err(Diagnostic::error(
-                        "#for step must not be zero",
-                        node.args[2].span,
-                    ));
-                }
                 Ok((start, last, step))
             })
             .map_err(|d| self.noted(d, Some(&head)))?;
@@ -1864,9 +1991,12 @@ impl<'a> Evaluator<'a> {
                     let node = self.parsed(&unit, Parse::Head(Head::Range), |u| {
                         syntax::parse_head(u, Head::Range)
                     })?;
+                    let View::RangeHead { low, high } = node.view() else {
+                        return Err(super::malformed(&node, "#range"));
+                    };
                     let (lo, hi) = self
                         .with_bindings(unit.bindings.clone(), |ev| {
-                            Ok((ev.float(&node.args[0])?, ev.float(&node.args[1])?))
+                            Ok((ev.float(low)?, ev.float(high)?))
                         })
                         .map_err(|d| self.noted(d, Some(&unit)))?;
                     lo <= v && v <= hi
@@ -1971,14 +2101,16 @@ impl<'a> Evaluator<'a> {
         let input = self.reader.inputs.last().expect("an input");
         let (file, start) = (input.file, input.pos);
         let (_, end_at) = self.skip_to(&["end"], at)?;
-        let name = node.children[0].word.clone();
-        let params = node.children[1..].iter().map(|p| p.word.clone()).collect();
+        let View::MacroDef { name, params } = node.view() else {
+            return Err(super::malformed(&node, "#macro"));
+        };
+        let params = params.iter().map(|p| p.word.clone()).collect();
         self.macros.insert(
-            name,
+            name.word.clone(),
             Macro {
                 params,
                 body: Span::new(file, start, end_at.start as usize),
-                name_span: node.children[0].span,
+                name_span: name.span,
             },
         );
         Ok(())
@@ -2280,6 +2412,37 @@ impl<'a> Evaluator<'a> {
 
 /// Whether a declared value's text is an item (a word and its block: `text {…}`,
 /// `difference {…}`, `function (…) {…}`), which may be kept unread until it is used.
+/// A list read entry by entry (`open` to `close`) as the fast lane's list, if its count is a
+/// number and every entry a 3-vector, all written in the list's own file.
+fn vector_list(
+    entries: &[(Value, Tok)],
+    open: &Tok,
+    close: &Tok,
+) -> Option<syntax::bulk::BulkList> {
+    let ((count, count_tok), rest) = entries.split_first()?;
+    let &Value::Float(count) = count else {
+        return None;
+    };
+    if close.file != open.file || entries.iter().any(|(_, t)| t.file != open.file) {
+        return None;
+    }
+    let mut values = Vec::with_capacity(rest.len());
+    let mut spans = Vec::with_capacity(rest.len());
+    for (value, tok) in rest {
+        match value {
+            Value::Vector(v) if v.len == 3 => values.push([v.c[0], v.c[1], v.c[2]]),
+            _ => return None,
+        }
+        spans.push((tok.start, tok.end));
+    }
+    Some(syntax::bulk::BulkList {
+        count,
+        count_range: (count_tok.start, count_tok.end),
+        values,
+        spans,
+    })
+}
+
 fn is_item(text: &str) -> bool {
     let word_end = text
         .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))

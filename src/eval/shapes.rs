@@ -7,7 +7,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::ir::{
     Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline,
 };
-use crate::syntax::{Expr, Node, NodeKind};
+use crate::syntax::{Expr, Node, NodeKind, View};
 use glam::DVec2;
 use std::sync::Arc;
 
@@ -82,9 +82,11 @@ fn items(node: &Node) -> Vec<Item<'_>> {
     node.children
         .iter()
         .filter_map(|c| match c.kind {
-            NodeKind::Value => Some(Item::Value(&c.args[0])),
             NodeKind::Flag if takes(&node.word, &c.word) => Some(Item::Word(c)),
-            _ => None,
+            _ => match c.view() {
+                View::Value(value) => Some(Item::Value(value)),
+                _ => None,
+            },
         })
         .collect()
 }
@@ -93,8 +95,10 @@ fn items(node: &Node) -> Vec<Item<'_>> {
 fn values(node: &Node) -> Vec<&Expr> {
     node.children
         .iter()
-        .filter(|c| c.kind == NodeKind::Value)
-        .map(|c| &c.args[0])
+        .filter_map(|c| match c.view() {
+            View::Value(value) => Some(value),
+            _ => None,
+        })
         .collect()
 }
 
@@ -120,24 +124,21 @@ impl<'a> Evaluator<'a> {
     pub(super) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
         let args = values(node);
         // The values a shape takes, in order, or a located error naming what is missing.
-        let count = |n: usize, form: &str| -> Result<()> {
-            if args.len() == n {
-                return Ok(());
-            }
+        // (At the first value too many, or at the shape's word.)
+        let count = |n: usize, form: &str| -> Diagnostic {
             let at = args.get(n).map_or(node.word_span, |e| e.span);
-            Err(Diagnostic::error(
-                format!("`{}` takes {n} values: {form}", node.word),
-                at,
-            ))
+            Diagnostic::error(format!("`{}` takes {n} values: {form}", node.word), at)
         };
         Ok(match node.word.as_str() {
             "quadric" => {
-                count(4, "quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }")?;
+                let &[square, mixed, linear, constant] = args.as_slice() else {
+                    return Err(count(4, "quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }"));
+                };
                 Shape::Quadric(Box::new(Quadric {
-                    square: self.vec3(args[0])?,
-                    mixed: self.vec3(args[1])?,
-                    linear: self.vec3(args[2])?,
-                    constant: self.float(args[3])?,
+                    square: self.vec3(square)?,
+                    mixed: self.vec3(mixed)?,
+                    linear: self.vec3(linear)?,
+                    constant: self.float(constant)?,
                 }))
             }
             "cubic" | "quartic" | "poly" => {
@@ -146,23 +147,21 @@ impl<'a> Evaluator<'a> {
                     "cubic" => "cubic { <20 coefficients> }",
                     _ => "quartic { <35 coefficients> }",
                 };
-                let poly = node.word == "poly";
-                count(if poly { 2 } else { 1 }, form)?;
-                let degree = match node.word.as_str() {
-                    "cubic" => 3,
-                    "quartic" => 4,
-                    _ => {
-                        let n = self.float(args[0])?;
+                let (degree, list) = match (node.word.as_str(), args.as_slice()) {
+                    ("cubic", &[list]) => (3, list),
+                    ("quartic", &[list]) => (4, list),
+                    ("poly", &[n_expr, list]) => {
+                        let n = self.float(n_expr)?;
                         if !(2.0..=6.0).contains(&n) {
                             return Err(Diagnostic::error(
                                 "unsupported: a poly of degree other than 2 to 6 (trace's root solver goes to 6)",
-                                args[0].span,
+                                n_expr.span,
                             ));
                         }
-                        n as u8
+                        (n as u8, list)
                     }
+                    _ => return Err(count(if node.word == "poly" { 2 } else { 1 }, form)),
                 };
-                let list = &args[usize::from(poly)];
                 // The coefficients: a literal list of any length (POV-Ray reads it so).
                 let coefficients = match &list.kind {
                     crate::syntax::ExprKind::Vector(items) => items
@@ -190,27 +189,27 @@ impl<'a> Evaluator<'a> {
                 Shape::Polynomial(Box::new(polynomial))
             }
             "polygon" => {
-                let n = match args.first() {
-                    Some(e) => self.float(e)?,
-                    None => return Err(count(1, "polygon { N, P1, …, PN }").unwrap_err()),
+                let &[n_expr, ref listed @ ..] = args.as_slice() else {
+                    return Err(count(1, "polygon { N, P1, …, PN }"));
                 };
+                let n = self.float(n_expr)?;
                 if n < 3.0 {
                     return Err(Diagnostic::error(
                         "a polygon needs at least three points",
-                        args[0].span,
+                        n_expr.span,
                     ));
                 }
-                if args.len() - 1 != n as usize {
+                if listed.len() != n as usize {
                     return Err(Diagnostic::error(
                         format!(
                             "this polygon announces {} points and lists {}",
                             n as usize,
-                            args.len() - 1
+                            listed.len()
                         ),
-                        args[0].span,
+                        n_expr.span,
                     ));
                 }
-                let mut points = args[1..]
+                let mut points = listed
                     .iter()
                     .map(|e| self.vec3(e))
                     .collect::<Result<Vec<_>>>()?;
@@ -247,8 +246,10 @@ impl<'a> Evaluator<'a> {
             "bicubic_patch" => self.bicubic_patch(node)?,
             "julia_fractal" => self.julia_fractal(node)?,
             "ovus" => {
-                count(2, "ovus { bottom_radius, top_radius }")?;
-                let (bottom, top) = (self.float(args[0])?, self.float(args[1])?);
+                let &[bottom, top] = args.as_slice() else {
+                    return Err(count(2, "ovus { bottom_radius, top_radius }"));
+                };
+                let (bottom, top) = (self.float(bottom)?, self.float(top)?);
                 if bottom < 0.0 || top < 0.0 {
                     return Err(Diagnostic::error(
                         "both ovus radii must be positive",
@@ -272,8 +273,10 @@ impl<'a> Evaluator<'a> {
             "sor" => self.sor(node)?,
             "sphere_sweep" => self.sphere_sweep(node)?,
             "superellipsoid" => {
-                count(1, "superellipsoid { <e, n> }")?;
-                let v = self.uv(args[0])?;
+                let &[exponents] = args.as_slice() else {
+                    return Err(count(1, "superellipsoid { <e, n> }"));
+                };
+                let v = self.uv(exponents)?;
                 Shape::Superellipsoid { e: v.x, n: v.y }
             }
             _ => return Err(self.unknown_word(&node.word, node.word_span)),
@@ -778,7 +781,15 @@ impl<'a> Evaluator<'a> {
             }
             Ok(v as u32)
         };
-        let (width, depth) = (size(self, &f.args[0])?, size(self, &f.args[1])?);
+        let View::FunctionImage {
+            width,
+            height,
+            body,
+        } = f.view()
+        else {
+            return Err(super::malformed(f, "a function image"));
+        };
+        let (width, depth) = (size(self, width)?, size(self, height)?);
         let point = |x: u32, z: u32| {
             let y = f64::from(depth - 1 - z) / f64::from(depth - 1);
             glam::DVec3::new(f64::from(x) / f64::from(width - 1), y, 0.0)
@@ -806,7 +817,7 @@ impl<'a> Evaluator<'a> {
         }
         let body = Node {
             kind: NodeKind::Function,
-            args: vec![f.args[2].clone()],
+            args: body.into_iter().cloned().collect(),
             children: Vec::new(),
             ..f.clone()
         };

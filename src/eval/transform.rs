@@ -6,7 +6,7 @@
 use super::Evaluator;
 use crate::diag::Diagnostic;
 use crate::ir::Transform;
-use crate::syntax::{ExprKind, Node, NodeKind};
+use crate::syntax::{ExprKind, Node, NodeKind, View};
 use glam::{DMat3, DMat4, DVec3};
 
 /// `rotate <a, b, c>` (degrees): about x by a, then y by b, then z by c (left-handed sense).
@@ -30,25 +30,24 @@ impl Evaluator<'_> {
 
     /// Evaluates one transformation node.
     pub(super) fn transform(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
-        let matrix = match node.kind {
-            NodeKind::Translate => DMat4::from_translation(self.vec3(&node.args[0])?),
-            NodeKind::Rotate => rotation(self.vec3(&node.args[0])?),
-            NodeKind::Scale => {
-                let mut s = self.vec3(&node.args[0])?;
+        let matrix = match node.view() {
+            View::Translate(v) => DMat4::from_translation(self.vec3(v)?),
+            View::Rotate(v) => rotation(self.vec3(v)?),
+            View::Scale(v) => {
+                let mut s = self.vec3(v)?;
                 // POV-Ray replaces a zero scale component by 1 (with a warning).
                 for c in [&mut s.x, &mut s.y, &mut s.z] {
                     if *c == 0.0 {
                         *c = 1.0;
                         self.warn(Diagnostic::warning(
                             "zero scale component replaced by 1 (as POV-Ray does)",
-                            node.args[0].span,
+                            v.span,
                         ));
                     }
                 }
                 DMat4::from_scale(s)
             }
-            NodeKind::Matrix => {
-                let arg = &node.args[0];
+            View::Matrix(arg) => {
                 let ExprKind::Vector(items) = &arg.kind else {
                     return Err(Diagnostic::error(
                         "`matrix` needs a 12-component vector <m00, …, m32>",
@@ -78,8 +77,8 @@ impl Evaluator<'_> {
                 }
                 matrix
             }
-            NodeKind::Transform => return self.transform_block(node),
-            _ => unreachable!("not a transformation node"),
+            View::Block if node.kind == NodeKind::Transform => return self.transform_block(node),
+            _ => return Err(super::malformed(node, "a transformation")),
         };
         Ok(Transform { matrix })
     }

@@ -23,8 +23,8 @@ pub struct BulkList {
     pub count_range: (u32, u32),
     /// The entries.
     pub values: Vec<[f64; 3]>,
-    /// Byte offset in the file of each entry's `<`, and of the end of the last entry.
-    pub offsets: Vec<u32>,
+    /// Where each entry starts and ends in the file.
+    pub spans: Vec<(u32, u32)>,
 }
 
 /// The words whose `{ … }` lists the fast path reads.
@@ -38,7 +38,7 @@ pub const KEYWORDS: [&str; 5] = [
 
 /// The list body that starts at byte `pos` of `text` (just after its `{`), if it is a count
 /// and at least [`MIN_ENTRIES`] plain numeric 3-vectors ending before byte `end`: the list
-/// (its offsets those of `text`) and where its closing `}` stands.
+/// (its spans those of `text`) and where its closing `}` stands.
 pub fn read_list(text: &str, pos: usize, end: usize) -> Option<(BulkList, usize)> {
     let bytes = &text.as_bytes()[..end.min(text.len())];
     let (list, close) = read_body(bytes, pos, 0)?;
@@ -97,7 +97,7 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
         count,
         count_range,
         values: Vec::with_capacity(room),
-        offsets: Vec::with_capacity(room + 1),
+        spans: Vec::with_capacity(room),
     };
     loop {
         match bytes.get(i)? {
@@ -111,7 +111,7 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
         if bytes.get(i) != Some(&b'<') {
             return None;
         }
-        list.offsets.push((offset + i) as u32);
+        let start = (offset + i) as u32;
         let mut v = [0.0; 3];
         i += 1;
         // (Blanks only inside a vector, as in the grammar's `plain_vector`.)
@@ -127,9 +127,9 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
             i += 1;
         }
         list.values.push(v);
+        list.spans.push((start, (offset + i) as u32));
         i = skip_ws(bytes, i);
     }
-    list.offsets.push((offset + i) as u32);
     Some((list, i))
 }
 
@@ -154,7 +154,11 @@ mod tests {
         let (list, close) = read_list(&text, start, text.len()).expect("a list");
         assert_eq!(list.count, 20.0);
         assert_eq!(list.values[3], [3.0, -3.5, 30.0]);
-        assert_eq!(list.offsets.len(), 21);
+        assert_eq!(list.spans.len(), 20);
+        assert_eq!(
+            &text[list.spans[3].0 as usize..list.spans[3].1 as usize],
+            "<3, -3.5,3e1 >"
+        );
         assert_eq!(&text[close..close + 1], "}");
         // The short face list is left to the grammar.
         let faces = text.find("{ 1,").unwrap() + 1;

@@ -9,8 +9,10 @@ mod incremental;
 pub mod lexer;
 pub mod plain;
 mod unit;
+pub mod view;
 
 pub use unit::{Piece, Slot, Unit};
+pub use view::View;
 
 mod grammar {
     #[derive(pest_derive::Parser)]

@@ -267,3 +267,108 @@ fn a_reserved_word_before_a_parenthesis_is_not_called() {
         assert_eq!(nodes[0].children.len(), 1, "{text}");
     }
 }
+
+/// Every node in `node`'s tree whose view is malformed (none, for what the grammar makes).
+fn malformed(node: &Node, out: &mut Vec<String>) {
+    if matches!(node.view(), View::Malformed) {
+        out.push(format!(
+            "{:?} `{}` ({} values)",
+            node.kind,
+            node.word,
+            node.args.len()
+        ));
+    }
+    for c in &node.children {
+        malformed(c, out);
+    }
+    for e in &node.args {
+        if let ExprKind::Item(n) = &e.kind {
+            malformed(n, out);
+        }
+    }
+}
+
+#[test]
+fn view_of_every_node_the_grammar_makes_is_well_formed() {
+    // Each construct with values, in its forms (optional values given and left out).
+    let statements = [
+        "camera { perspective location <0, 1, -3> look_at 0 direction z up y right x sky y angle 60 }",
+        "camera { spherical angle 360, 180 aperture 0.5 blur_samples 4, 16 focal_point 0 confidence 0.9 }",
+        "camera { cylinder 2 }",
+        "camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } }",
+        "camera { mesh_camera { 1 3 0.5 mesh { triangle { 0, x, y } } smooth } }",
+        "light_source { <1, 2, 3>, rgb 1 spotlight point_at 0 radius 10 falloff 20 tightness 5 \
+         fade_distance 4 fade_power 2 area_light x, y, 4, 4 adaptive 1 jitter area_illumination on \
+         looks_like { sphere { 0, 1 } } }",
+        "light_source { <1, 2, 3> area_illumination }",
+        "background { rgb 1 }",
+        "fog { distance 10 fog_type 2 fog_alt 1 fog_offset 0.5 turb_depth 0.3 rgb 0.5 up y }",
+        "global_settings { assumed_gamma 1 max_trace_level 5 adc_bailout 0.01 ambient_light 1 \
+         irid_wavelength rgb <0.25, 0.18, 0.14> max_intersections 64 number_of_waves 10 }",
+        "sphere { 0, 1 hollow on no_shadow }",
+        "blob { threshold 0.5 component 1, 1, 0 sphere { 0, 1, 2 } cylinder { 0, y, 1, strength 2 } }",
+        "plane { y, -1 }",
+        "box { -1, 1 }",
+        "cylinder { 0, y, 1 open }",
+        "cone { 0, 1, y, 0 }",
+        "disc { 0, y, 1 }",
+        "disc { 0, y, 1, 0.5 }",
+        "torus { 1, 0.25 }",
+        "triangle { 0, x, y uv_vectors <0,0>, <1,0>, <0,1> }",
+        "smooth_triangle { 0, y, x, y, z, y }",
+        "mesh { triangle { 0, x, y } inside_vector z }",
+        "mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, y } uv_vectors { 1, <0, 0> } \
+         texture_list { 1, texture { pigment { rgb 1 } } } face_indices { 1, <0, 1, 2>, 0 } \
+         normal_indices { 1, <0, 0, 0> } uv_indices { 1, <0, 0, 0> } inside_vector z }",
+        "isosurface { function { x + y } contained_by { box { -1, 1 } } threshold 0 max_gradient 2 open }",
+        "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> \
+         contained_by { sphere { 0, 2 } } precompute 10 x, y, z accuracy 0.01 }",
+        "object { Thing translate x rotate y scale 2 matrix <1,0,0, 0,1,0, 0,0,1, 0,0,0> \
+         transform { translate x inverse } }",
+        "height_field { function 20, 20 { x * z } }",
+        "quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }",
+        "sphere { 0, 1 texture { pigment { gradient y color_map { [0 rgb 0] [0.2, 0.4 rgb 1 rgb 0] } \
+         turbulence 0.5 frequency 2 poly_wave warp { repeat x offset y } } \
+         normal { bumps 0.5 bump_size 2 slope_map { [0 <0, 1>] } } \
+         finish { ambient 0.1 emission 0 diffuse 0.6, 0.2 brilliance 1 phong 0.5 phong_size 40 \
+         specular 0.2 roughness 0.05 metallic crand 0.1 irid { 0.3 thickness 0.2 turbulence 0.1 } \
+         reflection { 0.1, 0.5 falloff 2 exponent 1 fresnel metallic 0.5 } reflection_exponent 1 \
+         conserve_energy } } }",
+        "sphere { 0, 1 pigment { julia <0.3, 0.5>, 30 pigment_map { [0 rgb 1] [1 P] } } }",
+        "sphere { 0, 1 pigment { magnet 1 mandel 20 interior 1, 1 } }",
+        "sphere { 0, 1 pigment { object { box { 0, 1 } rgb 0, rgb 1 } } }",
+        "sphere { 0, 1 pigment { slope { y, 0, 0.5 altitude y, 0, 1 } } }",
+        "sphere { 0, 1 pigment { image_map { png \"a.png\" gamma 2.2 map_type 1 interpolate 2 once \
+         filter all 0.5 transmit 1, 0.5 } } }",
+        "sphere { 0, 1 pigment { image_map { png \"a.png\" gamma srgb } } }",
+        "sphere { 0, 1 interior { ior 1.5 fade_distance 1 fade_power 2 fade_color rgb 1 } }",
+        "sphere { 0, 1 texture { gradient x texture_map { [0 T1] [1 T2] } } }",
+        "sky_sphere { pigment { rgb 1 } emission rgb 1 }",
+    ];
+    let mut bad = Vec::new();
+    for text in statements {
+        let node = parse(text)
+            .unwrap_or_else(|e| panic!("{text}: {}", e.message))
+            .remove(0);
+        malformed(&node, &mut bad);
+    }
+    // Directive heads.
+    for (text, head) in [
+        ("(I, 0, 10, 2)", Head::For),
+        ("(I, 0, 10)", Head::For),
+        ("(1, 2)", Head::Range),
+        ("(Name)", Head::Ifdef),
+        ("(A[1])", Head::Ifdef),
+        ("M(A, B)", Head::Macro),
+        ("F \"file.txt\" write", Head::Fopen),
+        ("(F, A, B[2])", Head::Read),
+        ("(F, \"text\", uint8 3)", Head::Write),
+        ("deprecated once \"old\" X[1][2] =", Head::Declare),
+        ("X =", Head::Declare),
+    ] {
+        let node = parse_head(&Unit::from_file_text(text, FileId(0), 0), head)
+            .unwrap_or_else(|e| panic!("{text}: {}", e.message));
+        malformed(&node, &mut bad);
+    }
+    assert!(bad.is_empty(), "{bad:#?}");
+}

@@ -522,6 +522,62 @@ fn directives_may_stand_among_and_inside_a_mesh2s_lists() {
     );
 }
 
+/// A mesh2 list a loop or a macro makes is read entry by entry, each evaluated where it
+/// stands: the same mesh as the list written out, whether its entries are all 3-vectors (kept
+/// as numbers) or not (faces with texture indices), and an entry's error points at the entry.
+#[test]
+fn a_list_a_loop_makes_is_read_entry_by_entry_as_written() {
+    let looped = load(
+        "#macro V(X) <X, X*X, 0> #end
+         mesh2 {
+           vertex_vectors { 4 #for (I, 0, 3) V(I) #end }
+           texture_list { 2, texture { pigment { rgb x } } texture { pigment { rgb y } } }
+           face_indices { 2
+             #for (I, 0, 1)
+               #local T = mod(I, 2);
+               <I, I + 1, I + 2> T #if (I = 0) , 1, 0 #end
+             #end
+           }
+         }",
+    );
+    let written = load(
+        "mesh2 {
+           vertex_vectors { 4, <0,0,0>, <1,1,0>, <2,4,0>, <3,9,0> }
+           texture_list { 2, texture { pigment { rgb x } } texture { pigment { rgb y } } }
+           face_indices { 2, <0, 1, 2>, 0, 1, 0, <1, 2, 3>, 1 }
+         }",
+    );
+    assert_eq!(
+        format!("{:?}", looped.scene.objects),
+        format!("{:?}", written.scene.objects)
+    );
+    // An index out of range, made by a loop: the error names the entry's line.
+    let text = "mesh2 {\n vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1\n #for (I, 0, 0)\n <0, 1, I + 9>\n #end }\n}";
+    let e = trace::load_str(
+        std::path::Path::new("test.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .err()
+    .map(|e| e.to_string())
+    .unwrap_or_default();
+    assert!(
+        e.contains("out of range") && e.contains("test.rt:5:"),
+        "{e}"
+    );
+    // A name no one declared, in an entry: located at the name.
+    let text = "mesh2 {\n vertex_vectors { 2\n #for (I, 0, 1) <I, Nowhere, 0> #end }\n face_indices { 0 }\n}";
+    let e = trace::load_str(
+        std::path::Path::new("test.rt"),
+        text.to_string(),
+        &trace::LoadOptions::default(),
+    )
+    .err()
+    .map(|e| e.to_string())
+    .unwrap_or_default();
+    assert!(e.contains("Nowhere") && e.contains("test.rt:3:"), "{e}");
+}
+
 #[test]
 fn declarations_between_a_declarations_equals_sign_and_its_value_run_first() {
     // An exporter's `#declare None_ = #declare P = …; #declare T = …; material { … }`:
