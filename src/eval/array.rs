@@ -324,41 +324,45 @@ impl Evaluator<'_> {
         args: &[Expr],
         span: Span,
     ) -> Result<f64> {
-        let want = if name == "dimensions" { 1 } else { 2 };
-        if args.len() != want {
-            return Err(Diagnostic::error(
-                format!("`{name}` takes {want} argument(s), found {}", args.len()),
-                span,
-            ));
-        }
-        let dims = match &args[0].kind {
-            ExprKind::Index(..) => match self.index_expr(&args[0])? {
+        let (array, which) = match (name, args) {
+            ("dimensions", [array]) => (array, None),
+            ("dimension_size", [array, which]) => (array, Some(which)),
+            _ => {
+                let want = if name == "dimensions" { 1 } else { 2 };
+                return Err(Diagnostic::error(
+                    format!("`{name}` takes {want} argument(s), found {}", args.len()),
+                    span,
+                ));
+            }
+        };
+        let dims = match &array.kind {
+            ExprKind::Index(..) => match self.index_expr(array)? {
                 Value::Array(a) => a.dims.clone(),
-                other => return Err(super::expr::type_error("an array", &other, args[0].span)),
+                other => return Err(super::expr::type_error("an array", &other, array.span)),
             },
             ExprKind::Ident(id, name_slot) => match self.bound(*name_slot) {
                 Some(Value::Array(a)) => a.dims.clone(),
                 Some(other) => {
-                    return Err(super::expr::type_error("an array", other, args[0].span));
+                    return Err(super::expr::type_error("an array", other, array.span));
                 }
-                None => return Err(self.unknown_word(id, args[0].span)),
+                None => return Err(self.unknown_word(id, array.span)),
             },
             _ => {
                 return Err(Diagnostic::error(
                     "expected the name of an array",
-                    args[0].span,
+                    array.span,
                 ));
             }
         };
-        if want == 1 {
+        let Some(which) = which else {
             return Ok(dims.len() as f64);
-        }
-        let n = self.float(&args[1])?.trunc();
+        };
+        let n = self.float(which)?.trunc();
         if n < 1.0 || n > dims.len() as f64 {
             // POV-Ray's answer here is not consistent (0, or a stale size): an error instead.
             return Err(Diagnostic::error(
                 format!("the array has dimensions 1 to {}, not {n}", dims.len()),
-                args[1].span,
+                which.span,
             ));
         }
         Ok(dims[n as usize - 1] as f64)

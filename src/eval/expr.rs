@@ -393,17 +393,20 @@ impl Evaluator<'_> {
         if let Some(v) = self.call_special(name, args, span)? {
             return Ok(v);
         }
+        // The arguments' values, with where each is written: parameter `i` of the function.
         let mut values = Vec::with_capacity(args.len());
+        let mut spans = Vec::with_capacity(args.len());
         for a in args {
             values.push(self.eval(a)?);
+            spans.push(a.span);
         }
-        let arity = |n: usize| check_arity(name, n, args.len(), span);
-        let f = |i: usize, me: &Self| -> Result<f64> { me.expect_float(&values[i], args[i].span) };
+        let arity = |n: usize| check_arity(name, n, values.len(), span);
+        let f = |i: usize, me: &Self| -> Result<f64> { me.expect_float(&values[i], spans[i]) };
         let v3 = |i: usize| -> Result<glam::DVec3> {
             match &values[i] {
                 Value::Float(x) => Ok(glam::DVec3::splat(*x)),
                 Value::Vector(v) => Ok(v.vec3()),
-                other => Err(type_error("a vector", other, args[i].span)),
+                other => Err(type_error("a vector", other, spans[i])),
             }
         };
         let domain = |ok: bool| -> Result<()> {
@@ -605,6 +608,17 @@ pub(super) fn check_arity(name: &str, wanted: usize, found: usize, span: Span) -
     ))
 }
 
+/// A call's `N` arguments, or the error naming how many `name` takes.
+pub(super) fn arguments<'e, const N: usize>(
+    name: &str,
+    args: &'e [Expr],
+    span: Span,
+) -> Result<&'e [Expr; N]> {
+    check_arity(name, N, args.len(), span)?;
+    args.try_into()
+        .map_err(|_| Diagnostic::error(format!("`{name}` takes {N} arguments"), span))
+}
+
 impl Evaluator<'_> {
     /// Functions that do not simply take numbers: `defined(Name)`, the string functions that
     /// give numbers, `file_exists`, and the bitwise ones.
@@ -612,25 +626,21 @@ impl Evaluator<'_> {
         if matches!(name, "trace" | "inside" | "min_extent" | "max_extent") {
             return self.object_question(name, args, span).map(Some);
         }
-        let want = |n: usize| check_arity(name, n, args.len(), span);
         let f = match name {
             "defined" => {
-                want(1)?;
-                let ExprKind::Ident(_, slot) = &args[0].kind else {
-                    return Err(Diagnostic::error(
-                        "`defined` takes an identifier",
-                        args[0].span,
-                    ));
+                let [arg] = arguments(name, args, span)?;
+                let ExprKind::Ident(_, slot) = &arg.kind else {
+                    return Err(Diagnostic::error("`defined` takes an identifier", arg.span));
                 };
                 bool_value(self.bound(*slot).is_some())
             }
             "strlen" => {
-                want(1)?;
-                self.string(&args[0])?.chars().count() as f64
+                let [text] = arguments(name, args, span)?;
+                self.string(text)?.chars().count() as f64
             }
             "strcmp" => {
-                want(2)?;
-                let (a, b) = (self.string(&args[0])?, self.string(&args[1])?);
+                let [a, b] = arguments(name, args, span)?;
+                let (a, b) = (self.string(a)?, self.string(b)?);
                 match a.cmp(&b) {
                     std::cmp::Ordering::Less => -1.0,
                     std::cmp::Ordering::Equal => 0.0,
@@ -638,8 +648,8 @@ impl Evaluator<'_> {
                 }
             }
             "val" => {
-                want(1)?;
-                let text = self.string(&args[0])?;
+                let [text] = arguments(name, args, span)?;
+                let text = self.string(text)?;
                 // Like C's atof: the longest leading number, 0 if none.
                 let t = text.trim_start();
                 (1..=t.len())
@@ -648,33 +658,33 @@ impl Evaluator<'_> {
                     .unwrap_or(0.0)
             }
             "asc" => {
-                want(1)?;
-                self.string(&args[0])?
+                let [text] = arguments(name, args, span)?;
+                self.string(text)?
                     .chars()
                     .next()
                     .map_or(0.0, |c| c as u32 as f64)
             }
             "file_exists" => {
-                want(1)?;
-                let file = self.string(&args[0])?;
+                let [file] = arguments(name, args, span)?;
+                let file = self.string(file)?;
                 // A file outside the allowed folders does not exist for the scene.
                 bool_value(self.sandbox.find(&file).is_ok())
             }
             "dimensions" | "dimension_size" => self.array_dimensions(name, args, span)?,
             "seed" => {
-                want(1)?;
+                let [seed] = arguments(name, args, span)?;
                 // POV-Ray converts the seed to a C int (truncation), then to an unsigned long.
-                let seed = self.float(&args[0])? as i64 as u32;
+                let seed = self.float(seed)? as i64 as u32;
                 self.rand_streams.push(seed);
                 (self.rand_streams.len() - 1) as f64
             }
             "rand" => {
-                want(1)?;
-                let i = self.float(&args[0])?;
+                let [stream] = arguments(name, args, span)?;
+                let i = self.float(stream)?;
                 let Some(state) = self.rand_streams.get_mut(i as usize).filter(|_| i >= 0.0) else {
                     return Err(Diagnostic::error(
                         "`rand` needs a stream made by `seed(…)`",
-                        args[0].span,
+                        stream.span,
                     ));
                 };
                 // POV-Ray's stream: a 32-bit linear congruential generator, scaled to [0, 1].
@@ -682,11 +692,11 @@ impl Evaluator<'_> {
                 f64::from(*state) / f64::from(u32::MAX)
             }
             "bitwise_and" | "bitwise_or" | "bitwise_xor" => {
-                if args.is_empty() {
+                let [first, rest @ ..] = args else {
                     return Err(Diagnostic::error(format!("`{name}` needs arguments"), span));
-                }
-                let mut acc = self.float(&args[0])? as i64;
-                for a in &args[1..] {
+                };
+                let mut acc = self.float(first)? as i64;
+                for a in rest {
                     let x = self.float(a)? as i64;
                     acc = match name {
                         "bitwise_and" => acc & x,

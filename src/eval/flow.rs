@@ -202,32 +202,31 @@ impl<'a> Evaluator<'a> {
 
     /// The string functions, by name (`name` is one of [`STRING_FUNCTIONS`]).
     fn string_call(&mut self, name: &str, args: &[syntax::Expr], span: Span) -> Result<String> {
-        if name == "datetime" {
-            if args.is_empty() || args.len() > 2 {
-                check_arity(name, 2, args.len(), span)?;
-            }
-            let days = self.float(&args[0])?;
-            let format = match args.get(1) {
-                Some(f) => {
-                    let f = self.string(f)?;
-                    if f.is_empty() {
-                        return Err(Diagnostic::error("empty format string", args[1].span));
-                    }
-                    f
-                }
-                None => "%Y-%m-%d %H:%M:%SZ".to_string(),
-            };
-            return Ok(super::datetime::format(days, &format));
-        }
-        let arity = match name {
-            "concat" => args.len().max(1),
-            "chr" | "strupr" | "strlwr" => 1,
-            "str" | "substr" => 3,
-            _ => 5, // vstr
-        };
-        check_arity(name, arity, args.len(), span)?;
+        use super::expr::arguments;
         Ok(match name {
+            "datetime" => {
+                let (days, format) = match args {
+                    [days] => (days, None),
+                    [days, format] => (days, Some(format)),
+                    _ => return Err(check_arity(name, 2, args.len(), span).unwrap_err()),
+                };
+                let days = self.float(days)?;
+                let format = match format {
+                    Some(f) => {
+                        let text = self.string(f)?;
+                        if text.is_empty() {
+                            return Err(Diagnostic::error("empty format string", f.span));
+                        }
+                        text
+                    }
+                    None => "%Y-%m-%d %H:%M:%SZ".to_string(),
+                };
+                super::datetime::format(days, &format)
+            }
             "concat" => {
+                if args.is_empty() {
+                    check_arity(name, 1, 0, span)?;
+                }
                 let mut out = String::new();
                 for a in args {
                     out += &self.string(a)?;
@@ -238,12 +237,14 @@ impl<'a> Evaluator<'a> {
                 out
             }
             "chr" => {
-                let code = self.float(&args[0])? as u32;
+                let [code] = arguments(name, args, span)?;
+                let code = self.float(code)? as u32;
                 char::from_u32(code).map(String::from).unwrap_or_default()
             }
             "substr" => {
-                let text = self.string(&args[0])?;
-                let (start, len) = (self.float(&args[1])?, self.float(&args[2])?);
+                let [text, start, len] = arguments(name, args, span)?;
+                let text = self.string(text)?;
+                let (start, len) = (self.float(start)?, self.float(len)?);
                 let count = text.chars().count() as f64;
                 if !(start >= 1.0 && len >= 0.0 && start - 1.0 + len <= count) {
                     return Err(Diagnostic::error(
@@ -256,21 +257,31 @@ impl<'a> Evaluator<'a> {
                     .take(len as usize)
                     .collect()
             }
-            "strupr" => self.string(&args[0])?.to_uppercase(),
-            "strlwr" => self.string(&args[0])?.to_lowercase(),
+            "strupr" | "strlwr" => {
+                let [text] = arguments(name, args, span)?;
+                let text = self.string(text)?;
+                if name == "strupr" {
+                    text.to_uppercase()
+                } else {
+                    text.to_lowercase()
+                }
+            }
             "str" => {
-                let v = self.float(&args[0])?;
-                let (width, precision) = (self.float(&args[1])?, self.float(&args[2])?);
+                let [v, width, precision] = arguments(name, args, span)?;
+                let v = self.float(v)?;
+                let (width, precision) = (self.float(width)?, self.float(precision)?);
                 format_float(v, width, precision, span)?
             }
             _ => {
-                let n = self.float(&args[0])?.clamp(1.0, 5.0) as usize;
-                let v = self.eval(&args[1])?;
+                // vstr(N, V, separator, width, precision)
+                let [n, v_expr, separator, width, precision] = arguments(name, args, span)?;
+                let n = self.float(n)?.clamp(1.0, 5.0) as usize;
+                let v = self.eval(v_expr)?;
                 let Some((components, _)) = v.components() else {
-                    return Err(type_error("a vector", &v, args[1].span));
+                    return Err(type_error("a vector", &v, v_expr.span));
                 };
-                let separator = self.string(&args[2])?;
-                let (width, precision) = (self.float(&args[3])?, self.float(&args[4])?);
+                let separator = self.string(separator)?;
+                let (width, precision) = (self.float(width)?, self.float(precision)?);
                 let mut parts = Vec::with_capacity(n);
                 // Missing components (and all but the first of a float) are zeros.
                 for c in &components[..n] {

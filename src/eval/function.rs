@@ -169,14 +169,18 @@ impl Evaluator<'_> {
         args: &[Expr],
         span: Span,
     ) -> Result<Value> {
-        if !(1..=2).contains(&args.len()) {
-            return Err(Diagnostic::error(
-                format!("the spline `{name}` takes a parameter and, optionally, a spline kind"),
-                span,
-            ));
-        }
-        let t = self.float(&args[0])?;
-        let v = match args.get(1) {
+        let (t, kind) = match args {
+            [t] => (t, None),
+            [t, kind] => (t, Some(kind)),
+            _ => {
+                return Err(Diagnostic::error(
+                    format!("the spline `{name}` takes a parameter and, optionally, a spline kind"),
+                    span,
+                ));
+            }
+        };
+        let t = self.float(t)?;
+        let v = match kind {
             Some(e) => {
                 let kind = match &e.kind {
                     ExprKind::Ident(k, _) => SplineKind::named(k),
@@ -400,11 +404,11 @@ impl Evaluator<'_> {
             });
         } else if name == "sum" || name == "prod" {
             // sum(i, a, b, f): the term is a function of this one's parameters and i.
-            check_arity(name, 4, args.len(), span)?;
-            let ExprKind::Ident(var, _) = &args[0].kind else {
+            let [counter, from, to, term_expr] = super::expr::arguments(name, args, span)?;
+            let ExprKind::Ident(var, _) = &counter.kind else {
                 return Err(Diagnostic::error(
                     format!("`{name}` counts with a name: {name}(i, a, b, f)"),
-                    args[0].span,
+                    counter.span,
                 ));
             };
             if params.len() + 1 > crate::func::MAX_STACK {
@@ -413,16 +417,16 @@ impl Evaluator<'_> {
                     span,
                 ));
             }
-            self.compile(&args[1], params, code)?;
-            self.compile(&args[2], params, code)?;
+            self.compile(from, params, code)?;
+            self.compile(to, params, code)?;
             let mut inner: Vec<String> = params.to_vec();
             inner.push(var.clone());
             let mut term = Vec::new();
-            self.compile(&args[3], &inner, &mut term)?;
+            self.compile(term_expr, &inner, &mut term)?;
             let term = Function::new(inner.len(), term).ok_or_else(|| {
                 Diagnostic::error(
                     format!("the term of this `{name}` nests too deeply"),
-                    args[3].span,
+                    term_expr.span,
                 )
             })?;
             code.push(Op::Loop(Arc::new(term), name == "prod"));
@@ -531,9 +535,10 @@ impl crate::func::Native for TransformFunction {
     }
 
     fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
-        let p = self
-            .0
-            .transform_point3(glam::DVec3::new(args[0], args[1], args[2]));
+        let &[x, y, z, ..] = args else {
+            return [0.0; 5];
+        };
+        let p = self.0.transform_point3(glam::DVec3::new(x, y, z));
         [p.x, p.y, p.z, 0.0, 0.0]
     }
 }
