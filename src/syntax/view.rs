@@ -385,54 +385,18 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Background => match args {
-                [value] => View::Background(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FogDistance => match args {
-                [value] => View::FogDistance(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FogType => match args {
-                [value] => View::FogType(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FogAlt => match args {
-                [value] => View::FogAlt(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FogOffset => match args {
-                [value] => View::FogOffset(value),
-                _ => View::Malformed,
-            },
-            NodeKind::TurbDepth => match args {
-                [value] => View::TurbDepth(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FogColour => match args {
-                [value] => View::FogColour(value),
-                _ => View::Malformed,
-            },
-            NodeKind::AssumedGamma => match args {
-                [value] => View::AssumedGamma(value),
-                _ => View::Malformed,
-            },
-            NodeKind::MaxTraceLevel => match args {
-                [value] => View::MaxTraceLevel(value),
-                _ => View::Malformed,
-            },
-            NodeKind::AdcBailout => match args {
-                [value] => View::AdcBailout(value),
-                _ => View::Malformed,
-            },
-            NodeKind::AmbientLight => match args {
-                [value] => View::AmbientLight(value),
-                _ => View::Malformed,
-            },
-            NodeKind::MaxIntersections => match args {
-                [value] => View::MaxIntersections(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Background => one(args).map_or(View::Malformed, View::Background),
+            NodeKind::FogDistance => one(args).map_or(View::Malformed, View::FogDistance),
+            NodeKind::FogType => one(args).map_or(View::Malformed, View::FogType),
+            NodeKind::FogAlt => one(args).map_or(View::Malformed, View::FogAlt),
+            NodeKind::FogOffset => one(args).map_or(View::Malformed, View::FogOffset),
+            NodeKind::TurbDepth => one(args).map_or(View::Malformed, View::TurbDepth),
+            NodeKind::FogColour => one(args).map_or(View::Malformed, View::FogColour),
+            NodeKind::AssumedGamma => one(args).map_or(View::Malformed, View::AssumedGamma),
+            NodeKind::MaxTraceLevel => one(args).map_or(View::Malformed, View::MaxTraceLevel),
+            NodeKind::AdcBailout => one(args).map_or(View::Malformed, View::AdcBailout),
+            NodeKind::AmbientLight => one(args).map_or(View::Malformed, View::AmbientLight),
+            NodeKind::MaxIntersections => one(args).map_or(View::Malformed, View::MaxIntersections),
             NodeKind::MeshCamera => match args {
                 [rays, distribution, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -444,30 +408,12 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Location => match args {
-                [value] => View::Location(value),
-                _ => View::Malformed,
-            },
-            NodeKind::LookAt => match args {
-                [value] => View::LookAt(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Direction => match args {
-                [value] => View::Direction(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Up => match args {
-                [value] => View::Up(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Right => match args {
-                [value] => View::Right(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Sky => match args {
-                [value] => View::Sky(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Location => one(args).map_or(View::Malformed, View::Location),
+            NodeKind::LookAt => one(args).map_or(View::Malformed, View::LookAt),
+            NodeKind::Direction => one(args).map_or(View::Malformed, View::Direction),
+            NodeKind::Up => one(args).map_or(View::Malformed, View::Up),
+            NodeKind::Right => one(args).map_or(View::Malformed, View::Right),
+            NodeKind::Sky => one(args).map_or(View::Malformed, View::Sky),
             NodeKind::Angle => match args {
                 [angle, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -558,10 +504,7 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Value => match args {
-                [value] => View::Value(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Value => one(args).map_or(View::Malformed, View::Value),
             NodeKind::FunctionImage => match args {
                 [width, height, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -578,10 +521,7 @@ impl Node {
                 _ => View::Malformed,
             },
             NodeKind::IsoSetting => View::IsoSetting { values: args },
-            NodeKind::BlobThreshold => match args {
-                [value] => View::BlobThreshold(value),
-                _ => View::Malformed,
-            },
+            NodeKind::BlobThreshold => one(args).map_or(View::Malformed, View::BlobThreshold),
             NodeKind::BlobComponent => match args {
                 [strength, radius, centre] => View::BlobComponent {
                     strength,
@@ -605,18 +545,9 @@ impl Node {
                 },
                 _ => View::Malformed,
             },
-            NodeKind::MeshFile => match args {
-                [value] => View::MeshFile(value),
-                _ => View::Malformed,
-            },
-            NodeKind::InsideVector => match args {
-                [value] => View::InsideVector(value),
-                _ => View::Malformed,
-            },
-            NodeKind::TextureList => match args {
-                [value] => View::TextureList(value),
-                _ => View::Malformed,
-            },
+            NodeKind::MeshFile => one(args).map_or(View::Malformed, View::MeshFile),
+            NodeKind::InsideVector => one(args).map_or(View::Malformed, View::InsideVector),
+            NodeKind::TextureList => one(args).map_or(View::Malformed, View::TextureList),
             NodeKind::Flag => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -624,22 +555,10 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Translate => match args {
-                [value] => View::Translate(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Rotate => match args {
-                [value] => View::Rotate(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Scale => match args {
-                [value] => View::Scale(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Matrix => match args {
-                [value] => View::Matrix(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Translate => one(args).map_or(View::Malformed, View::Translate),
+            NodeKind::Rotate => one(args).map_or(View::Malformed, View::Rotate),
+            NodeKind::Scale => one(args).map_or(View::Malformed, View::Scale),
+            NodeKind::Matrix => one(args).map_or(View::Malformed, View::Matrix),
             NodeKind::Pigment => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -650,18 +569,9 @@ impl Node {
                 _ => View::Malformed,
             },
             NodeKind::WarpItem => View::WarpItem { values: args },
-            NodeKind::BumpSize => match args {
-                [value] => View::BumpSize(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Ambient => match args {
-                [value] => View::Ambient(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Emission => match args {
-                [value] => View::Emission(value),
-                _ => View::Malformed,
-            },
+            NodeKind::BumpSize => one(args).map_or(View::Malformed, View::BumpSize),
+            NodeKind::Ambient => one(args).map_or(View::Malformed, View::Ambient),
+            NodeKind::Emission => one(args).map_or(View::Malformed, View::Emission),
             NodeKind::Diffuse => match args {
                 [amount, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -672,26 +582,11 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Brilliance => match args {
-                [value] => View::Brilliance(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Phong => match args {
-                [value] => View::Phong(value),
-                _ => View::Malformed,
-            },
-            NodeKind::PhongSize => match args {
-                [value] => View::PhongSize(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Specular => match args {
-                [value] => View::Specular(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Roughness => match args {
-                [value] => View::Roughness(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Brilliance => one(args).map_or(View::Malformed, View::Brilliance),
+            NodeKind::Phong => one(args).map_or(View::Malformed, View::Phong),
+            NodeKind::PhongSize => one(args).map_or(View::Malformed, View::PhongSize),
+            NodeKind::Specular => one(args).map_or(View::Malformed, View::Specular),
+            NodeKind::Roughness => one(args).map_or(View::Malformed, View::Roughness),
             NodeKind::Metallic => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -701,22 +596,10 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Crand => match args {
-                [value] => View::Crand(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Irid => match args {
-                [value] => View::Irid(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Thickness => match args {
-                [value] => View::Thickness(value),
-                _ => View::Malformed,
-            },
-            NodeKind::IridWavelength => match args {
-                [value] => View::IridWavelength(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Crand => one(args).map_or(View::Malformed, View::Crand),
+            NodeKind::Irid => one(args).map_or(View::Malformed, View::Irid),
+            NodeKind::Thickness => one(args).map_or(View::Malformed, View::Thickness),
+            NodeKind::IridWavelength => one(args).map_or(View::Malformed, View::IridWavelength),
             NodeKind::Reflection => match args {
                 [first, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -727,22 +610,12 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::Falloff => match args {
-                [value] => View::Falloff(value),
-                _ => View::Malformed,
-            },
-            NodeKind::ReflectionExponent => match args {
-                [value] => View::ReflectionExponent(value),
-                _ => View::Malformed,
-            },
-            NodeKind::ImageOrientation => match args {
-                [value] => View::ImageOrientation(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Exponent => match args {
-                [value] => View::Exponent(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Falloff => one(args).map_or(View::Malformed, View::Falloff),
+            NodeKind::ReflectionExponent => {
+                one(args).map_or(View::Malformed, View::ReflectionExponent)
+            }
+            NodeKind::ImageOrientation => one(args).map_or(View::Malformed, View::ImageOrientation),
+            NodeKind::Exponent => one(args).map_or(View::Malformed, View::Exponent),
             NodeKind::Fresnel => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -750,18 +623,9 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::PointAt => match args {
-                [value] => View::PointAt(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Radius => match args {
-                [value] => View::Radius(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Tightness => match args {
-                [value] => View::Tightness(value),
-                _ => View::Malformed,
-            },
+            NodeKind::PointAt => one(args).map_or(View::Malformed, View::PointAt),
+            NodeKind::Radius => one(args).map_or(View::Malformed, View::Radius),
+            NodeKind::Tightness => one(args).map_or(View::Malformed, View::Tightness),
             NodeKind::AreaLight => match args {
                 [axis1, axis2, size1, size2] => View::AreaLight {
                     axis1,
@@ -771,10 +635,7 @@ impl Node {
                 },
                 _ => View::Malformed,
             },
-            NodeKind::Adaptive => match args {
-                [value] => View::Adaptive(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Adaptive => one(args).map_or(View::Malformed, View::Adaptive),
             NodeKind::AreaIllumination => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -793,10 +654,7 @@ impl Node {
                 }
                 _ => View::Malformed,
             },
-            NodeKind::ImageMap => match args {
-                [value] => View::ImageMap(value),
-                _ => View::Malformed,
-            },
+            NodeKind::ImageMap => one(args).map_or(View::Malformed, View::ImageMap),
             NodeKind::ImageGamma => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -831,54 +689,21 @@ impl Node {
                 _ => View::Malformed,
             },
             NodeKind::ObjectPattern => View::ObjectPattern { colours: args },
-            NodeKind::MaterialMap => match args {
-                [value] => View::MaterialMap(value),
-                _ => View::Malformed,
-            },
-            NodeKind::MapType => match args {
-                [value] => View::MapType(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Interpolate => match args {
-                [value] => View::Interpolate(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Ior => match args {
-                [value] => View::Ior(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Refraction => match args {
-                [value] => View::Refraction(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FadeDistance => match args {
-                [value] => View::FadeDistance(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FadePower => match args {
-                [value] => View::FadePower(value),
-                _ => View::Malformed,
-            },
-            NodeKind::FadeColour => match args {
-                [value] => View::FadeColour(value),
-                _ => View::Malformed,
-            },
+            NodeKind::MaterialMap => one(args).map_or(View::Malformed, View::MaterialMap),
+            NodeKind::MapType => one(args).map_or(View::Malformed, View::MapType),
+            NodeKind::Interpolate => one(args).map_or(View::Malformed, View::Interpolate),
+            NodeKind::Ior => one(args).map_or(View::Malformed, View::Ior),
+            NodeKind::Refraction => one(args).map_or(View::Malformed, View::Refraction),
+            NodeKind::FadeDistance => one(args).map_or(View::Malformed, View::FadeDistance),
+            NodeKind::FadePower => one(args).map_or(View::Malformed, View::FadePower),
+            NodeKind::FadeColour => one(args).map_or(View::Malformed, View::FadeColour),
             NodeKind::RangeHead => match args {
                 [low, high] => View::RangeHead { low, high },
                 _ => View::Malformed,
             },
-            NodeKind::Subscript => match args {
-                [value] => View::Subscript(value),
-                _ => View::Malformed,
-            },
-            NodeKind::Deprecation => match args {
-                [value] => View::Deprecation(value),
-                _ => View::Malformed,
-            },
-            NodeKind::ColourItem => match args {
-                [value] => View::ColourItem(value),
-                _ => View::Malformed,
-            },
+            NodeKind::Subscript => one(args).map_or(View::Malformed, View::Subscript),
+            NodeKind::Deprecation => one(args).map_or(View::Malformed, View::Deprecation),
+            NodeKind::ColourItem => one(args).map_or(View::Malformed, View::ColourItem),
             NodeKind::Unknown => View::Unknown { values: args },
             NodeKind::VertexVectors => list(args).map_or(View::Malformed, View::VertexVectors),
             NodeKind::NormalVectors => list(args).map_or(View::Malformed, View::NormalVectors),
@@ -1051,6 +876,14 @@ impl Node {
             | NodeKind::Array
             | NodeKind::ArrayInit => View::Block,
         }
+    }
+}
+
+/// The value of a construct that takes exactly one.
+fn one(args: &[Expr]) -> Option<&Expr> {
+    match args {
+        [value] => Some(value),
+        _ => None,
     }
 }
 

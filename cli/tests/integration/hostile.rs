@@ -38,7 +38,7 @@ fn stderr(o: &Output) -> String {
 }
 
 /// Loads scene text through the library; the error message, or `None` if it loads.
-fn load_error(text: &str) -> Option<String> {
+pub(crate) fn load_error(text: &str) -> Option<String> {
     trace::load_str(
         Path::new("hostile.rt"),
         text.to_string(),

@@ -553,29 +553,15 @@ fn a_list_a_loop_makes_is_read_entry_by_entry_as_written() {
     );
     // An index out of range, made by a loop: the error names the entry's line.
     let text = "mesh2 {\n vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\n face_indices { 1\n #for (I, 0, 0)\n <0, 1, I + 9>\n #end }\n}";
-    let e = trace::load_str(
-        std::path::Path::new("test.rt"),
-        text.to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .err()
-    .map(|e| e.to_string())
-    .unwrap_or_default();
+    let e = crate::hostile::load_error(text).unwrap_or_default();
     assert!(
-        e.contains("out of range") && e.contains("test.rt:5:"),
+        e.contains("out of range") && e.contains("hostile.rt:5:"),
         "{e}"
     );
     // A name no one declared, in an entry: located at the name.
     let text = "mesh2 {\n vertex_vectors { 2\n #for (I, 0, 1) <I, Nowhere, 0> #end }\n face_indices { 0 }\n}";
-    let e = trace::load_str(
-        std::path::Path::new("test.rt"),
-        text.to_string(),
-        &trace::LoadOptions::default(),
-    )
-    .err()
-    .map(|e| e.to_string())
-    .unwrap_or_default();
-    assert!(e.contains("Nowhere") && e.contains("test.rt:3:"), "{e}");
+    let e = crate::hostile::load_error(text).unwrap_or_default();
+    assert!(e.contains("Nowhere") && e.contains("hostile.rt:3:"), "{e}");
 }
 
 #[test]
