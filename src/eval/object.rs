@@ -138,15 +138,6 @@ fn cone(node: &Node, modifiers: &[Node], ends: (DVec3, f64, DVec3, f64)) -> Resu
     }))
 }
 
-/// Whether a flag (`hollow`, `no_shadow` …) is on: without a value, or with one that is not
-/// `off` (the grammar reads `on`/`off`/`true`/`false`/`yes`/`no` as 1 and 0).
-fn flag_on(flag: &Node) -> bool {
-    match flag.view() {
-        View::Flag { on: Some(e) } => !matches!(e.kind, ExprKind::Number(v) if v == 0.0),
-        _ => true,
-    }
-}
-
 fn compose(t: Option<Transform>, next: Transform) -> Option<Transform> {
     Some(t.unwrap_or(Transform::IDENTITY).then(next))
 }
@@ -1048,8 +1039,19 @@ impl Evaluator<'_> {
     }
 
     /// One modifier `m` of object statement `owner`.
+    /// Whether a flag (`hollow`, `no_shadow` …) is on: without a value, or with one above
+    /// zero, as POV-Ray reads it (the grammar reads `on`/`off`/`true`/`false`/`yes`/`no` as 1
+    /// and 0; any float expression may stand there).
+    fn flag_on(&mut self, flag: &Node) -> Result<bool> {
+        Ok(match flag.view() {
+            View::Flag { on: Some(e) } => self.float(e)? > 0.0,
+            _ => true,
+        })
+    }
+
     fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, owner: &Node) -> Result<()> {
         let is_cone = matches!(owner.kind, NodeKind::Cylinder | NodeKind::Cone);
+        let on = m.kind != NodeKind::Flag || self.flag_on(m)?;
         match m.kind {
             NodeKind::Material => {
                 let v = self.material(m)?;
@@ -1121,7 +1123,6 @@ impl Evaluator<'_> {
                 object.interior = Some(self.interior(m, base)?);
             }
             NodeKind::Flag if m.word == "hollow" => {
-                let on = flag_on(m);
                 // On one object the last `hollow` counts; a group's goes to the members that
                 // have none of their own.
                 for part in &mut object.parts {
@@ -1133,7 +1134,7 @@ impl Evaluator<'_> {
                 }
             }
             // `no_shadow false` …: the flag is not set.
-            NodeKind::Flag if !flag_on(m) => {}
+            NodeKind::Flag if !on => {}
             // A shape's own words (`ttf`, `conic_sweep`, `open` of a prism…): read by the
             // shape table.
             NodeKind::Flag
@@ -1169,6 +1170,19 @@ impl Evaluator<'_> {
                 // `sturm` picks POV-Ray's slower root solver; trace's torus solver is always
                 // robust.
                 "sturm" => {}
+                // `hierarchy` switches POV-Ray's bounding tree inside a blob, mesh or height
+                // field: speed only, nothing to draw; on another shape POV-Ray refuses it.
+                "hierarchy"
+                    if matches!(
+                        owner.word.as_str(),
+                        "blob" | "mesh" | "mesh2" | "height_field" | "object"
+                    ) => {}
+                "hierarchy" => {
+                    return Err(Diagnostic::error(
+                        "`hierarchy` applies only to blob, mesh, mesh2 and height_field",
+                        m.word_span,
+                    ));
+                }
                 "open" if is_cone => {}
                 "open" => {
                     return Err(Diagnostic::error(

@@ -6,6 +6,7 @@
 
 pub mod bulk;
 mod incremental;
+pub mod keywords;
 pub mod lexer;
 pub mod plain;
 mod unit;
@@ -402,11 +403,7 @@ pub enum ExprKind {
     Shifted(std::sync::Arc<Expr>, u32),
 }
 
-/// Whether `word` is one of the keywords of trace's grammar.
-pub fn is_keyword(word: &str) -> bool {
-    SceneParser::parse(Rule::keyword, word)
-        .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
-}
+pub use keywords::is_keyword;
 
 /// Whether `word` can name a declaration (a word that is not a keyword).
 pub fn is_identifier(word: &str) -> bool {
@@ -1349,6 +1346,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_open
             | kw_smooth_triangle
             | kw_sturm
+            | kw_hierarchy
             | kw_torus
             | kw_triangle
             | kw_union
