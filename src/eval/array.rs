@@ -273,7 +273,7 @@ impl Evaluator<'_> {
     pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
         let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
-        let Some(Value::Array(array)) = self.env.get(&node.word).map(|v| &**v) else {
+        let Some(Value::Array(array)) = self.env.get(node.word.as_str()).map(|v| &**v) else {
             unreachable!("element_path checked that the name is an array");
         };
         Ok(slot(array, &path).is_some())
@@ -283,7 +283,10 @@ impl Evaluator<'_> {
     pub(super) fn unassign_element(&mut self, node: &Node) -> Result<()> {
         let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
-        let Some(Value::Array(array)) = self.env.get_mut(&node.word).map(std::sync::Arc::make_mut)
+        let Some(Value::Array(array)) = self
+            .env
+            .get_mut(node.word.as_str())
+            .map(std::sync::Arc::make_mut)
         else {
             unreachable!("element_path checked that the name is an array");
         };
@@ -301,7 +304,10 @@ impl Evaluator<'_> {
     ) -> Result<()> {
         let exprs: Vec<&Expr> = subs.iter().filter_map(|s| subscript(s)).collect();
         let path = self.element_path(&name.word, Holder::Declared, name.span, &exprs)?;
-        let Some(Value::Array(array)) = self.env.get_mut(&name.word).map(std::sync::Arc::make_mut)
+        let Some(Value::Array(array)) = self
+            .env
+            .get_mut(name.word.as_str())
+            .map(std::sync::Arc::make_mut)
         else {
             unreachable!("element_path checked that the name is an array");
         };

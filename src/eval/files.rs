@@ -190,7 +190,7 @@ impl Evaluator<'_> {
             View::FileOpen { name, file, mode } => self.fopen(item, name, file, mode),
             View::FileClose { name } => {
                 // Closing a name that is not an open file does nothing, as in POV-Ray.
-                let name = &name.word;
+                let name = name.word.as_str();
                 if let Some(Value::File(id)) = self.env.get(name).map(|v| &**v) {
                     let id = *id;
                     self.close_file(id, item.span)?;
@@ -221,7 +221,7 @@ impl Evaluator<'_> {
             ));
         }
         // Opening a name again first closes the file it held, as POV-Ray replaces the symbol.
-        if let Some(Value::File(id)) = self.env.get(&name_node.word).map(|v| &**v) {
+        if let Some(Value::File(id)) = self.env.get(name_node.word.as_str()).map(|v| &**v) {
             let id = *id;
             self.close_file(id, item.span)?;
         }
@@ -277,7 +277,7 @@ impl Evaluator<'_> {
                 self.files.open.len() - 1
             }
         };
-        self.set(name_node.word.clone(), Value::File(id));
+        self.set(name_node.word.to_string(), Value::File(id));
         Ok(())
     }
 
@@ -292,7 +292,7 @@ impl Evaluator<'_> {
 
     /// The open file a `#read`/`#write` names.
     fn user_file(&self, node: &Node) -> Result<usize> {
-        match self.env.get(&node.word).map(|v| &**v) {
+        match self.env.get(node.word.as_str()).map(|v| &**v) {
             Some(Value::File(id)) => Ok(*id),
             Some(other) => Err(super::expr::type_error(
                 "a file opened by #fopen",
@@ -333,7 +333,7 @@ impl Evaluator<'_> {
             };
             self.charge(1, "#read", target.span)?;
             if target.children.is_empty() {
-                self.set(target.word.clone(), value);
+                self.set(target.word.to_string(), value);
             } else {
                 let subs: Vec<&Node> = target.children.iter().collect();
                 self.assign_element(target, &subs, value)?;
@@ -345,7 +345,7 @@ impl Evaluator<'_> {
         }
         if at_end {
             self.files.open[id] = None;
-            self.env.remove(&file_node.word);
+            self.env.remove(file_node.word.as_str());
         } else if let Some(UserFile::Read { pos: p, .. }) = &mut self.files.open[id] {
             *p = pos;
         }

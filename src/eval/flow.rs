@@ -99,7 +99,7 @@ impl<'a> Evaluator<'a> {
         else {
             return Err(super::malformed(node, "a declaration"));
         };
-        let name = name_node.word.clone();
+        let name = name_node.word.to_string();
         let subs: Vec<&Node> = subscripts
             .iter()
             .filter(|c| c.kind == NodeKind::Subscript)
@@ -166,7 +166,8 @@ impl<'a> Evaluator<'a> {
     /// `(A[i])`, the array element assigned.
     pub(super) fn defined(&mut self, name: &Node) -> Result<bool> {
         if name.children.is_empty() {
-            return Ok(self.env.contains_key(&name.word) || self.macros.contains_key(&name.word));
+            return Ok(self.env.contains_key(name.word.as_str())
+                || self.macros.contains_key(name.word.as_str()));
         }
         self.element_assigned(name)
     }

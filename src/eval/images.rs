@@ -838,7 +838,7 @@ impl super::Evaluator<'_> {
             slot: node.slot,
             kind: NodeKind::ImageMap,
             span: node.span,
-            word: "material_map".to_string(),
+            word: crate::syntax::Word::fixed("material_map"),
             word_span: node.word_span,
             args: node.args.clone(),
             children: node

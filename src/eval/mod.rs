@@ -1226,7 +1226,7 @@ impl<'a> Evaluator<'a> {
                     "parallel" => parallel = true,
                     "shadowless" => light_type = LightType::Fill,
                     flag => {
-                        area_modifiers.push((item.word.clone(), item.word_span));
+                        area_modifiers.push((item.word.to_string(), item.word_span));
                         match flag {
                             "jitter" => jitter = true,
                             "circular" => circular = true,
@@ -1284,11 +1284,11 @@ impl<'a> Evaluator<'a> {
                     });
                 }
                 (_, View::Adaptive(value)) => {
-                    area_modifiers.push((item.word.clone(), item.word_span));
+                    area_modifiers.push((item.word.to_string(), item.word_span));
                     adaptive = ev.float(value)?.max(0.0) as u32;
                 }
                 (NodeKind::AreaIllumination, _) => {
-                    area_modifiers.push((item.word.clone(), item.word_span));
+                    area_modifiers.push((item.word.to_string(), item.word_span));
                     illumination = ev.optional_float(item, 1.0)? != 0.0;
                 }
                 _ if Self::is_transform(item) => {

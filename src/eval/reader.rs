@@ -866,11 +866,11 @@ impl<'a> Evaluator<'a> {
     /// (the statement is then read the usual way, calling it).
     fn bind_names(&self, node: &mut Node, bindings: &mut Vec<Option<Arc<Value>>>) -> bool {
         if node.kind == NodeKind::IdentRef {
-            if self.macros.contains_key(&node.word) {
+            if self.macros.contains_key(node.word.as_str()) {
                 return false;
             }
             node.slot = syntax::Slot(bindings.len() as u32);
-            bindings.push(self.env.get(&node.word).cloned());
+            bindings.push(self.env.get(node.word.as_str()).cloned());
         }
         node.args
             .iter_mut()
@@ -1640,13 +1640,13 @@ impl<'a> Evaluator<'a> {
                         start: at.start,
                         ..span
                     },
-                    word: "fclose".into(),
+                    word: syntax::Word::fixed("fclose"),
                     word_span: at,
                     args: Vec::new(),
                     children: vec![Node {
                         kind: NodeKind::IdentRef,
                         span,
-                        word: name,
+                        word: syntax::Word::new(&name),
                         word_span: span,
                         args: Vec::new(),
                         children: Vec::new(),
@@ -1930,7 +1930,7 @@ impl<'a> Evaluator<'a> {
         else {
             return Err(super::malformed(&node, "#for"));
         };
-        let var = counter.word.clone();
+        let var = counter.word.to_string();
         let (start, last, step) = self
             .with_bindings(head.bindings.clone(), |ev| {
                 let start = ev.float(start)?;
@@ -2104,9 +2104,9 @@ impl<'a> Evaluator<'a> {
         let View::MacroDef { name, params } = node.view() else {
             return Err(super::malformed(&node, "#macro"));
         };
-        let params = params.iter().map(|p| p.word.clone()).collect();
+        let params = params.iter().map(|p| p.word.to_string()).collect();
         self.macros.insert(
-            name.word.clone(),
+            name.word.to_string(),
             Macro {
                 params,
                 body: Span::new(file, start, end_at.start as usize),

@@ -135,7 +135,7 @@ impl<'u> Reader<'u> {
         Node {
             kind,
             span: Span::default(),
-            word: self.text(word).to_string(),
+            word: super::Word::new(self.text(word)),
             word_span: self.unit.span(word.start as usize, word.end as usize),
             args: Vec::new(),
             children: Vec::new(),
@@ -403,7 +403,7 @@ fn again(shared: &Arc<Expr>, by: u32) -> Node {
     Node {
         kind: NodeKind::Again,
         span: shared.span,
-        word: String::new(),
+        word: super::Word::default(),
         word_span: shared.span,
         args: vec![Expr {
             span: shared.span,

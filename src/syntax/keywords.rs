@@ -537,9 +537,18 @@ fn matches_keyword_rule(word: &str) -> bool {
         .is_ok_and(|mut p| p.next().is_some_and(|k| k.as_str() == word))
 }
 
-/// Whether `word` is one of the keywords of trace's grammar (a table look-up).
+/// Whether `word` is one of the keywords of trace's grammar (a table look-up; every keyword
+/// starts with a small letter, so a capitalised name, as users name theirs, is answered at once).
 pub fn is_keyword(word: &str) -> bool {
-    RESERVED.binary_search(&word).is_ok()
+    word.starts_with(|c: char| c.is_ascii_lowercase()) && RESERVED.binary_search(&word).is_ok()
+}
+
+/// The table's own string for `word` if the grammar reserves it.
+pub fn reserved_str(word: &str) -> Option<&'static str> {
+    if !word.starts_with(|c: char| c.is_ascii_lowercase()) {
+        return None;
+    }
+    RESERVED.binary_search(&word).ok().map(|i| RESERVED[i])
 }
 
 /// The words the grammar reserves, sorted.
@@ -592,5 +601,10 @@ mod tests {
         assert!(checked > 300, "{checked}");
         assert!(reserved().len() > 150, "{}", reserved().len());
         assert!(!is_keyword("Gloss") && !is_keyword("spheres") && is_keyword("sphere"));
+        assert!(
+            reserved()
+                .iter()
+                .all(|w| w.starts_with(|c: char| c.is_ascii_lowercase()))
+        );
     }
 }

@@ -223,9 +223,40 @@ pub fn number_end(b: &[u8], mut i: usize, end: usize) -> usize {
 
 /// The value of a number token's text (a dangling exponent, `1e`, counts for nothing).
 pub fn number_value(text: &str) -> f64 {
+    if let Some(v) = short_decimal(text.as_bytes()) {
+        return v;
+    }
     let t = text.strip_suffix(['+', '-']).unwrap_or(text);
     let t = t.strip_suffix(['e', 'E']).unwrap_or(text);
     t.parse().unwrap_or(f64::NAN)
+}
+
+/// Exact powers of ten as doubles (10^22 is the largest a double holds exactly).
+const POWERS_OF_TEN: [f64; 16] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+];
+
+/// The value of a plain decimal (`12`, `0.431`, `.5`, `7.`) of at most 15 digits, the bulk of
+/// what scene files hold, without the general parser: its digits as an integer (below 10^15,
+/// so exact) divided by an exact power of ten, one correctly rounded operation, hence the
+/// same double as `str::parse` gives. `None` for anything else (an exponent, more digits).
+fn short_decimal(b: &[u8]) -> Option<f64> {
+    let (mut mantissa, mut digits, mut point) = (0u64, 0usize, None);
+    for (i, &c) in b.iter().enumerate() {
+        match c {
+            b'0'..=b'9' => {
+                mantissa = mantissa * 10 + u64::from(c - b'0');
+                digits += 1;
+            }
+            b'.' if point.is_none() => point = Some(i),
+            _ => return None,
+        }
+    }
+    if digits == 0 || digits > 15 {
+        return None;
+    }
+    let fraction = point.map_or(0, |p| b.len() - p - 1);
+    Some(mantissa as f64 / POWERS_OF_TEN[fraction])
 }
 
 /// Just after the string starting at `b[i]` (`"`): a backslash escapes the byte after it.
@@ -405,5 +436,42 @@ mod tests {
         // (A word is cut where the range ends.)
         assert_eq!(l.next().unwrap().unwrap().text(text), "d");
         assert_eq!(l.next().unwrap(), None);
+    }
+
+    #[test]
+    fn short_decimals_read_as_the_general_parser_reads_them() {
+        // Every form the shortcut takes, and random ones: the same double, bit for bit.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let mut texts: Vec<String> = ["0", "7.", ".5", "0.431", "123456789012345", "0.1", "0.3"]
+            .iter()
+            .map(|t| t.to_string())
+            .collect();
+        for _ in 0..100_000 {
+            let digits = 1 + (next() % 15) as usize;
+            let mut t: String = (0..digits)
+                .map(|_| char::from(b'0' + (next() % 10) as u8))
+                .collect();
+            let point = (next() % (digits as u64 + 2)) as usize;
+            if point <= digits {
+                t.insert(point, '.');
+            }
+            texts.push(t);
+        }
+        for t in &texts {
+            let fast = short_decimal(t.as_bytes()).expect(t);
+            assert_eq!(fast.to_bits(), t.parse::<f64>().unwrap().to_bits(), "{t}");
+        }
+        // Left to the general parser: exponents, 16 digits and more, two points, nothing.
+        for t in ["1e5", "1234567890123456", "1.2.3", ".", "", "1e", "2E-3"] {
+            assert_eq!(short_decimal(t.as_bytes()), None, "{t}");
+        }
+        assert_eq!(number_value("1e"), 1.0);
+        assert_eq!(number_value("2.5e1"), 25.0);
     }
 }

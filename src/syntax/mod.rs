@@ -290,7 +290,7 @@ pub struct Node {
     /// The whole construct.
     pub span: Span,
     /// The leading keyword or word (for [`NodeKind::Unknown`] and flags, the word itself).
-    pub word: String,
+    pub word: Word,
     /// Span of that word.
     pub word_span: Span,
     /// The construct's expressions in source order (e.g. a sphere's centre and radius).
@@ -299,6 +299,68 @@ pub struct Node {
     pub children: Vec<Node>,
     /// For a declared name ([`NodeKind::IdentRef`]): its binding in the unit read.
     pub slot: Slot,
+}
+
+/// A node's leading word: a keyword is one of the grammar's own strings (no copy, nothing to
+/// free: a big file's statements are mostly keywords), any other word a copy of its text.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Word(std::borrow::Cow<'static, str>);
+
+impl Word {
+    /// The word `text` as written: the keyword table's own string when it is a keyword.
+    pub fn new(text: &str) -> Word {
+        match keywords::reserved_str(text) {
+            Some(keyword) => Word(std::borrow::Cow::Borrowed(keyword)),
+            None => Word(std::borrow::Cow::Owned(text.to_string())),
+        }
+    }
+
+    /// A word known when trace is built.
+    pub const fn fixed(text: &'static str) -> Word {
+        Word(std::borrow::Cow::Borrowed(text))
+    }
+
+    /// The word's text.
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::ops::Deref for Word {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::borrow::Borrow<str> for Word {
+    fn borrow(&self) -> &str {
+        &self.0
+    }
+}
+
+impl PartialEq<str> for Word {
+    fn eq(&self, other: &str) -> bool {
+        *self.0 == *other
+    }
+}
+
+impl PartialEq<&str> for Word {
+    fn eq(&self, other: &&str) -> bool {
+        *self.0 == **other
+    }
+}
+
+impl std::fmt::Display for Word {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl From<Word> for String {
+    fn from(word: Word) -> String {
+        word.0.into_owned()
+    }
 }
 
 impl Node {
@@ -893,7 +955,7 @@ impl<'u> Lower<'u> {
         let mut node = Node {
             kind,
             span,
-            word: String::new(),
+            word: Word::default(),
             word_span: span,
             args: Vec::new(),
             children: Vec::new(),
@@ -912,14 +974,14 @@ impl<'u> Lower<'u> {
                 | Rule::magnet_form
         ) {
             // A name, as written.
-            node.word = pair.as_str().trim().to_string();
+            node.word = Word::new(pair.as_str().trim());
             node.slot = self.slot(&pair);
             return node;
         }
         if matches!(rule, Rule::item_ref | Rule::bare_name | Rule::element_head) {
             let mut inner = pair.into_inner().filter(|p| p.as_rule() != Rule::EOI);
             let name = inner.next().expect("item_ref starts with a name");
-            node.word = name.as_str().to_string();
+            node.word = Word::new(name.as_str());
             node.word_span = self.span(&name);
             node.slot = self.slot(&name);
             node.children = inner.map(|p| self.node(p)).collect();
@@ -935,7 +997,7 @@ impl<'u> Lower<'u> {
                 .find(|c: char| c.is_whitespace() || c == '{' || c == '<')
                 .unwrap_or(text.len())
                 .max(first);
-            node.word = text[..len].to_string();
+            node.word = Word::new(&text[..len]);
             node.word_span = Span {
                 end: span.start + len as u32,
                 ..span
@@ -953,7 +1015,7 @@ impl<'u> Lower<'u> {
                 node.children.push(Node {
                     kind: NodeKind::Value,
                     span: e.span,
-                    word: String::new(),
+                    word: Word::default(),
                     word_span: e.span,
                     args: vec![e],
                     children: Vec::new(),
@@ -964,7 +1026,7 @@ impl<'u> Lower<'u> {
             } else if is_word(r) {
                 // The construct's own keyword (or, for an unknown item, the word itself).
                 if first_word {
-                    node.word = inner.as_str().to_string();
+                    node.word = Word::new(inner.as_str());
                     node.word_span = self.span(&inner);
                     node.slot = self.slot(&inner);
                     first_word = false;

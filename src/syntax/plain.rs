@@ -164,12 +164,14 @@ impl<'a> Scanner<'a> {
     }
 
     /// A node for the keyword `word` starting at `start`; span and children filled later.
-    fn node(&self, kind: NodeKind, word: &str, start: usize) -> Node {
+    /// A node of `kind` whose keyword `word` starts at `start` (the table's own string: no
+    /// copy of it is made).
+    fn node(&self, kind: NodeKind, word: &'static str, start: usize) -> Node {
         let word_span = self.span(start, start + word.len());
         Node {
             kind,
             span: word_span,
-            word: word.to_string(),
+            word: super::Word::fixed(word),
             word_span,
             args: Vec::new(),
             children: Vec::new(),
@@ -181,7 +183,7 @@ impl<'a> Scanner<'a> {
     fn object(&mut self) -> Option<Node> {
         let (word, start) = self.word()?;
         let mut node = if word == "object" {
-            let mut node = self.node(NodeKind::ObjectRef, word, start);
+            let mut node = self.node(NodeKind::ObjectRef, "object", start);
             self.skip_blanks();
             self.eat(b'{')?;
             self.skip_blanks();
@@ -221,7 +223,8 @@ impl<'a> Scanner<'a> {
         {
             return None;
         }
-        let mut node = self.node(NodeKind::IdentRef, name, start);
+        let mut node = self.node(NodeKind::IdentRef, "", start);
+        node.word = super::Word::new(name);
         node.word_span = self.span(start, name_end);
         node.span = self.span(start, self.at);
         Some(node)
@@ -251,10 +254,10 @@ impl<'a> Scanner<'a> {
 
     /// `translate`, `rotate` or `scale` by a literal (`None` if `word` is none of them).
     fn transform(&mut self, word: &str, start: usize) -> Option<Option<Node>> {
-        let kind = match word {
-            "translate" => NodeKind::Translate,
-            "rotate" => NodeKind::Rotate,
-            "scale" => NodeKind::Scale,
+        let (kind, word) = match word {
+            "translate" => (NodeKind::Translate, "translate"),
+            "rotate" => (NodeKind::Rotate, "rotate"),
+            "scale" => (NodeKind::Scale, "scale"),
             _ => return None,
         };
         Some(self.with_literal(kind, word, start))
@@ -262,7 +265,7 @@ impl<'a> Scanner<'a> {
 
     /// A keyword followed by one literal; the node runs to the blanks after the literal, as
     /// the grammar's does.
-    fn with_literal(&mut self, kind: NodeKind, word: &str, start: usize) -> Option<Node> {
+    fn with_literal(&mut self, kind: NodeKind, word: &'static str, start: usize) -> Option<Node> {
         let mut node = self.node(kind, word, start);
         self.skip_blanks();
         node.args.push(self.value()?);
@@ -323,7 +326,7 @@ impl<'a> Scanner<'a> {
     fn finish(&mut self, start: usize) -> Option<Node> {
         self.block(NodeKind::Finish, "finish", start, |s, word, item_start| {
             if word == "conserve_energy" {
-                return Some(s.node(NodeKind::ConserveEnergy, word, item_start));
+                return Some(s.node(NodeKind::ConserveEnergy, "conserve_energy", item_start));
             }
             let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
             let item = s.with_literal(kind, word, item_start)?;
@@ -339,10 +342,10 @@ impl<'a> Scanner<'a> {
             "interior",
             start,
             |s, word, item_start| {
-                let kind = match word {
-                    "ior" => NodeKind::Ior,
-                    "fade_distance" => NodeKind::FadeDistance,
-                    "fade_power" => NodeKind::FadePower,
+                let (kind, word) = match word {
+                    "ior" => (NodeKind::Ior, "ior"),
+                    "fade_distance" => (NodeKind::FadeDistance, "fade_distance"),
+                    "fade_power" => (NodeKind::FadePower, "fade_power"),
                     _ => return None,
                 };
                 s.with_literal(kind, word, item_start)
@@ -369,7 +372,7 @@ impl<'a> Scanner<'a> {
     fn block(
         &mut self,
         kind: NodeKind,
-        word: &str,
+        word: &'static str,
         start: usize,
         mut item: impl FnMut(&mut Self, &'a str, usize) -> Option<Node>,
     ) -> Option<Node> {
@@ -456,7 +459,10 @@ impl<'a> Scanner<'a> {
             b'0'..=b'9' | b'.' => ExprKind::Number(self.number()?),
             b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
                 let (name, _) = self.word()?;
-                if VALUE_WORDS.contains(&name) || super::is_keyword(name) {
+                // (Every value word and keyword starts with a small letter.)
+                if name.starts_with(|c: char| c.is_ascii_lowercase())
+                    && (VALUE_WORDS.contains(&name) || super::is_keyword(name))
+                {
                     return None;
                 }
                 ExprKind::Ident(name.to_string(), super::Slot::NONE)
