@@ -446,20 +446,30 @@ impl<'a> Evaluator<'a> {
 
     /// Parses and evaluates one statement unit.
     fn run_statement(&mut self, statement: Statement) -> Result<()> {
-        let (em, node, bindings) = match statement {
-            Statement::Plain(node, bindings) => (None, Rc::new(node), bindings),
-            Statement::Kept(node, bindings) => (None, node, bindings),
+        match statement {
+            Statement::Plain(node, bindings) => self.run_tree(&node, bindings, None),
+            Statement::Kept(node, bindings) => self.run_tree(&node, bindings, None),
             Statement::Unit(mut em) => {
                 let node = self.parsed(&em, Parse::Statement, syntax::parse_statement)?;
                 let bindings = std::mem::take(&mut em.bindings);
-                (Some(em), node, bindings)
+                self.run_tree(&node, bindings, Some(&em))
             }
-        };
+        }
+    }
+
+    /// Evaluates a statement's tree with the bindings of its names; `em`, the unit it was
+    /// read from, places its errors.
+    fn run_tree(
+        &mut self,
+        node: &Node,
+        bindings: Vec<Option<Arc<Value>>>,
+        em: Option<&Emitted>,
+    ) -> Result<()> {
         let result = self.with_bindings(bindings, |ev| {
             ev.charge(1, "statement", node.word_span)?;
-            ev.statement(&node)
+            ev.statement(node)
         });
-        result.map_err(|d| self.noted(d, em.as_ref()))
+        result.map_err(|d| self.noted(d, em))
     }
 
     /// The grammar's reading of `em` (by `parse`, as `what`): parsed once for each different
