@@ -76,7 +76,7 @@ pub struct SourceFile {
     /// The path as the user (or an include) named it.
     pub path: PathBuf,
     /// Its whole text (shared: the parser reads it while the evaluator adds files).
-    pub text: std::sync::Arc<str>,
+    pub text: std::sync::Arc<String>,
 }
 
 /// Every file read while loading a scene; spans index into it.
@@ -102,7 +102,8 @@ impl SourceMap {
     pub fn add(&mut self, path: &Path, text: String) -> FileId {
         self.files.push(SourceFile {
             path: path.to_path_buf(),
-            text: text.into(),
+            // (Kept as read: a String into an Arc<str> would copy the whole file.)
+            text: std::sync::Arc::new(text),
         });
         FileId(self.files.len() as u32 - 1)
     }

@@ -51,7 +51,7 @@ const OPENERS: [&str; 7] = ["if", "ifdef", "ifndef", "while", "for", "switch", "
 /// Where tokens are read from: the scene file, an included file, or a macro's body.
 struct Input {
     file: FileId,
-    text: Arc<str>,
+    text: Arc<String>,
     /// The next byte to read.
     pos: usize,
     /// Where the input ends (a macro body's `#end`).

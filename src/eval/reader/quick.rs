@@ -180,7 +180,7 @@ impl Evaluator<'_> {
     fn quick(
         &mut self,
         at: (FileId, usize),
-        scan: impl FnOnce(&Arc<str>, usize, usize, FileId) -> Quick,
+        scan: impl FnOnce(&Arc<String>, usize, usize, FileId) -> Quick,
     ) -> Rc<Quick> {
         if let Some(q) = self.reader.quick.get(&at) {
             return Rc::clone(q);
@@ -299,7 +299,7 @@ fn names(text: &str, words: &[Token]) -> Vec<Box<str>> {
 }
 
 /// Scans `Name[…]… = value;` from `pos`.
-fn scan_declare(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
+fn scan_declare(text: &Arc<String>, pos: usize, end: usize, file: FileId) -> Quick {
     let mut s = Scan::new(text, pos, end);
     (|| {
         let name = s.next()?;
@@ -342,7 +342,7 @@ const MAX_STATEMENT: usize = 64 * 1024;
 
 /// Scans `word { … }` from `pos`: a statement with no directive, macro, `rand`, function or
 /// mesh2 list the fast lane would read (the reader's bulk lane keeps those).
-fn scan_statement(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
+fn scan_statement(text: &Arc<String>, pos: usize, end: usize, file: FileId) -> Quick {
     let mut s = Scan::new(text, pos, end);
     (|| {
         let first = s.next()?;
@@ -380,7 +380,7 @@ fn scan_statement(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quic
 }
 
 /// Scans `(condition)` from `pos`.
-fn scan_condition(text: &Arc<str>, pos: usize, end: usize, file: FileId) -> Quick {
+fn scan_condition(text: &Arc<String>, pos: usize, end: usize, file: FileId) -> Quick {
     let mut s = Scan::new(text, pos, end);
     (|| {
         let open = s.next()?;
