@@ -86,14 +86,21 @@ pub struct SourceMap {
 }
 
 impl SourceMap {
-    /// A key of the texts read (FNV-1a over each file's text, in the order read): equal
-    /// sources give equal keys wherever they lie on the disk.
+    /// A key of the texts read (each file's text eight bytes at a time, then its length, in
+    /// the order read, mixed by multiply and rotate): equal sources give equal keys wherever
+    /// they lie on the disk. (Byte by byte, FNV-1a, it took 0.15 s of a 120 MB scene's load.)
     pub fn key(&self) -> u64 {
+        let mix = |h: u64, w: u64| (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29);
         let mut h: u64 = 0xcbf2_9ce4_8422_2325;
         for f in &self.files {
-            for &b in f.text.as_bytes().iter().chain(&[0xff]) {
-                h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+            let bytes = f.text.as_bytes();
+            let mut words = bytes.chunks_exact(8);
+            for w in &mut words {
+                h = mix(h, u64::from_le_bytes(w.try_into().expect("eight bytes")));
             }
+            let mut last = [0u8; 8];
+            last[..words.remainder().len()].copy_from_slice(words.remainder());
+            h = mix(mix(h, u64::from_le_bytes(last)), bytes.len() as u64);
         }
         h
     }
@@ -240,7 +247,39 @@ impl Diagnostic {
 
 #[cfg(test)]
 mod tests {
-    use super::decode_source;
+    use super::{SourceMap, decode_source};
+    use std::path::Path;
+
+    fn key_of(files: &[(&str, &str)]) -> u64 {
+        let mut map = SourceMap::default();
+        for (path, text) in files {
+            map.add(Path::new(path), text.to_string());
+        }
+        map.key()
+    }
+
+    #[test]
+    fn the_sources_key_follows_the_texts_not_the_paths() {
+        let scene = "sphere { 0, 1 pigment { rgb 1 } }\n";
+        assert_eq!(
+            key_of(&[("a.pov", scene)]),
+            key_of(&[("/elsewhere/b.pov", scene)])
+        );
+        // A byte changed, a byte added, a file split elsewhere, files in another order.
+        let keys = [
+            key_of(&[("a.pov", scene)]),
+            key_of(&[("a.pov", "sphere { 0, 2 pigment { rgb 1 } }\n")]),
+            key_of(&[("a.pov", "sphere { 0, 1 pigment { rgb 1 } }\n\0")]),
+            key_of(&[("a.pov", "abcdefghij"), ("b.inc", "k")]),
+            key_of(&[("a.pov", "abcdefghi"), ("b.inc", "jk")]),
+            key_of(&[("b.inc", "jk"), ("a.pov", "abcdefghi")]),
+        ];
+        for i in 0..keys.len() {
+            for j in i + 1..keys.len() {
+                assert_ne!(keys[i], keys[j], "{i} {j}");
+            }
+        }
+    }
 
     #[test]
     fn bytes_that_are_not_utf8_read_as_latin1() {
