@@ -1038,7 +1038,6 @@ impl Evaluator<'_> {
         Ok(v)
     }
 
-    /// One modifier `m` of object statement `owner`.
     /// Whether a flag (`hollow`, `no_shadow` …) is on: without a value, or with one above
     /// zero, as POV-Ray reads it (the grammar reads `on`/`off`/`true`/`false`/`yes`/`no` as 1
     /// and 0; any float expression may stand there).
@@ -1049,6 +1048,7 @@ impl Evaluator<'_> {
         })
     }
 
+    /// One modifier `m` of object statement `owner`.
     fn object_modifier(&mut self, object: &mut ObjectValue, m: &Node, owner: &Node) -> Result<()> {
         let is_cone = matches!(owner.kind, NodeKind::Cylinder | NodeKind::Cone);
         let on = m.kind != NodeKind::Flag || self.flag_on(m)?;

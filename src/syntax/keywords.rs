@@ -540,7 +540,7 @@ fn matches_keyword_rule(word: &str) -> bool {
 /// Whether `word` is one of the keywords of trace's grammar (a table look-up; every keyword
 /// starts with a small letter, so a capitalised name, as users name theirs, is answered at once).
 pub fn is_keyword(word: &str) -> bool {
-    word.starts_with(|c: char| c.is_ascii_lowercase()) && RESERVED.binary_search(&word).is_ok()
+    reserved_str(word).is_some()
 }
 
 /// The table's own string for `word` if the grammar reserves it.

@@ -303,7 +303,7 @@ pub struct Node {
 
 /// A node's leading word: a keyword is one of the grammar's own strings (no copy, nothing to
 /// free: a big file's statements are mostly keywords), any other word a copy of its text.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Word(std::borrow::Cow<'static, str>);
 
 impl Word {
@@ -354,12 +354,6 @@ impl PartialEq<&str> for Word {
 impl std::fmt::Display for Word {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
-    }
-}
-
-impl From<Word> for String {
-    fn from(word: Word) -> String {
-        word.0.into_owned()
     }
 }
 
