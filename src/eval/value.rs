@@ -47,9 +47,9 @@ pub enum Value {
     Texture(Box<ir::Texture>),
     Object(Box<super::ObjectValue>),
     Transform(Box<ir::Transform>),
-    Camera(Box<super::CameraItems>),
+    Camera(Box<super::build::camera::CameraItems>),
     Interior(Box<ir::Interior>),
-    Fog(Box<super::FogItems>),
+    Fog(Box<super::build::scene::FogItems>),
     /// `material {…}`: a texture, an interior texture and an interior, each only if given.
     Material(Box<MaterialValue>),
     ColourMap(ir::ColourMap),

@@ -10,7 +10,7 @@
 //!
 //! Adding a pattern: a variant of [`PatternKind`] and its arm in [`Pattern::raw`] (a function
 //! here or in a file of this module), and the keyword's arm in the evaluator's pattern table
-//! (`eval::material::pattern_kind`).
+//! (`eval::build::material::pattern_kind`).
 
 pub mod density;
 pub mod fractal;

@@ -1,6 +1,6 @@
 //! The words of POV-Ray's language: its reserved words, and which of them trace's grammar
 //! reserves (a word the grammar reserves cannot name a declaration). What trace does with each
-//! keyword, and why it refuses the ones it refuses, is the evaluator's table (`eval::keywords`).
+//! keyword, and why it refuses the ones it refuses, is the evaluator's table (`eval::lang::keywords`).
 
 use super::grammar::{Rule, SceneParser};
 use pest::Parser;

@@ -12,7 +12,7 @@
 //! and the statement goes to the grammar, which reads it (or reports it) as always. The unit
 //! tests compare the two readings on every form the lane takes, byte offsets included.
 //!
-//! The directive reader (`eval::reader`) tries the lane where a statement starts; a name in
+//! The directive reader (`eval::lang::reader`) tries the lane where a statement starts; a name in
 //! `object { Name … }` is bound there (or, naming a macro, sends the statement to the usual
 //! reading).
 

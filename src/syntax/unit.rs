@@ -2,7 +2,7 @@
 //! a declared value, a macro's arguments, a directive's condition …) and where each part of
 //! it came from.
 //!
-//! The reader (`eval::reader`) carries out `#if`, `#while`, macros and includes as POV-Ray's
+//! The reader (`eval::lang::reader`) carries out `#if`, `#while`, macros and includes as POV-Ray's
 //! token reader does, so a unit's text is spliced from pieces of several places: a file's
 //! text between two directives, a macro's body, a loop's body read again. Each [`Piece`] maps
 //! a stretch of the unit's text back to its file, so that spans and messages point at the

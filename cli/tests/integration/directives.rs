@@ -1,4 +1,4 @@
-//! Directives that work on tokens, as POV-Ray's reader executes them (src/eval/reader.rs):
+//! Directives that work on tokens, as POV-Ray's reader executes them (src/eval/lang/reader.rs):
 //! a scene written with them is the scene written without them. (Their pictures against POV-Ray's: examples/token_directives.rt.)
 
 use crate::load_text;
@@ -195,7 +195,7 @@ fn deeply_nested_directives_are_read_in_linear_time() {
 #[test]
 fn a_loops_plain_directives_mean_what_the_token_reader_makes_of_them() {
     // Plain `#declare`s, `#local`s and conditions in a loop are read from a kept parse
-    // (src/eval/reader/quick.rs); a macro named in one sends it back to the token reader.
+    // (src/eval/lang/reader/quick.rs); a macro named in one sends it back to the token reader.
     same(
         "#macro Twice(A) (2*A) #end
          #macro Lim() 4 #end
@@ -256,7 +256,7 @@ fn a_macros_last_declaration_of_a_parameter_changes_the_callers_name() {
 
 #[test]
 fn a_loops_plain_statements_mean_what_the_token_reader_makes_of_them() {
-    // A loop body's plain statement is read from a kept parse (src/eval/reader/quick.rs),
+    // A loop body's plain statement is read from a kept parse (src/eval/lang/reader/quick.rs),
     // its names bound at each pass; a macro named in it sends it to the token reader.
     same(
         "#macro Half() 0.5 #end

@@ -1,4 +1,4 @@
-//! docs/keywords.md is the table in src/eval/keywords.rs.
+//! docs/keywords.md is the table in src/eval/lang/keywords.rs.
 
 use crate::root;
 

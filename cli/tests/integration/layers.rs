@@ -81,6 +81,99 @@ fn no_module_uses_one_against_the_pipeline_direction() {
     );
 }
 
+/// The evaluator's two halves (design: eval): the language (`eval/lang/`: values, directives,
+/// macros, functions, files) and the IR builder (`eval/build/`: objects, shapes, materials,
+/// lights, camera, the scene's settings). The builder asks the language for values; the
+/// language hands a statement's blocks to the builder by calling it, and keeps and names no IR
+/// itself: no path into `ir` (or the stages only the builder needs), none into `eval::build`,
+/// and no use of the builder's state (`self.scene`).
+#[test]
+fn the_language_names_nothing_of_the_ir_builder() {
+    let dir = root().join("src/eval/lang");
+    let mut files = Vec::new();
+    let mut stack = vec![dir];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
+        }
+    }
+    assert!(files.len() >= 9, "the language's files: {files:?}");
+    let src = root().join("src");
+    let mut violations = Vec::new();
+    for path in files {
+        let rel = path.strip_prefix(&src).unwrap();
+        let text = std::fs::read_to_string(&path).unwrap();
+        for found in builder_uses(&text, &module_path(rel)) {
+            violations.push(format!("{}: {found}", rel.display()));
+        }
+    }
+    assert!(
+        violations.is_empty(),
+        "the language reaches into the IR builder: {violations:#?}"
+    );
+}
+
+/// What of the IR builder's side a file of the language names (see above).
+fn builder_uses(text: &str, module: &[String]) -> Vec<String> {
+    const BUILDER_ONLY: &[&str] = &["ir", "pattern", "meshfile", "font"];
+    let mut found: Vec<String> = used_modules(text, module)
+        .into_iter()
+        .filter(|m| BUILDER_ONLY.contains(&m.as_str()))
+        .map(|m| format!("crate::{m}"))
+        .collect();
+    // Paths and fields, with comments, strings and white space left out.
+    let code: String = strip_comments_and_strings(text)
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .collect();
+    let word_before = |at: usize| {
+        code[..at]
+            .chars()
+            .next_back()
+            .is_some_and(|c| c.is_alphanumeric() || c == '_')
+    };
+    for (at, _) in code.match_indices("build::") {
+        if !word_before(at) {
+            found.push("eval::build".into());
+        }
+    }
+    for (at, _) in code.match_indices("ir::") {
+        if !word_before(at) {
+            found.push("ir::".into());
+        }
+    }
+    if code.contains(".scene.") {
+        found.push("the builder's state (.scene.)".into());
+    }
+    found
+}
+
+#[test]
+fn builder_uses_are_found_however_they_are_spelled() {
+    let m = |s: &str| s.split("::").map(String::from).collect::<Vec<_>>();
+    let here = m("eval::lang::expr");
+    assert!(builder_uses("let x = self.lang.env.len(); // self.scene.lights", &here).is_empty());
+    assert!(builder_uses("let s = \"ir::Texture\"; let v = vir::x();", &here).is_empty());
+    for text in [
+        "use crate::ir::Texture;",
+        "use crate::{diag, ir};",
+        "let t: crate::ir::Texture = t;",
+        "let t = ir::Pigment::default();",
+        "crate::eval::build::material::layer(a, b)",
+        "use crate::eval::{Evaluator, build::light};",
+        "use super::super::build::camera::CameraItems;",
+        "self\n    .scene\n    .lights\n    .push(l)",
+        "use crate::pattern::Pattern;",
+    ] {
+        assert!(!builder_uses(text, &here).is_empty(), "{text}");
+    }
+}
+
 /// The module a source file holds, from its path under src/ (`eval/flow.rs` → eval::flow,
 /// `eval/mod.rs` → eval, `lib.rs` → the crate root).
 fn module_path(rel: &std::path::Path) -> Vec<String> {

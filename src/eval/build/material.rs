@@ -1,9 +1,9 @@
 //! Materials: `texture`, `pigment` (colours and patterns), `finish`, `interior`.
 
-use super::images::ImageRole;
-use super::value::{MaterialValue, colour5, to_colour};
-use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::Diagnostic;
+use crate::eval::build::images::ImageRole;
+use crate::eval::value::{MaterialValue, colour5, to_colour};
+use crate::eval::{Evaluator, Result, Value, lang::expr::type_error};
 use crate::ir::{
     self, Colour, ColourMap, Interior, Pattern, PatternKind, PatternPigment, Pigment, PigmentKind,
     PigmentMap, Rgb, Texture, TextureMap, Transform, Warp, WaveShape,
@@ -22,7 +22,7 @@ fn brick_mortar(m: f64) -> f64 {
 }
 
 /// POV-Ray's bump amount when a normal pattern gives none.
-pub(super) const DEFAULT_BUMP_SIZE: f64 = 0.5;
+pub(in crate::eval) const DEFAULT_BUMP_SIZE: f64 = 0.5;
 
 /// A number as POV-Ray keeps it in single precision (map keys, some pattern parameters).
 fn single(v: f64) -> f64 {
@@ -106,7 +106,7 @@ impl Evaluator<'_> {
                 high,
             } = alt.view()
             else {
-                return Err(super::malformed(alt, "altitude"));
+                return Err(crate::eval::malformed(alt, "altitude"));
             };
             altitude = self.vec3(a)?;
             altitude_range = range(self, (low, high), "gradient")?;
@@ -189,8 +189,8 @@ fn after_uv_mapping(node: &Node) -> Option<Node> {
 
 impl Evaluator<'_> {
     /// `texture` seen at the surface's (u, v, 0): a pattern of one texture, `uv_mapping`.
-    pub(super) fn uv_texture(&self, texture: Texture) -> Texture {
-        let mut outer = self.default_texture.clone();
+    pub(in crate::eval) fn uv_texture(&self, texture: Texture) -> Texture {
+        let mut outer = self.scene.default_texture.clone();
         outer.map = Some(Box::new(ir::TextureMap {
             pattern: Pattern::new(PatternKind::UvMapping),
             transform: None,
@@ -202,7 +202,7 @@ impl Evaluator<'_> {
 
 /// The texture a uv-mapped object's pigment, normal and finish go into: the one entry of a
 /// `uv_mapping` texture, else the texture itself.
-pub(super) fn uv_entry(texture: &mut Texture) -> &mut Texture {
+pub(in crate::eval) fn uv_entry(texture: &mut Texture) -> &mut Texture {
     let uv = texture
         .map
         .as_ref()
@@ -227,7 +227,7 @@ fn check_pattern(pattern: &mut Pattern, span: crate::diag::Span) -> Result<()> {
 
 /// `top` layered over `below` (POV-Ray's layered textures): the layers of both, `top`'s
 /// last.
-pub(super) fn layer(mut top: Texture, below: Texture) -> Texture {
+pub(in crate::eval) fn layer(mut top: Texture, below: Texture) -> Texture {
     let mut under = below.under;
     under.push(Texture {
         under: Vec::new(),
@@ -242,12 +242,12 @@ impl Evaluator<'_> {
     /// `texture { [Name] pigment {…} normal {…} finish {…} transforms }`, starting from the
     /// default texture; or a pattern of textures (`checker texture {…} texture {…}`,
     /// `gradient y texture_map {…}`).
-    pub(super) fn texture(&mut self, node: &Node) -> Result<Texture> {
+    pub(in crate::eval) fn texture(&mut self, node: &Node) -> Result<Texture> {
         if let Some(inner) = after_uv_mapping(node) {
             let inner = self.texture(&inner)?;
             return Ok(self.uv_texture(inner));
         }
-        let mut texture = self.default_texture.clone();
+        let mut texture = self.scene.default_texture.clone();
         let mut list: Vec<(Texture, crate::diag::Span)> = Vec::new();
         let mut map: Option<(Vec<(f64, Texture)>, crate::diag::Span)> = None;
         let mut pattern_span = None;
@@ -290,7 +290,7 @@ impl Evaluator<'_> {
                 }
                 // `no_bump_scale` on a texture is its normal's (none: nothing), as in POV-Ray.
                 NodeKind::PatternModifier if item.word == "no_bump_scale" && texture.map.is_none() => {
-                    let on = match super::modifier_value(item) {
+                    let on = match crate::eval::modifier_value(item) {
                         Some(e) => ev.float(e)? != 0.0,
                         None => true,
                     };
@@ -361,7 +361,7 @@ impl Evaluator<'_> {
                                 None => top,
                             });
                         }
-                        Ok(t.unwrap_or_else(|| ev.default_texture.clone()))
+                        Ok(t.unwrap_or_else(|| ev.scene.default_texture.clone()))
                     };
                     let first = item.children.iter().find(|c| c.kind == NodeKind::TilesFirst);
                     let first = layered(ev, first.map_or(&[][..], |f| &f.children))?;
@@ -427,7 +427,7 @@ impl Evaluator<'_> {
                     .collect();
                 // (Entries not given are the default texture, as in POV-Ray.)
                 while entries.len() < len {
-                    entries.push((entries.len() as f64, self.default_texture.clone()));
+                    entries.push((entries.len() as f64, self.scene.default_texture.clone()));
                 }
                 m.entries = entries;
             }
@@ -442,7 +442,7 @@ impl Evaluator<'_> {
     }
 
     /// `texture_map { [v TEXTURE_ITEMS] … }` or `texture_map { Name }`.
-    pub(super) fn texture_map(
+    pub(in crate::eval) fn texture_map(
         &mut self,
         node: &Node,
         average: bool,
@@ -479,12 +479,12 @@ impl Evaluator<'_> {
                 return Err(ev.unknown_item(e, what));
             }
             let View::MapEntry { values, body: Some(body) } = e.view() else {
-                return Err(super::malformed(e, "a map entry"));
+                return Err(crate::eval::malformed(e, "a map entry"));
             };
             let value = match values {
                 [v] => single(ev.float(v)?),
                 [] if average => 1.0,
-                [_, _, ..] => return Err(super::malformed(e, "a map entry")),
+                [_, _, ..] => return Err(crate::eval::malformed(e, "a map entry")),
                 [] => {
                     return Err(Diagnostic::error(
                         format!("this {what} entry needs its value first (only an average's entries may leave it out)"),
@@ -505,7 +505,11 @@ impl Evaluator<'_> {
     }
 
     /// `pigment { [colour | Name | checker … | gradient … | image_map {…}] [color_map] transforms }`.
-    pub(super) fn pigment(&mut self, node: &Node, mut pigment: Pigment) -> Result<Pigment> {
+    pub(in crate::eval) fn pigment(
+        &mut self,
+        node: &Node,
+        mut pigment: Pigment,
+    ) -> Result<Pigment> {
         if let Some(inner) = after_uv_mapping(node) {
             let inner = self.pigment(&inner, Pigment::solid(Colour::default()))?;
             return Ok(Pigment {
@@ -548,7 +552,7 @@ impl Evaluator<'_> {
                 (NodeKind::PatternModifier, _)
                     if matches!(item.word.as_str(), "quick_color" | "quick_colour") =>
                 {
-                    if let Some(e) = super::modifier_value(item) {
+                    if let Some(e) = crate::eval::modifier_value(item) {
                         ev.eval(e)?;
                     }
                 }
@@ -654,7 +658,7 @@ impl Evaluator<'_> {
             let mut entries: Vec<(f64, Pigment)> = defaults
                 .entries
                 .iter()
-                .map(|(v, _)| (*v, self.default_texture.pigment.clone()))
+                .map(|(v, _)| (*v, self.scene.default_texture.pigment.clone()))
                 .collect();
             for (slot, (entry, _)) in entries.iter_mut().zip(list) {
                 slot.1 = entry;
@@ -667,7 +671,7 @@ impl Evaluator<'_> {
     /// `warp { … }` on `pattern`, whose placement so far is `placement`: the placement
     /// becomes a warp applied after this one (POV-Ray applies the last-written warp or
     /// transformation first).
-    pub(super) fn warp(
+    pub(in crate::eval) fn warp(
         &mut self,
         item: &Node,
         pattern: &mut Pattern,
@@ -831,12 +835,12 @@ impl Evaluator<'_> {
     /// The evaluator's pattern table: the pattern `item` names, made from the arguments it
     /// takes, and the arguments left after them (a discrete pattern's colours in a pigment,
     /// the bump amount in a normal).
-    pub(super) fn pattern_kind<'n>(
+    pub(in crate::eval) fn pattern_kind<'n>(
         &mut self,
         item: &'n Node,
     ) -> Result<(PatternKind, &'n [crate::syntax::Expr])> {
         let View::Pattern { values: args } = item.view() else {
-            return Err(super::malformed(item, "a pattern"));
+            return Err(crate::eval::malformed(item, "a pattern"));
         };
         // `function { … }`: a user function of the point.
         if let Some(f) = item.children.iter().find(|c| c.kind == NodeKind::Function) {
@@ -849,10 +853,10 @@ impl Evaluator<'_> {
             .find(|c| c.kind == NodeKind::ObjectPattern)
         {
             let View::ObjectPattern { colours } = o.view() else {
-                return Err(super::malformed(o, "an object pattern"));
+                return Err(crate::eval::malformed(o, "an object pattern"));
             };
             let [first, ..] = o.children.as_slice() else {
-                return Err(super::malformed(o, "an object pattern"));
+                return Err(crate::eval::malformed(o, "an object pattern"));
             };
             let object = match first.kind {
                 NodeKind::IdentRef => match self.lookup(first)? {
@@ -862,7 +866,7 @@ impl Evaluator<'_> {
                 _ => self.object(first)?,
             };
             let parts = self.placed_parts(&object, first.span)?;
-            let query = (self.object_query)(parts);
+            let query = (self.scene.object_query)(parts);
             let inside = crate::func::NativeRef(Arc::new(InsideTest(query)));
             return Ok((PatternKind::Object(inside), colours));
         }
@@ -873,7 +877,7 @@ impl Evaluator<'_> {
             .find(|c| c.kind == NodeKind::PigmentPattern)
         {
             let pigment = self.pigment(p, Pigment::solid(Colour::default()))?;
-            let native = (self.pigment_function)(&pigment, self.scene_defaults());
+            let native = (self.scene.pigment_function)(&pigment, self.scene_defaults());
             return Ok((PatternKind::Pigment(crate::func::NativeRef(native)), args));
         }
         // The patterns that take an argument: a number (spiral arms) or a direction; `rest`,
@@ -1161,7 +1165,7 @@ impl Evaluator<'_> {
 
     /// `normal { [Name] [PATTERN [amount]] modifiers transforms }`, starting from `base` (the
     /// texture's normal, if it has one).
-    pub(super) fn normal(
+    pub(in crate::eval) fn normal(
         &mut self,
         node: &Node,
         base: Option<Box<ir::Normal>>,
@@ -1190,7 +1194,7 @@ impl Evaluator<'_> {
                     // (A discrete pattern without a list of normals bumps by the slope of its
                     // entry number, as in POV-Ray.)
                     let amount = match rest {
-                        [] => ev.default_bump_size,
+                        [] => ev.scene.default_bump_size,
                         [e] => ev.float(e)?,
                         [_, extra, ..] => {
                             return Err(Diagnostic::error(
@@ -1206,10 +1210,10 @@ impl Evaluator<'_> {
                     let (kind, amount) = match read.kind {
                         ImageRole::Bumps(size) => (
                             PatternKind::BumpMap(Arc::new(read.image)),
-                            size.unwrap_or(ev.default_bump_size),
+                            size.unwrap_or(ev.scene.default_bump_size),
                         ),
                         ImageRole::Pattern(use_) => {
-                            (PatternKind::Image(Arc::new(read.image), use_), ev.default_bump_size)
+                            (PatternKind::Image(Arc::new(read.image), use_), ev.scene.default_bump_size)
                         }
                         ImageRole::Colours => {
                             return Err(Diagnostic::error(
@@ -1230,13 +1234,13 @@ impl Evaluator<'_> {
                     };
                     match (item.kind, item.view()) {
                         (NodeKind::PatternModifier, _) if item.word == "accuracy" => {
-                            let e = super::modifier_value(item).ok_or_else(|| {
+                            let e = crate::eval::modifier_value(item).ok_or_else(|| {
                                 Diagnostic::error("`accuracy` needs a value", item.word_span)
                             })?;
                             n.accuracy = f64::from(ev.float(e)? as f32);
                         }
                         (NodeKind::PatternModifier, _) if item.word == "no_bump_scale" => {
-                            n.no_bump_scale = match super::modifier_value(item) {
+                            n.no_bump_scale = match crate::eval::modifier_value(item) {
                                 Some(e) => ev.float(e)? != 0.0,
                                 None => true,
                             };
@@ -1278,7 +1282,8 @@ impl Evaluator<'_> {
             // Entry i at value i; the entries not given are the default texture's normal
             // (flat unless `#default` gave one), as in POV-Ray.
             let flat = || {
-                self.default_texture
+                self.scene
+                    .default_texture
                     .normal
                     .as_deref()
                     .cloned()
@@ -1303,10 +1308,14 @@ impl Evaluator<'_> {
 
     /// A pattern modifier (`frequency 2`, `turbulence 0.5`, `sine_wave`, `agate_turb 0.3` …)
     /// applied to `pattern`, with POV-Ray's precision (several are single-precision there).
-    pub(super) fn pattern_modifier(&mut self, item: &Node, pattern: &mut Pattern) -> Result<()> {
+    pub(in crate::eval) fn pattern_modifier(
+        &mut self,
+        item: &Node,
+        pattern: &mut Pattern,
+    ) -> Result<()> {
         let (value, factor) = match item.view() {
             View::PatternModifier { value, factor } => (value, factor),
-            _ => return Err(super::malformed(item, "a pattern modifier")),
+            _ => return Err(crate::eval::malformed(item, "a pattern modifier")),
         };
         let arg = || {
             value.ok_or_else(|| {
@@ -1537,7 +1546,7 @@ impl Evaluator<'_> {
 
     /// `pigment_map { [v PIGMENT] … }` or `pigment_map { Name }`: each entry's pigment starts
     /// black and unplaced (it is placed in the pattern's space).
-    pub(super) fn pigment_map(
+    pub(in crate::eval) fn pigment_map(
         &mut self,
         node: &Node,
         average: bool,
@@ -1556,7 +1565,7 @@ impl Evaluator<'_> {
 
     /// `slope_map { [v <height, slope>] … }`.
     /// `normal_map { [v NORMAL_ITEMS] … }` or `normal_map { Name }`.
-    pub(super) fn normal_map(
+    pub(in crate::eval) fn normal_map(
         &mut self,
         node: &Node,
         average: bool,
@@ -1592,7 +1601,7 @@ impl Evaluator<'_> {
     }
 
     /// `slope_map { [v <height, slope>] … }` or `slope_map { Name }`.
-    pub(super) fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
+    pub(in crate::eval) fn slope_map(&mut self, node: &Node) -> Result<Vec<(f64, [f64; 2])>> {
         let take = |v| match v {
             Value::SlopeMap(m) => Ok(m),
             other => Err(Box::new(other)),
@@ -1607,7 +1616,7 @@ impl Evaluator<'_> {
                 ..
             } = e.view()
             else {
-                return Err(super::malformed(e, "a slope_map entry"));
+                return Err(crate::eval::malformed(e, "a slope_map entry"));
             };
             let value = single(self.float(value)?);
             let v = self.eval(point_expr)?;
@@ -1634,7 +1643,7 @@ impl Evaluator<'_> {
     }
 
     /// `color_map { [v C] … }` or `color_map { Name }`.
-    pub(super) fn colour_map(&mut self, node: &Node) -> Result<ColourMap> {
+    pub(in crate::eval) fn colour_map(&mut self, node: &Node) -> Result<ColourMap> {
         let take = |v| match v {
             Value::ColourMap(m) => Ok(m),
             other => Err(Box::new(other)),
@@ -1652,7 +1661,7 @@ impl Evaluator<'_> {
             let points = match entry.view() {
                 View::MapEntry { values: [v, c], .. } => vec![(v, c)],
                 View::MapEntry { values: [v1, v2, c1, c2], .. } => vec![(v1, c1), (v2, c2)],
-                _ => return Err(super::malformed(entry, "a color_map entry")),
+                _ => return Err(crate::eval::malformed(entry, "a color_map entry")),
             };
             for (value_expr, colour_expr) in points {
                 // (POV-Ray keeps map keys in single precision.)
@@ -1687,7 +1696,7 @@ impl Evaluator<'_> {
     }
 
     /// `finish { [Name] items }` applied to `base`, shared with an equal finish made before.
-    pub(super) fn shared_finish_block(
+    pub(in crate::eval) fn shared_finish_block(
         &mut self,
         node: &Node,
         base: &ir::Finish,
@@ -1697,7 +1706,11 @@ impl Evaluator<'_> {
     }
 
     /// `finish { [Name] items }`, modifying `finish`.
-    pub(super) fn finish_block(&mut self, node: &Node, mut f: ir::Finish) -> Result<ir::Finish> {
+    pub(in crate::eval) fn finish_block(
+        &mut self,
+        node: &Node,
+        mut f: ir::Finish,
+    ) -> Result<ir::Finish> {
         self.each_item(&node.children, &mut |ev, item| {
             match (item.kind, item.view()) {
                 (NodeKind::IdentRef, _) => match ev.lookup(item)? {
@@ -1782,7 +1795,7 @@ impl Evaluator<'_> {
 
     fn reflection(&mut self, node: &Node, r: &mut ir::Reflection) -> Result<()> {
         let View::Reflection { first, max } = node.view() else {
-            return Err(super::malformed(node, "a reflection"));
+            return Err(crate::eval::malformed(node, "a reflection"));
         };
         let first = self.rgb_arg(first)?;
         match max {
@@ -1814,7 +1827,11 @@ impl Evaluator<'_> {
     }
 
     /// `interior { [Name] ior fade_distance fade_power fade_color }`.
-    pub(super) fn interior(&mut self, node: &Node, mut interior: Interior) -> Result<Interior> {
+    pub(in crate::eval) fn interior(
+        &mut self,
+        node: &Node,
+        mut interior: Interior,
+    ) -> Result<Interior> {
         self.each_item(&node.children, &mut |ev, item| {
             match (item.kind, item.view()) {
                 (NodeKind::IdentRef, _) => match ev.lookup(item)? {
@@ -1847,7 +1864,7 @@ impl Evaluator<'_> {
 
     /// `material { [Name] texture {…} interior_texture {…} interior {…} transforms }`: what
     /// it sets, each only if given (transforms move the textures).
-    pub(super) fn material(&mut self, node: &Node) -> Result<MaterialValue> {
+    pub(in crate::eval) fn material(&mut self, node: &Node) -> Result<MaterialValue> {
         let mut m = MaterialValue::default();
         self.each_item(&node.children, &mut |ev, item| {
             match item.kind {
@@ -1906,6 +1923,57 @@ fn normal_only(kind: &PatternKind, item: &Node) -> Result<()> {
     Ok(())
 }
 
+/// What the language asks of materials: a layered texture as a value, a pigment or pattern as
+/// a function.
+impl Evaluator<'_> {
+    /// `texture {…} texture {…} …`: each texture layered over the ones before it.
+    pub(in crate::eval) fn layered_texture(&mut self, item: &Node) -> Result<Value> {
+        let mut layered: Option<ir::Texture> = None;
+        for t in item.children.iter().filter(|c| c.kind == NodeKind::Texture) {
+            let t = self.texture(t)?;
+            layered = Some(match layered {
+                Some(below) => layer(t, below),
+                None => t,
+            });
+        }
+        Ok(Value::Texture(Box::new(
+            layered.expect("a layered texture has textures"),
+        )))
+    }
+
+    /// The scene's pattern defaults as they stand while the scene is read.
+    pub(in crate::eval) fn scene_defaults(&self) -> crate::pattern::SceneDefaults {
+        crate::pattern::SceneDefaults {
+            generator: self.noise_generator(),
+            waves: self.scene.settings.number_of_waves,
+        }
+    }
+
+    /// The function of a `pigment { … }` or `pattern { … }` body.
+    pub(in crate::eval) fn native_function(
+        &mut self,
+        body: &Node,
+    ) -> Result<Arc<dyn crate::func::Native>> {
+        let pigment = self.pigment(body, ir::Pigment::solid(ir::Colour::default()))?;
+        if body.kind == NodeKind::Pigment {
+            return Ok((self.scene.pigment_function)(
+                &pigment,
+                self.scene_defaults(),
+            ));
+        }
+        let ir::PigmentKind::Pattern(p) = pigment.kind else {
+            return Err(Diagnostic::error(
+                "`pattern { }` needs a pattern (gradient x, granite …)",
+                body.word_span,
+            ));
+        };
+        Ok(Arc::new(crate::pattern::PatternFunction {
+            pattern: p.pattern.with_scene(self.scene_defaults()),
+            from_world: pigment.transform.map(|t| t.matrix.inverse()),
+        }))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::ir::PigmentKind;
@@ -1959,7 +2027,7 @@ mod tests {
     /// parts, trace inverts the matrix: the last bits may differ).
     #[test]
     fn patterns_match_povray_bit_for_bit() {
-        let text = include_str!("../pattern/testdata/patterns.txt");
+        let text = include_str!("../../pattern/testdata/patterns.txt");
         let (mut checked, mut blocks) = (0, Vec::new());
         let mut current: Option<(String, crate::ir::Pattern, Option<glam::DMat4>)> = None;
         for line in text

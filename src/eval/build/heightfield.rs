@@ -13,7 +13,7 @@ const MAX_PIXELS: u64 = 1 << 26;
 
 /// Width, height and the heights with the image's bottom row first (POV-Ray's z = 0 is the
 /// image's last row), each row left to right.
-pub(super) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
+pub(in crate::eval) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
     let file = std::io::BufReader::new(std::fs::File::open(path).map_err(|e| e.to_string())?);
     let mut decoder = png::Decoder::new(file);
     decoder.set_transformations(png::Transformations::IDENTITY);
@@ -69,13 +69,13 @@ pub(super) fn read_png(path: &Path) -> Result<(u32, u32, Vec<u16>), String> {
 }
 
 /// The height of a 16-bit colour pixel: POV-Ray's grey of it (0.297 r + 0.589 g + 0.114 b).
-pub(super) fn grey16(rgb: [u16; 3]) -> u16 {
+pub(in crate::eval) fn grey16(rgb: [u16; 3]) -> u16 {
     let c = |k: usize| f64::from(f32::from(rgb[k]) / 65535.0f32);
     ((0.297 * c(0) + 0.589 * c(1) + 0.114 * c(2)) * 65535.0) as u16
 }
 
 /// A value kept in a 16-bit channel as POV-Ray keeps it (single precision, truncated).
-pub(super) fn channel16(v: f64) -> u16 {
+pub(in crate::eval) fn channel16(v: f64) -> u16 {
     ((v as f32) * 65535.0) as i32 as u16
 }
 

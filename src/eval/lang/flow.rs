@@ -5,11 +5,11 @@
 //! The directives themselves are carried out by the directive reader (`reader.rs`) where it
 //! meets them; what is here is what they and the rest of evaluation share.
 
-use super::{
-    Evaluator, Result, Value,
-    expr::{STRING_FUNCTIONS, check_arity, type_error},
-};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::{
+    Evaluator, Result, Value,
+    lang::expr::{STRING_FUNCTIONS, check_arity, type_error},
+};
 use crate::syntax::{self, ExprKind, Node, NodeKind, ValueSyntax, View};
 use std::sync::Arc;
 
@@ -26,34 +26,38 @@ pub const MAX_INCLUDE_DEPTH: usize = 64;
 /// A declared macro: its parameters and where its body's text lies.
 #[derive(Clone, Debug)]
 pub struct Macro {
-    pub(super) params: Vec<String>,
-    pub(super) body: Span,
-    pub(super) name_span: Span,
+    pub(in crate::eval) params: Vec<String>,
+    pub(in crate::eval) body: Span,
+    pub(in crate::eval) name_span: Span,
 }
 
 /// One macro call (or included file) in progress: the variables its parameters and `#local`s
 /// shadow (restored when it returns) and its by-reference arguments (parameter, caller's
 /// variable).
 #[derive(Default)]
-pub(super) struct Frame {
-    pub(super) saved: Vec<(String, Option<Arc<Value>>)>,
-    pub(super) by_reference: Vec<(String, String)>,
+pub(in crate::eval) struct Frame {
+    pub(in crate::eval) saved: Vec<(String, Option<Arc<Value>>)>,
+    pub(in crate::eval) by_reference: Vec<(String, String)>,
 }
 
 /// A block item handler.
-pub(super) type Handler<'h, 'a> = dyn FnMut(&mut Evaluator<'a>, &Node) -> Result<()> + 'h;
+pub(in crate::eval) type Handler<'h, 'a> = dyn FnMut(&mut Evaluator<'a>, &Node) -> Result<()> + 'h;
 
 impl<'a> Evaluator<'a> {
     /// Hands each of `items` to `f` in order, one evaluation step each.
-    pub(super) fn each_item(&mut self, items: &[Node], f: &mut Handler<'_, 'a>) -> Result<()> {
+    pub(in crate::eval) fn each_item(
+        &mut self,
+        items: &[Node],
+        f: &mut Handler<'_, 'a>,
+    ) -> Result<()> {
         for item in items {
             self.charge(1, "statement", item.word_span)?;
             match item.view() {
                 // (A member a loop made again: its words are bound `by` slots further on.)
                 View::Again { member, by } => {
-                    self.slot_shift += by;
+                    self.lang.slot_shift += by;
                     let result = f(self, member);
-                    self.slot_shift -= by;
+                    self.lang.slot_shift -= by;
                     result?
                 }
                 _ => f(self, item)?,
@@ -63,12 +67,12 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Binds `name` to `value`.
-    pub(super) fn set(&mut self, name: String, value: Value) {
-        self.env.insert(name, Arc::new(value));
+    pub(in crate::eval) fn set(&mut self, name: String, value: Value) {
+        self.lang.env.insert(name, Arc::new(value));
     }
 
     /// The value of a declared value's syntax.
-    pub(super) fn declared_value(&mut self, syntax: &ValueSyntax) -> Result<Value> {
+    pub(in crate::eval) fn declared_value(&mut self, syntax: &ValueSyntax) -> Result<Value> {
         let value = match syntax {
             ValueSyntax::Expr(e) => self.eval(e),
             ValueSyntax::Item(item) => match item.kind {
@@ -85,7 +89,7 @@ impl<'a> Evaluator<'a> {
     /// `local` is, for `#local`, the number of macro and include frames open where the
     /// directive stands: the name is local to the innermost of those (not to a macro called
     /// while the value was read).
-    pub(super) fn bind_declared(
+    pub(in crate::eval) fn bind_declared(
         &mut self,
         node: &Node,
         local: Option<usize>,
@@ -97,7 +101,7 @@ impl<'a> Evaluator<'a> {
             subscripts,
         } = node.view()
         else {
-            return Err(super::malformed(node, "a declaration"));
+            return Err(crate::eval::malformed(node, "a declaration"));
         };
         let name = name_node.word.to_string();
         let subs: Vec<&Node> = subscripts
@@ -116,13 +120,13 @@ impl<'a> Evaluator<'a> {
         match deprecation {
             Some(d) => {
                 let View::Deprecation(message) = d.view() else {
-                    return Err(super::malformed(d, "deprecated"));
+                    return Err(crate::eval::malformed(d, "deprecated"));
                 };
                 let message = self.string(message)?;
-                self.deprecated.insert(name.clone(), message);
+                self.lang.deprecated.insert(name.clone(), message);
             }
             None => {
-                self.deprecated.remove(&name);
+                self.lang.deprecated.remove(&name);
             }
         }
         self.set(name, value);
@@ -131,8 +135,8 @@ impl<'a> Evaluator<'a> {
 
     /// A declared float, vector or colour without its `;` (at `at`): accepted with a warning
     /// before version 3.5, refused after, as POV-Ray does.
-    pub(super) fn missing_semicolon(&mut self, at: Span) -> Result<()> {
-        if self.version.is_some_and(|v| v < 3.5 - 1e-9) {
+    pub(in crate::eval) fn missing_semicolon(&mut self, at: Span) -> Result<()> {
+        if self.lang.version.is_some_and(|v| v < 3.5 - 1e-9) {
             self.warn(Diagnostic::warning(
                 "a declared float, vector or colour wants a `;` after it (POV-Ray warns before version 3.5)",
                 at,
@@ -147,40 +151,43 @@ impl<'a> Evaluator<'a> {
 
     /// Records the current value of `name` in the innermost macro frame (once), so that it is
     /// restored when the macro returns.
-    pub(super) fn shadow(&mut self, name: &str) {
-        self.shadow_in(name, self.frames.len());
+    pub(in crate::eval) fn shadow(&mut self, name: &str) {
+        self.shadow_in(name, self.lang.frames.len());
     }
 
     /// [`Evaluator::shadow`] in the frame that was innermost when `depth` frames were open.
     fn shadow_in(&mut self, name: &str, depth: usize) {
-        if let Some(frame) = depth.checked_sub(1).and_then(|i| self.frames.get_mut(i)) {
+        if let Some(frame) = depth
+            .checked_sub(1)
+            .and_then(|i| self.lang.frames.get_mut(i))
+        {
             if !frame.saved.iter().any(|(n, _)| n == name) {
                 frame
                     .saved
-                    .push((name.to_string(), self.env.get(name).cloned()));
+                    .push((name.to_string(), self.lang.env.get(name).cloned()));
             }
         }
     }
 
     /// Whether `#ifdef (Name)` finds `Name` declared (a variable or a macro), or, for
     /// `(A[i])`, the array element assigned.
-    pub(super) fn defined(&mut self, name: &Node) -> Result<bool> {
+    pub(in crate::eval) fn defined(&mut self, name: &Node) -> Result<bool> {
         if name.children.is_empty() {
-            return Ok(self.env.contains_key(name.word.as_str())
-                || self.macros.contains_key(name.word.as_str()));
+            return Ok(self.lang.env.contains_key(name.word.as_str())
+                || self.lang.macros.contains_key(name.word.as_str()));
         }
         self.element_assigned(name)
     }
 
     /// `#default { texture/pigment/finish/normal … }`: the defaults of what follows.
-    pub(super) fn default_directive(&mut self, node: &Node) -> Result<()> {
+    pub(in crate::eval) fn default_directive(&mut self, node: &Node) -> Result<()> {
         self.statement(node)
     }
 
     /// A string value: a literal, `concat(…)`, `str(v, w, p)`, or a declared string.
-    pub(super) fn string(&mut self, e: &syntax::Expr) -> Result<String> {
+    pub(in crate::eval) fn string(&mut self, e: &syntax::Expr) -> Result<String> {
         match &e.kind {
-            ExprKind::Str(s) => Ok(super::files::unescape(s)),
+            ExprKind::Str(s) => Ok(crate::eval::lang::files::unescape(s)),
             ExprKind::Call(name, _, _, args) if STRING_FUNCTIONS.contains(&name.as_str()) => {
                 let text = self.string_call(name, args, e.span)?;
                 if text.len() > MAX_STRING_BYTES {
@@ -203,7 +210,7 @@ impl<'a> Evaluator<'a> {
 
     /// The string functions, by name (`name` is one of [`STRING_FUNCTIONS`]).
     fn string_call(&mut self, name: &str, args: &[syntax::Expr], span: Span) -> Result<String> {
-        use super::expr::arguments;
+        use crate::eval::lang::expr::arguments;
         Ok(match name {
             "datetime" => {
                 let (days, format) = match args {
@@ -222,7 +229,7 @@ impl<'a> Evaluator<'a> {
                     }
                     None => "%Y-%m-%d %H:%M:%SZ".to_string(),
                 };
-                super::datetime::format(days, &format)
+                crate::eval::lang::datetime::format(days, &format)
             }
             "concat" => {
                 if args.is_empty() {
@@ -294,12 +301,12 @@ impl<'a> Evaluator<'a> {
     }
 
     /// Counts `cost` steps against the scene's evaluation budget
-    /// ([`LoadOptions::max_steps`](super::LoadOptions)), shared by everything the scene runs:
+    /// ([`LoadOptions::max_steps`](crate::eval::LoadOptions)), shared by everything the scene runs:
     /// a statement or block item is one step, a loop pass one, a macro call a few (see
     /// `reader.rs`). Nested loops cannot run for hours.
-    pub(super) fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
-        self.steps = self.steps.saturating_add(cost);
-        if self.steps <= self.options.max_steps {
+    pub(in crate::eval) fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
+        self.lang.steps = self.lang.steps.saturating_add(cost);
+        if self.lang.steps <= self.options.max_steps {
             return Ok(());
         }
         Err(Diagnostic::error(
@@ -314,46 +321,32 @@ impl<'a> Evaluator<'a> {
 
     /// Leaves the innermost macro (or include file): copies by-reference arguments back,
     /// restores shadowed variables.
-    pub(super) fn return_from_macro(&mut self) {
-        let frame = self.frames.pop().expect("a macro frame");
+    pub(in crate::eval) fn return_from_macro(&mut self) {
+        let frame = self.lang.frames.pop().expect("a macro frame");
         let back: Vec<(String, Arc<Value>)> = frame
             .by_reference
             .iter()
-            .filter_map(|(param, caller)| self.env.get(param).map(|v| (caller.clone(), v.clone())))
+            .filter_map(|(param, caller)| {
+                self.lang
+                    .env
+                    .get(param)
+                    .map(|v| (caller.clone(), v.clone()))
+            })
             .collect();
         for (name, old) in frame.saved.into_iter().rev() {
             match old {
-                Some(v) => self.env.insert(name, v),
-                None => self.env.remove(&name),
+                Some(v) => self.lang.env.insert(name, v),
+                None => self.lang.env.remove(&name),
             };
         }
         for (caller, v) in back {
-            self.env.insert(caller, v);
+            self.lang.env.insert(caller, v);
         }
     }
 
     /// `file:line:col` of a span.
-    pub(super) fn location(&self, span: Span) -> String {
+    pub(in crate::eval) fn location(&self, span: Span) -> String {
         self.sources.location(span)
-    }
-}
-
-/// A declaration that failed because it uses something outside the subset is kept, to be
-/// reported only if the scene uses it (standard include files declare many such things).
-impl Evaluator<'_> {
-    /// `texture {…} texture {…} …`: each texture layered over the ones before it.
-    pub(super) fn layered_texture(&mut self, item: &Node) -> Result<Value> {
-        let mut layered: Option<crate::ir::Texture> = None;
-        for t in item.children.iter().filter(|c| c.kind == NodeKind::Texture) {
-            let t = self.texture(t)?;
-            layered = Some(match layered {
-                Some(below) => super::material::layer(t, below),
-                None => t,
-            });
-        }
-        Ok(Value::Texture(Box::new(
-            layered.expect("a layered texture has textures"),
-        )))
     }
 }
 

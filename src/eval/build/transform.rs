@@ -3,21 +3,15 @@
 //! POV-Ray multiplies row vectors (`p' = p·M`) and composes in the order written; the IR uses
 //! glam's column vectors, so each step multiplies on the left.
 
-use super::Evaluator;
 use crate::diag::Diagnostic;
+use crate::eval::Evaluator;
 use crate::ir::Transform;
 use crate::syntax::{ExprKind, Node, NodeKind, View};
 use glam::{DMat3, DMat4, DVec3};
 
-/// `rotate <a, b, c>` (degrees): about x by a, then y by b, then z by c (left-handed sense).
-pub fn rotation(degrees: DVec3) -> DMat4 {
-    let r = degrees * (std::f64::consts::PI / 180.0);
-    DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x)
-}
-
 impl Evaluator<'_> {
     /// Whether a node is a transformation.
-    pub(super) fn is_transform(node: &Node) -> bool {
+    pub(in crate::eval) fn is_transform(node: &Node) -> bool {
         matches!(
             node.kind,
             NodeKind::Translate
@@ -29,10 +23,10 @@ impl Evaluator<'_> {
     }
 
     /// Evaluates one transformation node.
-    pub(super) fn transform(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
+    pub(in crate::eval) fn transform(&mut self, node: &Node) -> Result<Transform, Diagnostic> {
         let matrix = match node.view() {
             View::Translate(v) => DMat4::from_translation(self.vec3(v)?),
-            View::Rotate(v) => rotation(self.vec3(v)?),
+            View::Rotate(v) => crate::eval::lang::expr::rotation(self.vec3(v)?),
             View::Scale(v) => {
                 let mut s = self.vec3(v)?;
                 // POV-Ray replaces a zero scale component by 1 (with a warning).
@@ -78,7 +72,7 @@ impl Evaluator<'_> {
                 matrix
             }
             View::Block if node.kind == NodeKind::Transform => return self.transform_block(node),
-            _ => return Err(super::malformed(node, "a transformation")),
+            _ => return Err(crate::eval::malformed(node, "a transformation")),
         };
         Ok(Transform { matrix })
     }
@@ -102,8 +96,12 @@ impl Evaluator<'_> {
 
     fn declared_transform(&mut self, ident: &Node) -> Result<Transform, Diagnostic> {
         match self.lookup(ident)? {
-            super::Value::Transform(t) => Ok(*t),
-            other => Err(super::expr::type_error("a transform", &other, ident.span)),
+            crate::eval::Value::Transform(t) => Ok(*t),
+            other => Err(crate::eval::lang::expr::type_error(
+                "a transform",
+                &other,
+                ident.span,
+            )),
         }
     }
 }

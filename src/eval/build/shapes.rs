@@ -2,8 +2,8 @@
 //! made into an IR shape. Adding a shape: its word in the grammar's `shape_kw`, an arm here,
 //! its IR variant and its geometry (`geometry/`, one file and one line in `shape.rs`).
 
-use super::{Evaluator, Result, Value, expr::type_error};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::{Evaluator, Result, Value, lang::expr::type_error};
 use crate::ir::{
     Lathe, Polynomial, Prism, Quadric, Shape, Sor, SphereSweep, Spline, Sweep, SweepSpline,
 };
@@ -12,7 +12,7 @@ use glam::DVec2;
 use std::sync::Arc;
 
 /// Whether `word` (a flag among a shape's items) is the shape's own, read by the shape table.
-pub(super) fn takes(shape: &str, word: &str) -> bool {
+pub(in crate::eval) fn takes(shape: &str, word: &str) -> bool {
     match shape {
         "text" => matches!(word, "ttf" | "internal"),
         "prism" => matches!(
@@ -121,7 +121,7 @@ const MAX_FONT_BYTES: u64 = 64 << 20;
 
 impl<'a> Evaluator<'a> {
     /// The IR shape of a `shape` node (`quadric { … }` …).
-    pub(super) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
+    pub(in crate::eval) fn shape_table(&mut self, node: &Node) -> Result<Shape> {
         let args = values(node);
         // The values a shape takes, in order, or a located error naming what is missing.
         // (At the first value too many, or at the shape's word.)
@@ -336,7 +336,7 @@ impl<'a> Evaluator<'a> {
         let thickness = self.float(values[2])?;
         let offset = self.vec3(values[3])?;
         let data = self.font_data(&path, &name, values[0].span)?;
-        let codes: Vec<u32> = match self.charset {
+        let codes: Vec<u32> = match self.scene.charset {
             // POV-Ray's default `charset ascii` reads the string's bytes: each byte beyond
             // ASCII is a space.
             crate::font::Charset::Ascii => string
@@ -359,10 +359,14 @@ impl<'a> Evaluator<'a> {
                 })
                 .collect(),
         };
-        let text = crate::font::layout(&data, &codes, thickness, offset.truncate(), self.charset)
-            .map_err(|e| {
-            Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span)
-        })?;
+        let text = crate::font::layout(
+            &data,
+            &codes,
+            thickness,
+            offset.truncate(),
+            self.scene.charset,
+        )
+        .map_err(|e| Diagnostic::error(format!("cannot read font {name}: {e}"), values[0].span))?;
         Ok(Shape::Text(Box::new(text)))
     }
 
@@ -394,7 +398,7 @@ impl<'a> Evaluator<'a> {
         name: &str,
         span: Span,
     ) -> Result<Arc<Vec<u8>>> {
-        if let Some(data) = self.fonts.get(path) {
+        if let Some(data) = self.scene.fonts.get(path) {
             return Ok(Arc::clone(data));
         }
         let cannot = |e: String| Diagnostic::error(format!("cannot read font {name}: {e}"), span);
@@ -407,7 +411,9 @@ impl<'a> Evaluator<'a> {
             )));
         }
         let data = Arc::new(std::fs::read(path).map_err(|e| cannot(e.to_string()))?);
-        self.fonts.insert(path.to_path_buf(), Arc::clone(&data));
+        self.scene
+            .fonts
+            .insert(path.to_path_buf(), Arc::clone(&data));
         Ok(data)
     }
 
@@ -691,7 +697,7 @@ impl<'a> Evaluator<'a> {
         i += 1;
         let name = self.string(file)?;
         let file_type = match kind {
-            Some(w) => Some(super::images::FileType::from_keyword(&w.word).ok_or_else(|| {
+            Some(w) => Some(crate::eval::build::images::FileType::from_keyword(&w.word).ok_or_else(|| {
                 Diagnostic::error(
                     format!("`{}` is not an image format (png, jpeg, gif, tga, ppm, pgm, tiff, bmp, exr, hdr)", w.word),
                     w.span,
@@ -712,10 +718,10 @@ impl<'a> Evaluator<'a> {
             )));
         }
         // PNG files go through POV-Ray's PNG reader's own conversions (heightfield.rs).
-        let is_png = file_type.or_else(|| super::images::FileType::from_name(&name))
-            == Some(super::images::FileType::Png);
+        let is_png = file_type.or_else(|| crate::eval::build::images::FileType::from_name(&name))
+            == Some(crate::eval::build::images::FileType::Png);
         let (width, depth, heights) = if is_png {
-            super::heightfield::read_png(&path).map_err(cannot)?
+            crate::eval::build::heightfield::read_png(&path).map_err(cannot)?
         } else {
             (picture.width, picture.height, picture.heights())
         };
@@ -787,7 +793,7 @@ impl<'a> Evaluator<'a> {
             body,
         } = f.view()
         else {
-            return Err(super::malformed(f, "a function image"));
+            return Err(crate::eval::malformed(f, "a function image"));
         };
         let (width, depth) = (size(self, width)?, size(self, height)?);
         let point = |x: u32, z: u32| {
@@ -798,15 +804,15 @@ impl<'a> Evaluator<'a> {
         if let Some(p) = f.children.iter().find(|c| c.kind == NodeKind::Pigment) {
             let pigment =
                 self.pigment(p, crate::ir::Pigment::solid(crate::ir::Colour::default()))?;
-            let colour = (self.pigment_function)(&pigment, self.scene_defaults());
+            let colour = (self.scene.pigment_function)(&pigment, self.scene_defaults());
             let generator = self.noise_generator();
             let mut heights = Vec::with_capacity((width * depth) as usize);
             for z in 0..depth {
                 for x in 0..width {
                     let q = point(x, z);
                     let c = colour.eval(&[q.x, q.y, q.z], generator);
-                    let channel = super::heightfield::channel16;
-                    heights.push(super::heightfield::grey16([
+                    let channel = crate::eval::build::heightfield::channel16;
+                    heights.push(crate::eval::build::heightfield::grey16([
                         channel(c[0]),
                         channel(c[1]),
                         channel(c[2]),
@@ -827,7 +833,7 @@ impl<'a> Evaluator<'a> {
         for z in 0..depth {
             for x in 0..width {
                 let v = function.at(point(x, z), generator);
-                heights.push(super::heightfield::channel16(v));
+                heights.push(crate::eval::build::heightfield::channel16(v));
             }
         }
         Ok((width, depth, heights))
@@ -1107,7 +1113,7 @@ impl<'a> Evaluator<'a> {
     }
 
     /// A 2-D point `<a, b>` (a float is `<f, f>`).
-    pub(super) fn uv(&mut self, e: &Expr) -> Result<DVec2> {
+    pub(in crate::eval) fn uv(&mut self, e: &Expr) -> Result<DVec2> {
         match self.eval(e)? {
             Value::Float(f) => Ok(DVec2::splat(f)),
             Value::Vector(v) if v.len == 2 => Ok(DVec2::new(v.c[0], v.c[1])),

@@ -561,7 +561,7 @@ fn edits(a: &str, b: &str) -> usize {
 pub fn markdown() -> String {
     let mut out = String::from(
         "# POV-Ray 3.7's keywords in trace\n\n\
-         Generated from `src/eval/keywords.rs` (run `TRACE_UPDATE_DOCS=1 cargo test keywords` after\n\
+         Generated from `src/eval/lang/keywords.rs` (run `TRACE_UPDATE_DOCS=1 cargo test keywords` after\n\
          changing it). Every reserved word of POV-Ray 3.7.0 is listed once: trace reads it, or\n\
          refuses it with the reason below (an error that names the word, with a caret under it).\n\
          A word that is not here is not a POV-Ray keyword: trace calls it unknown. A supported\n\
@@ -647,7 +647,7 @@ mod tests {
         // A supported word is named in the grammar, or by the evaluator, which reads
         // identifiers such as `vlength`, `x` or `clock` by name.
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-        let mut named: Vec<String> = quoted(include_str!("../../grammar/scene.pest"))
+        let mut named: Vec<String> = quoted(include_str!("../../../grammar/scene.pest"))
             .into_iter()
             .map(str::to_string)
             .collect();

@@ -1,12 +1,12 @@
 //! Expression evaluation: POV-Ray's operators, promotion rules, constants and functions.
 
-use super::value::{Value, Vector, srgb_decode};
-use super::{Evaluator, keywords};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::value::{Value, Vector, srgb_decode};
+use crate::eval::{Evaluator, lang::keywords};
 use crate::syntax::{BinOp, ColourPart, Expr, ExprKind, Slot, UnOp};
 
 /// Functions whose value is a string (evaluated by `Evaluator::string`).
-pub(super) const STRING_FUNCTIONS: [&str; 8] = [
+pub(in crate::eval) const STRING_FUNCTIONS: [&str; 8] = [
     "concat", "str", "vstr", "chr", "substr", "strupr", "strlwr", "datetime",
 ];
 
@@ -17,14 +17,14 @@ type Result<T> = std::result::Result<T, Diagnostic>;
 
 impl Evaluator<'_> {
     /// Whether a float counts as true (POV-Ray's |x| > 1e-10).
-    pub(super) fn truth(&mut self, e: &Expr) -> Result<bool> {
+    pub(in crate::eval) fn truth(&mut self, e: &Expr) -> Result<bool> {
         Ok(self.float(e)?.abs() > EQUALITY_TOLERANCE)
     }
 
     /// Evaluates an expression to a value; a number that is not finite (an overflow such as
     /// `1e308*10`, `exp(1000)` or `1e400`, or a NaN such as `val("nan")`) is an error here,
     /// at the innermost expression that made it.
-    pub(super) fn eval(&mut self, expr: &Expr) -> Result<Value> {
+    pub(in crate::eval) fn eval(&mut self, expr: &Expr) -> Result<Value> {
         let value = self.eval_unchecked(expr)?;
         if value.is_finite() {
             Ok(value)
@@ -99,9 +99,9 @@ impl Evaluator<'_> {
             ExprKind::Index(..) => self.index_expr(expr),
             ExprKind::Item(node) => self.item_value(node),
             ExprKind::Shifted(e, by) => {
-                self.slot_shift += by;
+                self.lang.slot_shift += by;
                 let v = self.eval(e);
-                self.slot_shift -= by;
+                self.lang.slot_shift -= by;
                 v
             }
             ExprKind::Bulk(_) => Err(Diagnostic::error(
@@ -112,12 +112,12 @@ impl Evaluator<'_> {
     }
 
     /// Evaluates an expression that must be a float.
-    pub(super) fn float(&mut self, expr: &Expr) -> Result<f64> {
+    pub(in crate::eval) fn float(&mut self, expr: &Expr) -> Result<f64> {
         let v = self.eval(expr)?;
         self.expect_float(&v, expr.span)
     }
 
-    pub(super) fn expect_float(&self, v: &Value, span: Span) -> Result<f64> {
+    pub(in crate::eval) fn expect_float(&self, v: &Value, span: Span) -> Result<f64> {
         match v {
             Value::Float(f) => Ok(*f),
             _ => Err(type_error("a float", v, span)),
@@ -125,7 +125,7 @@ impl Evaluator<'_> {
     }
 
     /// Evaluates an expression in a 3-vector context: a float promotes to all three components.
-    pub(super) fn vec3(&mut self, expr: &Expr) -> Result<glam::DVec3> {
+    pub(in crate::eval) fn vec3(&mut self, expr: &Expr) -> Result<glam::DVec3> {
         let v = self.eval(expr)?;
         match v {
             Value::Float(f) => Ok(glam::DVec3::splat(f)),
@@ -135,7 +135,7 @@ impl Evaluator<'_> {
     }
 
     /// The value of the name `name` bound in `slot`, or of the built-in constant it names.
-    pub(super) fn ident(&mut self, name: &str, slot: Slot, span: Span) -> Result<Value> {
+    pub(in crate::eval) fn ident(&mut self, name: &str, slot: Slot, span: Span) -> Result<Value> {
         if let Some(v) = self.bound(slot) {
             return self.usable(name, v.clone(), span);
         }
@@ -160,8 +160,8 @@ impl Evaluator<'_> {
             "final_clock" => Value::Float(self.options.clock.clocks.1),
             "image_width" => Value::Float(self.options.width as f64),
             "image_height" => Value::Float(self.options.height as f64),
-            "version" => Value::Float(self.version.unwrap_or(3.7)),
-            "input_file_name" => Value::Str(self.input_file_name.clone()),
+            "version" => Value::Float(self.lang.version.unwrap_or(3.7)),
+            "input_file_name" => Value::Str(self.lang.input_file_name.clone()),
             // Days since 2000-01-01 00:00 UTC (POV-Ray's clock for `datetime`).
             "now" => {
                 let since_epoch = std::time::SystemTime::now()
@@ -287,7 +287,7 @@ impl Evaluator<'_> {
             match part {
                 ColourPart::Base(e) => {
                     let v = self.eval(e)?;
-                    c = super::value::colour5(&v)
+                    c = crate::eval::value::colour5(&v)
                         .ok_or_else(|| type_error("a colour", &v, e.span))?;
                 }
                 ColourPart::Typed(kw, e) => {
@@ -297,7 +297,7 @@ impl Evaluator<'_> {
                         .ok_or_else(|| type_error("a colour", &v, e.span))?;
                     let comps = if len == 1 { [comps[0]; 5] } else { comps };
                     let srgb = kw.starts_with('s');
-                    if srgb && self.assumed_gamma.is_none() {
+                    if srgb && self.lang.assumed_gamma.is_none() {
                         return Err(Diagnostic::error(
                             format!(
                                 "`{kw}` needs `assumed_gamma` to be set first in global_settings"
@@ -364,14 +364,14 @@ impl Evaluator<'_> {
     /// An sRGB-encoded channel converted into working gamma.
     fn srgb_to_linear(&self, v: f64) -> f64 {
         let linear = srgb_decode(v);
-        match self.assumed_gamma {
+        match self.lang.assumed_gamma {
             Some(g) if g != 1.0 => linear.max(0.0).powf(1.0 / g),
             _ => linear,
         }
     }
 
     /// `name(args)`: a declared function or spline (bound in `slot`), or a built-in function.
-    pub(super) fn call(
+    pub(in crate::eval) fn call(
         &mut self,
         name: &str,
         name_span: Span,
@@ -552,7 +552,7 @@ impl Evaluator<'_> {
             }
             "vrotate" => {
                 arity(2)?;
-                let m = super::transform::rotation(v3(1)?);
+                let m = rotation(v3(1)?);
                 return Ok(Value::Vector(Vector::from_vec3(m.transform_point3(v3(0)?))));
             }
             _ if keywords::is_unsupported_function(name) => {
@@ -589,7 +589,7 @@ fn bool_value(b: bool) -> f64 {
 }
 
 /// "expected X, found Y" at `span`.
-pub(super) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnostic {
+pub(in crate::eval) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnostic {
     Diagnostic::error(
         format!("expected {expected}, found {}", found.kind_name()),
         span,
@@ -597,7 +597,12 @@ pub(super) fn type_error(expected: &str, found: &Value, span: Span) -> Diagnosti
 }
 
 /// The error for a call of `name` with `found` arguments where it takes `wanted`.
-pub(super) fn check_arity(name: &str, wanted: usize, found: usize, span: Span) -> Result<()> {
+pub(in crate::eval) fn check_arity(
+    name: &str,
+    wanted: usize,
+    found: usize,
+    span: Span,
+) -> Result<()> {
     if found == wanted {
         return Ok(());
     }
@@ -609,7 +614,7 @@ pub(super) fn check_arity(name: &str, wanted: usize, found: usize, span: Span) -
 }
 
 /// A call's `N` arguments, or the error naming how many `name` takes.
-pub(super) fn arguments<'e, const N: usize>(
+pub(in crate::eval) fn arguments<'e, const N: usize>(
     name: &str,
     args: &'e [Expr],
     span: Span,
@@ -675,13 +680,18 @@ impl Evaluator<'_> {
                 let [seed] = arguments(name, args, span)?;
                 // POV-Ray converts the seed to a C int (truncation), then to an unsigned long.
                 let seed = self.float(seed)? as i64 as u32;
-                self.rand_streams.push(seed);
-                (self.rand_streams.len() - 1) as f64
+                self.lang.rand_streams.push(seed);
+                (self.lang.rand_streams.len() - 1) as f64
             }
             "rand" => {
                 let [stream] = arguments(name, args, span)?;
                 let i = self.float(stream)?;
-                let Some(state) = self.rand_streams.get_mut(i as usize).filter(|_| i >= 0.0) else {
+                let Some(state) = self
+                    .lang
+                    .rand_streams
+                    .get_mut(i as usize)
+                    .filter(|_| i >= 0.0)
+                else {
                     return Err(Diagnostic::error(
                         "`rand` needs a stream made by `seed(…)`",
                         stream.span,
@@ -710,4 +720,12 @@ impl Evaluator<'_> {
         };
         Ok(Some(Value::Float(f)))
     }
+}
+
+/// `rotate <a, b, c>` (degrees): about x by a, then y by b, then z by c (left-handed sense).
+pub(in crate::eval) fn rotation(degrees: glam::DVec3) -> glam::DMat4 {
+    let r = degrees * (std::f64::consts::PI / 180.0);
+    glam::DMat4::from_rotation_z(r.z)
+        * glam::DMat4::from_rotation_y(r.y)
+        * glam::DMat4::from_rotation_x(r.x)
 }

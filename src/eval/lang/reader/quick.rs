@@ -164,7 +164,7 @@ impl Evaluator<'_> {
     /// Whether the reader may read a plain directive here: at a directive's head in a loop or
     /// a macro body, nothing read ahead, no function open.
     fn quick_input(&self) -> Option<(FileId, usize)> {
-        let r = &self.reader;
+        let r = &self.lang.reader;
         let input = r.inputs.last()?;
         let plain = input.pushback.is_empty()
             && !r.hold
@@ -182,12 +182,12 @@ impl Evaluator<'_> {
         at: (FileId, usize),
         scan: impl FnOnce(&Arc<String>, usize, usize, FileId) -> Quick,
     ) -> Rc<Quick> {
-        if let Some(q) = self.reader.quick.get(&at) {
+        if let Some(q) = self.lang.reader.quick.get(&at) {
             return Rc::clone(q);
         }
-        let input = self.reader.inputs.last().expect("an input");
+        let input = self.lang.reader.inputs.last().expect("an input");
         let q = Rc::new(scan(&input.text, input.pos, input.end, input.file));
-        self.reader.quick.insert(at, Rc::clone(&q));
+        self.lang.reader.quick.insert(at, Rc::clone(&q));
         q
     }
 
@@ -204,10 +204,10 @@ impl Evaluator<'_> {
                 bindings.push(None);
                 continue;
             }
-            if self.macros.contains_key(&**w) {
+            if self.lang.macros.contains_key(&**w) {
                 return None;
             }
-            bindings.push(self.env.get(&**w).cloned());
+            bindings.push(self.lang.env.get(&**w).cloned());
         }
         Some(bindings)
     }
@@ -234,8 +234,8 @@ impl Evaluator<'_> {
         ) else {
             return Ok(false);
         };
-        self.reader.inputs.last_mut().expect("an input").pos = *end;
-        self.reader.run += 1;
+        self.lang.reader.inputs.last_mut().expect("an input").pos = *end;
+        self.lang.reader.run += 1;
         let value = self
             .with_bindings(bindings, |ev| ev.declared_value(value))
             .map_err(|d| self.noted(d, None))?;
@@ -253,8 +253,8 @@ impl Evaluator<'_> {
             return None;
         };
         let bindings = self.quick_bindings(words, false)?;
-        self.reader.inputs.last_mut().expect("an input").pos = *end;
-        self.reader.run += 1;
+        self.lang.reader.inputs.last_mut().expect("an input").pos = *end;
+        self.lang.reader.run += 1;
         Some(Statement::Kept(Rc::clone(node), bindings))
     }
 
@@ -270,8 +270,8 @@ impl Evaluator<'_> {
         let Some(bindings) = self.quick_bindings(words, false) else {
             return Ok(None);
         };
-        self.reader.inputs.last_mut().expect("an input").pos = *end;
-        self.reader.run += 1;
+        self.lang.reader.inputs.last_mut().expect("an input").pos = *end;
+        self.lang.reader.run += 1;
         self.with_bindings(bindings, |ev| ev.truth(expr))
             .map(Some)
             .map_err(|d| self.noted(d, None))

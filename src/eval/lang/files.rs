@@ -11,8 +11,8 @@
 //! `<%g,%g,%g> ` (with the trailing space), and binary integers (`uint8`, `sint16le` …)
 //! rounded and clamped to their range.
 
-use super::{Evaluator, Result, Value, value::Vector};
 use crate::diag::{Diagnostic, FileId, Span};
+use crate::eval::{Evaluator, Result, Value, value::Vector};
 use crate::syntax::{Expr, Node, View};
 use std::io::Write;
 use std::path::PathBuf;
@@ -23,7 +23,7 @@ pub const MAX_OPEN_FILES: usize = 256;
 pub const MAX_WRITTEN_BYTES: u64 = 256 << 20;
 
 /// An open user file.
-pub(super) enum UserFile {
+pub(in crate::eval) enum UserFile {
     /// Its text (in the source map, so errors point into it) and how far it has been read.
     Read { file: FileId, pos: usize },
     Write {
@@ -34,7 +34,7 @@ pub(super) enum UserFile {
 
 /// The scene's user files.
 #[derive(Default)]
-pub(super) struct Files {
+pub(in crate::eval) struct Files {
     open: Vec<Option<UserFile>>,
     written: u64,
     /// Files read so far, by path, while the scene has not written them since: a loop
@@ -44,7 +44,7 @@ pub(super) struct Files {
 
 impl Files {
     /// Writes what is buffered; called when evaluation ends.
-    pub(super) fn flush(&mut self) -> std::io::Result<()> {
+    pub(in crate::eval) fn flush(&mut self) -> std::io::Result<()> {
         for f in self.open.iter_mut().flatten() {
             if let UserFile::Write { out, .. } = f {
                 out.flush()?;
@@ -107,7 +107,7 @@ impl Lexer<'_> {
 
 /// A string literal's text with POV-Ray's escapes replaced (`\"`, `\\`, `\n`, `\t`, `\r`,
 /// `\a`, `\b`, `\f`, `\v`, `\'`, `\uXXXX`); any other backslash stays as written.
-pub(super) fn unescape(s: &str) -> String {
+pub(in crate::eval) fn unescape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     let mut chars = s.chars();
     while let Some(c) = chars.next() {
@@ -185,22 +185,22 @@ pub fn format_g(v: f64) -> String {
 
 impl Evaluator<'_> {
     /// `#fopen`, `#fclose`, `#read`, `#write`.
-    pub(super) fn file_directive(&mut self, item: &Node) -> Result<()> {
+    pub(in crate::eval) fn file_directive(&mut self, item: &Node) -> Result<()> {
         match item.view() {
             View::FileOpen { name, file, mode } => self.fopen(item, name, file, mode),
             View::FileClose { name } => {
                 // Closing a name that is not an open file does nothing, as in POV-Ray.
                 let name = name.word.as_str();
-                if let Some(Value::File(id)) = self.env.get(name).map(|v| &**v) {
+                if let Some(Value::File(id)) = self.lang.env.get(name).map(|v| &**v) {
                     let id = *id;
                     self.close_file(id, item.span)?;
-                    self.env.remove(name);
+                    self.lang.env.remove(name);
                 }
                 Ok(())
             }
             View::FileRead { file, targets } => self.read_values(file, targets),
             View::FileWrite { file, items } => self.write_values(item, file, items),
-            _ => Err(super::malformed(item, "a file directive")),
+            _ => Err(crate::eval::malformed(item, "a file directive")),
         }
     }
 
@@ -221,11 +221,11 @@ impl Evaluator<'_> {
             ));
         }
         // Opening a name again first closes the file it held, as POV-Ray replaces the symbol.
-        if let Some(Value::File(id)) = self.env.get(name_node.word.as_str()).map(|v| &**v) {
+        if let Some(Value::File(id)) = self.lang.env.get(name_node.word.as_str()).map(|v| &**v) {
             let id = *id;
             self.close_file(id, item.span)?;
         }
-        let open = self.files.open.iter().filter(|f| f.is_some()).count();
+        let open = self.lang.files.open.iter().filter(|f| f.is_some()).count();
         if open >= MAX_OPEN_FILES {
             return Err(Diagnostic::error(
                 format!("more than {MAX_OPEN_FILES} files open at once"),
@@ -234,14 +234,14 @@ impl Evaluator<'_> {
         }
         let file = if mode == "read" {
             let path = self.find_file(&name, "user file", span)?;
-            let file = match self.files.read.get(&path) {
+            let file = match self.lang.files.read.get(&path) {
                 Some(id) => *id,
                 None => {
                     let text = crate::diag::read_source(&path).map_err(|e| {
                         Diagnostic::error(format!("cannot read {}: {e}", path.display()), span)
                     })?;
                     let id = self.sources.add(&path, text);
-                    self.files.read.insert(path, id);
+                    self.lang.files.read.insert(path, id);
                     id
                 }
             };
@@ -261,20 +261,20 @@ impl Evaluator<'_> {
                     Diagnostic::error(format!("cannot write {}: {e}", path.display()), span)
                 })?;
             // (Read again after this, the file is read anew.)
-            self.files.read.remove(&path);
+            self.lang.files.read.remove(&path);
             UserFile::Write {
                 out: std::io::BufWriter::new(opened),
                 path,
             }
         };
-        let id = match self.files.open.iter().position(Option::is_none) {
+        let id = match self.lang.files.open.iter().position(Option::is_none) {
             Some(free) => {
-                self.files.open[free] = Some(file);
+                self.lang.files.open[free] = Some(file);
                 free
             }
             None => {
-                self.files.open.push(Some(file));
-                self.files.open.len() - 1
+                self.lang.files.open.push(Some(file));
+                self.lang.files.open.len() - 1
             }
         };
         self.set(name_node.word.to_string(), Value::File(id));
@@ -282,7 +282,7 @@ impl Evaluator<'_> {
     }
 
     fn close_file(&mut self, id: usize, span: Span) -> Result<()> {
-        if let Some(UserFile::Write { mut out, path }) = self.files.open[id].take() {
+        if let Some(UserFile::Write { mut out, path }) = self.lang.files.open[id].take() {
             out.flush().map_err(|e| {
                 Diagnostic::error(format!("cannot write {}: {e}", path.display()), span)
             })?;
@@ -292,9 +292,9 @@ impl Evaluator<'_> {
 
     /// The open file a `#read`/`#write` names.
     fn user_file(&self, node: &Node) -> Result<usize> {
-        match self.env.get(node.word.as_str()).map(|v| &**v) {
+        match self.lang.env.get(node.word.as_str()).map(|v| &**v) {
             Some(Value::File(id)) => Ok(*id),
-            Some(other) => Err(super::expr::type_error(
+            Some(other) => Err(crate::eval::lang::expr::type_error(
                 "a file opened by #fopen",
                 other,
                 node.span,
@@ -310,7 +310,7 @@ impl Evaluator<'_> {
     /// `#read (F, A, B[i], …)`.
     fn read_values(&mut self, file_node: &Node, targets: &[Node]) -> Result<()> {
         let id = self.user_file(file_node)?;
-        let Some(UserFile::Read { file, pos }) = &self.files.open[id] else {
+        let Some(UserFile::Read { file, pos }) = &self.lang.files.open[id] else {
             return Err(Diagnostic::error(
                 format!("cannot read `{}`: it is open for writing", file_node.word),
                 file_node.span,
@@ -344,9 +344,9 @@ impl Evaluator<'_> {
             }
         }
         if at_end {
-            self.files.open[id] = None;
-            self.env.remove(file_node.word.as_str());
-        } else if let Some(UserFile::Read { pos: p, .. }) = &mut self.files.open[id] {
+            self.lang.files.open[id] = None;
+            self.lang.env.remove(file_node.word.as_str());
+        } else if let Some(UserFile::Read { pos: p, .. }) = &mut self.lang.files.open[id] {
             *p = pos;
         }
         Ok(())
@@ -355,7 +355,7 @@ impl Evaluator<'_> {
     /// `#write (F, value, …)`.
     fn write_values(&mut self, item: &Node, file_node: &Node, items: &[Node]) -> Result<()> {
         let id = self.user_file(file_node)?;
-        if !matches!(self.files.open[id], Some(UserFile::Write { .. })) {
+        if !matches!(self.lang.files.open[id], Some(UserFile::Write { .. })) {
             return Err(Diagnostic::error(
                 format!("cannot write `{}`: it is open for reading", file_node.word),
                 file_node.span,
@@ -364,13 +364,17 @@ impl Evaluator<'_> {
         let mut bytes: Vec<u8> = Vec::new();
         for w in items {
             let View::WriteItem { value: expr, kind } = w.view() else {
-                return Err(super::malformed(w, "a value of #write"));
+                return Err(crate::eval::malformed(w, "a value of #write"));
             };
             match kind {
                 Some(kind) => {
                     let v = self.eval(expr)?;
                     let Some((c, n)) = v.components() else {
-                        return Err(super::expr::type_error("a number or vector", &v, expr.span));
+                        return Err(crate::eval::lang::expr::type_error(
+                            "a number or vector",
+                            &v,
+                            expr.span,
+                        ));
                     };
                     write_binary(&mut bytes, &kind.word, &c[..n])
                         .map_err(|m| Diagnostic::error(m, kind.span))?;
@@ -380,7 +384,7 @@ impl Evaluator<'_> {
                     Value::Float(f) => bytes.extend_from_slice(format_g(f).as_bytes()),
                     v => {
                         let Some((c, n)) = v.components() else {
-                            return Err(super::expr::type_error(
+                            return Err(crate::eval::lang::expr::type_error(
                                 "a string, number or vector",
                                 &v,
                                 expr.span,
@@ -392,14 +396,14 @@ impl Evaluator<'_> {
                 },
             }
         }
-        self.files.written += bytes.len() as u64;
-        if self.files.written > MAX_WRITTEN_BYTES {
+        self.lang.files.written += bytes.len() as u64;
+        if self.lang.files.written > MAX_WRITTEN_BYTES {
             return Err(Diagnostic::error(
                 format!("the scene writes more than {MAX_WRITTEN_BYTES} bytes to its files"),
                 item.word_span,
             ));
         }
-        let Some(UserFile::Write { out, path }) = &mut self.files.open[id] else {
+        let Some(UserFile::Write { out, path }) = &mut self.lang.files.open[id] else {
             unreachable!("checked above");
         };
         out.write_all(&bytes).map_err(|e| {

@@ -4,8 +4,8 @@
 //! modifiers on the group apply to every member, and the group's texture to the members that
 //! have none. Meshes are built once and shared (`Arc`) by every instance of a declaration.
 
-use super::{Evaluator, Result, Value, expr::type_error, value::Vector};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::{Evaluator, Result, Value, lang::expr::type_error, value::Vector};
 use crate::ir::{self, FLAT, Interior, Mesh, Shape, Texture, Transform};
 use crate::syntax::view::List;
 use crate::syntax::{Expr, ExprKind, Node, NodeKind, View};
@@ -56,7 +56,7 @@ pub struct ObjectValue {
     /// below it); the object's interior comes after them.
     own_interiors: u32,
     /// Light sources inside a `union` (or an `object {}`): they move with it.
-    pub(super) lights: Vec<ir::Light>,
+    pub(in crate::eval) lights: Vec<ir::Light>,
     /// A union (its `hollow` goes only to members without their own).
     is_union: bool,
     /// `global_lights` given on a `light_group`.
@@ -66,7 +66,7 @@ pub struct ObjectValue {
     /// `bounded_by`: the object's bounding shapes, in the world.
     bounds: Vec<ir::Bound>,
     /// Which object this is, for the queries of trace() and its kin (0: none yet).
-    pub(super) id: u64,
+    pub(in crate::eval) id: u64,
 }
 
 /// The mark of a light standing directly in the `light_group` being read (its number is
@@ -173,7 +173,7 @@ impl ObjectValue {
         }
     }
 
-    pub(super) fn empty() -> ObjectValue {
+    pub(in crate::eval) fn empty() -> ObjectValue {
         ObjectValue {
             parts: Vec::new(),
             texture: None,
@@ -190,7 +190,7 @@ impl ObjectValue {
     }
 
     /// The object's mesh and transformation, if it is one mesh.
-    pub(super) fn as_mesh(&self) -> Option<(Arc<Mesh>, Option<Transform>)> {
+    pub(in crate::eval) fn as_mesh(&self) -> Option<(Arc<Mesh>, Option<Transform>)> {
         match self.parts.as_slice() {
             [
                 Part {
@@ -204,18 +204,18 @@ impl ObjectValue {
     }
 
     /// Whether the object has no shapes (a light alone).
-    pub(super) fn parts_is_empty(&self) -> bool {
+    pub(in crate::eval) fn parts_is_empty(&self) -> bool {
         self.parts.is_empty()
     }
 
     /// Marks every part as casting no shadow (a light's `looks_like` object).
-    pub(super) fn cast_no_shadow(&mut self) {
+    pub(in crate::eval) fn cast_no_shadow(&mut self) {
         self.parts.iter_mut().for_each(|p| p.no_shadow = true);
     }
 
     /// Keeps every part out of the light groups around it (a light's `looks_like` object: in
     /// a `light_group`, POV-Ray lights it by the lights outside every group, not the group's).
-    pub(super) fn outside_light_groups(&mut self) {
+    pub(in crate::eval) fn outside_light_groups(&mut self) {
         for p in self.parts.iter_mut().filter(|p| p.light_group.is_none()) {
             p.light_group = Some(ir::LightGroup {
                 groups: Vec::new(),
@@ -227,7 +227,7 @@ impl ObjectValue {
     /// Applies a transformation to the geometry and to every texture already attached.
     /// Applies a transformation; `scale` tells that it is a `scale` modifier (which makes
     /// POV-Ray normalise a smooth triangle's vertex normals).
-    pub(super) fn transform(&mut self, t: Transform, scale: bool) {
+    pub(in crate::eval) fn transform(&mut self, t: Transform, scale: bool) {
         let normal_matrix = DMat3::from_mat4(t.matrix).inverse().transpose();
         for part in &mut self.parts {
             part.transform = compose(part.transform, t);
@@ -259,14 +259,14 @@ impl ObjectValue {
             tex.transform(t);
         }
         for light in &mut self.lights {
-            super::transform_light(light, &t.matrix);
+            crate::eval::build::light::transform_light(light, &t.matrix);
         }
     }
 }
 
 impl Evaluator<'_> {
     /// Evaluates an object statement with its modifiers.
-    pub(super) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
+    pub(in crate::eval) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
         let mut modifiers = node.children.as_slice();
         let mut object = match (node.kind, node.view()) {
             (
@@ -371,7 +371,7 @@ impl Evaluator<'_> {
                 let first = match &shape {
                     // POV-Ray turns every text by 0.001° about each axis before the scene's
                     // own transformations ("to fix cracks"); the faces' slight tilt shows.
-                    Shape::Text(_) => Some(super::transform::rotation(DVec3::splat(0.001))),
+                    Shape::Text(_) => Some(crate::eval::lang::expr::rotation(DVec3::splat(0.001))),
                     // A height field's grid (points, 16-bit heights) scaled to the unit box.
                     Shape::HeightField(h) => Some(glam::DMat4::from_scale(DVec3::new(
                         1.0 / f64::from(h.width - 1),
@@ -560,21 +560,21 @@ impl Evaluator<'_> {
                     _ => self.object(first)?,
                 }
             }
-            _ => return Err(super::malformed(node, "an object")),
+            _ => return Err(crate::eval::malformed(node, "an object")),
         };
         self.each_item(modifiers, &mut |ev, m| {
             ev.object_modifier(&mut object, m, node)
         })?;
         // (Each object made is new to trace(), min_extent … : a modified copy is asked anew.)
-        self.next_object_id += 1;
-        object.id = self.next_object_id;
+        self.scene.next_object_id += 1;
+        object.id = self.scene.next_object_id;
         Ok(object)
     }
 
     /// `trace(O, A, D [, N])`, `inside(O, P)`, `min_extent(O)`, `max_extent(O)`: the first hit
     /// of the ray from A along D (and its normal in N; zero vectors when missed), whether P
     /// is inside, the bounding box's corners.
-    pub(super) fn object_question(
+    pub(in crate::eval) fn object_question(
         &mut self,
         name: &str,
         args: &[Expr],
@@ -643,7 +643,7 @@ impl Evaluator<'_> {
         // (A declared object asked again is not copied to find its id.)
         let known = match &e.kind {
             ExprKind::Ident(_, slot) => match self.bound(*slot) {
-                Some(Value::Object(o)) => self.queries.get(&o.id).cloned(),
+                Some(Value::Object(o)) => self.scene.queries.get(&o.id).cloned(),
                 _ => None,
             },
             _ => None,
@@ -656,35 +656,35 @@ impl Evaluator<'_> {
             other => return Err(type_error("an object", &other, e.span)),
         };
         if object.id != 0 {
-            if let Some(q) = self.queries.get(&object.id) {
+            if let Some(q) = self.scene.queries.get(&object.id) {
                 return Ok(Arc::clone(q));
             }
         }
         let parts = self.placed_parts(&object, e.span)?;
-        let query: Arc<dyn ir::ObjectQuery> = Arc::from((self.object_query)(parts));
+        let query: Arc<dyn ir::ObjectQuery> = Arc::from((self.scene.object_query)(parts));
         if object.id != 0 {
-            if self.queries.len() >= KEPT {
-                self.queries.clear();
+            if self.scene.queries.len() >= KEPT {
+                self.scene.queries.clear();
             }
-            self.queries.insert(object.id, Arc::clone(&query));
+            self.scene.queries.insert(object.id, Arc::clone(&query));
         }
         Ok(query)
     }
 
     /// The parts of `object` placed in the world as the scene would hold them (for trace(),
     /// inside(), min_extent, max_extent).
-    pub(super) fn placed_parts(
+    pub(in crate::eval) fn placed_parts(
         &mut self,
         object: &ObjectValue,
         span: Span,
     ) -> Result<Vec<ir::Object>> {
-        let objects = std::mem::take(&mut self.objects);
-        let lights = std::mem::take(&mut self.lights);
-        let next_medium = self.next_medium;
+        let objects = std::mem::take(&mut self.scene.objects);
+        let lights = std::mem::take(&mut self.scene.lights);
+        let next_medium = self.scene.next_medium;
         let placed = self.place(object.clone(), span);
-        let parts = std::mem::replace(&mut self.objects, objects);
-        self.lights = lights;
-        self.next_medium = next_medium;
+        let parts = std::mem::replace(&mut self.scene.objects, objects);
+        self.scene.lights = lights;
+        self.scene.next_medium = next_medium;
         placed.map(|()| parts)
     }
 
@@ -692,8 +692,8 @@ impl Evaluator<'_> {
     /// groups inside it, whose own lights stay theirs); its members see the lights outside
     /// every group only with `global_lights`.
     fn light_group(&mut self, group: &mut ObjectValue) {
-        let id = self.next_light_group;
-        self.next_light_group += 1;
+        let id = self.scene.next_light_group;
+        self.scene.next_light_group += 1;
         for light in group
             .lights
             .iter_mut()
@@ -733,7 +733,7 @@ impl Evaluator<'_> {
                 NodeKind::ContainedBy => iso.container = ev.container(item)?,
                 NodeKind::IsoSetting => {
                     let View::IsoSetting { values } = item.view() else {
-                        return Err(super::malformed(item, "an isosurface setting"));
+                        return Err(crate::eval::malformed(item, "an isosurface setting"));
                     };
                     let word = item.word.as_str();
                     let takes = match word {
@@ -796,7 +796,7 @@ impl Evaluator<'_> {
     /// `contained_by { box {…} | sphere {…} }`.
     fn container(&mut self, contained_by: &Node) -> Result<ir::Container> {
         let View::ContainedBy { shape } = contained_by.view() else {
-            return Err(super::malformed(contained_by, "contained_by"));
+            return Err(crate::eval::malformed(contained_by, "contained_by"));
         };
         match shape.view() {
             View::Sphere { centre, radius, .. } => Ok(ir::Container::Sphere(
@@ -807,7 +807,7 @@ impl Evaluator<'_> {
                 let (a, b) = (self.vec3(corner1)?, self.vec3(corner2)?);
                 Ok(ir::Container::Box(a.min(b), a.max(b)))
             }
-            _ => Err(super::malformed(shape, "a box or a sphere")),
+            _ => Err(crate::eval::malformed(shape, "a box or a sphere")),
         }
     }
 
@@ -821,7 +821,7 @@ impl Evaluator<'_> {
             match ev.eval(e)? {
                 Value::Float(f) => Ok(glam::DVec2::splat(f)),
                 Value::Vector(v) if v.len == 2 => Ok(glam::DVec2::new(v.c[0], v.c[1])),
-                other => Err(super::expr::type_error(
+                other => Err(crate::eval::lang::expr::type_error(
                     "a 2-D vector <u, v>",
                     &other,
                     e.span,
@@ -952,7 +952,7 @@ impl Evaluator<'_> {
                         View::Sphere { centre, radius, .. } => {
                             (ir::BlobReach::Sphere(ev.vec3(centre)?), radius)
                         }
-                        _ => return Err(super::malformed(item, "a blob component")),
+                        _ => return Err(crate::eval::malformed(item, "a blob component")),
                     };
                     let radius = ev.float(radius)?;
                     let mut transform: Option<Transform> = None;
@@ -972,13 +972,13 @@ impl Evaluator<'_> {
                                 let t = ev.texture(m)?;
                                 texture = Some(match texture.take() {
                                     // A second texture is a layer on top, as on objects.
-                                    Some(below) => super::material::layer(t, below),
+                                    Some(below) => crate::eval::build::material::layer(t, below),
                                     None => t,
                                 });
                                 Ok(())
                             }
                             NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
-                                let mut t = texture.take().unwrap_or_else(|| ev.default_texture.clone());
+                                let mut t = texture.take().unwrap_or_else(|| ev.scene.default_texture.clone());
                                 match m.kind {
                                     NodeKind::Pigment => t.pigment = ev.pigment(m, t.pigment.clone())?,
                                     NodeKind::Normal => t.normal = Some(Box::new(ev.normal(m, t.normal.take())?)),
@@ -1089,10 +1089,12 @@ impl Evaluator<'_> {
             NodeKind::Pigment | NodeKind::Normal | NodeKind::Finish => {
                 let mut texture = match object.texture.take() {
                     Some(t) => t,
-                    None if object.uv_mapping => self.uv_texture(self.default_texture.clone()),
-                    None => self.default_texture.clone(),
+                    None if object.uv_mapping => {
+                        self.uv_texture(self.scene.default_texture.clone())
+                    }
+                    None => self.scene.default_texture.clone(),
                 };
-                let target = super::material::uv_entry(&mut texture);
+                let target = crate::eval::build::material::uv_entry(&mut texture);
                 match m.kind {
                     NodeKind::Pigment => {
                         target.pigment = self.pigment(m, target.pigment.clone())?
@@ -1138,7 +1140,8 @@ impl Evaluator<'_> {
             // A shape's own words (`ttf`, `conic_sweep`, `open` of a prism…): read by the
             // shape table.
             NodeKind::Flag
-                if owner.kind == NodeKind::Shape && super::shapes::takes(&owner.word, &m.word) => {}
+                if owner.kind == NodeKind::Shape
+                    && crate::eval::build::shapes::takes(&owner.word, &m.word) => {}
             // A shape's values: read by the shape table.
             NodeKind::Value if owner.kind == NodeKind::Shape => {}
             // A height field's function image: read by the shape table.
@@ -1216,7 +1219,7 @@ impl Evaluator<'_> {
     fn set_texture(&mut self, object: &mut ObjectValue, texture: ir::Texture) -> Result<()> {
         // A second texture is layered on top of the first, as in POV-Ray.
         object.texture = Some(match object.texture.take() {
-            Some(below) => super::material::layer(texture, below),
+            Some(below) => crate::eval::build::material::layer(texture, below),
             None => texture,
         });
         Ok(())
@@ -1224,7 +1227,7 @@ impl Evaluator<'_> {
 
     /// Adds the object's parts (and the lights it holds) to the scene. Transformations that
     /// overflowed together (`scale 1e200 scale 1e200`) are an error at `span`.
-    pub(super) fn place(&mut self, mut object: ObjectValue, span: Span) -> Result<()> {
+    pub(in crate::eval) fn place(&mut self, mut object: ObjectValue, span: Span) -> Result<()> {
         let usable = |t: &ir::Transform| t.matrix.is_finite() && t.inverse().matrix.is_finite();
         if !object
             .parts
@@ -1252,21 +1255,21 @@ impl Evaluator<'_> {
         };
         for light in &mut object.lights {
             if let Some(g) = light.group.filter(|&g| g != OWN_GROUP) {
-                light.group = Some(renumber(g, &mut self.next_light_group));
+                light.group = Some(renumber(g, &mut self.scene.next_light_group));
             }
         }
         for part in &mut object.parts {
             if let Some(group) = &mut part.light_group {
                 for g in &mut group.groups {
-                    *g = renumber(*g, &mut self.next_light_group);
+                    *g = renumber(*g, &mut self.scene.next_light_group);
                 }
             }
         }
-        self.lights.append(&mut object.lights);
+        self.scene.lights.append(&mut object.lights);
         // Fresh media for this instance (two `object { U }` of one declared union do not
         // share interiors: POV-Ray copies them with the object).
-        let base = self.next_medium;
-        self.next_medium = base.saturating_add(object.own_interiors).saturating_add(1);
+        let base = self.scene.next_medium;
+        self.scene.next_medium = base.saturating_add(object.own_interiors).saturating_add(1);
         for (member, mut part) in object.parts.into_iter().enumerate() {
             if let (Some(world), Some(t), Shape::Mesh(mesh)) =
                 (part.vertex_normals, &part.transform, &mut part.shape)
@@ -1284,7 +1287,7 @@ impl Evaluator<'_> {
             let texture = part
                 .texture
                 .or_else(|| object.texture.clone())
-                .unwrap_or_else(|| self.default_texture.clone());
+                .unwrap_or_else(|| self.scene.default_texture.clone());
             let interior_texture = part
                 .interior_texture
                 .or_else(|| object.interior_texture.clone());
@@ -1303,7 +1306,7 @@ impl Evaluator<'_> {
             // (Objects without an interior share one default interior.)
             let interior = match own {
                 Some(interior) => self.shared_interior(interior),
-                None => std::sync::Arc::clone(&self.default_interior),
+                None => std::sync::Arc::clone(&self.scene.default_interior),
             };
             let mut shapes = part.bounds;
             shapes.extend(object.bounds.iter().cloned());
@@ -1329,7 +1332,7 @@ impl Evaluator<'_> {
                     light_group,
                 })
             });
-            self.objects.push(ir::Object {
+            self.scene.objects.push(ir::Object {
                 extras,
                 shape: part.shape,
                 transform: part.transform.map(Box::new),
@@ -1366,7 +1369,7 @@ impl Evaluator<'_> {
                 let (c, nc) = (self.vec3(c)?, self.vec3(c_normal)?);
                 ([a, b, c], Some([na, nb, nc]))
             }
-            _ => return Err(super::malformed(node, "a triangle")),
+            _ => return Err(crate::eval::malformed(node, "a triangle")),
         };
         let Some(normal_indices) =
             self.triangle_normals(mesh, &p, normals, in_mesh, node.word_span)
@@ -1396,7 +1399,7 @@ impl Evaluator<'_> {
             let corners = match uv {
                 Some(uv) => {
                     let View::TriangleUv { a, b, c } = uv.view() else {
-                        return Err(super::malformed(uv, "uv_vectors"));
+                        return Err(crate::eval::malformed(uv, "uv_vectors"));
                     };
                     let base = mesh.uvs.len() as u32;
                     for e in [a, b, c] {
@@ -1457,7 +1460,7 @@ impl Evaluator<'_> {
         match rest {
             [iv, after @ ..] if iv.kind == NodeKind::InsideVector => {
                 let View::InsideVector(direction) = iv.view() else {
-                    return Err(super::malformed(iv, "inside_vector"));
+                    return Err(crate::eval::malformed(iv, "inside_vector"));
                 };
                 mesh.inside_vector = Some(self.nonzero(direction, "inside_vector")?);
                 Ok(after)
@@ -1469,7 +1472,7 @@ impl Evaluator<'_> {
     /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
     fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
         let View::Mesh2(parts) = node.view() else {
-            return Err(super::malformed(node, "a mesh2"));
+            return Err(crate::eval::malformed(node, "a mesh2"));
         };
         let (vertex_node, normal_node, uv_node) = (parts.vertices, parts.normals, parts.uvs);
         let (texture_node, face_node) = (parts.textures, parts.faces);
@@ -1586,7 +1589,7 @@ impl Evaluator<'_> {
     fn mesh_file(&mut self, file_expr: &Expr) -> Result<Arc<Mesh>> {
         let file = self.string(file_expr)?;
         let path = self.find_file(&file, "mesh file", file_expr.span)?;
-        if let Some(mesh) = self.mesh_files.get(&path) {
+        if let Some(mesh) = self.scene.mesh_files.get(&path) {
             return Ok(Arc::clone(mesh));
         }
         let data = crate::meshfile::read(&path).map_err(|e| {
@@ -1619,7 +1622,7 @@ impl Evaluator<'_> {
             ));
         }
         let mesh = Arc::new(mesh);
-        self.mesh_files.insert(path, Arc::clone(&mesh));
+        self.scene.mesh_files.insert(path, Arc::clone(&mesh));
         Ok(mesh)
     }
 
@@ -1692,7 +1695,7 @@ impl Evaluator<'_> {
     /// `texture_list { N, texture {…} … }`.
     fn texture_list(&mut self, node: &Node) -> Result<Vec<ir::Texture>> {
         let View::TextureList(count) = node.view() else {
-            return Err(super::malformed(node, "a texture_list"));
+            return Err(crate::eval::malformed(node, "a texture_list"));
         };
         let n = self.float(count)?;
         let mut textures = Vec::new();
@@ -1800,7 +1803,7 @@ impl Evaluator<'_> {
     /// A list's entries (not read by a fast lane), their number checked against its count.
     fn list_entries<'n>(&mut self, node: &'n Node) -> Result<&'n [Expr]> {
         let List::Entries { count, entries } = list_view(node)? else {
-            return Err(super::malformed(node, "a list of entries"));
+            return Err(crate::eval::malformed(node, "a list of entries"));
         };
         let n = self.float(count)?;
         let given = entries.len();
@@ -1823,7 +1826,7 @@ fn list_view(node: &Node) -> Result<List<'_>> {
         | View::FaceIndices(list)
         | View::NormalIndices(list)
         | View::UvIndices(list) => Ok(list),
-        _ => Err(super::malformed(node, "a mesh2 list")),
+        _ => Err(crate::eval::malformed(node, "a mesh2 list")),
     }
 }
 
@@ -1909,7 +1912,7 @@ fn mesh_texture(textures: &mut Vec<ir::Texture>, t: ir::Texture) -> u32 {
     }
 }
 
-pub(super) fn assemble_mesh(
+pub(in crate::eval) fn assemble_mesh(
     vertices: &[DVec3],
     normals: &[DVec3],
     faces: &[[u32; 3]],
@@ -1969,7 +1972,7 @@ pub(super) fn assemble_mesh(
 /// links them.
 fn set_interior_texture(object: &mut ObjectValue, texture: Texture) {
     object.interior_texture = Some(match object.interior_texture.take() {
-        Some(below) => super::material::layer(texture, below),
+        Some(below) => crate::eval::build::material::layer(texture, below),
         None => texture,
     });
 }

@@ -13,9 +13,9 @@
 //! palette image's height field, `use_index` and per-entry `filter`/`transmit`) come from the
 //! png and gif decoders and, for BMP (1, 4, 8 bits) and colour-mapped TGA, from the file.
 
-use super::expr::type_error;
-use super::value::Value;
 use crate::diag::Diagnostic;
+use crate::eval::lang::expr::type_error;
+use crate::eval::value::Value;
 use crate::ir::{self, ImageMap, Pattern, PatternKind};
 use crate::pattern::image::{ImageUse, Interpolation, MapType};
 use crate::syntax::{Node, NodeKind, View};
@@ -27,7 +27,7 @@ const MAX_PIXELS: u64 = 1 << 26;
 
 /// An image file format, as a scene names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum FileType {
+pub(in crate::eval) enum FileType {
     Png,
     Jpeg,
     Gif,
@@ -50,7 +50,7 @@ pub(super) enum FileType {
 
 impl FileType {
     /// The format a keyword names.
-    pub(super) fn from_keyword(word: &str) -> Option<FileType> {
+    pub(in crate::eval) fn from_keyword(word: &str) -> Option<FileType> {
         Some(match word {
             "png" => FileType::Png,
             "jpeg" => FileType::Jpeg,
@@ -72,7 +72,7 @@ impl FileType {
     /// The format POV-Ray infers from a file name's extension (any case); `None` for an
     /// extension it does not know. A name without an extension is PNG (POV-Ray takes its
     /// output format, PNG unless told otherwise).
-    pub(super) fn from_name(name: &str) -> Option<FileType> {
+    pub(in crate::eval) fn from_name(name: &str) -> Option<FileType> {
         let Some((stem, ext)) = name.rsplit_once('.') else {
             return Some(FileType::Png);
         };
@@ -96,7 +96,7 @@ impl FileType {
     }
 
     /// The extensions POV-Ray tries after a name that is not found as given.
-    pub(super) fn extensions(self) -> &'static [&'static str] {
+    pub(in crate::eval) fn extensions(self) -> &'static [&'static str] {
         match self {
             FileType::Png => &[".png"],
             FileType::Jpeg => &[".jpg", ".jpeg"],
@@ -131,7 +131,7 @@ impl FileType {
 
 /// How a file's numbers encode light, when the scene does not say (`gamma G` does).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Encoding {
+pub(in crate::eval) enum Encoding {
     /// The sRGB transfer function.
     Srgb,
     /// A power law: linear = value^g (g is the decoding exponent, 2.2 for most files).
@@ -144,9 +144,9 @@ pub(super) enum Encoding {
 
 impl Encoding {
     /// Linear light from a file value.
-    pub(super) fn decode(self, v: f64) -> f64 {
+    pub(in crate::eval) fn decode(self, v: f64) -> f64 {
         match self {
-            Encoding::Srgb => super::value::srgb_decode(v),
+            Encoding::Srgb => crate::eval::value::srgb_decode(v),
             Encoding::Power(g) => v.max(0.0).powf(g),
             Encoding::Linear | Encoding::AsWorking => v,
         }
@@ -154,7 +154,7 @@ impl Encoding {
 }
 
 /// A decoded image file: its pixels as the file holds them.
-pub(super) struct Picture {
+pub(in crate::eval) struct Picture {
     pub width: u32,
     pub height: u32,
     /// Red, green, blue and alpha (1 opaque), top row first: 0 to 1 for integer files, as
@@ -175,7 +175,7 @@ pub(super) struct Picture {
 }
 
 /// Reads `path` as a file of type `ty`.
-pub(super) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
+pub(in crate::eval) fn read(path: &Path, ty: FileType) -> Result<Picture, String> {
     if let FileType::Unread(word) = ty {
         return Err(format!(
             "`{word}` images are not read by trace (PNG, JPEG, GIF, TGA, PPM, PGM, TIFF, BMP, EXR and HDR are)"
@@ -520,7 +520,7 @@ impl Picture {
     /// row): a palette image's index × 256; a grey image's grey × 65535; a colour image of
     /// more than 8 bits its grey (0.297 r + 0.589 g + 0.114 b) × 65535; any other colour
     /// image red × 256 + green in bytes ((r × 256 + g) × 255, r and g from 0 to 1).
-    pub(super) fn heights(&self) -> Vec<u16> {
+    pub(in crate::eval) fn heights(&self) -> Vec<u16> {
         let (w, h) = (self.width as usize, self.height as usize);
         let mut heights = vec![0u16; w * h];
         for y in 0..h {
@@ -537,7 +537,9 @@ impl Picture {
                     let v = (r * max).round();
                     (v / max * 65535.0) as i64 as u16
                 } else if self.deep {
-                    super::heightfield::grey16([r, g, b].map(|c| (c * 65535.0).round() as u16))
+                    crate::eval::build::heightfield::grey16(
+                        [r, g, b].map(|c| (c * 65535.0).round() as u16),
+                    )
                 } else {
                     // (Above 1, as in a float image, POV-Ray's 16-bit height wraps around.)
                     ((f64::from(r) * 256.0 + f64::from(g)) * 255.0) as i64 as u16
@@ -548,17 +550,17 @@ impl Picture {
     }
 }
 
-impl super::Evaluator<'_> {
+impl crate::eval::Evaluator<'_> {
     /// Finds and reads the image file `name`, of type `ty` (named by a keyword at
     /// `type_span`) or else inferred from the name. Like POV-Ray, a name not found as given
     /// is tried with the format's extensions.
-    pub(super) fn read_image(
+    pub(in crate::eval) fn read_image(
         &mut self,
         name: &str,
         ty: Option<FileType>,
         type_span: crate::diag::Span,
         name_span: crate::diag::Span,
-    ) -> super::Result<(std::path::PathBuf, Picture)> {
+    ) -> crate::eval::Result<(std::path::PathBuf, Picture)> {
         use crate::diag::Diagnostic;
         let ty = match ty.or_else(|| FileType::from_name(name)) {
             Some(ty) => ty,
@@ -581,7 +583,7 @@ impl super::Evaluator<'_> {
             ));
         }
         let path = match self.sandbox.find(name) {
-            Err(super::sandbox::Refusal::NotFound) => ty
+            Err(crate::eval::lang::sandbox::Refusal::NotFound) => ty
                 .extensions()
                 .iter()
                 .find_map(|ext| self.sandbox.find(&format!("{name}{ext}")).ok()),
@@ -608,13 +610,13 @@ impl super::Evaluator<'_> {
 }
 
 /// An image read for `image_map`, `image_pattern` or `bump_map`.
-pub(super) struct ImageRead {
-    pub(super) image: ImageMap,
-    pub(super) kind: ImageRole,
+pub(in crate::eval) struct ImageRead {
+    pub(in crate::eval) image: ImageMap,
+    pub(in crate::eval) kind: ImageRole,
 }
 
 /// What an image is read for.
-pub(super) enum ImageRole {
+pub(in crate::eval) enum ImageRole {
     /// `image_map`: its colours.
     Colours,
     /// `image_pattern`: a value pattern.
@@ -623,13 +625,13 @@ pub(super) enum ImageRole {
     Bumps(Option<f64>),
 }
 
-impl super::Evaluator<'_> {
+impl crate::eval::Evaluator<'_> {
     /// `image_map { [png] "file" … }`, `image_pattern { … }` or `bump_map { … }`: the image
     /// (the colours of an image_map decoded to working gamma; the others' numbers as the file
     /// holds them, as POV-Ray reads them) and what it is for.
-    pub(super) fn image_map(&mut self, node: &Node) -> super::Result<ImageRead> {
+    pub(in crate::eval) fn image_map(&mut self, node: &Node) -> crate::eval::Result<ImageRead> {
         let (View::ImageMap(file_expr) | View::MaterialMap(file_expr)) = node.view() else {
-            return Err(super::malformed(node, "an image"));
+            return Err(crate::eval::malformed(node, "an image"));
         };
         let file = &match self.eval(file_expr)? {
             Value::Str(s) => s,
@@ -735,14 +737,14 @@ impl super::Evaluator<'_> {
         // An image_map's colours are decoded to linear light (by the scene's `gamma`, else by
         // the file's own encoding), then put in the working gamma; image_pattern and bump_map
         // take the numbers as they are, unless the scene gives a `gamma`.
-        let working = self.assumed_gamma.unwrap_or(1.0);
+        let working = self.lang.assumed_gamma.unwrap_or(1.0);
         let colours = role == "image_map";
         let encoding = gamma.unwrap_or(picture.encoding);
         // In a scene of a version before 3.7 (or of none), POV-Ray takes an image's numbers as
         // they are unless the image_map names a `gamma`: without `assumed_gamma` it corrects
         // no gamma at all, and with one the file's default gamma is the working gamma, which
         // puts the numbers back where they were.
-        let uncorrected = self.version.unwrap_or(3.62) < 3.7 - 1e-9;
+        let uncorrected = self.lang.version.unwrap_or(3.62) < 3.7 - 1e-9;
         let to_working = |v: f32| {
             let v = f64::from(v);
             let linear = match (colours, gamma) {
@@ -830,10 +832,13 @@ impl super::Evaluator<'_> {
     }
 }
 
-impl super::Evaluator<'_> {
+impl crate::eval::Evaluator<'_> {
     /// `material_map { [TYPE] "file" [map_type N] [once] [interpolate N] texture {…}… }`: the
     /// textures numbered 0, 1, … picked by the image's pixels (their palette index, or red).
-    pub(super) fn material_map(&mut self, node: &Node) -> super::Result<ir::TextureMap> {
+    pub(in crate::eval) fn material_map(
+        &mut self,
+        node: &Node,
+    ) -> crate::eval::Result<ir::TextureMap> {
         let image_node = Node {
             slot: node.slot,
             kind: NodeKind::ImageMap,

@@ -47,7 +47,7 @@ const MONTHS: [&str; 12] = [
 
 /// `days` since 2000-01-01 00:00 UTC formatted by `format` (rounded to the second, as
 /// POV-Ray rounds it).
-pub(super) fn format(days: f64, format: &str) -> String {
+pub(in crate::eval) fn format(days: f64, format: &str) -> String {
     let seconds = ((days + 10_957.0) * 86_400.0 + 0.5).floor() as i64;
     let (day_number, second_of_day) = (seconds.div_euclid(86_400), seconds.rem_euclid(86_400));
     let (year, month, day) = civil(day_number);

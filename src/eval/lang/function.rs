@@ -3,18 +3,17 @@
 //! declared functions called, POV-Ray's maths and `internal(N)`. The operators are POV-Ray's
 //! function syntax (`+ - * /`, comparisons, `&`, `|`, unary `-`); `!` and `? :` are not in it.
 
-use super::expr::{check_arity, type_error};
-use super::{Evaluator, Result, Value};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::lang::expr::{check_arity, type_error};
+use crate::eval::{Evaluator, Result, Value};
 use crate::func::spline::{Spline, SplineKind};
-use crate::func::{Function, Internal, Math1, Math2, Native, Op};
-use crate::ir;
+use crate::func::{Function, Internal, Math1, Math2, Op};
 use crate::syntax::{BinOp, Expr, ExprKind, Node, NodeKind, Slot, UnOp, View};
 use std::sync::Arc;
 
 impl Evaluator<'_> {
     /// A `function { … }` node, compiled.
-    pub(super) fn function(&mut self, node: &Node) -> Result<Arc<Function>> {
+    pub(in crate::eval) fn function(&mut self, node: &Node) -> Result<Arc<Function>> {
         let params: Vec<String> = match node
             .children
             .iter()
@@ -100,9 +99,9 @@ impl Evaluator<'_> {
 
     /// `spline { [S] [kind] t, V … }`: a declared spline copied first (its kind kept unless
     /// another is named), then the entries, as POV-Ray reads them.
-    pub(super) fn spline(&mut self, node: &Node) -> Result<Spline> {
+    pub(in crate::eval) fn spline(&mut self, node: &Node) -> Result<Spline> {
         let View::Spline { values } = node.view() else {
-            return Err(super::malformed(node, "a spline"));
+            return Err(crate::eval::malformed(node, "a spline"));
         };
         // (A declared spline first: copied.)
         let declared = match values {
@@ -162,7 +161,7 @@ impl Evaluator<'_> {
     }
 
     /// `S(t)` or `S(t, kind)`: the spline's vector at t.
-    pub(super) fn call_spline(
+    pub(in crate::eval) fn call_spline(
         &mut self,
         spline: &Spline,
         name: &str,
@@ -196,33 +195,9 @@ impl Evaluator<'_> {
             }
             None => spline.at(t),
         };
-        Ok(Value::Vector(super::value::Vector::new(&v[..spline.terms])))
-    }
-
-    /// The scene's pattern defaults as they stand while the scene is read.
-    pub(super) fn scene_defaults(&self) -> crate::pattern::SceneDefaults {
-        crate::pattern::SceneDefaults {
-            generator: self.noise_generator(),
-            waves: self.settings.number_of_waves,
-        }
-    }
-
-    /// The function of a `pigment { … }` or `pattern { … }` body.
-    fn native_function(&mut self, body: &Node) -> Result<Arc<dyn Native>> {
-        let pigment = self.pigment(body, ir::Pigment::solid(ir::Colour::default()))?;
-        if body.kind == NodeKind::Pigment {
-            return Ok((self.pigment_function)(&pigment, self.scene_defaults()));
-        }
-        let ir::PigmentKind::Pattern(p) = pigment.kind else {
-            return Err(Diagnostic::error(
-                "`pattern { }` needs a pattern (gradient x, granite …)",
-                body.word_span,
-            ));
-        };
-        Ok(Arc::new(crate::pattern::PatternFunction {
-            pattern: p.pattern.with_scene(self.scene_defaults()),
-            from_world: pigment.transform.map(|t| t.matrix.inverse()),
-        }))
+        Ok(Value::Vector(crate::eval::value::Vector::new(
+            &v[..spline.terms],
+        )))
     }
 
     /// Appends the program of `e` to `code`.
@@ -404,7 +379,8 @@ impl Evaluator<'_> {
             });
         } else if name == "sum" || name == "prod" {
             // sum(i, a, b, f): the term is a function of this one's parameters and i.
-            let [counter, from, to, term_expr] = super::expr::arguments(name, args, span)?;
+            let [counter, from, to, term_expr] =
+                crate::eval::lang::expr::arguments(name, args, span)?;
             let ExprKind::Ident(var, _) = &counter.kind else {
                 return Err(Diagnostic::error(
                     format!("`{name}` counts with a name: {name}(i, a, b, f)"),
@@ -471,9 +447,10 @@ impl Evaluator<'_> {
 
     /// The noise generator functions use while the scene is read (global_settings' so far,
     /// else POV-Ray's default for the version).
-    pub(super) fn noise_generator(&self) -> u8 {
-        self.noise_generator
-            .unwrap_or(if self.version.is_some_and(|v| v < 3.5 - 1e-9) {
+    pub(in crate::eval) fn noise_generator(&self) -> u8 {
+        self.lang
+            .noise_generator
+            .unwrap_or(if self.lang.version.is_some_and(|v| v < 3.5 - 1e-9) {
                 1
             } else {
                 2
@@ -481,7 +458,7 @@ impl Evaluator<'_> {
     }
 
     /// `F(a, b, …)` in an expression: the declared function's value.
-    pub(super) fn call_function(
+    pub(in crate::eval) fn call_function(
         &mut self,
         f: &Function,
         name: &str,
@@ -499,7 +476,7 @@ impl Evaluator<'_> {
                 let v = native.eval(&values, generator);
                 match native.size() {
                     5 => Value::Colour(v),
-                    n => Value::Vector(super::value::Vector::new(&v[..n])),
+                    n => Value::Vector(crate::eval::value::Vector::new(&v[..n])),
                 }
             }
             None => Value::Float(f.eval(&values, generator)),

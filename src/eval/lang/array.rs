@@ -6,9 +6,9 @@
 //! An element may be an array (`array[2] { array[2] {1, 2}, array[3] {3, 4, 5} }`), read and
 //! assigned with more subscripts (`A[1][2]`).
 
-use super::Evaluator;
-use super::value::{Array, Value};
 use crate::diag::{Diagnostic, Span};
+use crate::eval::Evaluator;
+use crate::eval::value::{Array, Value};
 use crate::syntax::view::Element;
 use crate::syntax::{Expr, ExprKind, Node, NodeKind, Slot, View};
 
@@ -27,7 +27,7 @@ enum Holder {
 
 impl Evaluator<'_> {
     /// `array[d1][d2]… { … }`.
-    pub(super) fn array_value(&mut self, node: &Node) -> Result<Value> {
+    pub(in crate::eval) fn array_value(&mut self, node: &Node) -> Result<Value> {
         let mut dims = Vec::new();
         for (sub, size) in node.children.iter().filter_map(|c| match c.view() {
             View::Subscript(size) => Some((c, size)),
@@ -97,7 +97,7 @@ impl Evaluator<'_> {
                         }
                         View::ArrayElem(Element::Item(item)) => self.item_value(item)?,
                         View::ArrayElem(Element::Value(value)) => self.eval(value)?,
-                        _ => return Err(super::malformed(elem, "an array element")),
+                        _ => return Err(crate::eval::malformed(elem, "an array element")),
                     };
                     if let Some(Some(first)) = out.first() {
                         same_kind(first, &value, elem.span)?;
@@ -208,7 +208,7 @@ impl Evaluator<'_> {
     }
 
     /// `A[i]…` in an expression.
-    pub(super) fn index_expr(&mut self, expr: &Expr) -> Result<Value> {
+    pub(in crate::eval) fn index_expr(&mut self, expr: &Expr) -> Result<Value> {
         let mut subs = Vec::new();
         let mut base = expr;
         while let ExprKind::Index(inner, index) = &base.kind {
@@ -229,7 +229,7 @@ impl Evaluator<'_> {
     fn holder_value(&self, name: &str, holder: Holder) -> Option<&Value> {
         match holder {
             Holder::Bound(slot) => self.bound(slot),
-            Holder::Declared => self.env.get(name).map(|v| &**v),
+            Holder::Declared => self.lang.env.get(name).map(|v| &**v),
         }
     }
 
@@ -257,7 +257,7 @@ impl Evaluator<'_> {
     }
 
     /// `T` or `A[i]` where an item may stand.
-    pub(super) fn item_ref(&mut self, node: &Node) -> Result<Value> {
+    pub(in crate::eval) fn item_ref(&mut self, node: &Node) -> Result<Value> {
         if node.children.is_empty() {
             return match self.bound(node.slot) {
                 Some(v) => self.usable(&node.word, v.clone(), node.span),
@@ -270,20 +270,21 @@ impl Evaluator<'_> {
 
     /// `#ifdef (A[i])`: whether the element has been assigned (out of range is an error, as in
     /// POV-Ray).
-    pub(super) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
+    pub(in crate::eval) fn element_assigned(&mut self, node: &Node) -> Result<bool> {
         let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
-        let Some(Value::Array(array)) = self.env.get(node.word.as_str()).map(|v| &**v) else {
+        let Some(Value::Array(array)) = self.lang.env.get(node.word.as_str()).map(|v| &**v) else {
             unreachable!("element_path checked that the name is an array");
         };
         Ok(slot(array, &path).is_some())
     }
 
     /// `#undef A[i]`: the element has no value again.
-    pub(super) fn unassign_element(&mut self, node: &Node) -> Result<()> {
+    pub(in crate::eval) fn unassign_element(&mut self, node: &Node) -> Result<()> {
         let subs: Vec<&Expr> = subscripts(&node.children);
         let path = self.element_path(&node.word, Holder::Declared, node.word_span, &subs)?;
         let Some(Value::Array(array)) = self
+            .lang
             .env
             .get_mut(node.word.as_str())
             .map(std::sync::Arc::make_mut)
@@ -296,7 +297,7 @@ impl Evaluator<'_> {
     }
 
     /// `#declare A[i]… = value`.
-    pub(super) fn assign_element(
+    pub(in crate::eval) fn assign_element(
         &mut self,
         name: &Node,
         subs: &[&Node],
@@ -305,6 +306,7 @@ impl Evaluator<'_> {
         let exprs: Vec<&Expr> = subs.iter().filter_map(|s| subscript(s)).collect();
         let path = self.element_path(&name.word, Holder::Declared, name.span, &exprs)?;
         let Some(Value::Array(array)) = self
+            .lang
             .env
             .get_mut(name.word.as_str())
             .map(std::sync::Arc::make_mut)
@@ -324,7 +326,7 @@ impl Evaluator<'_> {
     }
 
     /// `dimensions(A)` and `dimension_size(A, n)`.
-    pub(super) fn array_dimensions(
+    pub(in crate::eval) fn array_dimensions(
         &mut self,
         name: &str,
         args: &[Expr],
@@ -344,12 +346,18 @@ impl Evaluator<'_> {
         let dims = match &array.kind {
             ExprKind::Index(..) => match self.index_expr(array)? {
                 Value::Array(a) => a.dims.clone(),
-                other => return Err(super::expr::type_error("an array", &other, array.span)),
+                other => {
+                    return Err(crate::eval::lang::expr::type_error(
+                        "an array", &other, array.span,
+                    ));
+                }
             },
             ExprKind::Ident(id, name_slot) => match self.bound(*name_slot) {
                 Some(Value::Array(a)) => a.dims.clone(),
                 Some(other) => {
-                    return Err(super::expr::type_error("an array", other, array.span));
+                    return Err(crate::eval::lang::expr::type_error(
+                        "an array", other, array.span,
+                    ));
                 }
                 None => return Err(self.unknown_word(id, array.span)),
             },

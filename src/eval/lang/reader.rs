@@ -21,9 +21,9 @@
 //! a skipped branch is lexed without being evaluated, and a loop or macro body's units are
 //! parsed once per different text (cached by the places they were read from).
 
-use super::flow::{Frame, MAX_INCLUDE_DEPTH, MAX_MACRO_DEPTH, Macro};
-use super::{Evaluator, Result, Value};
 use crate::diag::{Diagnostic, FileId, Span};
+use crate::eval::lang::flow::{Frame, MAX_INCLUDE_DEPTH, MAX_MACRO_DEPTH, Macro};
+use crate::eval::{Evaluator, Result, Value};
 use crate::syntax::lexer::{Lexer, Token, TokenKind};
 use crate::syntax::{self, Head, Node, NodeKind, Piece, Unit, View};
 use std::any::Any;
@@ -74,7 +74,7 @@ enum InputKind {
 /// A macro call or an include that led to the text being read, for messages ("in macro M,
 /// called at …", "included from …").
 #[derive(Debug)]
-pub(super) struct Context {
+pub(in crate::eval) struct Context {
     parent: Option<Arc<Context>>,
     /// The macro's name; `None` for an include.
     macro_name: Option<String>,
@@ -109,7 +109,7 @@ enum BlockKind {
 
 /// A token as the reader hands it on: where it was read, and what its word is bound to.
 #[derive(Clone, Debug)]
-pub(super) struct Tok {
+pub(in crate::eval) struct Tok {
     kind: TokenKind,
     file: FileId,
     start: u32,
@@ -172,7 +172,7 @@ enum FunctionState {
 
 /// The reader's state (part of the evaluator).
 #[derive(Default)]
-pub(super) struct Reader {
+pub(in crate::eval) struct Reader {
     inputs: Vec<Input>,
     blocks: Vec<Block>,
     /// Counts every jump of the reading (a directive, a skip, an input started or ended).
@@ -193,7 +193,7 @@ pub(super) struct Reader {
 
 /// A top-level statement read: a unit for the grammar, or a plain statement the fast lane
 /// read (with the bindings of its names).
-pub(super) enum Statement {
+pub(in crate::eval) enum Statement {
     Unit(Emitted),
     Plain(Node, Vec<Option<Arc<Value>>>),
     /// A plain statement of a loop's or macro's body, read from its kept parse (see `quick`).
@@ -217,7 +217,7 @@ type CachedParse = (Vec<Piece>, Rc<dyn Any>);
 const MAX_CACHED_PARSES: usize = 4096;
 
 /// A unit read, with each word's binding and what led to each piece.
-pub(super) struct Emitted {
+pub(in crate::eval) struct Emitted {
     pub unit: Unit,
     pub bindings: Vec<Option<Arc<Value>>>,
     /// The context of each piece of the unit.
@@ -423,10 +423,10 @@ impl Emitted {
 
 impl<'a> Evaluator<'a> {
     /// Starts reading the scene file `file`.
-    pub(super) fn read_scene(&mut self, file: FileId) -> Result<()> {
+    pub(in crate::eval) fn read_scene(&mut self, file: FileId) -> Result<()> {
         let text = self.sources.file(file).text.clone();
         let end = text.len();
-        self.reader.inputs.push(Input {
+        self.lang.reader.inputs.push(Input {
             file,
             text,
             pos: 0,
@@ -487,7 +487,7 @@ impl<'a> Evaluator<'a> {
                 .map_err(|d| self.noted(d, Some(em)));
         }
         let key = (what, pieces_key(&em.unit.pieces));
-        if let Some((pieces, hit)) = self.reader.parses.get(&key) {
+        if let Some((pieces, hit)) = self.lang.reader.parses.get(&key) {
             if *pieces == em.unit.pieces {
                 if let Ok(t) = Rc::clone(hit).downcast::<T>() {
                     return Ok(t);
@@ -495,32 +495,33 @@ impl<'a> Evaluator<'a> {
             }
         }
         let t = Rc::new(parse(&em.unit).map_err(|d| self.noted(d, Some(em)))?);
-        if self.reader.parses.len() >= MAX_CACHED_PARSES {
-            self.reader.parses.clear();
+        if self.lang.reader.parses.len() >= MAX_CACHED_PARSES {
+            self.lang.reader.parses.clear();
         }
-        self.reader
+        self.lang
+            .reader
             .parses
             .insert(key, (em.unit.pieces.clone(), t.clone()));
         Ok(t)
     }
 
     /// Runs `f` with the bindings of the unit it evaluates.
-    pub(super) fn with_bindings<T>(
+    pub(in crate::eval) fn with_bindings<T>(
         &mut self,
         bindings: Vec<Option<Arc<Value>>>,
         f: impl FnOnce(&mut Self) -> T,
     ) -> T {
-        let outer = std::mem::replace(&mut self.bindings, bindings);
-        let shift = std::mem::take(&mut self.slot_shift);
+        let outer = std::mem::replace(&mut self.lang.bindings, bindings);
+        let shift = std::mem::take(&mut self.lang.slot_shift);
         let result = f(self);
-        self.bindings = outer;
-        self.slot_shift = shift;
+        self.lang.bindings = outer;
+        self.lang.slot_shift = shift;
         result
     }
 
     /// The diagnostic with the macro calls and includes that led to where it points (those
     /// of `unit`'s piece holding it, or else those of the text being read).
-    pub(super) fn noted(&self, d: Diagnostic, unit: Option<&Emitted>) -> Diagnostic {
+    pub(in crate::eval) fn noted(&self, d: Diagnostic, unit: Option<&Emitted>) -> Diagnostic {
         // (Noted once: a diagnostic passing through several readers keeps the first notes.)
         if d.notes.iter().any(|n| is_context_note(n)) {
             return d;
@@ -536,7 +537,13 @@ impl<'a> Evaluator<'a> {
             .span
             .and_then(|s| unit.and_then(|u| u.context_of(s)))
             .cloned()
-            .or_else(|| self.reader.inputs.last().and_then(|i| i.context.clone()));
+            .or_else(|| {
+                self.lang
+                    .reader
+                    .inputs
+                    .last()
+                    .and_then(|i| i.context.clone())
+            });
         let mut d = d;
         let mut at = context;
         if at.is_none() {
@@ -560,14 +567,20 @@ impl<'a> Evaluator<'a> {
     /// of the scene.
     fn next_token(&mut self) -> Result<Option<Tok>> {
         loop {
-            if let Some(t) = self.reader.inputs.last_mut().and_then(|i| i.pushback.pop()) {
+            if let Some(t) = self
+                .lang
+                .reader
+                .inputs
+                .last_mut()
+                .and_then(|i| i.pushback.pop())
+            {
                 // A directive read ahead while held, now read where it may run.
                 if t.kind == TokenKind::Directive && !self.held(&t) {
                     self.run_directive(&t)?;
                     continue;
                 }
                 // A word read ahead while held, now read.
-                if t.unread && !self.reader.hold && !self.reader.raw_words {
+                if t.unread && !self.lang.reader.hold && !self.lang.reader.raw_words {
                     let t = Tok { unread: false, ..t };
                     match self.word(t)? {
                         Some(t) => {
@@ -580,11 +593,11 @@ impl<'a> Evaluator<'a> {
                 return Ok(Some(t));
             }
             let Some((raw, input)) = self.raw_token()? else {
-                if self.reader.inputs.is_empty() {
+                if self.lang.reader.inputs.is_empty() {
                     return Ok(None);
                 }
                 self.end_input()?;
-                if self.reader.inputs.is_empty() {
+                if self.lang.reader.inputs.is_empty() {
                     return Ok(None);
                 }
                 continue;
@@ -597,13 +610,13 @@ impl<'a> Evaluator<'a> {
                 TokenKind::Hash => {}
                 // (While held, a word is handed on unread: it may call a macro, which waits
                 // with the rest until the value before it is bound.)
-                TokenKind::Word if self.reader.hold => {
+                TokenKind::Word if self.lang.reader.hold => {
                     return Ok(Some(Tok {
                         unread: true,
                         ..tok
                     }));
                 }
-                TokenKind::Word if !self.reader.raw_words => {
+                TokenKind::Word if !self.lang.reader.raw_words => {
                     if let Some(tok) = self.word(tok)? {
                         self.track_functions(&tok);
                         return Ok(Some(tok));
@@ -619,7 +632,7 @@ impl<'a> Evaluator<'a> {
 
     /// Carries out the directive token `tok`.
     fn run_directive(&mut self, tok: &Tok) -> Result<()> {
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         let word = tok.word_of(self).to_string();
         // (Messages point at the directive's word.)
         let span = Span {
@@ -627,7 +640,7 @@ impl<'a> Evaluator<'a> {
             ..tok.span()
         };
         self.directive(&word, span)?;
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         Ok(())
     }
 
@@ -636,13 +649,13 @@ impl<'a> Evaluator<'a> {
     /// `#else`, `#elseif` or `#end` of a conditional runs: it chooses no value
     /// (`#declare X = #if (c) A #else B #end`, as exporters write it).
     fn held(&self, tok: &Tok) -> bool {
-        if !self.reader.hold {
+        if !self.lang.reader.hold {
             return false;
         }
         match tok.word_of(self) {
             "else" | "elseif" => false,
             "end" => !matches!(
-                self.reader.blocks.last().map(|b| &b.kind),
+                self.lang.reader.blocks.last().map(|b| &b.kind),
                 Some(BlockKind::If | BlockKind::Switch)
             ),
             _ => true,
@@ -651,9 +664,9 @@ impl<'a> Evaluator<'a> {
 
     /// The next token, with directives held (see [`Evaluator::held`]), handed back.
     fn peek_held(&mut self) -> Result<Option<Tok>> {
-        let outer = std::mem::replace(&mut self.reader.hold, true);
+        let outer = std::mem::replace(&mut self.lang.reader.hold, true);
         let t = self.peek_token();
-        self.reader.hold = outer;
+        self.lang.reader.hold = outer;
         t
     }
 
@@ -668,7 +681,7 @@ impl<'a> Evaluator<'a> {
 
     /// Hands `t` back: the next token read is `t`.
     fn unget(&mut self, t: Tok) {
-        if let Some(input) = self.reader.inputs.last_mut() {
+        if let Some(input) = self.lang.reader.inputs.last_mut() {
             input.pushback.push(t);
         }
     }
@@ -676,11 +689,11 @@ impl<'a> Evaluator<'a> {
     /// The next token of the current input as the lexer reads it, with the input's index;
     /// `None` at the input's end.
     fn raw_token(&mut self) -> Result<Option<(Token, usize)>> {
-        let index = self.reader.inputs.len().checked_sub(1);
+        let index = self.lang.reader.inputs.len().checked_sub(1);
         let Some(index) = index else {
             return Ok(None);
         };
-        let input = &mut self.reader.inputs[index];
+        let input = &mut self.lang.reader.inputs[index];
         let mut lexer = Lexer::new(&input.text, input.pos..input.end);
         let token = lexer
             .next()
@@ -691,17 +704,17 @@ impl<'a> Evaluator<'a> {
 
     /// A raw token of input `input` as the reader hands it on (unbound).
     fn tok(&self, raw: Token, input: usize) -> Tok {
-        let i = &self.reader.inputs[input];
+        let i = &self.lang.reader.inputs[input];
         Tok {
             kind: raw.kind,
             file: i.file,
             start: raw.start,
             end: raw.end,
-            run: self.reader.run,
+            run: self.lang.reader.run,
             context: i.context.clone(),
             binding: None,
             stand_in: false,
-            repeat: i.kind == InputKind::Macro || self.reader.loops > 0,
+            repeat: i.kind == InputKind::Macro || self.lang.reader.loops > 0,
             unread: false,
         }
     }
@@ -719,16 +732,16 @@ impl<'a> Evaluator<'a> {
         if self.in_function_params(word) {
             return Ok(Some(tok));
         }
-        if self.macros.contains_key(word) {
+        if self.lang.macros.contains_key(word) {
             self.call_macro(word, &tok)?;
             return Ok(None);
         }
-        if word == "rand" && self.reader.functions.open.is_empty() {
+        if word == "rand" && self.lang.reader.functions.open.is_empty() {
             if let Some(value) = self.rand_in_place(&tok)? {
                 return Ok(Some(value));
             }
         }
-        tok.binding = self.env.get(word).cloned();
+        tok.binding = self.lang.env.get(word).cloned();
         Ok(Some(tok))
     }
 
@@ -750,7 +763,7 @@ impl<'a> Evaluator<'a> {
                 ev.call("rand", tok.span(), syntax::Slot::NONE, &exprs, span)
             })
             .map_err(|d| self.noted(d, Some(&args)))?;
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         Ok(Some(Tok {
             end: if span.file == tok.file {
                 end.max(tok.end)
@@ -766,7 +779,7 @@ impl<'a> Evaluator<'a> {
     /// Whether `word` is a parameter of a function whose body (or parameter list) is being
     /// read: left unbound.
     fn in_function_params(&self, word: &str) -> bool {
-        let f = &self.reader.functions;
+        let f = &self.lang.reader.functions;
         if f.open.is_empty() && matches!(f.state, FunctionState::Idle) {
             return false;
         }
@@ -780,7 +793,7 @@ impl<'a> Evaluator<'a> {
     fn track_functions(&mut self, tok: &Tok) {
         let text = &self.sources.file(tok.file).text;
         let text = &text[tok.start as usize..tok.end as usize];
-        let f = &mut self.reader.functions;
+        let f = &mut self.lang.reader.functions;
         // (Outside functions only the word `function` matters.)
         if f.open.is_empty() && matches!(f.state, FunctionState::Idle) {
             if tok.kind == TokenKind::Word && text == "function" && !tok.stand_in {
@@ -828,7 +841,7 @@ impl<'a> Evaluator<'a> {
     /// A plain statement where one starts (literal values only, as `syntax::plain` reads
     /// them), read in one pass with its names bound; `None` to read it the usual way.
     fn plain_statement(&mut self) -> Option<Statement> {
-        let r = &self.reader;
+        let r = &self.lang.reader;
         let input = r.inputs.last()?;
         if !input.pushback.is_empty() || r.hold || r.raw_words || !r.functions.open.is_empty() {
             return None;
@@ -841,9 +854,9 @@ impl<'a> Evaluator<'a> {
         if !self.bind_names(&mut node, &mut bindings) {
             return None;
         }
-        let input = self.reader.inputs.last_mut()?;
+        let input = self.lang.reader.inputs.last_mut()?;
         input.pos = end;
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         Some(Statement::Plain(node, bindings))
     }
 
@@ -852,10 +865,10 @@ impl<'a> Evaluator<'a> {
     /// starts where the fast lanes look for it.
     fn leading_directives(&mut self) -> Result<()> {
         loop {
-            let Some(input) = self.reader.inputs.last() else {
+            let Some(input) = self.lang.reader.inputs.last() else {
                 return Ok(());
             };
-            if !input.pushback.is_empty() || self.reader.hold || self.reader.raw_words {
+            if !input.pushback.is_empty() || self.lang.reader.hold || self.lang.reader.raw_words {
                 return Ok(());
             }
             let ahead = Lexer::new(&input.text, input.pos..input.end).next();
@@ -865,8 +878,8 @@ impl<'a> Evaluator<'a> {
             if raw.kind != TokenKind::Directive {
                 return Ok(());
             }
-            let index = self.reader.inputs.len() - 1;
-            self.reader.inputs[index].pos = raw.end as usize;
+            let index = self.lang.reader.inputs.len() - 1;
+            self.lang.reader.inputs[index].pos = raw.end as usize;
             let tok = self.tok(raw, index);
             self.run_directive(&tok)?;
         }
@@ -876,11 +889,11 @@ impl<'a> Evaluator<'a> {
     /// (the statement is then read the usual way, calling it).
     fn bind_names(&self, node: &mut Node, bindings: &mut Vec<Option<Arc<Value>>>) -> bool {
         if node.kind == NodeKind::IdentRef {
-            if self.macros.contains_key(node.word.as_str()) {
+            if self.lang.macros.contains_key(node.word.as_str()) {
                 return false;
             }
             node.slot = syntax::Slot(bindings.len() as u32);
-            bindings.push(self.env.get(node.word.as_str()).cloned());
+            bindings.push(self.lang.env.get(node.word.as_str()).cloned());
         }
         node.args
             .iter_mut()
@@ -900,11 +913,11 @@ impl<'a> Evaluator<'a> {
     ) -> bool {
         match &mut e.kind {
             syntax::ExprKind::Ident(name, slot) => {
-                if self.macros.contains_key(name.as_str()) {
+                if self.lang.macros.contains_key(name.as_str()) {
                     return false;
                 }
                 *slot = syntax::Slot(bindings.len() as u32);
-                bindings.push(self.env.get(name.as_str()).cloned());
+                bindings.push(self.lang.env.get(name.as_str()).cloned());
                 true
             }
             syntax::ExprKind::Binary(_, a, b) => {
@@ -1031,7 +1044,7 @@ impl<'a> Evaluator<'a> {
         open: &mut Vec<Span>,
         mut angles: Option<&mut usize>,
     ) -> Result<bool> {
-        let r = &self.reader;
+        let r = &self.lang.reader;
         let Some(input) = r.inputs.last() else {
             return Ok(false);
         };
@@ -1063,14 +1076,14 @@ impl<'a> Evaluator<'a> {
             let mut this_ends_value = false;
             match t.kind {
                 TokenKind::Word => {
-                    if self.macros.contains_key(word)
+                    if self.lang.macros.contains_key(word)
                         || matches!(word, "rand" | "function")
                         || (word.len() >= 10 && syntax::bulk::KEYWORDS.contains(&word))
                     {
                         stop = before;
                         break;
                     }
-                    let binding = self.env.get(word).cloned();
+                    let binding = self.lang.env.get(word).cloned();
                     this_ends_value = ends_value(binding.as_ref());
                     words.push((t.start, binding));
                 }
@@ -1112,18 +1125,18 @@ impl<'a> Evaluator<'a> {
         let Some((start, run_end)) = run else {
             return Ok(false);
         };
-        let input = self.reader.inputs.last_mut().expect("an input");
+        let input = self.lang.reader.inputs.last_mut().expect("an input");
         input.pos = stop;
         let first = Tok {
             kind: TokenKind::Punct,
             file,
             start: start as u32,
             end: run_end as u32,
-            run: self.reader.run,
+            run: self.lang.reader.run,
             context: input.context.clone(),
             binding: None,
             stand_in: false,
-            repeat: input.kind == InputKind::Macro || self.reader.loops > 0,
+            repeat: input.kind == InputKind::Macro || self.lang.reader.loops > 0,
             unread: false,
         };
         em.push_run(&first, &text, &mut words);
@@ -1136,7 +1149,7 @@ impl<'a> Evaluator<'a> {
     /// the fast lane (`syntax::bulk`) straight from the text, a marker standing for its body
     /// in the unit.
     fn bulk_list(&mut self, em: &mut Emitter) -> bool {
-        let Some(input) = self.reader.inputs.last() else {
+        let Some(input) = self.lang.reader.inputs.last() else {
             return false;
         };
         if !input.pushback.is_empty() {
@@ -1157,7 +1170,7 @@ impl<'a> Evaluator<'a> {
             file: input.file,
             start: start as u32,
             end: end as u32,
-            run: self.reader.run,
+            run: self.lang.reader.run,
             context: input.context.clone(),
             binding: None,
             stand_in: false,
@@ -1170,8 +1183,8 @@ impl<'a> Evaluator<'a> {
         em.push(&open_tok, &text);
         em.push_list(list, file, open + 1, close);
         em.push(&close_tok, &text);
-        self.reader.inputs.last_mut().expect("an input").pos = close + 1;
-        self.reader.run += 1;
+        self.lang.reader.inputs.last_mut().expect("an input").pos = close + 1;
+        self.lang.reader.run += 1;
         true
     }
 
@@ -1207,7 +1220,7 @@ impl<'a> Evaluator<'a> {
             let bindings = std::mem::take(&mut entry.bindings);
             let (value, bindings) = self.with_bindings(bindings, |ev| {
                 let value = ev.eval(&expr);
-                (value, std::mem::take(&mut ev.bindings))
+                (value, std::mem::take(&mut ev.lang.bindings))
             });
             let value = value.map_err(|d| self.noted(d, Some(&entry)))?;
             let span = entry.unit.span(0, entry.unit.text.len());
@@ -1226,7 +1239,7 @@ impl<'a> Evaluator<'a> {
             };
             entries.push((value, stand_in));
         };
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         let text = Arc::clone(&self.sources.file(open.file).text);
         em.push(&open, &text);
         match close.as_ref().and_then(|c| vector_list(&entries, &open, c)) {
@@ -1450,9 +1463,9 @@ impl<'a> Evaluator<'a> {
                         let dot = self.next_token()?.expect("peeked");
                         self.emit(em, &dot);
                         // (The member's name is a word as written.)
-                        self.reader.raw_words = true;
+                        self.lang.reader.raw_words = true;
                         let member = self.next_token();
-                        self.reader.raw_words = false;
+                        self.lang.reader.raw_words = false;
                         if let Some(m) = member? {
                             self.emit(em, &m);
                         }
@@ -1497,9 +1510,9 @@ impl<'a> Evaluator<'a> {
 
     /// The next word, as written (not bound, no macro called): a name being declared.
     fn raw_word(&mut self, at: Span, what: &str) -> Result<(String, Span)> {
-        self.reader.raw_words = true;
+        self.lang.reader.raw_words = true;
         let t = self.next_token();
-        self.reader.raw_words = false;
+        self.lang.reader.raw_words = false;
         match t? {
             Some(t) if t.kind == TokenKind::Word => Ok((self.text_of(&t).to_string(), t.span())),
             Some(t) => Err(Diagnostic::error(format!("expected {what}"), t.span())),
@@ -1527,9 +1540,9 @@ impl<'a> Evaluator<'a> {
                     Some(open) if open.is(self, "(") => {
                         let mut em = Emitter::default();
                         self.emit(&mut em, &open);
-                        self.reader.raw_words = true;
+                        self.lang.reader.raw_words = true;
                         let name = self.next_token();
-                        self.reader.raw_words = false;
+                        self.lang.reader.raw_words = false;
                         let name = name?;
                         let closes = name.as_ref().is_some_and(|n| n.is(self, ")"));
                         if let Some(name) = name {
@@ -1556,7 +1569,7 @@ impl<'a> Evaluator<'a> {
                 };
                 self.branch(defined == (word == "ifdef"), at)
             }
-            "elseif" | "else" => match self.reader.blocks.last() {
+            "elseif" | "else" => match self.lang.reader.blocks.last() {
                 Some(b) if matches!(b.kind, BlockKind::If) && self.block_is_here(b) => {
                     // The branch read ends: the rest of the conditional is passed over.
                     self.skip_to(&["end"], at)?;
@@ -1572,7 +1585,7 @@ impl<'a> Evaluator<'a> {
             },
             "end" => self.end_directive(at),
             "while" => {
-                let cond = self.reader.inputs.last().map_or(0, |i| i.pos);
+                let cond = self.lang.reader.inputs.last().map_or(0, |i| i.pos);
                 if self.condition(at, "#while")? {
                     self.charge(1, "#while", at)?;
                     self.push_block(BlockKind::While { cond, end: None }, at);
@@ -1583,7 +1596,7 @@ impl<'a> Evaluator<'a> {
             }
             "for" => self.for_directive(at),
             "switch" => self.switch_directive(at),
-            "case" | "range" => match self.reader.blocks.last() {
+            "case" | "range" => match self.lang.reader.blocks.last() {
                 // A clause read into from the one before it (no `#break`): its test is passed
                 // over.
                 Some(b) if matches!(b.kind, BlockKind::Switch) && self.block_is_here(b) => {
@@ -1613,25 +1626,25 @@ impl<'a> Evaluator<'a> {
                         Ok(())
                     }
                     _ => {
-                        self.debug_output.push_str(&text);
+                        self.lang.debug_output.push_str(&text);
                         Ok(())
                     }
                 }
             }
             "fopen" => {
                 let mut em = Emitter::default();
-                self.reader.raw_words = true;
+                self.lang.reader.raw_words = true;
                 let name = self.next_token();
-                self.reader.raw_words = false;
+                self.lang.reader.raw_words = false;
                 if let Some(name) = name? {
                     self.emit(&mut em, &name);
                 }
                 if let Some(t) = self.next_token()? {
                     self.operand_from(&mut em, t)?;
                 }
-                self.reader.raw_words = true;
+                self.lang.reader.raw_words = true;
                 let mode = self.next_token();
-                self.reader.raw_words = false;
+                self.lang.reader.raw_words = false;
                 if let Some(mode) = mode? {
                     self.emit(&mut em, &mode);
                 }
@@ -1694,7 +1707,7 @@ impl<'a> Evaluator<'a> {
             // A `#` before a word that is no directive is nothing to POV-Ray: the word is read
             // as if the `#` were not there (`#sphere { … }`).
             _ => {
-                let input = self.reader.inputs.last_mut().expect("an input");
+                let input = self.lang.reader.inputs.last_mut().expect("an input");
                 input.pos = at.start as usize;
                 Ok(())
             }
@@ -1726,13 +1739,13 @@ impl<'a> Evaluator<'a> {
                 let v = self
                     .with_bindings(unit.bindings.clone(), |ev| ev.float(&expr))
                     .map_err(|d| self.noted(d, Some(&unit)))?;
-                self.version = Some(v);
+                self.lang.version = Some(v);
                 if self.peek_held_is(";")? {
                     self.warn(Diagnostic::warning(
                         "`version` without its `#` but with a `;`: POV-Ray stops reading the scene here, and so does trace (write `#version`)",
                         at,
                     ));
-                    self.reader.inputs.clear();
+                    self.lang.reader.inputs.clear();
                     return Ok(None);
                 }
                 self.warn(wants_hash());
@@ -1759,7 +1772,7 @@ impl<'a> Evaluator<'a> {
                 file: name_span.file,
                 start: name_span.start,
                 end: name_span.end,
-                run: self.reader.run,
+                run: self.lang.reader.run,
                 context: None,
                 binding: None,
                 stand_in: false,
@@ -1780,7 +1793,7 @@ impl<'a> Evaluator<'a> {
                 .with_bindings(em.bindings.clone(), |ev| ev.unassign_element(&node))
                 .map_err(|d| self.noted(d, Some(&em)));
         }
-        if self.env.remove(&name).is_none() && self.macros.remove(&name).is_none() {
+        if self.lang.env.remove(&name).is_none() && self.lang.macros.remove(&name).is_none() {
             self.warn(Diagnostic::warning(
                 format!("`#undef {name}`: `{name}` is not declared (POV-Ray warns too)"),
                 name_span,
@@ -1848,33 +1861,33 @@ impl<'a> Evaluator<'a> {
     }
 
     fn push_block(&mut self, kind: BlockKind, at: Span) {
-        let input = self.reader.inputs.len() - 1;
-        self.reader.loops += usize::from(is_loop(&kind));
-        self.reader.blocks.push(Block { kind, input, at });
+        let input = self.lang.reader.inputs.len() - 1;
+        self.lang.reader.loops += usize::from(is_loop(&kind));
+        self.lang.reader.blocks.push(Block { kind, input, at });
     }
 
     /// Closes the innermost block.
     fn pop_block(&mut self) {
-        if let Some(b) = self.reader.blocks.pop() {
-            self.reader.loops -= usize::from(is_loop(&b.kind));
+        if let Some(b) = self.lang.reader.blocks.pop() {
+            self.lang.reader.loops -= usize::from(is_loop(&b.kind));
         }
     }
 
     /// Closes the blocks from the `first`-th on.
     fn truncate_blocks(&mut self, first: usize) {
-        while self.reader.blocks.len() > first {
+        while self.lang.reader.blocks.len() > first {
             self.pop_block();
         }
     }
 
     /// Whether block `b` was opened in the input being read.
     fn block_is_here(&self, b: &Block) -> bool {
-        b.input + 1 == self.reader.inputs.len()
+        b.input + 1 == self.lang.reader.inputs.len()
     }
 
     /// `#end`: closes the innermost block (a loop goes round again if its test holds).
     fn end_directive(&mut self, at: Span) -> Result<()> {
-        let Some(block) = self.reader.blocks.last() else {
+        let Some(block) = self.lang.reader.blocks.last() else {
             return Err(Diagnostic::error("#end without a directive to end", at));
         };
         if !self.block_is_here(block) {
@@ -1885,19 +1898,19 @@ impl<'a> Evaluator<'a> {
         }
         let input = block.input;
         let block_at = block.at;
-        match &mut self.reader.blocks.last_mut().expect("a block").kind {
+        match &mut self.lang.reader.blocks.last_mut().expect("a block").kind {
             BlockKind::If | BlockKind::Switch => {
                 self.pop_block();
             }
             BlockKind::While { cond, end } => {
                 let cond = *cond;
-                let after = self.reader.inputs[input].pos;
+                let after = self.lang.reader.inputs[input].pos;
                 *end = Some(after);
-                self.reader.inputs[input].pos = cond;
+                self.lang.reader.inputs[input].pos = cond;
                 if self.condition(block_at, "#while")? {
                     self.charge(1, "#while", block_at)?;
                 } else {
-                    self.reader.inputs[input].pos = after;
+                    self.lang.reader.inputs[input].pos = after;
                     self.pop_block();
                 }
             }
@@ -1909,14 +1922,14 @@ impl<'a> Evaluator<'a> {
             } => {
                 let (var, last, step, body) = (var.clone(), *last, *step, *body);
                 // The body may change the counter, as in POV-Ray.
-                let i = match self.env.get(&var).map(|v| &**v) {
+                let i = match self.lang.env.get(&var).map(|v| &**v) {
                     Some(Value::Float(v)) => *v,
                     _ => last,
                 } + step;
                 if (step > 0.0 && i <= last + 1e-10) || (step < 0.0 && i >= last - 1e-10) {
                     self.charge(1, "#for", block_at)?;
                     self.set(var, Value::Float(i));
-                    self.reader.inputs[input].pos = body;
+                    self.lang.reader.inputs[input].pos = body;
                 } else {
                     self.pop_block();
                 }
@@ -1938,7 +1951,7 @@ impl<'a> Evaluator<'a> {
             step,
         } = node.view()
         else {
-            return Err(super::malformed(&node, "#for"));
+            return Err(crate::eval::malformed(&node, "#for"));
         };
         let var = counter.word.to_string();
         let (start, last, step) = self
@@ -1961,7 +1974,7 @@ impl<'a> Evaluator<'a> {
         self.set(var.clone(), Value::Float(start));
         if (step > 0.0 && start <= last + 1e-10) || (step < 0.0 && start >= last - 1e-10) {
             self.charge(1, "#for", at)?;
-            let body = self.reader.inputs.last().map_or(0, |i| i.pos);
+            let body = self.lang.reader.inputs.last().map_or(0, |i| i.pos);
             self.push_block(
                 BlockKind::For {
                     var,
@@ -2002,7 +2015,7 @@ impl<'a> Evaluator<'a> {
                         syntax::parse_head(u, Head::Range)
                     })?;
                     let View::RangeHead { low, high } = node.view() else {
-                        return Err(super::malformed(&node, "#range"));
+                        return Err(crate::eval::malformed(&node, "#range"));
                     };
                     let (lo, hi) = self
                         .with_bindings(unit.bindings.clone(), |ev| {
@@ -2024,21 +2037,22 @@ impl<'a> Evaluator<'a> {
     /// `#break`: leaves the innermost loop or `#switch` (the blocks inside it too), or else
     /// returns from the macro being read.
     fn break_directive(&mut self, at: Span) -> Result<()> {
-        let here = self.reader.inputs.len() - 1;
+        let here = self.lang.reader.inputs.len() - 1;
         let target = self
+            .lang
             .reader
             .blocks
             .iter()
             .rposition(|b| b.input == here && !matches!(b.kind, BlockKind::If));
         let Some(target) = target else {
             // In a macro (outside its loops): the macro returns here, as in POV-Ray.
-            if self.reader.inputs[here].kind == InputKind::Macro {
-                let first = self.reader.blocks.partition_point(|b| b.input < here);
+            if self.lang.reader.inputs[here].kind == InputKind::Macro {
+                let first = self.lang.reader.blocks.partition_point(|b| b.input < here);
                 self.truncate_blocks(first);
-                let input = &mut self.reader.inputs[here];
+                let input = &mut self.lang.reader.inputs[here];
                 input.pos = input.end;
                 input.pushback.clear();
-                self.reader.run += 1;
+                self.lang.reader.run += 1;
                 return Ok(());
             }
             return Err(Diagnostic::error(
@@ -2047,7 +2061,7 @@ impl<'a> Evaluator<'a> {
             ));
         };
         // Blocks still open inside the target each have an `#end` to pass.
-        let open = self.reader.blocks.len() - target;
+        let open = self.lang.reader.blocks.len() - target;
         for _ in 0..open {
             self.skip_to(&["end"], at)?;
         }
@@ -2059,8 +2073,8 @@ impl<'a> Evaluator<'a> {
     /// (nested blocks passed whole): the directive found and where it stands. The end of the
     /// input first is an error about the directive at `from`.
     fn skip_to(&mut self, stops: &[&str], from: Span) -> Result<(String, Span)> {
-        self.reader.run += 1;
-        let Some(input) = self.reader.inputs.last_mut() else {
+        self.lang.reader.run += 1;
+        let Some(input) = self.lang.reader.inputs.last_mut() else {
             return Err(Diagnostic::error("no #end for this directive", from));
         };
         input.pushback.clear();
@@ -2100,22 +2114,22 @@ impl<'a> Evaluator<'a> {
     /// `#macro Name(A, B …) body #end`: the body is kept where it stands, read at each call.
     fn macro_directive(&mut self, at: Span) -> Result<()> {
         let mut em = Emitter::default();
-        self.reader.raw_words = true;
+        self.lang.reader.raw_words = true;
         let head = self.macro_head(&mut em);
-        self.reader.raw_words = false;
+        self.lang.reader.raw_words = false;
         head?;
         let em = em.finish();
         let node = self.parsed(&em, Parse::Head(Head::Macro), |u| {
             syntax::parse_head(u, Head::Macro)
         })?;
-        let input = self.reader.inputs.last().expect("an input");
+        let input = self.lang.reader.inputs.last().expect("an input");
         let (file, start) = (input.file, input.pos);
         let (_, end_at) = self.skip_to(&["end"], at)?;
         let View::MacroDef { name, params } = node.view() else {
-            return Err(super::malformed(&node, "#macro"));
+            return Err(crate::eval::malformed(&node, "#macro"));
         };
         let params = params.iter().map(|p| p.word.to_string()).collect();
-        self.macros.insert(
+        self.lang.macros.insert(
             name.word.to_string(),
             Macro {
                 params,
@@ -2145,7 +2159,7 @@ impl<'a> Evaluator<'a> {
     /// Calls macro `name`, whose name is `tok`: reads the arguments, binds the parameters in
     /// a new frame and goes on reading in the body.
     fn call_macro(&mut self, name: &str, tok: &Tok) -> Result<()> {
-        let m = self.macros.get(name).cloned().expect("a macro");
+        let m = self.lang.macros.get(name).cloned().expect("a macro");
         let args = self.parenthesis(tok.span(), &format!("macro `{name}`"))?;
         let exprs = self.parsed(&args, Parse::Args, syntax::parse_args)?;
         if exprs.len() != m.params.len() {
@@ -2166,7 +2180,7 @@ impl<'a> Evaluator<'a> {
             ));
         }
         self.charge(MACRO_CALL_STEPS, "macro call", tok.span())?;
-        if self.frames.len() >= MAX_MACRO_DEPTH {
+        if self.lang.frames.len() >= MAX_MACRO_DEPTH {
             return Err(Diagnostic::error(
                 format!("macros nested more than {MAX_MACRO_DEPTH} deep (endless recursion?)"),
                 tok.span(),
@@ -2191,7 +2205,7 @@ impl<'a> Evaluator<'a> {
                 }
             }
         }
-        self.frames.push(Frame {
+        self.lang.frames.push(Frame {
             saved: Vec::new(),
             by_reference,
         });
@@ -2201,11 +2215,16 @@ impl<'a> Evaluator<'a> {
         }
         let text = self.sources.file(m.body.file).text.clone();
         let context = Some(Arc::new(Context {
-            parent: self.reader.inputs.last().and_then(|i| i.context.clone()),
+            parent: self
+                .lang
+                .reader
+                .inputs
+                .last()
+                .and_then(|i| i.context.clone()),
             macro_name: Some(name.to_string()),
             at: tok.span(),
         }));
-        self.reader.inputs.push(Input {
+        self.lang.reader.inputs.push(Input {
             file: m.body.file,
             text,
             pos: m.body.start as usize,
@@ -2214,24 +2233,29 @@ impl<'a> Evaluator<'a> {
             context,
             pushback: Vec::new(),
         });
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         Ok(())
     }
 
     /// Ends the macro bodies that nothing but blanks and comments remain of (what the next
     /// token read would do first), down to `floor` inputs open.
     fn settle(&mut self, floor: usize) {
-        while let Some(input) = self.reader.inputs.last() {
-            if self.reader.inputs.len() <= floor {
+        while let Some(input) = self.lang.reader.inputs.last() {
+            if self.lang.reader.inputs.len() <= floor {
                 return;
             }
             let rest =
                 crate::syntax::lexer::skip_trivia(input.text.as_bytes(), input.pos, input.end);
-            let here = self.reader.inputs.len() - 1;
+            let here = self.lang.reader.inputs.len() - 1;
             if input.kind != InputKind::Macro
                 || !input.pushback.is_empty()
                 || rest != Ok(input.end)
-                || self.reader.blocks.last().is_some_and(|b| b.input == here)
+                || self
+                    .lang
+                    .reader
+                    .blocks
+                    .last()
+                    .is_some_and(|b| b.input == here)
             {
                 return;
             }
@@ -2243,21 +2267,21 @@ impl<'a> Evaluator<'a> {
     /// The current input ends: its blocks must be closed; a macro returns, an included file's
     /// scope closes.
     fn end_input(&mut self) -> Result<()> {
-        let here = self.reader.inputs.len() - 1;
-        if let Some(b) = self.reader.blocks.last().filter(|b| b.input == here) {
+        let here = self.lang.reader.inputs.len() - 1;
+        if let Some(b) = self.lang.reader.blocks.last().filter(|b| b.input == here) {
             let at = b.at;
             return Err(Diagnostic::error(
                 "this directive has no #end (the file or macro ends first)",
                 at,
             ));
         }
-        let input = self.reader.inputs.pop().expect("an input");
-        self.reader.run += 1;
+        let input = self.lang.reader.inputs.pop().expect("an input");
+        self.lang.reader.run += 1;
         match input.kind {
             InputKind::Scene => {}
             InputKind::Include => {
                 self.return_from_macro();
-                self.include_depth -= 1;
+                self.lang.include_depth -= 1;
             }
             InputKind::Macro => self.return_from_macro(),
         }
@@ -2269,7 +2293,7 @@ impl<'a> Evaluator<'a> {
         let unit = self.operand_unit(at)?;
         let name = self.string_of(&unit)?;
         let span = unit.unit.span(0, unit.unit.text.len());
-        if self.include_depth >= MAX_INCLUDE_DEPTH {
+        if self.lang.include_depth >= MAX_INCLUDE_DEPTH {
             return Err(Diagnostic::error(
                 format!("includes nested more than {MAX_INCLUDE_DEPTH} deep"),
                 span,
@@ -2286,10 +2310,15 @@ impl<'a> Evaluator<'a> {
             .map_err(|e| Diagnostic::error(format!("cannot read {}: {e}", path.display()), span))?;
         let file = self.sources.add(&path, text);
         let text = self.sources.file(file).text.clone();
-        self.include_depth += 1;
-        self.frames.push(Frame::default());
+        self.lang.include_depth += 1;
+        self.lang.frames.push(Frame::default());
         let context = Some(Arc::new(Context {
-            parent: self.reader.inputs.last().and_then(|i| i.context.clone()),
+            parent: self
+                .lang
+                .reader
+                .inputs
+                .last()
+                .and_then(|i| i.context.clone()),
             macro_name: None,
             at: Span {
                 start: at.start,
@@ -2297,7 +2326,7 @@ impl<'a> Evaluator<'a> {
             },
         }));
         let end = text.len();
-        self.reader.inputs.push(Input {
+        self.lang.reader.inputs.push(Input {
             file,
             text,
             pos: 0,
@@ -2306,7 +2335,7 @@ impl<'a> Evaluator<'a> {
             context,
             pushback: Vec::new(),
         });
-        self.reader.run += 1;
+        self.lang.reader.run += 1;
         Ok(())
     }
 
@@ -2317,7 +2346,7 @@ impl<'a> Evaluator<'a> {
         let v = self
             .with_bindings(unit.bindings.clone(), |ev| ev.float(&expr))
             .map_err(|d| self.noted(d, Some(&unit)))?;
-        self.version = Some(v);
+        self.lang.version = Some(v);
         if !self.optional_semicolon()? {
             self.warn(Diagnostic::warning(
                 "`#version` wants a `;` after its number (POV-Ray warns too)",
@@ -2329,18 +2358,18 @@ impl<'a> Evaluator<'a> {
 
     /// `#declare Name = value;` / `#local Name = value;` (also `Name[i]…`, and
     /// `deprecated [once] "message"` before the name).
-    pub(super) fn declare_directive(&mut self, local: bool, at: Span) -> Result<()> {
+    pub(in crate::eval) fn declare_directive(&mut self, local: bool, at: Span) -> Result<()> {
         // (A local name belongs to the macro or file the directive stands in.)
-        let local = local.then_some(self.frames.len());
+        let local = local.then_some(self.lang.frames.len());
         // (The inputs open here: a macro the value calls may end before the name is bound, not
         // these; a macro's parameter named here is bound in its caller.)
-        let inputs = self.reader.inputs.len();
+        let inputs = self.lang.reader.inputs.len();
         if self.quick_declare(local)? {
             return Ok(());
         }
         // The head, to the `=`: the name as written, its subscripts read.
         let mut em = Emitter::default();
-        self.reader.raw_words = true;
+        self.lang.reader.raw_words = true;
         let mut name_read = false;
         loop {
             let t = self.next_token();
@@ -2354,7 +2383,7 @@ impl<'a> Evaluator<'a> {
             if t.kind == TokenKind::Word && !matches!(self.text_of(&t), "deprecated" | "once") {
                 name_read = true;
                 // (Subscripts are read as values.)
-                self.reader.raw_words = false;
+                self.lang.reader.raw_words = false;
             }
             let open = t.is(self, "[");
             self.emit(&mut em, &t);
@@ -2365,7 +2394,7 @@ impl<'a> Evaluator<'a> {
                 break;
             }
         }
-        self.reader.raw_words = false;
+        self.lang.reader.raw_words = false;
         let head = em.finish();
         let node = self.parsed(&head, Parse::Head(Head::Declare), |u| {
             syntax::parse_head(u, Head::Declare)
@@ -2409,7 +2438,7 @@ impl<'a> Evaluator<'a> {
             .chars()
             .take_while(|c| c.is_alphanumeric() || *c == '_')
             .collect();
-        if let Some(reason) = super::keywords::reason(&word) {
+        if let Some(reason) = crate::eval::lang::keywords::reason(&word) {
             let span = value.unit.span(0, word.len().max(1));
             return self.noted(
                 Diagnostic::error(format!("unsupported: `{word}` ({reason})"), span),
