@@ -702,6 +702,14 @@ fn describe(rule: Rule) -> Option<&'static str> {
 }
 
 /// Lowering from pest pairs to the syntax tree, one method per family of rules.
+/// Whether a comma stands between two pairs of one parse (comments aside).
+fn comma_between(a: &Pair<'_, Rule>, b: &Pair<'_, Rule>) -> bool {
+    let text = a.as_span().get_input().as_bytes();
+    let (start, end) = (a.as_span().end(), b.as_span().start());
+    let at = lexer::skip_trivia(text, start, end).unwrap_or(start);
+    at < end && text[at] == b','
+}
+
 struct Lower<'u> {
     file: FileId,
     /// Byte offset of the parsed text in its file.
@@ -736,6 +744,28 @@ impl<'u> Lower<'u> {
             Some(unit) => unit.span(start, end),
             None => Span::new(self.file, start, end),
         }
+    }
+
+    /// A vector's components. POV-Ray reads at most five: past the fifth, a component written
+    /// without a comma before it takes the fifth's place (`<1 2 3 4 5 6 7>` is `<1, 2, 3, 4,
+    /// 7>`; the components it replaces are not evaluated here, nor is their text checked
+    /// further than the grammar did), while a comma there is an error (left for evaluation to
+    /// report, as a vector of more than five).
+    fn vector_items(&self, pair: Pair<'_, Rule>) -> Vec<Expr> {
+        let pairs: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
+        let replaced = pairs.len() > 5
+            && pairs
+                .windows(2)
+                .skip(4)
+                .all(|w| !comma_between(&w[0], &w[1]));
+        let mut items = Vec::with_capacity(pairs.len().min(5));
+        let last = pairs.len() - 1;
+        for (i, p) in pairs.into_iter().enumerate() {
+            if !replaced || i < 4 || i == last {
+                items.push(self.expr(p));
+            }
+        }
+        items
     }
 
     /// The binding slot of the word starting where `pair` starts.
@@ -1176,11 +1206,26 @@ impl<'u> Lower<'u> {
             }
             Rule::plain_vector => {
                 let text = pair.as_str();
-                let numbers: Vec<f64> = text[1..text.len() - 1]
-                    .split(|c: char| c == ',' || c.is_whitespace())
-                    .filter(|n| !n.is_empty())
-                    .map(|n| lexer::number_value(n.trim()))
-                    .collect();
+                // Each number, and whether a comma stands before it.
+                let mut numbers: Vec<f64> = Vec::new();
+                let mut commas: Vec<bool> = Vec::new();
+                let mut comma = false;
+                for piece in text[1..text.len() - 1].split_inclusive(',') {
+                    for n in piece.split(|c: char| c == ',' || c.is_whitespace()) {
+                        if !n.is_empty() {
+                            numbers.push(lexer::number_value(n));
+                            commas.push(comma);
+                            comma = false;
+                        }
+                    }
+                    comma = piece.ends_with(',');
+                }
+                // Past the fifth, a number without a comma takes the fifth's place (see
+                // `vector_items`).
+                if numbers.len() > 5 && !commas[5..].contains(&true) {
+                    numbers[4] = numbers[numbers.len() - 1];
+                    numbers.truncate(5);
+                }
                 if numbers.len() <= 5 {
                     let mut c = [0.0; 5];
                     c[..numbers.len()].copy_from_slice(&numbers);
@@ -1214,7 +1259,7 @@ impl<'u> Lower<'u> {
                 span,
             },
             Rule::vector => Expr {
-                kind: ExprKind::Vector(pair.into_inner().map(|p| self.expr(p)).collect()),
+                kind: ExprKind::Vector(self.vector_items(pair)),
                 span,
             },
             Rule::ident => Expr {

@@ -51,6 +51,54 @@ fn vector_elements_stop_before_closing_angle() {
 }
 
 #[test]
+fn past_five_a_component_without_a_comma_takes_the_fifths_place() {
+    // POV-Ray 3.7: <1 2 3 4 5 6 7> is <1, 2, 3, 4, 7>; a comma past the fifth is refused
+    // (left to evaluation, which reports a vector of more than five).
+    let numbers = |e: &Expr| -> Vec<f64> {
+        match &e.kind {
+            ExprKind::PlainVector(c, n) => c[..*n as usize].to_vec(),
+            ExprKind::Vector(items) => items
+                .iter()
+                .map(|i| match i.kind {
+                    ExprKind::Number(n) => n,
+                    _ => f64::NAN,
+                })
+                .collect(),
+            _ => panic!("a vector expected"),
+        }
+    };
+    for text in [
+        "<1 2 3 4 5 6 7>",
+        "<1, 2, 3, 4, 5 6 7>",
+        "<1, 2, 3, 4 /* , */ 5 7>",
+    ] {
+        assert_eq!(
+            numbers(&value(text).unwrap()),
+            [1.0, 2.0, 3.0, 4.0, 7.0],
+            "{text}"
+        );
+    }
+    // The same through the grammar's general vector (an expression in it).
+    let e = value("<1, 2, 3, 4, 5 6 (7)>").unwrap();
+    let ExprKind::Vector(items) = &e.kind else {
+        panic!("a vector expected")
+    };
+    assert_eq!(items.len(), 5);
+    assert_eq!(items[4].span.start, 18); // the 7 in (7)
+    for text in [
+        "<1, 2, 3, 4, 5, 6>",
+        "<1 2 3 4 5 6, 7>",
+        "<1, 2, 3, 4, 5, (6)>",
+    ] {
+        assert_eq!(
+            numbers(&value(text).unwrap()).len(),
+            6 + usize::from(text.contains('7')),
+            "{text}"
+        );
+    }
+}
+
+#[test]
 fn vector_commas_are_optional_as_in_povray() {
     let nodes = parse("sphere { <4 0 x.y>, 1 }").expect("parses");
     let ExprKind::Vector(items) = &nodes[0].args[0].kind else {
