@@ -74,8 +74,7 @@ pub use eval::{Clock, DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
 pub use render::{
-    Antialias, Aov, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
-    request_stop, stop_requested,
+    Antialias, Aov, Cancel, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
 };
 pub use syntax::{MAX_NESTING, is_identifier};
 

@@ -253,13 +253,17 @@ enum Command {
 /// Whether a render is running (a first Ctrl-C then stops it and writes what is done).
 static RENDERING: AtomicBool = AtomicBool::new(false);
 
+/// The token every render of this process is given: Ctrl-C cancels it (the signal is the
+/// process's, so the token is too; the library keeps no global).
+static CANCEL: std::sync::LazyLock<trace::Cancel> = std::sync::LazyLock::new(trace::Cancel::new);
+
 fn main() -> ExitCode {
     // A first Ctrl-C during a render stops it and writes the rows finished (a part that
     // `--continue` completes); another, or one at any other time, ends at once, leaving no
     // temporary file behind.
     let _ = ctrlc::set_handler(|| {
-        if RENDERING.load(Ordering::SeqCst) && !trace::stop_requested() {
-            trace::request_stop();
+        if RENDERING.load(Ordering::SeqCst) && !CANCEL.is_cancelled() {
+            CANCEL.cancel();
             eprintln!(
                 "\ntrace: stopping: writing the rows finished (Ctrl-C again to quit at once)"
             );
@@ -416,7 +420,7 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
             );
         }
         render_frame(args, &job, frame)?;
-        if trace::stop_requested() {
+        if CANCEL.is_cancelled() {
             break;
         }
     }
@@ -498,6 +502,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         progress: Some(progress.clone()),
         alpha: job.alpha,
         aovs: job.aovs.clone(),
+        cancel: CANCEL.clone(),
     };
     // Rendered beside the output, then moved (or cut, if stopped) into place: the output
     // only ever holds whole images and parts.

@@ -5,29 +5,17 @@
 //! parallel, and every pixel depends only on the scene and its own block, so the output is
 //! the same for any number of threads.
 
+mod cancel;
 mod lights;
 mod sampler;
 mod shade;
 
+pub use cancel::Cancel;
 pub use shade::RayCounts;
 
 use crate::film::{Film, Region, Rows};
 use crate::geometry::{Ray, counters};
 use crate::scene::{Gamma, Projection, Rgb, Scene};
-
-/// Whether the render should stop where it is and write what it finished.
-static STOP: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
-
-/// Asks the render running to stop: blocks not yet started are not rendered, and the rows
-/// finished are written (`RenderStats::stopped`).
-pub fn request_stop() {
-    STOP.store(true, std::sync::atomic::Ordering::SeqCst);
-}
-
-/// Whether [`request_stop`] was called.
-pub fn stop_requested() -> bool {
-    STOP.load(std::sync::atomic::Ordering::SeqCst)
-}
 
 /// A sample: its colour (x, y, z) and how much of it is the transparent background seen
 /// straight through (w: one minus its alpha).
@@ -115,6 +103,8 @@ pub struct RenderOptions {
     /// (the pixel's sampling decides how many) instead of POV-Ray's adaptive batches. Ignored
     /// by the other methods.
     pub sampled_blur: bool,
+    /// Stops the render when cancelled (a clone kept by the caller, e.g. for Ctrl-C).
+    pub cancel: Cancel,
 }
 
 /// An arbitrary output value layer: what the camera ray through a pixel's centre first meets,
@@ -172,6 +162,7 @@ impl Default for RenderOptions {
             aovs: Vec::new(),
             sampled_lights: false,
             sampled_blur: false,
+            cancel: Cancel::new(),
         }
     }
 }
@@ -218,7 +209,7 @@ pub struct RenderStats {
     /// Pixels whose value overflowed to NaN or infinity (only from extreme inputs, such as a
     /// filter of 1e300, where POV-Ray's pixels are NaN too): written black, and reported.
     pub non_finite: u64,
-    /// Rows of the region finished when the render was stopped ([`request_stop`]);
+    /// Rows of the region finished when the render was stopped ([`RenderOptions::cancel`]);
     /// `None` if it ran to the end. The rows after them are written black.
     pub stopped: Option<u32>,
 }
@@ -309,7 +300,7 @@ impl<'a> Bands<'a> {
     }
 
     /// Renders the next band: its rows' output values (of the region), or `None` after the
-    /// last row or once the render is stopped ([`request_stop`]: the band being
+    /// last row or once the render is stopped ([`RenderOptions::cancel`]: the band being
     /// rendered is dropped, and `stats.stopped` says how many rows were finished).
     pub fn next_band(&mut self) -> Option<Rows<'static>> {
         if self.next_block_row >= self.block_rows || self.stats.stopped.is_some() {
@@ -336,7 +327,7 @@ impl<'a> Bands<'a> {
                 .into_par_iter()
                 .with_max_len(1)
                 .map(|i| {
-                    if stop_requested() {
+                    if options.cancel.is_cancelled() {
                         return None;
                     }
                     let (bx, by) = (blocks_x.start + i % columns, i / columns);
@@ -1180,6 +1171,33 @@ mod tests {
         let loaded = crate::load_str(std::path::Path::new("bands.rt"), SCENE.into(), &options)
             .expect("the scene loads");
         Scene::build(&loaded.scene)
+    }
+
+    #[test]
+    fn a_cancelled_token_stops_its_render_and_no_other() {
+        let scene = built(40, 30);
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        let stopped = RenderOptions {
+            width: 40,
+            height: 30,
+            antialias: Antialias::Off,
+            ..RenderOptions::default()
+        };
+        stopped.cancel.cancel();
+        let r = render(&scene, &stopped, &pool);
+        assert_eq!(r.stats.stopped, Some(0));
+        assert_eq!(r.stats.samples, 0);
+        // A render of the same process with its own token runs to the end.
+        let whole = RenderOptions {
+            cancel: Cancel::new(),
+            ..stopped.clone()
+        };
+        let r = render(&scene, &whole, &pool);
+        assert_eq!(r.stats.stopped, None);
+        assert_eq!(r.stats.samples, 40 * 30);
     }
 
     #[test]
