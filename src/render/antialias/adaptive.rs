@@ -1,0 +1,101 @@
+//! POV-Ray's method 1 (`+AM1`, its default): a grid of samples in each pixel that differs
+//! from its left or top neighbour.
+
+use super::{Block, aa_encoded, differ};
+use crate::render::shade::Tracer;
+use crate::render::{Px, camera};
+use crate::scene::Rgb;
+
+/// The pixels of `block` with POV-Ray's method-1 logic, and the samples they took: the row
+/// above and the column left of the block are traced (centre samples) for comparison and
+/// count as already supersampled.
+pub(super) fn pixels(
+    block: &Block,
+    tracer: &mut Tracer,
+    threshold: f64,
+    depth: u32,
+) -> (Vec<Px>, u64) {
+    let (scene, camera_interiors) = (block.scene, block.camera_interiors);
+    let (w, h) = (block.options.width, block.options.height);
+    let (x0, x1, y0, y1) = (block.xs.start, block.xs.end, block.ys.start, block.ys.end);
+    // Local grid with one extra row above and one extra column on the left.
+    let gw = (x1 - x0 + 1) as usize;
+    let gh = (y1 - y0 + 1) as usize;
+    let mut value = vec![Px::ZERO; gw * gh];
+    // Each value encoded for comparisons, kept in step with `value`.
+    let mut encoded = vec![Rgb::ZERO; gw * gh];
+    let mut done = vec![false; gw * gh];
+    let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
+    let mut samples = 0u64;
+
+    if y0 > 0 {
+        for x in x0..x1 {
+            value[index(x, y0 - 1)] = block.centre(tracer, x, y0 - 1);
+            encoded[index(x, y0 - 1)] = aa_encoded(value[index(x, y0 - 1)].truncate(), scene.gamma);
+            done[index(x, y0 - 1)] = true;
+        }
+    }
+    if x0 > 0 {
+        for y in y0..y1 {
+            value[index(x0 - 1, y)] = block.centre(tracer, x0 - 1, y);
+            encoded[index(x0 - 1, y)] = aa_encoded(value[index(x0 - 1, y)].truncate(), scene.gamma);
+            done[index(x0 - 1, y)] = true;
+        }
+    }
+
+    let n = depth.clamp(1, 9);
+    // Grid offsets −½ + (k + ½)/n, written so that the middle one of an odd grid is exactly 0.
+    let offset = |k: u32| f64::from(2 * k + 1) / f64::from(2 * n) - 0.5;
+    let supersample = |tracer: &mut Tracer,
+                       value: &mut [Px],
+                       encoded: &mut [Rgb],
+                       x: u32,
+                       y: u32| {
+        // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
+        let centre_value = value[index(x, y)];
+        let mut sum = centre_value;
+        let mut traced = 0;
+        for b in 0..n {
+            for a in 0..n {
+                let (ox, oy) = (offset(a), offset(b));
+                if ox == 0.0 && oy == 0.0 {
+                    // The centre ray again (no jitter): its colour is known.
+                    sum += centre_value;
+                    continue;
+                }
+                traced += 1;
+                sum += camera::sample(tracer, camera_interiors, w, h, x as f64 + ox, y as f64 + oy);
+            }
+        }
+        value[index(x, y)] = sum / (n * n + 1) as f64;
+        encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma);
+        traced
+    };
+
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let c = block.centre(tracer, x, y);
+            samples += 1;
+            value[index(x, y)] = c;
+            let e = aa_encoded(c.truncate(), scene.gamma);
+            encoded[index(x, y)] = e;
+            let left_differs = x > 0 && differ(encoded[index(x - 1, y)], e, threshold);
+            let top_differs = y > 0 && differ(encoded[index(x, y - 1)], e, threshold);
+            if left_differs && !done[index(x - 1, y)] {
+                samples += supersample(tracer, &mut value, &mut encoded, x - 1, y);
+                done[index(x - 1, y)] = true;
+            }
+            if top_differs && !done[index(x, y - 1)] {
+                samples += supersample(tracer, &mut value, &mut encoded, x, y - 1);
+                done[index(x, y - 1)] = true;
+            }
+            if left_differs || top_differs {
+                samples += supersample(tracer, &mut value, &mut encoded, x, y);
+                done[index(x, y)] = true;
+            }
+        }
+    }
+
+    let pixels = block.pixels(&mut |x, y| value[index(x, y)]);
+    (pixels, samples)
+}

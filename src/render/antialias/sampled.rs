@@ -1,0 +1,99 @@
+//! trace's own sampler (method 3): stratified samples from each pixel's scrambled Sobol
+//! sequence where a pixel differs from a neighbour, until their estimated error is small.
+
+use super::{Block, SAMPLED_TOLERANCE, aa_encoded, differ};
+use crate::render::shade::Tracer;
+use crate::render::{Px, camera, sampler};
+use crate::scene::Rgb;
+
+/// The pixels of a block (row by row) with method 3 ([`super::Antialias::Sampled`]): centre samples
+/// for the block and a one-pixel border (traced again by the neighbouring block: the same
+/// rays), then stratified samples in the pixels that differ from a neighbour. (A first
+/// sample at the first point of the pixel's sequence instead of its centre was tried: it
+/// turns moiré into noise, but on smooth shading its error is the gradient's across the
+/// pixel, and the chart's scenes came out worse: basic_spheres 0.0093 against 0.0042.)
+pub(super) fn pixels(
+    block: &Block,
+    tracer: &mut Tracer,
+    threshold: f64,
+    depth: u32,
+) -> (Vec<Px>, u64) {
+    let (options, camera_interiors) = (block.options, block.camera_interiors);
+    let (xs, ys) = (block.xs.clone(), block.ys.clone());
+    let mut samples = 0u64;
+    let (w, h) = (options.width, options.height);
+    let gamma = tracer.scene.gamma;
+    let (gx0, gy0) = (xs.start.saturating_sub(1), ys.start.saturating_sub(1));
+    let (gx1, gy1) = ((xs.end + 1).min(w), (ys.end + 1).min(h));
+    let gw = (gx1 - gx0) as usize;
+    let at = |x: u32, y: u32| (y - gy0) as usize * gw + (x - gx0) as usize;
+    let mut centre = Vec::with_capacity(gw * (gy1 - gy0) as usize);
+    for y in gy0..gy1 {
+        for x in gx0..gx1 {
+            let seed = sampler::pixel_seed(x, y, 0);
+            tracer.light_stream = options.sampled_lights.then_some((seed, 0));
+            tracer.lens_stream = options.sampled_blur.then_some((seed, 0));
+            let v = camera::sample(tracer, camera_interiors, w, h, x as f64, y as f64);
+            centre.push((v, aa_encoded(v.truncate(), gamma)));
+        }
+    }
+    samples += centre.len() as u64;
+    let tolerance = threshold * SAMPLED_TOLERANCE;
+    let most = sampler::max_samples(depth);
+    let mut encoded: Vec<Rgb> = Vec::with_capacity(most as usize);
+    let mut pixels = Vec::with_capacity(xs.len() * ys.len());
+    for y in ys {
+        for x in xs.clone() {
+            let (value, e) = centre[at(x, y)];
+            // The eight neighbours inside the image.
+            let flagged = (y.saturating_sub(1)..(y + 2).min(h)).any(|ny| {
+                (x.saturating_sub(1)..(x + 2).min(w))
+                    .any(|nx| (nx, ny) != (x, y) && differ(centre[at(nx, ny)].1, e, threshold))
+            });
+            if !flagged {
+                pixels.push(value);
+                continue;
+            }
+            let seed = sampler::pixel_seed(x, y, 0);
+            // The centre sample counts in the mean, not in the error estimate.
+            let (mut n, mut batch, mut sum) = (0u32, 4u32, value);
+            encoded.clear();
+            loop {
+                while n < batch {
+                    let (dx, dy) = sampler::offset(seed, n);
+                    tracer.light_stream = options.sampled_lights.then_some((seed, n + 1));
+                    tracer.lens_stream = options.sampled_blur.then_some((seed, n + 1));
+                    let v = camera::sample(
+                        tracer,
+                        camera_interiors,
+                        w,
+                        h,
+                        x as f64 + dx,
+                        y as f64 + dy,
+                    );
+                    sum += v;
+                    encoded.push(aa_encoded(v.truncate(), gamma));
+                    n += 1;
+                }
+                if n >= most {
+                    break;
+                }
+                let half = encoded.len() / 2;
+                let mean = |e: &[Rgb]| e.iter().fold(Rgb::ZERO, |s, &v| s + v) / half as f64;
+                let error = (mean(&encoded[..half]) - mean(&encoded[half..]))
+                    .abs()
+                    .element_sum()
+                    / 2.0;
+                if error < tolerance {
+                    break;
+                }
+                batch = (2 * batch).min(most);
+            }
+            samples += u64::from(n);
+            pixels.push(sum / f64::from(n + 1));
+        }
+    }
+    tracer.light_stream = None;
+    tracer.lens_stream = None;
+    (pixels, samples)
+}

@@ -1,0 +1,335 @@
+//! The camera: the ray through each image position for every projection (POV-Ray's
+//! formulas), a normal perturbing the rays, the mesh camera, focal blur (POV-Ray's adaptive
+//! batches of lens rays, or lens points from a pixel's own sequence), and the camera ray
+//! traced from the objects that contain its origin.
+
+use super::shade::{Interiors, Tracer};
+use super::{Px, sampler};
+use crate::geometry::Ray;
+use crate::scene::{Camera, Projection, Rgb, Scene};
+use glam::DVec3;
+
+/// The point every ray of `camera` starts from, for a projection with one eye point: its rays
+/// all start inside the same objects, found once. `None` where rays start at many points
+/// (orthographic, the cylinders with parallel rays, a mesh camera).
+pub(super) fn one_eye_point(camera: &Camera) -> Option<DVec3> {
+    match camera.projection {
+        Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } | Projection::Mesh => {
+            None
+        }
+        _ => Some(camera.location),
+    }
+}
+
+/// The camera ray through image position (x, y) in pixel units, (i, j) being pixel centres
+/// and y growing downward (POV-Ray §4.3), with POV-Ray's formulas for each projection; `None`
+/// where the projection sees nothing (outside a fisheye's circle).
+pub(super) fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<Ray> {
+    use std::f64::consts::{FRAC_PI_2, PI};
+    let c = &scene.camera;
+    let (w, h) = (width as f64, height as f64);
+    // POV-Ray's sample position: x + ½, y − ½.
+    let (px, py) = (x + 0.5, y - 0.5);
+    // −½ … ½ across the image, and −1 … 1.
+    let (x0, y0) = (px / w - 0.5, ((h - 1.0) - py) / h - 0.5);
+    let (x1, y1) = (2.0 * px / w - 1.0, 2.0 * ((h - 1.0) - py) / h - 1.0);
+    let (len_right, len_up) = (c.right.length(), c.up.length());
+    // The curved projections take unit vectors.
+    let (r, u, d) = (c.right / len_right, c.up / len_up, c.direction.normalize());
+    let along = |dir: glam::DVec3| Some(Ray::new(c.location, dir.normalize()));
+    // The longitude and the distance from the centre of a point of the unit disc.
+    let polar = |x0: f64, y0: f64| {
+        let rad = (x0 * x0 + y0 * y0).sqrt();
+        let phi = if rad == 0.0 {
+            0.0
+        } else if x0 < 0.0 {
+            PI - (y0 / rad).asin()
+        } else {
+            (y0 / rad).asin()
+        };
+        (rad, phi)
+    };
+    // Each projection gives its ray and its screen point (x, y, 0) in its own measure, where
+    // the camera's normal samples its pattern (POV-Ray's coordinates of each camera type).
+    let (ray, screen) = match c.projection {
+        Projection::Perspective => (along(c.direction + x0 * c.right + y0 * c.up), (x0, y0)),
+        Projection::Orthographic => (
+            Some(Ray::new(
+                c.location + x0 * c.right + y0 * c.up,
+                c.direction.normalize(),
+            )),
+            (x0, y0),
+        ),
+        Projection::Fisheye { angle } => {
+            let (rad, phi) = polar(x1 * len_right, y1 * len_up);
+            if rad > 1.0 {
+                return None;
+            }
+            let theta = rad * angle.to_radians() / 2.0;
+            let (sx, cx) = phi.sin_cos();
+            let (sy, cy) = theta.sin_cos();
+            (along(cx * sy * r + sx * sy * u + cy * d), (phi, theta))
+        }
+        Projection::Omnimax => {
+            let aspect = len_right / len_up;
+            let (mut x1, mut y1) = (x1, y1);
+            if aspect > 1.0 {
+                if aspect > 1.283458 {
+                    x1 *= aspect / 1.283458;
+                    y1 = (y1 - 1.0) / 1.283458 + 1.0;
+                } else {
+                    y1 = (y1 - 1.0) / aspect + 1.0;
+                }
+            } else {
+                y1 /= aspect;
+            }
+            let (rad, phi) = polar(x1, y1);
+            if rad > 1.0 {
+                return None;
+            }
+            let theta = 1.411269 * rad - 0.09439 * rad.powi(3) + 0.25674 * rad.powi(5);
+            let (sx, cx) = phi.sin_cos();
+            let (sy, cy) = theta.sin_cos();
+            // Nothing below 45° under the projection axis.
+            if sx * sy < (135.0f64).to_radians().tan() * cy {
+                return None;
+            }
+            (along(cx * sy * r + sx * sy * u + cy * d), (phi, theta))
+        }
+        Projection::Panoramic => {
+            let lon = (1.0 - px / w) * PI;
+            let lat = FRAC_PI_2 * y1;
+            let ty = if (FRAC_PI_2 - lat.abs()).abs() < 1e-10 {
+                lat.signum() * 1e10
+            } else {
+                lat.tan()
+            };
+            (
+                along(lon.cos() * c.right + ty * c.up + lon.sin() * c.direction),
+                (lon, lat),
+            )
+        }
+        Projection::UltraWideAngle { angle } => {
+            let angle = angle.to_radians();
+            let aspect = len_up / len_right;
+            let (ax, ay) = (x0 * angle, y0 * angle * aspect);
+            let (sx, cx) = ax.sin_cos();
+            let (sy, cy) = ay.sin_cos();
+            (along(sx * r + sy * u + cx * cy * d), (ax, ay))
+        }
+        Projection::Cylinder { kind, angle } => {
+            let angle = angle.to_radians();
+            // 1 and 3 curve across the width (aspect from up), 2 and 4 across the height.
+            let (sx, cx) = (x0 * angle).sin_cos();
+            let (sy, cy) = (y0 * angle).sin_cos();
+            let (across, up) = ((x0 * angle, y0 * len_up), (x0 * len_right, y0 * angle));
+            match kind {
+                1 => (along(sx * r + y0 * len_up * u + cx * d), across),
+                2 => (along(x0 * len_right * r + sy * u + cy * d), up),
+                3 => (
+                    Some(Ray::new(
+                        c.location + y0 * len_up * u,
+                        (sx * r + cx * d).normalize(),
+                    )),
+                    across,
+                ),
+                _ => (
+                    Some(Ray::new(
+                        c.location + x0 * len_right * r,
+                        (sy * u + cy * d).normalize(),
+                    )),
+                    up,
+                ),
+            }
+        }
+        Projection::Mesh => (
+            scene
+                .mesh_camera
+                .as_ref()
+                .and_then(|m| m.ray(x, y, width, height, 0)),
+            (0.0, 0.0),
+        ),
+        Projection::Spherical { h, v } => {
+            let lat = y0 * v.to_radians();
+            let lon = x0 * h.to_radians();
+            let v1 = glam::DQuat::from_axis_angle(r, -lat) * c.direction;
+            (along(glam::DQuat::from_axis_angle(u, lon) * v1), (lon, lat))
+        }
+    };
+    bent(scene, ray, screen)
+}
+
+/// The camera's normal bends a camera ray's unit direction by its pattern at the screen
+/// point.
+pub(super) fn bent(scene: &Scene, ray: Option<Ray>, screen: (f64, f64)) -> Option<Ray> {
+    match (&scene.camera_normal, ray) {
+        (Some(n), Some(ray)) => {
+            let bent = n.perturb(glam::DVec3::new(screen.0, screen.1, 0.0), ray.direction);
+            Some(Ray {
+                direction: bent.normalize(),
+                ..ray
+            })
+        }
+        (_, ray) => ray,
+    }
+}
+
+/// The colour seen through image position (x, y) by a `mesh_camera`: the mean of the rays
+/// its faces give the sample (transparent black when they give none, as in POV-Ray).
+pub(super) fn mesh_sample(
+    tracer: &mut Tracer,
+    mesh: &crate::scene::meshcam::MeshCamera,
+    w: u32,
+    h: u32,
+    x: f64,
+    y: f64,
+) -> Px {
+    let scene = tracer.scene;
+    let (mut sum, mut n) = (Px::ZERO, 0u32);
+    for k in 0..mesh.rays_per_pixel() {
+        // (POV-Ray bends a mesh camera's rays by its normal at the screen point (0, 0).)
+        let Some(ray) = bent(scene, mesh.ray(x, y, w, h, k), (0.0, 0.0)) else {
+            continue;
+        };
+        tracer.counts.camera += 1;
+        let colour = trace_primary(tracer, &None, Some(ray));
+        sum += colour.extend(tracer.see_through);
+        n += 1;
+    }
+    if n == 0 {
+        return trace_primary(tracer, &None, None).extend(tracer.see_through);
+    }
+    sum / f64::from(n)
+}
+
+/// The colour seen through image position (x, y): one camera ray, or with focal blur
+/// POV-Ray's adaptive batches of rays through the lens (counted as camera rays).
+pub(super) fn sample(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    w: u32,
+    h: u32,
+    x: f64,
+    y: f64,
+) -> Px {
+    let scene = tracer.scene;
+    if let Some(mesh) = &scene.mesh_camera {
+        return mesh_sample(tracer, mesh, w, h, x, y);
+    }
+    let Some(blur) = &scene.blur else {
+        tracer.counts.camera += 1;
+        let colour = trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));
+        return colour.extend(tracer.see_through);
+    };
+    if let Some(stream) = tracer.lens_stream {
+        return lens_sampled(tracer, camera_interiors, (w, h), (x, y), blur, stream);
+    }
+    let seed = (313.0 * x + 11.0) as i32 + (311.0 * y + 17.0) as i32;
+    let (mut n, mut level) = (0usize, 0usize);
+    let (mut s1, mut s2) = ([0.0f64; 4], [0.0f64; 4]);
+    let mut sum = Px::ZERO;
+    let max = blur.max as usize;
+    loop {
+        let batch = blur.batches.get(level).copied().unwrap_or(4) as usize;
+        level += 1;
+        for _ in 0..batch.min(max - n) {
+            let (dx, dy) = crate::scene::blur::Blur::subpixel(seed, n as i32);
+            let ray = camera_ray(scene, w, h, x + dx, y + dy).map(|ray| {
+                through_lens(scene, blur, ray, blur.lens(n, x + dx + 0.5, y + dy - 0.5))
+            });
+            tracer.counts.camera += 1;
+            let (colour, t) = match ray {
+                Some(_) => (trace_primary(tracer, camera_interiors, ray), 0.0),
+                None => (Rgb::ZERO, 1.0),
+            };
+            sum += colour.extend(tracer.see_through);
+            for (k, v) in [colour.x, colour.y, colour.z, t].into_iter().enumerate() {
+                s1[k] += v;
+                s2[k] += v * v;
+            }
+            n += 1;
+        }
+        let m = n as f64;
+        let settled =
+            (0..4).all(|k| (s2[k] / m - (s1[k] / m).powi(2)) / m < blur.thresholds[n - 1]);
+        if (n as u32 >= blur.min && settled) || n >= max {
+            break;
+        }
+    }
+    sum / n as f64
+}
+
+/// The ray of focal blur for the pinhole ray `ray`, leaving the lens at offset `defl`: the
+/// direction to the image plane (POV-Ray's unnormalised one for the perspective camera),
+/// carried to the sharp plane.
+pub(super) fn through_lens(
+    scene: &Scene,
+    blur: &crate::scene::blur::Blur,
+    ray: Ray,
+    defl: glam::DVec3,
+) -> Ray {
+    let c = &scene.camera;
+    let to_plane = match c.projection {
+        Projection::Perspective => {
+            let axis = c.direction.normalize();
+            ray.direction * (c.direction.length() / ray.direction.dot(axis))
+        }
+        _ => ray.direction,
+    };
+    Ray::new(
+        c.location + defl,
+        (to_plane * blur.focal_ratio - defl).normalize(),
+    )
+}
+
+/// Method 3's focal blur (`sampled_blur`): sample `n` of the pixel whose seed is `seed` looks
+/// through points of the lens drawn from the pixel's lens stream — 4 for the centre sample,
+/// one for each further sample, so that a pixel's lens points together are a prefix of the
+/// stream — instead of POV-Ray's batches; the pixel's own sampling decides how many it takes.
+pub(super) fn lens_sampled(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    (w, h): (u32, u32),
+    (x, y): (f64, f64),
+    blur: &crate::scene::blur::Blur,
+    (seed, n): (u32, u32),
+) -> Px {
+    let scene = tracer.scene;
+    let (start, count) = if n == 0 {
+        (0, LENS_FIRST_POINTS)
+    } else {
+        (LENS_FIRST_POINTS + n - 1, 1)
+    };
+    let lens_seed = sampler::stream_seed(seed, sampler::LENS_STREAM);
+    let pinhole = camera_ray(scene, w, h, x, y);
+    let mut sum = Px::ZERO;
+    for i in start..start + count {
+        let (u, v) = sampler::offset(lens_seed, i);
+        // The lens disc of radius ½ (as POV-Ray's lens grid), scaled by the blur's radius.
+        let (du, dv) = sampler::square_to_disc(u, v);
+        let defl = blur.radius * (du * blur.x_perp - dv * blur.y_perp);
+        tracer.counts.camera += 1;
+        let ray = pinhole.map(|ray| through_lens(scene, blur, ray, defl));
+        let colour = trace_primary(tracer, camera_interiors, ray);
+        sum += colour.extend(tracer.see_through);
+    }
+    sum / f64::from(count)
+}
+
+/// Method 3 with sampled focal blur: lens points the centre sample looks through.
+pub(super) const LENS_FIRST_POINTS: u32 = 4;
+
+/// Traces a camera ray, which starts inside the objects that contain its origin (black where
+/// the projection has no ray, as in POV-Ray).
+pub(super) fn trace_primary(
+    tracer: &mut Tracer,
+    camera_interiors: &Option<Interiors>,
+    ray: Option<Ray>,
+) -> Rgb {
+    let Some(ray) = ray else {
+        tracer.see_through = 1.0;
+        return Rgb::ZERO;
+    };
+    let interiors = camera_interiors.unwrap_or_else(|| Interiors::at(tracer.scene, ray.origin));
+    tracer.trace(&ray, 1, 1.0, &interiors)
+}
