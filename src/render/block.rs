@@ -2,7 +2,7 @@
 //! the work they took.
 
 use super::antialias::{self, Block};
-use super::shade::{Interiors, Tracer};
+use super::transport::{Interiors, Tracer};
 use super::{Aov, BLOCK_SIZE, Px, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
 use crate::scene::{Rgb, Scene};

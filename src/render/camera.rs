@@ -3,7 +3,7 @@
 //! batches of lens rays, or lens points from a pixel's own sequence), and the camera ray
 //! traced from the objects that contain its origin.
 
-use super::shade::{Interiors, Tracer};
+use super::transport::{Interiors, Tracer};
 use super::{Px, sampler};
 use crate::geometry::Ray;
 use crate::scene::{Camera, Projection, Rgb, Scene};

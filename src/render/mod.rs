@@ -9,13 +9,12 @@ mod antialias;
 mod block;
 mod camera;
 mod cancel;
-mod lights;
 mod sampler;
-mod shade;
+mod transport;
 
 pub use antialias::Antialias;
 pub use cancel::Cancel;
-pub use shade::RayCounts;
+pub use transport::RayCounts;
 
 use crate::film::{Film, Region, Rows};
 use crate::geometry::counters;
@@ -25,7 +24,7 @@ use crate::scene::{Gamma, Rgb, Scene};
 /// straight through (w: one minus its alpha).
 type Px = glam::DVec4;
 use rayon::prelude::*;
-use shade::Interiors;
+use transport::Interiors;
 
 /// POV-Ray's render block size (`+BS`), in pixels.
 const BLOCK_SIZE: u32 = 32;

@@ -2,7 +2,7 @@
 //! from its left or top neighbour.
 
 use super::{Block, aa_encoded, differ};
-use crate::render::shade::Tracer;
+use crate::render::transport::Tracer;
 use crate::render::{Px, camera};
 use crate::scene::Rgb;
 

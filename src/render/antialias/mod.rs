@@ -6,7 +6,7 @@ mod adaptive;
 mod recursive;
 mod sampled;
 
-use super::shade::{Interiors, Tracer};
+use super::transport::{Interiors, Tracer};
 use super::{Px, RenderOptions, camera, output_value};
 use crate::scene::{Gamma, Rgb, Scene};
 use std::ops::Range;

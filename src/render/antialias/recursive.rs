@@ -2,7 +2,7 @@
 //! their corners differ.
 
 use super::{Block, aa_encoded, differ};
-use crate::render::shade::{Interiors, Tracer};
+use crate::render::transport::{Interiors, Tracer};
 use crate::render::{Px, RenderOptions, camera};
 use crate::scene::{Rgb, Scene};
 

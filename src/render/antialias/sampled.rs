@@ -2,7 +2,7 @@
 //! sequence where a pixel differs from a neighbour, until their estimated error is small.
 
 use super::{Block, SAMPLED_TOLERANCE, aa_encoded, differ};
-use crate::render::shade::Tracer;
+use crate::render::transport::Tracer;
 use crate::render::{Px, camera, sampler};
 use crate::scene::Rgb;
 

@@ -1,7 +1,7 @@
 //! Light sources (pov-semantics §8): point, spot and parallel lights, distance fade,
 //! shadowless lights, and area lights with POV-Ray's recursive grid average.
 
-use super::shade::Tracer;
+use super::Tracer;
 use crate::geometry::Ray;
 use crate::scene::{AreaLight, Light, LightKind, Rgb, ShadowHull, SurfaceHit};
 use glam::DVec3;
@@ -239,7 +239,7 @@ impl Tracer<'_> {
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
-        let light_seed = super::sampler::stream_seed(seed, index as u32 + 1);
+        let light_seed = crate::render::sampler::stream_seed(seed, index as u32 + 1);
         // The pixel's centre sample (the only one most pixels take) looks at 4 points of the
         // light, and at 16 if they disagree; sample n ≥ 1 at one more point, point 16 + n − 1
         // of the light's sequence, so that all of a pixel's points together are a prefix of
@@ -250,7 +250,7 @@ impl Tracer<'_> {
             (AREA_FIRST_POINTS_MOST + n - 1, 1, 1)
         };
         let mut ray_at = |i: u32| {
-            let (mut s1, mut s2) = super::sampler::offset(light_seed, start + i);
+            let (mut s1, mut s2) = crate::render::sampler::offset(light_seed, start + i);
             if area.size1 == 1 {
                 s1 = 0.0;
             }

@@ -1,23 +1,25 @@
 //! POV-Ray's shading model and Whitted recursion (pov-semantics §6–9): ambient, emission,
 //! diffuse, phong, specular, metallic, reflection (plain and Fresnel), transmission through
-//! filter and transmit, refraction with POV-Ray's interior bookkeeping, interior fade.
+//! filter and transmit, refraction with POV-Ray's interior bookkeeping (`medium`), interior
+//! fade, fog (`fog`), lights and shadows (`lights`).
 
-use super::lights::LightSample;
+mod fog;
+mod lights;
+mod medium;
+
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, FogKind, Material, ObjectId, PatternSurface as Surface, Rgb, Scene, SurfaceHit,
-    filter_colour, interior_fade,
+    Colour, Material, PatternSurface as Surface, Rgb, Scene, SurfaceHit, filter_colour,
+    interior_fade,
 };
+use fog::{MISS_DEPTH, fogged};
 use glam::{DMat3, DVec3};
+use lights::LightSample;
+pub(super) use medium::Interiors;
+use medium::{Crossing, SAME_IOR};
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
 const MAX_DISTANCE: f64 = 1e7;
-
-/// |η − 1| below this counts as "no change of medium" (POV-Ray's test).
-const SAME_IOR: f64 = 1e-10;
-
-/// Most interiors a ray can be inside at once (deeper nesting is not tracked).
-const MAX_NESTING: usize = 8;
 
 /// Counts of rays traced, for statistics.
 #[derive(Clone, Copy, Debug, Default)]
@@ -49,115 +51,6 @@ impl RayCounts {
     pub fn total(&self) -> u64 {
         self.camera + self.reflected + self.transmitted + self.shadow
     }
-}
-
-/// The interiors a ray is inside, in the order it entered them (POV-Ray's interior list).
-/// Each entry is an object standing for its medium: objects that share a medium (members of a
-/// union) share one entry, so a ray inside one member that meets another's surface leaves.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Interiors {
-    ids: [u32; MAX_NESTING],
-    len: usize,
-}
-
-impl Interiors {
-    /// The objects of `scene` whose inside contains `p` (a camera ray's list). The order is
-    /// POV-Ray's: scene order for fewer than three objects and lights; otherwise, as its
-    /// bounding does, unbounded objects (planes) first. Like POV-Ray, which splits unions
-    /// into their members, a medium is listed once per member that contains `p`.
-    pub fn at(scene: &Scene, p: DVec3) -> Interiors {
-        let mut list = Interiors::default();
-        let mut later = Interiors::default();
-        let bounded_last = scene.bounded_last;
-        // Only objects whose boxes hold the point can hold it (the first pass lists the
-        // unbounded ones when the bounded come last).
-        scene.each_near(p, |i| {
-            let object = &scene.objects[i as usize];
-            if scene.starts_inside(object, p) {
-                match bounded_last && object.bounded {
-                    false => list.push(ObjectId(i)),
-                    true => later.push(ObjectId(i)),
-                }
-            }
-        });
-        for &i in &later.ids[..later.len] {
-            list.push(ObjectId(i));
-        }
-        list
-    }
-
-    fn push(&mut self, id: ObjectId) {
-        if self.len < MAX_NESTING {
-            self.ids[self.len] = id.0;
-            self.len += 1;
-        }
-    }
-
-    /// Where the medium of object `id` is in the list.
-    fn position(&self, scene: &Scene, id: ObjectId) -> Option<usize> {
-        let medium = |i: u32| scene.objects[i as usize].medium;
-        self.ids[..self.len]
-            .iter()
-            .position(|&i| medium(i) == medium(id.0))
-    }
-
-    fn remove(&mut self, index: usize) {
-        self.ids.copy_within(index + 1..self.len, index);
-        self.len -= 1;
-    }
-
-    fn last(&self) -> Option<ObjectId> {
-        (self.len > 0).then(|| ObjectId(self.ids[self.len - 1]))
-    }
-
-    /// Whether a ray here travels through hollow space only (fog reaches it): inside no
-    /// object, or inside hollow ones only.
-    fn hollow(&self, scene: &Scene) -> bool {
-        self.ids[..self.len]
-            .iter()
-            .all(|&i| scene.objects[i as usize].hollow)
-    }
-}
-
-/// POV-Ray's `BOUND_HUGE`: the depth of a ray that hits nothing, as fog sees it.
-const MISS_DEPTH: f64 = 2.0e10;
-
-/// The fogs of `scene` over a ray segment from `origin` along the unit `direction`, `width`
-/// long, applied to the colour `c` seen at its end (POV-Ray's ComputeFog: attenuations
-/// multiply, fog colours add up, so the fogs' order does not matter).
-fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64, c: Rgb) -> Rgb {
-    let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
-    for fog in &scene.fogs {
-        let mut width = depth;
-        let density = match fog.kind {
-            FogKind::Constant => 1.0,
-            FogKind::Ground { offset, alt, up } => {
-                // Mean over the segment of 1 below the offset and 1/(h² + 1) above it.
-                let s = (origin.dot(up) - offset) / alt;
-                let e = ((origin + direction * width).dot(up) - offset) / alt;
-                match (s <= 0.0, e <= 0.0) {
-                    (true, true) => 1.0,
-                    (true, false) => (e.atan() - s) / (e - s),
-                    (false, true) => (s.atan() - e) / (s - e),
-                    (false, false) if (s - e).abs() > 1e-10 => (s.atan() - e.atan()) / (s - e),
-                    (false, false) => 1.0 / (s * s + 1.0),
-                }
-            }
-        };
-        if let Some(t) = &fog.turbulence {
-            // POV-Ray thins the fog by its turbulence at the middle of the path, the less the
-            // longer the path.
-            let p = (origin + direction * (width / 2.0)) * t.turbulence.amount;
-            let k = (-width / fog.distance).exp();
-            let turb = t.turbulence.scalar(p, scene.noise_generator);
-            width *= 1.0 - k * (turb * t.depth).min(1.0);
-        }
-        let c = &fog.colour;
-        let a = (-width * density / fog.distance).exp().max(c.transmit);
-        attenuation *= a * (Rgb::splat(1.0 - c.filter) + c.rgb * c.filter);
-        added += c.rgb * (1.0 - a);
-    }
-    added + attenuation * c
 }
 
 /// Traces rays through one scene; holds the per-thread ray tally and scratch space.
@@ -770,65 +663,6 @@ fn reflectivity(material: &Material, colour: &Colour, cos_i: f64, eta: f64) -> R
     reflec
 }
 
-/// What crossing one object's surface means for a ray (POV-Ray §9.1).
-struct Crossing {
-    /// The ray was inside the object.
-    inside: bool,
-    /// n_from / n_to for the refraction direction.
-    refraction_eta: f64,
-    /// n_to / n_from as POV-Ray's `ComputeRelativeIOR` gives it to the Fresnel term.
-    fresnel_eta: f64,
-    /// The interior list of the transmitted ray.
-    after: Interiors,
-}
-
-impl Crossing {
-    fn new(scene: &Scene, list: &Interiors, o: ObjectId) -> Crossing {
-        let ior = |id: ObjectId| scene.interior(&scene.objects[id.0 as usize]).ior;
-        let n_o = ior(o);
-        let mut after = *list;
-        let position = list.position(scene, o);
-        // The medium entered last is `o`'s (POV-Ray compares interiors, not objects).
-        let innermost = list.last().is_some_and(|l| {
-            scene.objects[l.0 as usize].medium == scene.objects[o.0 as usize].medium
-        });
-        let refraction_eta = match (position, list.last()) {
-            // Entering from air.
-            (None, None) => {
-                after.push(o);
-                1.0 / n_o
-            }
-            // Entering while inside others.
-            (None, Some(last)) => {
-                after.push(o);
-                ior(last) / n_o
-            }
-            // Leaving the innermost medium.
-            (Some(i), Some(_)) if innermost => {
-                after.remove(i);
-                n_o / after.last().map_or(1.0, ior)
-            }
-            // Leaving an object that is not the innermost: no bending.
-            (Some(i), _) => {
-                after.remove(i);
-                1.0
-            }
-        };
-        let fresnel_eta = match (position.is_some(), list.last()) {
-            (_, None) => n_o,
-            (true, Some(_)) if list.len == 1 => 1.0 / n_o,
-            (true, Some(last)) => ior(last) / n_o,
-            (false, Some(last)) => n_o / ior(last),
-        };
-        Crossing {
-            inside: position.is_some(),
-            refraction_eta,
-            fresnel_eta,
-            after,
-        }
-    }
-}
-
 /// `cos^brilliance`; brilliance 1 (the default) skips the `pow`, which gives the same value.
 /// A light grazing the surface (`cos` 0) gives nothing, whatever the exponent: a negative
 /// brilliance would make it infinite.
@@ -861,48 +695,6 @@ fn mirror_direction(d: DVec3, n: DVec3, raw: DVec3) -> DVec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The objects a point starts in, found through the object tree's boxes, are those (in
-    /// the same order, the unbounded ones first) that testing every object finds.
-    #[test]
-    fn starting_objects_through_the_tree_are_those_of_a_scan() {
-        // Ten nested spheres (bounded: the scene has a tree), a plane below (unbounded) and a
-        // disc whose inside is a half-space but whose box is flat.
-        let mut text = String::from("#version 3.7;\nplane { y, -20 }\ndisc { 0, y, 30 }\n");
-        for k in 1..=10 {
-            text += &format!("sphere {{ <0.1, 0, 0>, {k} pigment {{ rgb 1 }} }}\n");
-        }
-        let loaded = crate::load_str(
-            std::path::Path::new("nest.rt"),
-            text,
-            &crate::LoadOptions::default(),
-        )
-        .expect("loads");
-        let scene = crate::scene::Scene::build(&loaded.scene);
-        assert!(scene.has_index());
-        let scan = |p: DVec3| {
-            let mut list = Interiors::default();
-            for pass in [false, true] {
-                for (i, object) in scene.objects.iter().enumerate() {
-                    let second = scene.bounded_last && object.bounded;
-                    if second == pass && scene.starts_inside(object, p) {
-                        list.push(ObjectId(i as u32));
-                    }
-                }
-            }
-            list.ids[..list.len].to_vec()
-        };
-        for p in [
-            DVec3::ZERO,
-            DVec3::new(0.0, 3.5, 0.0),
-            DVec3::new(7.2, -1.0, 2.0),
-            DVec3::new(0.0, -25.0, 0.0),
-            DVec3::splat(40.0),
-        ] {
-            let found = Interiors::at(&scene, p);
-            assert_eq!(found.ids[..found.len].to_vec(), scan(p), "{p}");
-        }
-    }
 
     #[test]
     fn a_grazing_light_gives_nothing_at_any_brilliance() {
