@@ -4,11 +4,11 @@
 //! fixed evaluation orders (camera, texture attachment), and rejects by name anything outside
 //! trace's subset. Uses `syntax`, `ir` and `diag`; knows nothing of rendering.
 //!
-//! Two halves share one [`Evaluator`]: the language (`lang`: the directive reader, values,
-//! expressions, macros, functions, files; its state in [`lang::Language`]) and the IR builder
+//! Two halves share one `Evaluator`: the language (`lang`: the directive reader, values,
+//! expressions, macros, functions, files; its state in `lang::Language`) and the IR builder
 //! (`build`: objects, shapes, materials, lights, camera, settings; its state in
-//! [`build::Builder`]). The builder asks the language for values; the language names no IR
-//! and hands each statement's blocks to the builder (this file: [`Evaluator::statement`]).
+//! `build::Builder`). The builder asks the language for values; the language names no IR
+//! and hands each statement's blocks to the builder (this file: `Evaluator::statement`).
 
 mod build;
 mod lang;

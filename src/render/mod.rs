@@ -15,6 +15,9 @@ mod transport;
 pub use antialias::Antialias;
 pub use cancel::Cancel;
 pub use transport::RayCounts;
+/// The shadow test, for the stability suite's counts of light leaking through surfaces.
+#[cfg(feature = "internals")]
+pub use transport::transmittance;
 
 use crate::film::{Film, Region, Rows};
 use crate::geometry::counters;

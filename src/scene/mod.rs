@@ -30,7 +30,7 @@ pub use material::{Material, filter_colour};
 pub use normal::Normal;
 pub use pigment::{Pigment, pigment_function};
 pub use probe::object_query;
-pub use query::{ShadowHull, interior_fade};
+pub use query::{Queries, ShadowCrossing, ShadowHull, fades};
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -93,7 +93,7 @@ pub struct Scene {
     /// the any-hit test for opaque blockers).
     pub any_transparent: bool,
     /// Whether any object that may let light through to a shadow ray has an interior that
-    /// fades: shadow rays then walk their crossings in order (see [`Scene::transmittance`]).
+    /// fades: shadow rays then walk their crossings in order (transport's shadow walk).
     pub shadow_fades: bool,
     /// Whether area lights first find what may block their shadow rays (on; off only to
     /// test that the pictures are the same without).

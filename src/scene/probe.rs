@@ -1,6 +1,7 @@
 //! Questions evaluation asks about an object it has made (`trace()`, `inside()`,
 //! `min_extent`, `max_extent`): the object is built as a scene of its own and asked.
 
+use super::Queries;
 use super::{Ray, Scene};
 use crate::ir;
 use glam::DVec3;

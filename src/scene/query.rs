@@ -2,7 +2,6 @@
 //! what reaches a light through transparent objects, inside tests.
 
 use super::*;
-use std::cell::RefCell;
 
 impl Scene {
     /// The interior of `object`.
@@ -34,18 +33,11 @@ impl Scene {
         }
     }
 
-    /// The nearest hit along `ray`, of any object.
+    /// The nearest hit along `ray`, of any object (whatever it hides from: the probe's and
+    /// the tests' question).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
         self.nearest(ray, None)
-    }
-
-    /// The nearest hit along a ray traced for the picture: one that was `reflected` on its
-    /// way, or not (a camera ray, or one through transparent objects only), which objects
-    /// with `no_reflection` or `no_image` hide from.
-    #[inline]
-    pub fn intersect_seen(&self, ray: &Ray, reflected: bool) -> Option<Hit> {
-        self.nearest(ray, self.any_hidden.then_some(reflected))
     }
 
     #[inline]
@@ -125,57 +117,6 @@ impl Scene {
         (i == 0 || base(i - 1) != own) && base(i + 1) != own
     }
 
-    /// Surface details for a hit found by [`Scene::intersect`].
-    #[inline]
-    pub fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit {
-        let object = &self.objects[hit.object.0 as usize];
-        let point = ray.at(hit.t);
-        let (normal, geometric) = match &object.transform {
-            None => object.shape.normals(point, hit.part),
-            Some(t) => {
-                let local = t.object_from_world.transform_point3(point);
-                let (n, g) = object.shape.normals(local, hit.part);
-                (t.normal_to_world * n, t.normal_to_world * g)
-            }
-        };
-        let normal = normal.normalize();
-        let mut geometric_normal = geometric.normalize();
-        if geometric_normal.dot(normal) < 0.0 {
-            geometric_normal = -geometric_normal;
-        }
-        let material = object.side(normal, ray.direction);
-        let uv = if self.material(material).uses_uv() {
-            object.uv(point, hit.part)
-        } else {
-            glam::DVec2::ZERO
-        };
-        let corners = if self.material(material).uses_corners() {
-            object.corners(point, hit.part)
-        } else {
-            Default::default()
-        };
-        SurfaceHit {
-            point,
-            texture_point: point,
-            normal,
-            geometric_normal,
-            material,
-            object: hit.object,
-            surface: crate::pattern::Surface {
-                point,
-                // (POV-Ray's slope and aoi see the normal turned to face the ray.)
-                normal: if normal.dot(ray.direction) > 0.0 {
-                    -normal
-                } else {
-                    normal
-                },
-                direction: ray.direction,
-                uv,
-                corners,
-            },
-        }
-    }
-
     /// The objects that could meet a shadow ray running from near `hull`'s apex to any point
     /// of its base (the unbounded objects it does not exclude, and the bounded ones whose box
     /// it does not exclude), appended to `out`. The apex lies on object `from`: a plane
@@ -209,7 +150,7 @@ impl Scene {
     }
 
     /// Whether some object of `candidates` can let light through to a shadow ray (then only
-    /// [`Scene::transmittance`] tells what reaches the light).
+    /// transport's shadow walk tells what reaches the light).
     pub fn any_filters_shadows(&self, candidates: &[u32]) -> bool {
         candidates.iter().any(|&i| self.filters_shadows(i))
     }
@@ -228,53 +169,6 @@ impl Scene {
                 && object.admits(ray)
                 && object.shape.occludes(&Self::local_ray(object, ray))
         })
-    }
-
-    /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
-    /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
-    /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
-    /// segments run inside objects whose fade_power is positive (see
-    /// `faded_crossings`). Objects with `no_shadow` are skipped; refraction is
-    /// ignored, as in POV-Ray.
-    pub fn transmittance(&self, ray: &Ray) -> Rgb {
-        let opaque_blocks = |i: u32| {
-            let object = &self.objects[i as usize];
-            !object.no_shadow
-                && !self.material(object.material).may_be_transparent()
-                && object.admits(ray)
-                && object.shape.occludes(&Self::local_ray(object, ray))
-        };
-        match &self.index {
-            Some(index) => {
-                // First any opaque blocker (stops at the first), then the transparent ones.
-                if index.unbounded.iter().any(|&i| opaque_blocks(i))
-                    || index.any(ray, opaque_blocks)
-                {
-                    return Rgb::ZERO;
-                }
-                if !self.any_transparent {
-                    return Rgb::ONE;
-                }
-                self.crossings_through(ray, |f| {
-                    index.unbounded.iter().for_each(|&i| f(i));
-                    index.each(ray, f);
-                })
-            }
-            None => {
-                let inv = ray.direction.recip();
-                let candidates = || {
-                    self.scan_bounds
-                        .iter()
-                        .enumerate()
-                        .filter(move |(_, b)| may_hit(**b, ray, inv))
-                        .map(|(i, _)| i as u32)
-                };
-                if candidates().any(opaque_blocks) {
-                    return Rgb::ZERO;
-                }
-                self.crossings_through(ray, |f| candidates().for_each(f))
-            }
-        }
     }
 
     fn local_ray(object: &Object, ray: &Ray) -> Ray {
@@ -307,98 +201,6 @@ impl Scene {
             }
         };
         self.material(object.side(normal, ray.direction))
-    }
-
-    /// What object `i` lets through where `ray` crosses it at `t` on `part` (its surface
-    /// worked out, as for a camera ray's hit, where the material's patterns see more than the
-    /// point: uv mapping, slope, aoi).
-    fn crossing_filter(&self, i: u32, ray: &Ray, t: f64, part: u32) -> Rgb {
-        let object = &self.objects[i as usize];
-        let material = self.crossing_material(object, ray, t, part);
-        if !material.uses_surface() {
-            return material.filter_at(ray.at(t));
-        }
-        let hit = Hit {
-            t,
-            object: ObjectId(i),
-            part,
-        };
-        let s = self.surface(ray, &hit);
-        self.material(s.material).filter_on(s.point, &s.surface)
-    }
-
-    /// What a shadow ray lets through the transparent objects it crosses: POV-Ray's walk from
-    /// the surface to the light, one crossing after the other, each filtering the light. As
-    /// POV-Ray's walk starts each step at the crossing before, a crossing at the same point as
-    /// the one before (a duplicated surface) is passed over: the light is filtered once there.
-    /// Where interiors fade, the walk also keeps a list of the media the ray is in. At a
-    /// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
-    /// applies over the distance from the previous crossing of any object (so a medium
-    /// shared by overlapping union members fades only between their surfaces, and an object
-    /// around another fades only from the inner one's exit); otherwise it enters. The list
-    /// starts with the media of the crossed objects that contain the ray's origin.
-    /// `candidates` calls its argument with every object the ray may cross.
-    fn crossings_through(&self, ray: &Ray, candidates: impl FnOnce(&mut dyn FnMut(u32))) -> Rgb {
-        thread_local! {
-            /// Per thread: the crossings (distance, object) and the list of media.
-            static SCRATCH: RefCell<ShadowScratch> = const { RefCell::new((Vec::new(), Vec::new())) };
-        }
-        SCRATCH.with_borrow_mut(|(crossings, media)| {
-            crossings.clear();
-            media.clear();
-            candidates(&mut |i| {
-                let object = &self.objects[i as usize];
-                if self.filters_shadows(i) && object.admits(ray) {
-                    object
-                        .shape
-                        .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
-                            crossings.push((t, i, part))
-                        });
-                }
-            });
-            crossings.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-            // (Crossings closer than rounding to the one kept before are the same point.)
-            let length = ray.direction.length();
-            let scale = ray.origin.abs().max_element().max(1.0);
-            let mut kept = f64::NEG_INFINITY;
-            crossings.retain(|&(t, _, _)| {
-                let world = t * length;
-                let same = world - kept <= COINCIDENT * scale.max(world.abs());
-                if !same {
-                    kept = world;
-                }
-                !same
-            });
-            if !self.shadow_fades {
-                return crossings
-                    .iter()
-                    .map(|&(t, i, part)| self.crossing_filter(i, ray, t, part))
-                    .fold(Rgb::ONE, |a, b| a * b);
-            }
-            for &(_, i, _) in crossings.iter() {
-                let object = &self.objects[i as usize];
-                if !media.contains(&object.medium) && self.contains(object, ray.origin) {
-                    media.push(object.medium);
-                }
-            }
-            let (mut through, mut last_t) = (Rgb::ONE, 0.0);
-            for &(t, i, part) in crossings.iter() {
-                let object = &self.objects[i as usize];
-                through *= self.crossing_filter(i, ray, t, part);
-                match media.iter().position(|&m| m == object.medium) {
-                    Some(k) => {
-                        let interior = self.interior(object);
-                        if fades(interior) {
-                            through *= interior_fade(interior, (t - last_t) * length);
-                        }
-                        media.remove(k);
-                    }
-                    None => media.push(object.medium),
-                }
-                last_t = t;
-            }
-            through
-        })
     }
 
     /// Whether world point `p` is inside `object` (POV-Ray's inside test; thin shapes have no
@@ -465,33 +267,179 @@ impl Scene {
     }
 }
 
-/// Two crossings of a shadow ray closer than this, relative to the distances and coordinates
-/// involved, are taken for the same point (a few thousand times the rounding of a double).
-const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
+/// A crossing of a shadow ray with the surface of an object that may let light through.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowCrossing {
+    /// Distance along the ray (in units of its direction's length).
+    pub t: f64,
+    /// The object crossed.
+    pub object: ObjectId,
+    /// Which part of its shape.
+    pub part: u32,
+}
 
-/// Per thread, for a shadow ray through transparent objects: its crossings (distance, object,
-/// part) and the list of media it is in.
-type ShadowScratch = (Vec<(f64, u32, u32)>, Vec<u32>);
+/// What transport asks of the scene's geometry: the one interface through which light's
+/// paths meet the objects (design: the scene answers, transport decides what light does).
+/// Called with static dispatch only.
+pub trait Queries {
+    /// The nearest hit along a ray traced for the picture: one that was `reflected` on its
+    /// way, or not (a camera ray, or one through transparent objects only), which objects
+    /// with `no_reflection` or `no_image` hide from.
+    fn nearest_hit(&self, ray: &Ray, reflected: bool) -> Option<Hit>;
+
+    /// Surface details at a hit.
+    fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit;
+
+    /// Occlusion: whether an opaque object that casts shadows meets `ray` within its
+    /// extent (stops at the first found).
+    fn occluded(&self, ray: &Ray) -> bool;
+
+    /// The crossings along `ray` with every object that casts shadows and may let light
+    /// through, appended to `out` in no particular order.
+    fn shadow_crossings(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>);
+
+    /// What the surface lets through at a crossing (its surface worked out, as for a camera
+    /// ray's hit, where the material's patterns see more than the point: uv mapping, slope,
+    /// aoi).
+    fn crossing_filter(&self, ray: &Ray, c: &ShadowCrossing) -> Rgb;
+
+    /// The inside test: whether world point `p` is inside object `id` (POV-Ray's; thin
+    /// shapes have no inside; `inverse` swaps).
+    fn inside(&self, id: ObjectId, p: DVec3) -> bool;
+}
+
+impl Queries for Scene {
+    #[inline]
+    fn nearest_hit(&self, ray: &Ray, reflected: bool) -> Option<Hit> {
+        self.nearest(ray, self.any_hidden.then_some(reflected))
+    }
+
+    #[inline]
+    fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit {
+        let object = &self.objects[hit.object.0 as usize];
+        let point = ray.at(hit.t);
+        let (normal, geometric) = match &object.transform {
+            None => object.shape.normals(point, hit.part),
+            Some(t) => {
+                let local = t.object_from_world.transform_point3(point);
+                let (n, g) = object.shape.normals(local, hit.part);
+                (t.normal_to_world * n, t.normal_to_world * g)
+            }
+        };
+        let normal = normal.normalize();
+        let mut geometric_normal = geometric.normalize();
+        if geometric_normal.dot(normal) < 0.0 {
+            geometric_normal = -geometric_normal;
+        }
+        let material = object.side(normal, ray.direction);
+        let uv = if self.material(material).uses_uv() {
+            object.uv(point, hit.part)
+        } else {
+            glam::DVec2::ZERO
+        };
+        let corners = if self.material(material).uses_corners() {
+            object.corners(point, hit.part)
+        } else {
+            Default::default()
+        };
+        SurfaceHit {
+            point,
+            texture_point: point,
+            normal,
+            geometric_normal,
+            material,
+            object: hit.object,
+            surface: crate::pattern::Surface {
+                point,
+                // (POV-Ray's slope and aoi see the normal turned to face the ray.)
+                normal: if normal.dot(ray.direction) > 0.0 {
+                    -normal
+                } else {
+                    normal
+                },
+                direction: ray.direction,
+                uv,
+                corners,
+            },
+        }
+    }
+
+    fn occluded(&self, ray: &Ray) -> bool {
+        let opaque_blocks = |i: u32| {
+            let object = &self.objects[i as usize];
+            !object.no_shadow
+                && !self.material(object.material).may_be_transparent()
+                && object.admits(ray)
+                && object.shape.occludes(&Self::local_ray(object, ray))
+        };
+        match &self.index {
+            Some(index) => {
+                index.unbounded.iter().any(|&i| opaque_blocks(i)) || index.any(ray, opaque_blocks)
+            }
+            None => {
+                let inv = ray.direction.recip();
+                (self.scan_bounds.iter().enumerate())
+                    .any(|(i, b)| may_hit(*b, ray, inv) && opaque_blocks(i as u32))
+            }
+        }
+    }
+
+    fn shadow_crossings(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) {
+        let mut cross = |i: u32| {
+            let object = &self.objects[i as usize];
+            if self.filters_shadows(i) && object.admits(ray) {
+                object
+                    .shape
+                    .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
+                        out.push(ShadowCrossing {
+                            t,
+                            object: ObjectId(i),
+                            part,
+                        })
+                    });
+            }
+        };
+        match &self.index {
+            Some(index) => {
+                index.unbounded.iter().for_each(|&i| cross(i));
+                index.each(ray, &mut cross);
+            }
+            None => {
+                let inv = ray.direction.recip();
+                for (i, b) in self.scan_bounds.iter().enumerate() {
+                    if may_hit(*b, ray, inv) {
+                        cross(i as u32);
+                    }
+                }
+            }
+        }
+    }
+
+    fn crossing_filter(&self, ray: &Ray, c: &ShadowCrossing) -> Rgb {
+        let (i, t, part) = (c.object.0, c.t, c.part);
+        let object = &self.objects[i as usize];
+        let material = self.crossing_material(object, ray, t, part);
+        if !material.uses_surface() {
+            return material.filter_at(ray.at(t));
+        }
+        let hit = Hit {
+            t,
+            object: ObjectId(i),
+            part,
+        };
+        let s = self.surface(ray, &hit);
+        self.material(s.material).filter_on(s.point, &s.surface)
+    }
+
+    fn inside(&self, id: ObjectId, p: DVec3) -> bool {
+        self.contains(&self.objects[id.0 as usize], p)
+    }
+}
 
 /// Whether an interior fades light along shadow rays (POV-Ray: positive `fade_power` and a
 /// `fade_distance` that is not zero).
-pub(super) fn fades(interior: &Interior) -> bool {
+pub fn fades(interior: &Interior) -> bool {
     interior.fade_power > 0.0 && interior.fade_distance.abs() > 1e-10
-}
-
-/// POV-Ray's interior fade over a distance `d` inside (§9.2).
-pub fn interior_fade(interior: &Interior, d: f64) -> Rgb {
-    let fc = interior.fade_colour;
-    if interior.fade_power >= 1000.0 {
-        let k = d / interior.fade_distance;
-        Rgb::new(
-            (-(1.0 - fc.x) * k).exp(),
-            (-(1.0 - fc.y) * k).exp(),
-            (-(1.0 - fc.z) * k).exp(),
-        )
-    } else {
-        fc + (Rgb::ONE - fc) / (1.0 + (d / interior.fade_distance).powf(interior.fade_power))
-    }
 }
 
 /// Whether the ray may meet a box (slab test); unbounded objects always may.

@@ -8,6 +8,7 @@
 use glam::{DVec3, Vec3};
 use trace::geometry::triangle::ShearedRay;
 use trace::geometry::{Ray, Sphere, Surface, offset_origin};
+use trace::scene::Queries;
 
 /// A small deterministic generator (xorshift64) for the experiments' rays.
 pub struct Rng(u64);
@@ -1017,7 +1018,7 @@ pub fn thread_determinism(width: u32, height: u32) -> Count {
 /// (δ from 1e-9 to 4.9 sides, log-uniform), found by camera rays as in a render, are in its
 /// shadow: a shadow ray that gets through is a gap between the cube and its shadow. Floor
 /// points on the lit side at the same distances must be lit: a blocked one is acne. Uses the
-/// renderer's own shadow test (`Scene::transmittance`); distances are world units (unit
+/// renderer's own shadow test (`render::transmittance`); distances are world units (unit
 /// direction). Returns (gaps, acne).
 pub fn contact_shadow(method: OffsetMethod, side: f64, rays: u64) -> (Count, Count) {
     let text = format!(
@@ -1048,7 +1049,7 @@ pub fn contact_shadow(method: OffsetMethod, side: f64, rays: u64) -> (Count, Cou
             }
             let mut ray = method.ray(p, up, l, side);
             ray.tmax = 100.0 * side;
-            let blocked = scene.transmittance(&ray) == trace::ir::Rgb::ZERO;
+            let blocked = trace::render::transmittance(&scene, &ray) == trace::ir::Rgb::ZERO;
             let counter = if shadowed { &mut gaps } else { &mut acne };
             counter.rays += 1;
             counter.failures += u64::from(blocked != shadowed);
@@ -1160,7 +1161,8 @@ pub fn thin_wall(method: OffsetMethod, side: f64, rays: u64) -> Count {
         let mut ray = method.ray(p, DVec3::Y, l, side);
         ray.tmax = 100.0 * side;
         count.rays += 1;
-        count.failures += u64::from(scene.transmittance(&ray) != trace::ir::Rgb::ZERO);
+        count.failures +=
+            u64::from(trace::render::transmittance(&scene, &ray) != trace::ir::Rgb::ZERO);
     }
     count
 }

@@ -129,7 +129,7 @@ impl Tracer<'_> {
                     let mut shadow = scene.spawn(hit, from, direction);
                     shadow.tmax = reach.unwrap_or_else(|| shadow_length(light, &shadow, distance));
                     self.counts.shadow += 1;
-                    scene.transmittance(&shadow)
+                    super::transmittance(scene, &shadow)
                 }
             };
             colour *= visible;
@@ -214,7 +214,7 @@ impl Tracer<'_> {
             Blockers::None => Rgb::ONE,
             Blockers::Opaque if self.scene.blocked_among(shadow, &self.blockers) => Rgb::ZERO,
             Blockers::Opaque => Rgb::ONE,
-            Blockers::Unknown => self.scene.transmittance(shadow),
+            Blockers::Unknown => super::transmittance(self.scene, shadow),
         }
     }
 

@@ -1,7 +1,7 @@
 //! The media a ray is in: POV-Ray's interior list, and what crossing a surface does to it
 //! (refraction's and Fresnel's ratios of indices).
 
-use crate::scene::{ObjectId, Scene};
+use crate::scene::{Interior, ObjectId, Rgb, Scene};
 use glam::DVec3;
 
 /// |η − 1| below this counts as "no change of medium" (POV-Ray's test).
@@ -75,6 +75,21 @@ impl Interiors {
         self.ids[..self.len]
             .iter()
             .all(|&i| scene.objects[i as usize].hollow)
+    }
+}
+
+/// POV-Ray's interior fade over a distance `d` inside (§9.2).
+pub(super) fn interior_fade(interior: &Interior, d: f64) -> Rgb {
+    let fc = interior.fade_colour;
+    if interior.fade_power >= 1000.0 {
+        let k = d / interior.fade_distance;
+        Rgb::new(
+            (-(1.0 - fc.x) * k).exp(),
+            (-(1.0 - fc.y) * k).exp(),
+            (-(1.0 - fc.z) * k).exp(),
+        )
+    } else {
+        fc + (Rgb::ONE - fc) / (1.0 + (d / interior.fade_distance).powf(interior.fade_power))
     }
 }
 

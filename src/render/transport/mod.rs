@@ -6,17 +6,18 @@
 mod fog;
 mod lights;
 mod medium;
+mod shadow;
 
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, Material, PatternSurface as Surface, Rgb, Scene, SurfaceHit, filter_colour,
-    interior_fade,
+    Colour, Material, PatternSurface as Surface, Queries, Rgb, Scene, SurfaceHit, filter_colour,
 };
 use fog::{MISS_DEPTH, fogged};
 use glam::{DMat3, DVec3};
 use lights::LightSample;
 pub(super) use medium::Interiors;
-use medium::{Crossing, SAME_IOR};
+use medium::{Crossing, SAME_IOR, interior_fade};
+pub use shadow::transmittance;
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
 const MAX_DISTANCE: f64 = 1e7;
@@ -134,7 +135,7 @@ impl<'a> Tracer<'a> {
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let (colour, depth) = match self.scene.intersect_seen(&ray, self.reflected) {
+        let (colour, depth) = match self.scene.nearest_hit(&ray, self.reflected) {
             None => {
                 self.see_through = match self.scene.sky_sphere {
                     None => 1.0 - self.scene.background_alpha,
@@ -161,7 +162,7 @@ impl<'a> Tracer<'a> {
     pub fn first_hit(&mut self, ray: &Ray) -> (f64, DVec3, Rgb, u32) {
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let Some(hit) = self.scene.intersect_seen(&ray, false) else {
+        let Some(hit) = self.scene.nearest_hit(&ray, false) else {
             return (f64::INFINITY, DVec3::ZERO, Rgb::ZERO, 0);
         };
         let surface = self.scene.surface(&ray, &hit);

@@ -1,0 +1,99 @@
+//! Shadow rays: what reaches a light through the objects between (POV-Ray's shadow walk).
+//! The scene answers where a shadow ray meets what ([`Queries`]); this decides what light
+//! does there: blocked by an opaque object, filtered at each crossing of a transparent one,
+//! faded along the segments inside interiors that fade.
+
+use super::medium::interior_fade;
+use crate::geometry::Ray;
+use crate::scene::{Queries, Rgb, Scene, ShadowCrossing, fades};
+use std::cell::RefCell;
+
+/// Two crossings of a shadow ray closer than this, relative to the distances and coordinates
+/// involved, are taken for the same point (a few thousand times the rounding of a double).
+const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
+
+/// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
+/// object, and the product of `rgb·filter + transmit` over every crossing of transparent
+/// objects (POV-Ray filters at each surface crossing), times the interior fade of the
+/// segments run inside objects whose fade_power is positive (see [`walk`]). Objects with
+/// `no_shadow` are skipped; refraction is ignored, as in POV-Ray.
+pub fn transmittance(scene: &Scene, ray: &Ray) -> Rgb {
+    // First any opaque blocker (stops at the first), then the transparent ones.
+    if scene.occluded(ray) {
+        return Rgb::ZERO;
+    }
+    if !scene.any_transparent {
+        return Rgb::ONE;
+    }
+    thread_local! {
+        /// Per thread: the crossings and the list of media.
+        static SCRATCH: RefCell<(Vec<ShadowCrossing>, Vec<u32>)> =
+            const { RefCell::new((Vec::new(), Vec::new())) };
+    }
+    SCRATCH.with_borrow_mut(|(crossings, media)| {
+        crossings.clear();
+        media.clear();
+        scene.shadow_crossings(ray, crossings);
+        walk(scene, ray, crossings, media)
+    })
+}
+
+/// What a shadow ray lets through the transparent objects it crosses: POV-Ray's walk from
+/// the surface to the light, one crossing after the other, each filtering the light. As
+/// POV-Ray's walk starts each step at the crossing before, a crossing at the same point as
+/// the one before (a duplicated surface) is passed over: the light is filtered once there.
+/// Where interiors fade, the walk also keeps a list of the media the ray is in. At a
+/// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
+/// applies over the distance from the previous crossing of any object (so a medium
+/// shared by overlapping union members fades only between their surfaces, and an object
+/// around another fades only from the inner one's exit); otherwise it enters. The list
+/// starts with the media of the crossed objects that contain the ray's origin.
+fn walk(
+    scene: &Scene,
+    ray: &Ray,
+    crossings: &mut Vec<ShadowCrossing>,
+    media: &mut Vec<u32>,
+) -> Rgb {
+    crossings.sort_by(|a, b| a.t.total_cmp(&b.t).then(a.object.0.cmp(&b.object.0)));
+    // (Crossings closer than rounding to the one kept before are the same point.)
+    let length = ray.direction.length();
+    let scale = ray.origin.abs().max_element().max(1.0);
+    let mut kept = f64::NEG_INFINITY;
+    crossings.retain(|c| {
+        let world = c.t * length;
+        let same = world - kept <= COINCIDENT * scale.max(world.abs());
+        if !same {
+            kept = world;
+        }
+        !same
+    });
+    if !scene.shadow_fades {
+        return crossings
+            .iter()
+            .map(|c| scene.crossing_filter(ray, c))
+            .fold(Rgb::ONE, |a, b| a * b);
+    }
+    for c in crossings.iter() {
+        let medium = scene.object(c.object).medium;
+        if !media.contains(&medium) && scene.inside(c.object, ray.origin) {
+            media.push(medium);
+        }
+    }
+    let (mut through, mut last_t) = (Rgb::ONE, 0.0);
+    for c in crossings.iter() {
+        let object = scene.object(c.object);
+        through *= scene.crossing_filter(ray, c);
+        match media.iter().position(|&m| m == object.medium) {
+            Some(k) => {
+                let interior = scene.interior(object);
+                if fades(interior) {
+                    through *= interior_fade(interior, (c.t - last_t) * length);
+                }
+                media.remove(k);
+            }
+            None => media.push(object.medium),
+        }
+        last_t = c.t;
+    }
+    through
+}
