@@ -26,7 +26,7 @@ pub(super) fn one_eye_point(camera: &Camera) -> Option<DVec3> {
 /// where the projection sees nothing (outside a fisheye's circle).
 pub(super) fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64) -> Option<Ray> {
     use std::f64::consts::{FRAC_PI_2, PI};
-    let c = &scene.camera;
+    let c = &scene.camera();
     let (w, h) = (width as f64, height as f64);
     // POV-Ray's sample position: x + ½, y − ½.
     let (px, py) = (x + 0.5, y - 0.5);
@@ -144,7 +144,7 @@ pub(super) fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64)
         }
         Projection::Mesh => (
             scene
-                .mesh_camera
+                .mesh_camera()
                 .as_ref()
                 .and_then(|m| m.ray(x, y, width, height, 0)),
             (0.0, 0.0),
@@ -162,7 +162,7 @@ pub(super) fn camera_ray(scene: &Scene, width: u32, height: u32, x: f64, y: f64)
 /// The camera's normal bends a camera ray's unit direction by its pattern at the screen
 /// point.
 pub(super) fn bent(scene: &Scene, ray: Option<Ray>, screen: (f64, f64)) -> Option<Ray> {
-    match (&scene.camera_normal, ray) {
+    match (&scene.camera_normal(), ray) {
         (Some(n), Some(ray)) => {
             let bent = n.perturb(glam::DVec3::new(screen.0, screen.1, 0.0), ray.direction);
             Some(Ray {
@@ -213,10 +213,10 @@ pub(super) fn sample(
     y: f64,
 ) -> Px {
     let scene = tracer.scene;
-    if let Some(mesh) = &scene.mesh_camera {
+    if let Some(mesh) = &scene.mesh_camera() {
         return mesh_sample(tracer, mesh, w, h, x, y);
     }
-    let Some(blur) = &scene.blur else {
+    let Some(blur) = &scene.blur() else {
         tracer.counts.camera += 1;
         let colour = trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));
         return colour.extend(tracer.see_through);
@@ -268,7 +268,7 @@ pub(super) fn through_lens(
     ray: Ray,
     defl: glam::DVec3,
 ) -> Ray {
-    let c = &scene.camera;
+    let c = &scene.camera();
     let to_plane = match c.projection {
         Projection::Perspective => {
             let axis = c.direction.normalize();

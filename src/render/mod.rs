@@ -231,7 +231,7 @@ impl<'a> Bands<'a> {
     pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
         // The rays of a camera with one eye point all start inside the same objects: found once.
         let camera_interiors =
-            camera::one_eye_point(&scene.camera).map(|eye| Interiors::at(scene, eye));
+            camera::one_eye_point(scene.camera()).map(|eye| Interiors::at(scene, eye));
         let region = options.region();
         Bands {
             scene,
@@ -332,7 +332,7 @@ impl<'a> Bands<'a> {
                 if x < region.x0 || x >= region.x1 || y < y0 || y >= y1 {
                     continue;
                 }
-                let mut v = output_value(value.truncate(), scene.gamma);
+                let mut v = output_value(value.truncate(), scene.gamma());
                 if v.iter().any(|c| !c.is_finite()) {
                     self.stats.non_finite += 1;
                     v = [0.0; 3];

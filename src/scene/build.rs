@@ -457,6 +457,20 @@ impl Scene {
         self.index.is_some()
     }
 
+    /// The same scene with area lights' shadow rays not culled (the tests check the pictures
+    /// are the same without).
+    #[cfg(test)]
+    pub fn without_shadow_culling(mut self) -> Scene {
+        self.cull_shadow_rays = false;
+        self
+    }
+
+    /// How many objects the scene holds (their ids run from 0).
+    #[cfg(test)]
+    pub fn object_count(&self) -> usize {
+        self.objects.len()
+    }
+
     /// The same scene without its top-level BVH, testing every object for every ray: the
     /// stability suite compares its pictures with the BVH's.
     #[cfg(feature = "internals")]

@@ -32,11 +32,11 @@ pub use pigment::{Pigment, pigment_function};
 pub use probe::object_query;
 pub use query::{Queries, ShadowCrossing, ShadowHull, fades};
 
-/// Index into [`Scene::materials`].
+/// A material of the scene (an index into its distinct materials).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MaterialId(pub u32);
 
-/// Index into [`Scene::objects`].
+/// An object of the scene (an index into its objects, in scene order).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ObjectId(pub u32);
 
@@ -44,46 +44,46 @@ pub struct ObjectId(pub u32);
 #[derive(Debug)]
 pub struct Scene {
     /// The camera.
-    pub camera: Camera,
+    camera: Camera,
     /// The camera's focal blur, if any.
-    pub blur: Option<blur::Blur>,
+    blur: Option<blur::Blur>,
     /// The camera's `normal`, bending its rays, if any.
-    pub camera_normal: Option<Normal>,
+    camera_normal: Option<Normal>,
     /// The `mesh_camera`, if the camera is one.
-    pub mesh_camera: Option<meshcam::MeshCamera>,
+    mesh_camera: Option<meshcam::MeshCamera>,
     /// Point lights.
-    pub lights: Vec<Light>,
+    lights: Vec<Light>,
     /// Objects.
-    pub objects: Vec<Object>,
+    objects: Vec<Object>,
     /// Distinct materials.
-    pub materials: Vec<Material>,
+    materials: Vec<Material>,
     /// Distinct interiors.
-    pub interiors: Vec<Interior>,
+    interiors: Vec<Interior>,
     /// Colour of escaped rays.
-    pub background: Rgb,
+    background: Rgb,
     /// The background's opacity in an alpha channel.
-    pub background_alpha: f64,
+    background_alpha: f64,
     /// `sky_sphere`: the colour of escaped rays by direction.
-    pub sky_sphere: Option<SkySphere>,
+    sky_sphere: Option<SkySphere>,
     /// Fogs with a positive distance (POV-Ray skips the others).
-    pub fogs: Vec<Fog>,
+    fogs: Vec<Fog>,
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
     /// unbounded objects first.
-    pub bounded_last: bool,
+    bounded_last: bool,
     /// Rays at a deeper level return black.
-    pub max_trace_level: u32,
+    max_trace_level: u32,
     /// Rays of lower weight return black.
-    pub adc_bailout: f64,
+    adc_bailout: f64,
     /// Multiplies every finish's ambient.
-    pub ambient_light: Rgb,
+    ambient_light: Rgb,
     /// Pre-3.7 surface attenuation.
-    pub legacy_transparency: bool,
+    legacy_transparency: bool,
     /// The scene's noise generator (fog turbulence; patterns carry their own).
-    pub noise_generator: u8,
+    noise_generator: u8,
     /// `irid_wavelength`: the wavelengths of thin-film interference (`irid`).
-    pub irid_wavelength: Rgb,
+    irid_wavelength: Rgb,
     /// Working gamma (applied when the film is written).
-    pub gamma: Gamma,
+    gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
     index: Option<accel::ObjectIndex>,
     /// Without an index, the world bounds of each object (`None` for unbounded ones), tested
@@ -91,16 +91,138 @@ pub struct Scene {
     scan_bounds: Vec<Option<(DVec3, DVec3)>>,
     /// Whether any object may let light through to a shadow ray (else shadow rays stop at
     /// the any-hit test for opaque blockers).
-    pub any_transparent: bool,
+    any_transparent: bool,
     /// Whether any object that may let light through to a shadow ray has an interior that
     /// fades: shadow rays then walk their crossings in order (transport's shadow walk).
-    pub shadow_fades: bool,
+    shadow_fades: bool,
     /// Whether area lights first find what may block their shadow rays (on; off only to
     /// test that the pictures are the same without).
-    pub cull_shadow_rays: bool,
+    cull_shadow_rays: bool,
     /// Whether any object is hidden from some rays (`no_image`, `no_reflection`): only then
     /// does the nearest-hit search look at the rays' kind.
-    pub any_hidden: bool,
+    any_hidden: bool,
+}
+
+/// What the renderer reads of the scene besides its [`Queries`]: the camera, lights, sky and
+/// settings (the fields are the scene's own).
+impl Scene {
+    /// The camera.
+    #[inline]
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The camera's focal blur, if any.
+    #[inline]
+    pub fn blur(&self) -> Option<&blur::Blur> {
+        self.blur.as_ref()
+    }
+
+    /// The camera's `normal`, bending its rays, if any.
+    #[inline]
+    pub fn camera_normal(&self) -> Option<&Normal> {
+        self.camera_normal.as_ref()
+    }
+
+    /// The `mesh_camera`, if the camera is one.
+    #[inline]
+    pub fn mesh_camera(&self) -> Option<&meshcam::MeshCamera> {
+        self.mesh_camera.as_ref()
+    }
+
+    /// Point lights.
+    #[inline]
+    pub fn lights(&self) -> &[Light] {
+        &self.lights
+    }
+
+    /// Colour of escaped rays.
+    #[inline]
+    pub fn background(&self) -> Rgb {
+        self.background
+    }
+
+    /// The background's opacity in an alpha channel.
+    #[inline]
+    pub fn background_alpha(&self) -> f64 {
+        self.background_alpha
+    }
+
+    /// `sky_sphere`: the colour of escaped rays by direction.
+    #[inline]
+    pub fn sky_sphere(&self) -> Option<&SkySphere> {
+        self.sky_sphere.as_ref()
+    }
+
+    /// Fogs with a positive distance (POV-Ray skips the others).
+    #[inline]
+    pub fn fogs(&self) -> &[Fog] {
+        &self.fogs
+    }
+
+    /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
+    /// unbounded objects first.
+    #[inline]
+    pub fn bounded_last(&self) -> bool {
+        self.bounded_last
+    }
+
+    /// Rays at a deeper level return black.
+    #[inline]
+    pub fn max_trace_level(&self) -> u32 {
+        self.max_trace_level
+    }
+
+    /// Rays of lower weight return black.
+    #[inline]
+    pub fn adc_bailout(&self) -> f64 {
+        self.adc_bailout
+    }
+
+    /// Multiplies every finish's ambient.
+    #[inline]
+    pub fn ambient_light(&self) -> Rgb {
+        self.ambient_light
+    }
+
+    /// Pre-3.7 surface attenuation.
+    #[inline]
+    pub fn legacy_transparency(&self) -> bool {
+        self.legacy_transparency
+    }
+
+    /// The scene's noise generator (fog turbulence; patterns carry their own).
+    #[inline]
+    pub fn noise_generator(&self) -> u8 {
+        self.noise_generator
+    }
+
+    /// Working gamma (applied when the film is written).
+    #[inline]
+    pub fn gamma(&self) -> Gamma {
+        self.gamma
+    }
+
+    /// Whether any object may let light through to a shadow ray (else shadow rays stop at
+    /// the any-hit test for opaque blockers).
+    #[inline]
+    pub fn any_transparent(&self) -> bool {
+        self.any_transparent
+    }
+
+    /// Whether any object that may let light through to a shadow ray has an interior that
+    /// fades: shadow rays then walk their crossings in order (transport's shadow walk).
+    #[inline]
+    pub fn shadow_fades(&self) -> bool {
+        self.shadow_fades
+    }
+
+    /// Whether area lights first find what may block their shadow rays (on; off only to
+    /// test that the pictures are the same without).
+    #[inline]
+    pub fn cull_shadow_rays(&self) -> bool {
+        self.cull_shadow_rays
+    }
 }
 
 /// The camera's four vectors.
@@ -190,7 +312,7 @@ pub struct Object {
     /// Place in POV-Ray's test order, which decides between two hits at the same distance
     /// (see [`Scene::intersect`]; lower first).
     pub rank: u64,
-    /// Index of refraction and fade: an index into [`Scene::interiors`] (equal interiors are
+    /// Index of refraction and fade: an index into the scene's distinct interiors (equal interiors are
     /// stored once).
     pub interior: u32,
     /// Objects with equal media share one interior (see [`ir::Object::medium`]).

@@ -31,14 +31,16 @@ pub(super) fn pixels(
     if y0 > 0 {
         for x in x0..x1 {
             value[index(x, y0 - 1)] = block.centre(tracer, x, y0 - 1);
-            encoded[index(x, y0 - 1)] = aa_encoded(value[index(x, y0 - 1)].truncate(), scene.gamma);
+            encoded[index(x, y0 - 1)] =
+                aa_encoded(value[index(x, y0 - 1)].truncate(), scene.gamma());
             done[index(x, y0 - 1)] = true;
         }
     }
     if x0 > 0 {
         for y in y0..y1 {
             value[index(x0 - 1, y)] = block.centre(tracer, x0 - 1, y);
-            encoded[index(x0 - 1, y)] = aa_encoded(value[index(x0 - 1, y)].truncate(), scene.gamma);
+            encoded[index(x0 - 1, y)] =
+                aa_encoded(value[index(x0 - 1, y)].truncate(), scene.gamma());
             done[index(x0 - 1, y)] = true;
         }
     }
@@ -68,7 +70,7 @@ pub(super) fn pixels(
             }
         }
         value[index(x, y)] = sum / (n * n + 1) as f64;
-        encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma);
+        encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma());
         traced
     };
 
@@ -77,7 +79,7 @@ pub(super) fn pixels(
             let c = block.centre(tracer, x, y);
             samples += 1;
             value[index(x, y)] = c;
-            let e = aa_encoded(c.truncate(), scene.gamma);
+            let e = aa_encoded(c.truncate(), scene.gamma());
             encoded[index(x, y)] = e;
             let left_differs = x > 0 && differ(encoded[index(x - 1, y)], e, threshold);
             let top_differs = y > 0 && differ(encoded[index(x, y - 1)], e, threshold);

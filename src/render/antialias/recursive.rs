@@ -69,7 +69,7 @@ impl Corners<'_> {
             gx as f64 / s - 0.5,
             gy as f64 / s - 0.5,
         );
-        let traced = (value, aa_encoded(value.truncate(), self.scene.gamma));
+        let traced = (value, aa_encoded(value.truncate(), self.scene.gamma()));
         let known = if border {
             &mut self.points
         } else {

@@ -22,7 +22,7 @@ pub(super) fn pixels(
     let (xs, ys) = (block.xs.clone(), block.ys.clone());
     let mut samples = 0u64;
     let (w, h) = (options.width, options.height);
-    let gamma = tracer.scene.gamma;
+    let gamma = tracer.scene.gamma();
     let (gx0, gy0) = (xs.start.saturating_sub(1), ys.start.saturating_sub(1));
     let (gx1, gy1) = ((xs.end + 1).min(w), (ys.end + 1).min(h));
     let gw = (gx1 - gx0) as usize;

@@ -11,7 +11,7 @@ pub(super) const MISS_DEPTH: f64 = 2.0e10;
 /// multiply, fog colours add up, so the fogs' order does not matter).
 pub(super) fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64, c: Rgb) -> Rgb {
     let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
-    for fog in &scene.fogs {
+    for fog in scene.fogs() {
         let mut width = depth;
         let density = match fog.kind {
             FogKind::Constant => 1.0,
@@ -33,7 +33,7 @@ pub(super) fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64,
             // longer the path.
             let p = (origin + direction * (width / 2.0)) * t.turbulence.amount;
             let k = (-width / fog.distance).exp();
-            let turb = t.turbulence.scalar(p, scene.noise_generator);
+            let turb = t.turbulence.scalar(p, scene.noise_generator());
             width *= 1.0 - k * (turb * t.depth).min(1.0);
         }
         let c = &fog.colour;

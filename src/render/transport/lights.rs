@@ -81,7 +81,7 @@ impl Tracer<'_> {
         back: bool,
     ) -> Option<LightSample> {
         let scene = self.scene;
-        let light = &scene.lights[index];
+        let light = &scene.lights()[index];
         if light.colour == Rgb::ZERO {
             return None;
         }
@@ -147,7 +147,7 @@ impl Tracer<'_> {
     /// What may block the shadow rays from `hit` to an area light spanning ±`half.0` and
     /// ±`half.1` around its position: the candidates go to `self.blockers`.
     fn area_blockers(&mut self, light: &Light, half: (DVec3, DVec3), hit: &SurfaceHit) -> Blockers {
-        if !self.scene.cull_shadow_rays {
+        if !self.scene.cull_shadow_rays() {
             return Blockers::Unknown;
         }
         let (h1, h2) = half;
@@ -551,8 +551,7 @@ mod tests {
             let loaded =
                 crate::load_str(std::path::Path::new("cull.rt"), text, &options).expect("loads");
             let scene = crate::scene::Scene::build(&loaded.scene);
-            let mut uncut = crate::scene::Scene::build(&loaded.scene);
-            uncut.cull_shadow_rays = false;
+            let uncut = crate::scene::Scene::build(&loaded.scene).without_shadow_culling();
             assert_eq!(scene.has_index(), indexed);
             for antialias in [
                 Antialias::Off,

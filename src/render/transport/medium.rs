@@ -27,11 +27,11 @@ impl Interiors {
     pub fn at(scene: &Scene, p: DVec3) -> Interiors {
         let mut list = Interiors::default();
         let mut later = Interiors::default();
-        let bounded_last = scene.bounded_last;
+        let bounded_last = scene.bounded_last();
         // Only objects whose boxes hold the point can hold it (the first pass lists the
         // unbounded ones when the bounded come last).
         scene.each_near(p, |i| {
-            let object = &scene.objects[i as usize];
+            let object = scene.object(ObjectId(i));
             if scene.starts_inside(object, p) {
                 match bounded_last && object.bounded {
                     false => list.push(ObjectId(i)),
@@ -54,7 +54,7 @@ impl Interiors {
 
     /// Where the medium of object `id` is in the list.
     pub(super) fn position(&self, scene: &Scene, id: ObjectId) -> Option<usize> {
-        let medium = |i: u32| scene.objects[i as usize].medium;
+        let medium = |i: u32| scene.object(ObjectId(i)).medium;
         self.ids[..self.len]
             .iter()
             .position(|&i| medium(i) == medium(id.0))
@@ -74,7 +74,7 @@ impl Interiors {
     pub(super) fn hollow(&self, scene: &Scene) -> bool {
         self.ids[..self.len]
             .iter()
-            .all(|&i| scene.objects[i as usize].hollow)
+            .all(|&i| scene.object(ObjectId(i)).hollow)
     }
 }
 
@@ -107,14 +107,14 @@ pub(super) struct Crossing {
 
 impl Crossing {
     pub(super) fn new(scene: &Scene, list: &Interiors, o: ObjectId) -> Crossing {
-        let ior = |id: ObjectId| scene.interior(&scene.objects[id.0 as usize]).ior;
+        let ior = |id: ObjectId| scene.interior(scene.object(id)).ior;
         let n_o = ior(o);
         let mut after = *list;
         let position = list.position(scene, o);
         // The medium entered last is `o`'s (POV-Ray compares interiors, not objects).
-        let innermost = list.last().is_some_and(|l| {
-            scene.objects[l.0 as usize].medium == scene.objects[o.0 as usize].medium
-        });
+        let innermost = list
+            .last()
+            .is_some_and(|l| scene.object(l).medium == scene.object(o).medium);
         let refraction_eta = match (position, list.last()) {
             // Entering from air.
             (None, None) => {
@@ -177,8 +177,9 @@ mod tests {
         let scan = |p: DVec3| {
             let mut list = Interiors::default();
             for pass in [false, true] {
-                for (i, object) in scene.objects.iter().enumerate() {
-                    let second = scene.bounded_last && object.bounded;
+                for i in 0..scene.object_count() {
+                    let object = scene.object(ObjectId(i as u32));
+                    let second = scene.bounded_last() && object.bounded;
                     if second == pass && scene.starts_inside(object, p) {
                         list.push(ObjectId(i as u32));
                     }

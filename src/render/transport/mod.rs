@@ -128,7 +128,7 @@ impl<'a> Tracer<'a> {
     /// ray's trace level (a camera ray is 1) and `weight` its contribution to the pixel; rays
     /// past `max_trace_level` or below `adc_bailout` return black, as in POV-Ray.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
-        if level > self.scene.max_trace_level || weight < self.scene.adc_bailout {
+        if level > self.scene.max_trace_level() || weight < self.scene.adc_bailout() {
             self.see_through = 0.0;
             return Rgb::ZERO;
         }
@@ -137,8 +137,8 @@ impl<'a> Tracer<'a> {
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
         let (colour, depth) = match self.scene.nearest_hit(&ray, self.reflected) {
             None => {
-                self.see_through = match self.scene.sky_sphere {
-                    None => 1.0 - self.scene.background_alpha,
+                self.see_through = match self.scene.sky_sphere() {
+                    None => 1.0 - self.scene.background_alpha(),
                     Some(_) => 0.0,
                 };
                 (self.escaped(ray.direction), MISS_DEPTH)
@@ -149,7 +149,7 @@ impl<'a> Tracer<'a> {
                 (colour, hit.t)
             }
         };
-        if self.scene.fogs.is_empty() || !interiors.hollow(self.scene) {
+        if self.scene.fogs().is_empty() || !interiors.hollow(self.scene) {
             return colour;
         }
         fogged(self.scene, ray.origin, ray.direction, depth, colour)
@@ -194,13 +194,13 @@ impl<'a> Tracer<'a> {
     /// top layer first, each seen through the ones above by their filter and transmit (POV-Ray's
     /// `ComputeSky`, with its rule for scenes before 3.7 too).
     fn escaped(&self, direction: DVec3) -> Rgb {
-        let Some(sky) = &self.scene.sky_sphere else {
-            return self.scene.background;
+        let Some(sky) = &self.scene.sky_sphere() else {
+            return self.scene.background();
         };
         let d = direction.normalize();
-        let background = self.scene.background;
+        let background = self.scene.background();
         let mut col = Rgb::ZERO;
-        if self.scene.legacy_transparency {
+        if self.scene.legacy_transparency() {
             // POV-Ray 3.6: the layers' filter and transmit multiply, channel by channel.
             let (mut through, mut filter, mut transmit, mut trans) = (Rgb::ONE, 1.0, 1.0, 1.0);
             for p in sky.pigments.iter().rev() {
@@ -338,7 +338,7 @@ impl<'a> Tracer<'a> {
         let raw = hit.normal * facing;
 
         // Relative indices for this crossing (POV-Ray §9.1).
-        let object = &scene.objects[hit.object.0 as usize];
+        let object = scene.object(hit.object);
         let crossing = Crossing::new(scene, interiors, hit.object);
         let interior = scene.interior(object);
         // (POV-Ray's old `refraction` multiplies whatever passes through, inside or not.)
@@ -362,7 +362,7 @@ impl<'a> Tracer<'a> {
         }
         let mut layers = 1;
         for layer in material.under.iter().rev() {
-            if grey(filter).abs().min(1.0) <= scene.adc_bailout {
+            if grey(filter).abs().min(1.0) <= scene.adc_bailout() {
                 break;
             }
             layers += 1;
@@ -383,11 +383,11 @@ impl<'a> Tracer<'a> {
         // (What of the background shows through, by the layers' filter.)
         let mut see_through = 0.0;
         let wants_transmission =
-            filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout;
-        if wants_transmission && level >= scene.max_trace_level {
+            filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout();
+        if wants_transmission && level >= scene.max_trace_level() {
             self.counts.depth_limited += 1;
         }
-        if wants_transmission && level < scene.max_trace_level {
+        if wants_transmission && level < scene.max_trace_level() {
             let w = weight * filter.abs().max_element();
             let eta = crossing.refraction_eta;
             if (eta - 1.0).abs() < SAME_IOR {
@@ -464,18 +464,18 @@ impl<'a> Tracer<'a> {
     ) -> Rgb {
         let scene = self.scene;
         let pigment = colour.rgb;
-        let att = if scene.legacy_transparency {
+        let att = if scene.legacy_transparency() {
             1.0 - (colour.filter * pigment.max_element() + colour.transmit)
         } else {
             1.0 - colour.filter - colour.transmit
         };
         let finish = &layer.finish;
-        let mut lit =
-            pigment * finish.ambient * scene.ambient_light * att + pigment * finish.emission * att;
+        let mut lit = pigment * finish.ambient * scene.ambient_light() * att
+            + pigment * finish.emission * att;
         let object = scene.object(hit.object);
         let double = object.sight().double_illuminate;
-        for index in 0..scene.lights.len() {
-            if !object.lit_by(&scene.lights[index]) {
+        for index in 0..scene.lights().len() {
+            if !object.lit_by(&scene.lights()[index]) {
                 continue;
             }
             let Some(sample) = self.light_sample(
@@ -517,7 +517,7 @@ impl<'a> Tracer<'a> {
             return Rgb::ZERO;
         }
         let scene = self.scene;
-        if level >= scene.max_trace_level {
+        if level >= scene.max_trace_level() {
             self.counts.depth_limited += 1;
             return Rgb::ZERO;
         }

@@ -15,14 +15,14 @@ const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
 /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
 /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
 /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
-/// segments run inside objects whose fade_power is positive (see [`walk`]). Objects with
+/// segments run inside objects whose fade_power is positive (see `walk`). Objects with
 /// `no_shadow` are skipped; refraction is ignored, as in POV-Ray.
 pub fn transmittance(scene: &Scene, ray: &Ray) -> Rgb {
     // First any opaque blocker (stops at the first), then the transparent ones.
     if scene.occluded(ray) {
         return Rgb::ZERO;
     }
-    if !scene.any_transparent {
+    if !scene.any_transparent() {
         return Rgb::ONE;
     }
     thread_local! {
@@ -67,7 +67,7 @@ fn walk(
         }
         !same
     });
-    if !scene.shadow_fades {
+    if !scene.shadow_fades() {
         return crossings
             .iter()
             .map(|c| scene.crossing_filter(ray, c))
