@@ -2,7 +2,7 @@
 //! the work they took.
 
 use super::antialias::{self, Block};
-use super::transport::{Interiors, Tracer};
+use super::transport::{MediumStack, Tracer};
 use super::{Aov, BLOCK_SIZE, Px, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
 use crate::scene::{Rgb, Scene};
@@ -11,7 +11,7 @@ use crate::scene::{Rgb, Scene};
 pub(super) fn render_block(
     scene: &Scene,
     options: &RenderOptions,
-    camera_interiors: Option<Interiors>,
+    camera_media: Option<MediumStack>,
     x0: u32,
     y0: u32,
 ) -> BlockResult {
@@ -23,7 +23,7 @@ pub(super) fn render_block(
     let block = Block {
         scene,
         options,
-        camera_interiors: &camera_interiors,
+        camera_media: &camera_media,
         xs: x0..x1,
         ys: y0..y1,
     };

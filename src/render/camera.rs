@@ -3,7 +3,7 @@
 //! batches of lens rays, or lens points from a pixel's own sequence), and the camera ray
 //! traced from the objects that contain its origin.
 
-use super::transport::{Interiors, Tracer};
+use super::transport::{MediumStack, Tracer};
 use super::{Px, sampler};
 use crate::geometry::Ray;
 use crate::scene::{Camera, Projection, Rgb, Scene};
@@ -206,7 +206,7 @@ pub(super) fn mesh_sample(
 /// POV-Ray's adaptive batches of rays through the lens (counted as camera rays).
 pub(super) fn sample(
     tracer: &mut Tracer,
-    camera_interiors: &Option<Interiors>,
+    camera_media: &Option<MediumStack>,
     w: u32,
     h: u32,
     x: f64,
@@ -218,11 +218,11 @@ pub(super) fn sample(
     }
     let Some(blur) = &scene.blur() else {
         tracer.counts.camera += 1;
-        let colour = trace_primary(tracer, camera_interiors, camera_ray(scene, w, h, x, y));
+        let colour = trace_primary(tracer, camera_media, camera_ray(scene, w, h, x, y));
         return colour.extend(tracer.see_through);
     };
     if let Some(stream) = tracer.lens_stream {
-        return lens_sampled(tracer, camera_interiors, (w, h), (x, y), blur, stream);
+        return lens_sampled(tracer, camera_media, (w, h), (x, y), blur, stream);
     }
     let seed = (313.0 * x + 11.0) as i32 + (311.0 * y + 17.0) as i32;
     let (mut n, mut level) = (0usize, 0usize);
@@ -239,7 +239,7 @@ pub(super) fn sample(
             });
             tracer.counts.camera += 1;
             let (colour, t) = match ray {
-                Some(_) => (trace_primary(tracer, camera_interiors, ray), 0.0),
+                Some(_) => (trace_primary(tracer, camera_media, ray), 0.0),
                 None => (Rgb::ZERO, 1.0),
             };
             sum += colour.extend(tracer.see_through);
@@ -288,7 +288,7 @@ pub(super) fn through_lens(
 /// stream — instead of POV-Ray's batches; the pixel's own sampling decides how many it takes.
 pub(super) fn lens_sampled(
     tracer: &mut Tracer,
-    camera_interiors: &Option<Interiors>,
+    camera_media: &Option<MediumStack>,
     (w, h): (u32, u32),
     (x, y): (f64, f64),
     blur: &crate::scene::blur::Blur,
@@ -310,7 +310,7 @@ pub(super) fn lens_sampled(
         let defl = blur.radius * (du * blur.x_perp - dv * blur.y_perp);
         tracer.counts.camera += 1;
         let ray = pinhole.map(|ray| through_lens(scene, blur, ray, defl));
-        let colour = trace_primary(tracer, camera_interiors, ray);
+        let colour = trace_primary(tracer, camera_media, ray);
         sum += colour.extend(tracer.see_through);
     }
     sum / f64::from(count)
@@ -323,13 +323,13 @@ pub(super) const LENS_FIRST_POINTS: u32 = 4;
 /// the projection has no ray, as in POV-Ray).
 pub(super) fn trace_primary(
     tracer: &mut Tracer,
-    camera_interiors: &Option<Interiors>,
+    camera_media: &Option<MediumStack>,
     ray: Option<Ray>,
 ) -> Rgb {
     let Some(ray) = ray else {
         tracer.see_through = 1.0;
         return Rgb::ZERO;
     };
-    let interiors = camera_interiors.unwrap_or_else(|| Interiors::at(tracer.scene, ray.origin));
-    tracer.trace(&ray, 1, 1.0, &interiors)
+    let media = camera_media.unwrap_or_else(|| MediumStack::at(tracer.scene, ray.origin));
+    tracer.trace(&ray, 1, 1.0, &media)
 }

@@ -27,7 +27,7 @@ use crate::scene::{Gamma, Rgb, Scene};
 /// straight through (w: one minus its alpha).
 type Px = glam::DVec4;
 use rayon::prelude::*;
-use transport::Interiors;
+use transport::MediumStack;
 
 /// POV-Ray's render block size (`+BS`), in pixels.
 const BLOCK_SIZE: u32 = 32;
@@ -212,7 +212,7 @@ pub struct Bands<'a> {
     scene: &'a Scene,
     options: &'a RenderOptions,
     pool: &'a rayon::ThreadPool,
-    camera_interiors: Option<Interiors>,
+    camera_media: Option<MediumStack>,
     region: Region,
     /// The next row of blocks to render.
     next_block_row: u32,
@@ -230,14 +230,14 @@ impl<'a> Bands<'a> {
     /// The bands of `scene` rendered with `options`, on the threads of `pool`.
     pub fn new(scene: &'a Scene, options: &'a RenderOptions, pool: &'a rayon::ThreadPool) -> Self {
         // The rays of a camera with one eye point all start inside the same objects: found once.
-        let camera_interiors =
-            camera::one_eye_point(scene.camera()).map(|eye| Interiors::at(scene, eye));
+        let camera_media =
+            camera::one_eye_point(scene.camera()).map(|eye| MediumStack::at(scene, eye));
         let region = options.region();
         Bands {
             scene,
             options,
             pool,
-            camera_interiors,
+            camera_media,
             region,
             next_block_row: region.y0 / BLOCK_SIZE,
             block_rows: region.y1.div_ceil(BLOCK_SIZE),
@@ -266,10 +266,10 @@ impl<'a> Bands<'a> {
         let first = self.next_block_row;
         let last = (first + self.band_block_rows).min(self.block_rows);
         self.next_block_row = last;
-        let (scene, options, interiors, blocks_x) = (
+        let (scene, options, media, blocks_x) = (
             self.scene,
             self.options,
-            self.camera_interiors,
+            self.camera_media,
             self.blocks_x.clone(),
         );
         let columns = blocks_x.len() as u32;
@@ -289,7 +289,7 @@ impl<'a> Bands<'a> {
                     let block = block::render_block(
                         scene,
                         options,
-                        interiors,
+                        media,
                         bx * BLOCK_SIZE,
                         by * BLOCK_SIZE,
                     );

@@ -15,7 +15,7 @@ pub(super) fn pixels(
     threshold: f64,
     depth: u32,
 ) -> (Vec<Px>, u64) {
-    let (scene, camera_interiors) = (block.scene, block.camera_interiors);
+    let (scene, camera_media) = (block.scene, block.camera_media);
     let (w, h) = (block.options.width, block.options.height);
     let (x0, x1, y0, y1) = (block.xs.start, block.xs.end, block.ys.start, block.ys.end);
     // Local grid with one extra row above and one extra column on the left.
@@ -48,31 +48,28 @@ pub(super) fn pixels(
     let n = depth.clamp(1, 9);
     // Grid offsets −½ + (k + ½)/n, written so that the middle one of an odd grid is exactly 0.
     let offset = |k: u32| f64::from(2 * k + 1) / f64::from(2 * n) - 0.5;
-    let supersample = |tracer: &mut Tracer,
-                       value: &mut [Px],
-                       encoded: &mut [Rgb],
-                       x: u32,
-                       y: u32| {
-        // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
-        let centre_value = value[index(x, y)];
-        let mut sum = centre_value;
-        let mut traced = 0;
-        for b in 0..n {
-            for a in 0..n {
-                let (ox, oy) = (offset(a), offset(b));
-                if ox == 0.0 && oy == 0.0 {
-                    // The centre ray again (no jitter): its colour is known.
-                    sum += centre_value;
-                    continue;
+    let supersample =
+        |tracer: &mut Tracer, value: &mut [Px], encoded: &mut [Rgb], x: u32, y: u32| {
+            // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
+            let centre_value = value[index(x, y)];
+            let mut sum = centre_value;
+            let mut traced = 0;
+            for b in 0..n {
+                for a in 0..n {
+                    let (ox, oy) = (offset(a), offset(b));
+                    if ox == 0.0 && oy == 0.0 {
+                        // The centre ray again (no jitter): its colour is known.
+                        sum += centre_value;
+                        continue;
+                    }
+                    traced += 1;
+                    sum += camera::sample(tracer, camera_media, w, h, x as f64 + ox, y as f64 + oy);
                 }
-                traced += 1;
-                sum += camera::sample(tracer, camera_interiors, w, h, x as f64 + ox, y as f64 + oy);
             }
-        }
-        value[index(x, y)] = sum / (n * n + 1) as f64;
-        encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma());
-        traced
-    };
+            value[index(x, y)] = sum / (n * n + 1) as f64;
+            encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma());
+            traced
+        };
 
     for y in y0..y1 {
         for x in x0..x1 {

@@ -6,7 +6,7 @@ mod adaptive;
 mod recursive;
 mod sampled;
 
-use super::transport::{Interiors, Tracer};
+use super::transport::{MediumStack, Tracer};
 use super::{Px, RenderOptions, camera, output_value};
 use crate::scene::{Gamma, Rgb, Scene};
 use std::ops::Range;
@@ -77,7 +77,7 @@ pub(super) struct Block<'a> {
     pub scene: &'a Scene,
     pub options: &'a RenderOptions,
     /// The objects every camera ray starts inside, for a camera with one eye point.
-    pub camera_interiors: &'a Option<Interiors>,
+    pub camera_media: &'a Option<MediumStack>,
     /// The block's columns and rows.
     pub xs: Range<u32>,
     pub ys: Range<u32>,
@@ -98,7 +98,7 @@ impl Block<'_> {
     /// The sample at the centre of pixel (x, y).
     fn centre(&self, tracer: &mut Tracer, x: u32, y: u32) -> Px {
         let (w, h) = (self.options.width, self.options.height);
-        camera::sample(tracer, self.camera_interiors, w, h, x as f64, y as f64)
+        camera::sample(tracer, self.camera_media, w, h, x as f64, y as f64)
     }
 }
 

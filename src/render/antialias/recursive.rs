@@ -2,7 +2,7 @@
 //! their corners differ.
 
 use super::{Block, aa_encoded, differ};
-use crate::render::transport::{Interiors, Tracer};
+use crate::render::transport::{MediumStack, Tracer};
 use crate::render::{Px, RenderOptions, camera};
 use crate::scene::{Rgb, Scene};
 
@@ -17,7 +17,7 @@ pub(super) fn pixels(
     let mut corners = Corners {
         scene: block.scene,
         options: block.options,
-        camera_interiors: block.camera_interiors,
+        camera_media: block.camera_media,
         steps: 1 << level,
         threshold,
         points: std::collections::HashMap::new(),
@@ -38,7 +38,7 @@ pub(super) fn pixels(
 pub(super) struct Corners<'a> {
     scene: &'a Scene,
     options: &'a RenderOptions,
-    camera_interiors: &'a Option<Interiors>,
+    camera_media: &'a Option<MediumStack>,
     /// Grid points per pixel along each axis (2^(depth − 1)).
     steps: i64,
     threshold: f64,
@@ -63,7 +63,7 @@ impl Corners<'_> {
         self.samples += 1;
         let value = camera::sample(
             tracer,
-            self.camera_interiors,
+            self.camera_media,
             w,
             h,
             gx as f64 / s - 0.5,

@@ -18,7 +18,7 @@ pub(super) fn pixels(
     threshold: f64,
     depth: u32,
 ) -> (Vec<Px>, u64) {
-    let (options, camera_interiors) = (block.options, block.camera_interiors);
+    let (options, camera_media) = (block.options, block.camera_media);
     let (xs, ys) = (block.xs.clone(), block.ys.clone());
     let mut samples = 0u64;
     let (w, h) = (options.width, options.height);
@@ -33,7 +33,7 @@ pub(super) fn pixels(
             let seed = sampler::pixel_seed(x, y, 0);
             tracer.light_stream = options.sampled_lights.then_some((seed, 0));
             tracer.lens_stream = options.sampled_blur.then_some((seed, 0));
-            let v = camera::sample(tracer, camera_interiors, w, h, x as f64, y as f64);
+            let v = camera::sample(tracer, camera_media, w, h, x as f64, y as f64);
             centre.push((v, aa_encoded(v.truncate(), gamma)));
         }
     }
@@ -63,14 +63,8 @@ pub(super) fn pixels(
                     let (dx, dy) = sampler::offset(seed, n);
                     tracer.light_stream = options.sampled_lights.then_some((seed, n + 1));
                     tracer.lens_stream = options.sampled_blur.then_some((seed, n + 1));
-                    let v = camera::sample(
-                        tracer,
-                        camera_interiors,
-                        w,
-                        h,
-                        x as f64 + dx,
-                        y as f64 + dy,
-                    );
+                    let v =
+                        camera::sample(tracer, camera_media, w, h, x as f64 + dx, y as f64 + dy);
                     sum += v;
                     encoded.push(aa_encoded(v.truncate(), gamma));
                     n += 1;

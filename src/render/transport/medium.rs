@@ -1,5 +1,5 @@
-//! The media a ray is in: POV-Ray's interior list, and what crossing a surface does to it
-//! (refraction's and Fresnel's ratios of indices).
+//! The media a ray is in (the medium stack, POV-Ray's interior list), what crossing a surface
+//! does to it (refraction's and Fresnel's ratios of indices), and the interior fade.
 
 use crate::scene::{Interior, ObjectId, Rgb, Scene};
 use glam::DVec3;
@@ -7,26 +7,29 @@ use glam::DVec3;
 /// |η − 1| below this counts as "no change of medium" (POV-Ray's test).
 pub(super) const SAME_IOR: f64 = 1e-10;
 
-/// Most interiors a ray can be inside at once (deeper nesting is not tracked).
+/// Most media a ray can be inside at once (deeper nesting is not tracked).
 pub(super) const MAX_NESTING: usize = 8;
 
-/// The interiors a ray is inside, in the order it entered them (POV-Ray's interior list).
-/// Each entry is an object standing for its medium: objects that share a medium (members of a
-/// union) share one entry, so a ray inside one member that meets another's surface leaves.
+/// The media a ray is inside, in the order it entered them (POV-Ray's interior list): what
+/// transmitted and reflected rays carry, what decides refraction's indices and whether fog
+/// reaches the ray, and what participating media will read. Each entry is an object standing
+/// for its medium: objects that share a medium (members of a union) share one entry, so a ray
+/// inside one member that meets another's surface leaves. Entering and leaving happen only in
+/// [`Refraction::new`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Interiors {
+pub struct MediumStack {
     ids: [u32; MAX_NESTING],
     len: usize,
 }
 
-impl Interiors {
+impl MediumStack {
     /// The objects of `scene` whose inside contains `p` (a camera ray's list). The order is
     /// POV-Ray's: scene order for fewer than three objects and lights; otherwise, as its
     /// bounding does, unbounded objects (planes) first. Like POV-Ray, which splits unions
     /// into their members, a medium is listed once per member that contains `p`.
-    pub fn at(scene: &Scene, p: DVec3) -> Interiors {
-        let mut list = Interiors::default();
-        let mut later = Interiors::default();
+    pub fn at(scene: &Scene, p: DVec3) -> MediumStack {
+        let mut list = MediumStack::default();
+        let mut later = MediumStack::default();
         let bounded_last = scene.bounded_last();
         // Only objects whose boxes hold the point can hold it (the first pass lists the
         // unbounded ones when the bounded come last).
@@ -71,7 +74,7 @@ impl Interiors {
 
     /// Whether a ray here travels through hollow space only (fog reaches it): inside no
     /// object, or inside hollow ones only.
-    pub(super) fn hollow(&self, scene: &Scene) -> bool {
+    pub(super) fn fog_reaches(&self, scene: &Scene) -> bool {
         self.ids[..self.len]
             .iter()
             .all(|&i| scene.object(ObjectId(i)).hollow)
@@ -94,7 +97,7 @@ pub(super) fn interior_fade(interior: &Interior, d: f64) -> Rgb {
 }
 
 /// What crossing one object's surface means for a ray (POV-Ray §9.1).
-pub(super) struct Crossing {
+pub(super) struct Refraction {
     /// The ray was inside the object.
     pub(super) inside: bool,
     /// n_from / n_to for the refraction direction.
@@ -102,11 +105,11 @@ pub(super) struct Crossing {
     /// n_to / n_from as POV-Ray's `ComputeRelativeIOR` gives it to the Fresnel term.
     pub(super) fresnel_eta: f64,
     /// The interior list of the transmitted ray.
-    pub(super) after: Interiors,
+    pub(super) after: MediumStack,
 }
 
-impl Crossing {
-    pub(super) fn new(scene: &Scene, list: &Interiors, o: ObjectId) -> Crossing {
+impl Refraction {
+    pub(super) fn new(scene: &Scene, list: &MediumStack, o: ObjectId) -> Refraction {
         let ior = |id: ObjectId| scene.interior(scene.object(id)).ior;
         let n_o = ior(o);
         let mut after = *list;
@@ -143,7 +146,7 @@ impl Crossing {
             (true, Some(last)) => ior(last) / n_o,
             (false, Some(last)) => n_o / ior(last),
         };
-        Crossing {
+        Refraction {
             inside: position.is_some(),
             refraction_eta,
             fresnel_eta,
@@ -175,7 +178,7 @@ mod tests {
         let scene = crate::scene::Scene::build(&loaded.scene);
         assert!(scene.has_index());
         let scan = |p: DVec3| {
-            let mut list = Interiors::default();
+            let mut list = MediumStack::default();
             for pass in [false, true] {
                 for i in 0..scene.object_count() {
                     let object = scene.object(ObjectId(i as u32));
@@ -194,7 +197,7 @@ mod tests {
             DVec3::new(0.0, -25.0, 0.0),
             DVec3::splat(40.0),
         ] {
-            let found = Interiors::at(&scene, p);
+            let found = MediumStack::at(&scene, p);
             assert_eq!(found.ids[..found.len].to_vec(), scan(p), "{p}");
         }
     }

@@ -15,8 +15,8 @@ use crate::scene::{
 use fog::{MISS_DEPTH, fogged};
 use glam::{DMat3, DVec3};
 use lights::LightSample;
-pub(super) use medium::Interiors;
-use medium::{Crossing, SAME_IOR, interior_fade};
+pub(super) use medium::MediumStack;
+use medium::{Refraction, SAME_IOR, interior_fade};
 pub use shadow::transmittance;
 
 /// POV-Ray's `MAX_DISTANCE`: hits farther along a ray than this are ignored.
@@ -124,10 +124,10 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// The colour seen along `ray` (unit direction), which is inside `interiors`. `level` is the
+    /// The colour seen along `ray` (unit direction), which is inside `media`. `level` is the
     /// ray's trace level (a camera ray is 1) and `weight` its contribution to the pixel; rays
     /// past `max_trace_level` or below `adc_bailout` return black, as in POV-Ray.
-    pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, interiors: &Interiors) -> Rgb {
+    pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, media: &MediumStack) -> Rgb {
         if level > self.scene.max_trace_level() || weight < self.scene.adc_bailout() {
             self.see_through = 0.0;
             return Rgb::ZERO;
@@ -145,11 +145,11 @@ impl<'a> Tracer<'a> {
             }
             Some(hit) => {
                 let surface = self.scene.surface(&ray, &hit);
-                let colour = self.shade(&ray, hit.t, &surface, level, weight, interiors);
+                let colour = self.shade(&ray, hit.t, &surface, level, weight, media);
                 (colour, hit.t)
             }
         };
-        if self.scene.fogs().is_empty() || !interiors.hollow(self.scene) {
+        if self.scene.fogs().is_empty() || !media.fog_reaches(self.scene) {
             return colour;
         }
         fogged(self.scene, ray.origin, ray.direction, depth, colour)
@@ -177,15 +177,9 @@ impl<'a> Tracer<'a> {
     }
 
     /// [`Tracer::trace`] for a reflected ray.
-    fn trace_reflected(
-        &mut self,
-        ray: &Ray,
-        level: u32,
-        weight: f64,
-        interiors: &Interiors,
-    ) -> Rgb {
+    fn trace_reflected(&mut self, ray: &Ray, level: u32, weight: f64, media: &MediumStack) -> Rgb {
         let was = std::mem::replace(&mut self.reflected, true);
-        let colour = self.trace(ray, level, weight, interiors);
+        let colour = self.trace(ray, level, weight, media);
         self.reflected = was;
         colour
     }
@@ -230,7 +224,7 @@ impl<'a> Tracer<'a> {
         hit: &SurfaceHit,
         level: u32,
         weight: f64,
-        interiors: &Interiors,
+        media: &MediumStack,
     ) -> Rgb {
         let material = self.scene.material(hit.material);
         // The normal slope and aoi patterns see: the surface's, until a layer's normal
@@ -244,7 +238,7 @@ impl<'a> Tracer<'a> {
                 hit,
                 level,
                 weight,
-                interiors,
+                media,
                 (&mut seen, None),
             ),
             Some(_) => self.shade_mapped(
@@ -254,7 +248,7 @@ impl<'a> Tracer<'a> {
                 hit,
                 level,
                 weight,
-                interiors,
+                media,
                 (&mut seen, None),
             ),
         }
@@ -272,20 +266,11 @@ impl<'a> Tracer<'a> {
         hit: &SurfaceHit,
         level: u32,
         weight: f64,
-        interiors: &Interiors,
+        media: &MediumStack,
         (seen, warp): (&mut DVec3, Option<&'a DMat3>),
     ) -> Rgb {
         let Some(map) = &material.map else {
-            return self.shade_layers(
-                material,
-                ray,
-                t,
-                hit,
-                level,
-                weight,
-                interiors,
-                (seen, warp),
-            );
+            return self.shade_layers(material, ray, t, hit, level, weight, media, (seen, warp));
         };
         let surface = Surface {
             normal: *seen,
@@ -298,16 +283,7 @@ impl<'a> Tracer<'a> {
                 texture_point,
                 ..*hit
             };
-            self.shade_mapped(
-                entry,
-                ray,
-                t,
-                hit,
-                level,
-                weight,
-                interiors,
-                (&mut *seen, warp),
-            )
+            self.shade_mapped(entry, ray, t, hit, level, weight, media, (&mut *seen, warp))
         })
     }
 
@@ -327,7 +303,7 @@ impl<'a> Tracer<'a> {
         hit: &SurfaceHit,
         level: u32,
         weight: f64,
-        interiors: &Interiors,
+        media: &MediumStack,
         (seen, warp): (&mut DVec3, Option<&DMat3>),
     ) -> Rgb {
         let scene = self.scene;
@@ -339,10 +315,10 @@ impl<'a> Tracer<'a> {
 
         // Relative indices for this crossing (POV-Ray §9.1).
         let object = scene.object(hit.object);
-        let crossing = Crossing::new(scene, interiors, hit.object);
+        let refraction = Refraction::new(scene, media, hit.object);
         let interior = scene.interior(object);
         // (POV-Ray's old `refraction` multiplies whatever passes through, inside or not.)
-        let fade = if crossing.inside && interior.fade_distance.abs() > 1e-10 {
+        let fade = if refraction.inside && interior.fade_distance.abs() > 1e-10 {
             interior_fade(interior, t * d.length()) * interior.refraction
         } else {
             Rgb::splat(interior.refraction)
@@ -351,7 +327,7 @@ impl<'a> Tracer<'a> {
         // Each layer (top first) adds its light as seen through the layers above it, `filter`
         // (POV-Ray's ComputeLightedTexture); a texture has one layer unless layered.
         let (n, colour, top_reflec) =
-            self.layer_at(material, hit, d, raw, crossing.fresnel_eta, (seen, warp));
+            self.layer_at(material, hit, d, raw, refraction.fresnel_eta, (seen, warp));
         let top_colour = colour;
         // (What the lower layers saw, replayed for their reflections below.)
         let mut replay = *seen;
@@ -366,8 +342,14 @@ impl<'a> Tracer<'a> {
                 break;
             }
             layers += 1;
-            let (n_l, colour, reflec) =
-                self.layer_at(layer, hit, d, raw, crossing.fresnel_eta, (&mut *seen, warp));
+            let (n_l, colour, reflec) = self.layer_at(
+                layer,
+                hit,
+                d,
+                raw,
+                refraction.fresnel_eta,
+                (&mut *seen, warp),
+            );
             result += self.layer_light(layer, &colour, n_l, ray, hit) * filter;
             filter *= filter_colour(&colour);
             if layer.finish.conserve_energy {
@@ -389,11 +371,11 @@ impl<'a> Tracer<'a> {
         }
         if wants_transmission && level < scene.max_trace_level() {
             let w = weight * filter.abs().max_element();
-            let eta = crossing.refraction_eta;
+            let eta = refraction.refraction_eta;
             if (eta - 1.0).abs() < SAME_IOR {
                 let through = scene.spawn(hit, ray.origin, d);
                 self.counts.transmitted += 1;
-                result += fade * self.trace(&through, level, w, &crossing.after) * filter;
+                result += fade * self.trace(&through, level, w, &refraction.after) * filter;
                 see_through = self.see_through * grey(filter);
             } else {
                 // Heckbert's refraction, c = −D·N with N facing the ray.
@@ -404,12 +386,13 @@ impl<'a> Tracer<'a> {
                     total_internal_reflection = true;
                     let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                     self.counts.reflected += 1;
-                    result += fade * self.trace_reflected(&mirror, level + 1, weight, interiors);
+                    result += fade * self.trace_reflected(&mirror, level + 1, weight, media);
                 } else {
                     let dir = (eta * d + (eta * cos_i - k.sqrt()) * n).normalize();
                     let refracted = scene.spawn(hit, ray.origin, dir);
                     self.counts.transmitted += 1;
-                    result += fade * self.trace(&refracted, level + 1, w, &crossing.after) * filter;
+                    result +=
+                        fade * self.trace(&refracted, level + 1, w, &refraction.after) * filter;
                     see_through = self.see_through * grey(filter);
                 }
             }
@@ -417,7 +400,7 @@ impl<'a> Tracer<'a> {
 
         // Mirror reflection of each layer, weighted by what the layers above let through
         // (after total internal reflection, only layers whose normal differs from the top's).
-        let ctx = (ray, hit, raw, level, interiors);
+        let ctx = (ray, hit, raw, level, media);
         if !total_internal_reflection {
             result += self.mirror(material, n, top_reflec, weight, ctx);
         }
@@ -436,7 +419,7 @@ impl<'a> Tracer<'a> {
                     hit,
                     d,
                     raw,
-                    crossing.fresnel_eta,
+                    refraction.fresnel_eta,
                     (&mut replay, warp),
                 );
                 previous = (layer, reflec, colour);
@@ -511,7 +494,7 @@ impl<'a> Tracer<'a> {
         n: DVec3,
         reflec: Rgb,
         weight: f64,
-        (ray, hit, raw, level, interiors): (&Ray, &SurfaceHit, DVec3, u32, &Interiors),
+        (ray, hit, raw, level, media): (&Ray, &SurfaceHit, DVec3, u32, &MediumStack),
     ) -> Rgb {
         if reflec.max_element() <= 0.0 {
             return Rgb::ZERO;
@@ -531,7 +514,7 @@ impl<'a> Tracer<'a> {
         } else {
             rf.max.max_element().max(rf.min.max_element())
         };
-        let mut seen = self.trace_reflected(&reflected, level + 1, weight * bound, interiors);
+        let mut seen = self.trace_reflected(&reflected, level + 1, weight * bound, media);
         if layer.finish.irid.amount > 0.0 {
             let to = reflected.direction.normalize();
             seen *= scene.irid(&layer.finish, to, ray.direction, n, hit.point);
