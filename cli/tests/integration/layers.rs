@@ -44,19 +44,7 @@ fn no_module_uses_one_against_the_pipeline_direction() {
     let src = root().join("src");
     let modules: BTreeSet<&str> = ALLOWED.iter().map(|(m, _)| *m).collect();
     let mut violations = Vec::new();
-    let mut files = Vec::new();
-    let mut stack = vec![src.clone()];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                files.push(path);
-            }
-        }
-    }
-    for path in files {
+    for path in rust_files(&src) {
         let rel = path.strip_prefix(&src).unwrap();
         let module = module_path(rel);
         let Some(first) = module.first() else {
@@ -89,19 +77,7 @@ fn no_module_uses_one_against_the_pipeline_direction() {
 /// and no use of the builder's state (`self.scene`).
 #[test]
 fn the_language_names_nothing_of_the_ir_builder() {
-    let dir = root().join("src/eval/lang");
-    let mut files = Vec::new();
-    let mut stack = vec![dir];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "rs") {
-                files.push(path);
-            }
-        }
-    }
+    let files = rust_files(&root().join("src/eval/lang"));
     assert!(files.len() >= 9, "the language's files: {files:?}");
     let src = root().join("src");
     let mut violations = Vec::new();
@@ -172,6 +148,23 @@ fn builder_uses_are_found_however_they_are_spelled() {
     ] {
         assert!(!builder_uses(text, &here).is_empty(), "{text}");
     }
+}
+
+/// The Rust files under `dir`, at any depth.
+fn rust_files(dir: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let mut files = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
+        }
+    }
+    files
 }
 
 /// The module a source file holds, from its path under src/ (`eval/flow.rs` → eval::flow,
