@@ -117,60 +117,6 @@ impl Scene {
         (i == 0 || base(i - 1) != own) && base(i + 1) != own
     }
 
-    /// The objects that could meet a shadow ray running from near `hull`'s apex to any point
-    /// of its base (the unbounded objects it does not exclude, and the bounded ones whose box
-    /// it does not exclude), appended to `out`. The apex lies on object `from`: a plane
-    /// cannot meet a shadow ray leaving its own surface (the ray starts off it, on the side
-    /// it travels to), so a plane `from` is left out.
-    pub fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>) {
-        let own_plane =
-            |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
-        match &self.index {
-            Some(index) => {
-                let objects = &self.objects;
-                out.extend(
-                    (index.unbounded.iter().copied()).filter(|&i| {
-                        !own_plane(i) && !hull.excludes_unbounded(&objects[i as usize])
-                    }),
-                );
-                index.each_kept(|lo, hi| !hull.excludes(lo, hi), |i| out.push(i));
-            }
-            None => {
-                for (i, b) in self.scan_bounds.iter().enumerate() {
-                    let kept = match b {
-                        Some((lo, hi)) => !hull.excludes(*lo, *hi),
-                        None => !own_plane(i as u32) && !hull.excludes_unbounded(&self.objects[i]),
-                    };
-                    if kept {
-                        out.push(i as u32);
-                    }
-                }
-            }
-        }
-    }
-
-    /// Whether some object of `candidates` can let light through to a shadow ray (then only
-    /// transport's shadow walk tells what reaches the light).
-    pub fn any_filters_shadows(&self, candidates: &[u32]) -> bool {
-        candidates.iter().any(|&i| self.filters_shadows(i))
-    }
-
-    /// Whether an opaque object among `candidates` blocks the shadow ray: when no candidate
-    /// filters shadows ([`Scene::any_filters_shadows`]) and every object the ray can meet is
-    /// a candidate, the ray's transmittance is 0 if so and 1 if not.
-    pub fn blocked_among(&self, ray: &Ray, candidates: &[u32]) -> bool {
-        let inv = ray.direction.recip();
-        candidates.iter().any(|&i| {
-            let object = &self.objects[i as usize];
-            // (A scene with a top-level index keeps no boxes per object: the shape decides.)
-            let bounds = self.scan_bounds.get(i as usize).copied().flatten();
-            !object.no_shadow
-                && may_hit(bounds, ray, inv)
-                && object.admits(ray)
-                && object.shape.occludes(&Self::local_ray(object, ray))
-        })
-    }
-
     fn local_ray(object: &Object, ray: &Ray) -> Ray {
         match &object.transform {
             None => *ray,
@@ -215,7 +161,7 @@ impl Scene {
 
     /// Calls `f`, in increasing order, with the index of each object whose box may hold `p`
     /// (every unbounded one included).
-    pub fn each_near(&self, p: DVec3, mut f: impl FnMut(u32)) {
+    fn each_near(&self, p: DVec3, mut f: impl FnMut(u32)) {
         let holds = |lo: DVec3, hi: DVec3| p.cmpge(lo).all() && p.cmple(hi).all();
         match &self.index {
             Some(index) => {
@@ -238,19 +184,6 @@ impl Scene {
                 }
             }
         }
-    }
-
-    /// Whether a ray starting at `p` (a camera's) starts inside `object`: as POV-Ray finds
-    /// the objects a camera ray starts in, the point must lie in the object's bounding box
-    /// too (a disc's inside is a half-space, but a camera outside the disc's flat box does not
-    /// start in it; its medium would change the Fresnel reflection of glass the ray leaves).
-    /// (The inside test first: an orthographic camera asks this for every ray, and the box is
-    /// worked out from the object's transformation.)
-    pub fn starts_inside(&self, object: &Object, p: DVec3) -> bool {
-        self.contains(object, p)
-            && object
-                .world_bounds()
-                .is_none_or(|(lo, hi)| p.cmpge(lo).all() && p.cmple(hi).all())
     }
 
     /// A ray leaving the surface at `hit` in direction `dir` (origin offset off the surface).
@@ -306,6 +239,32 @@ pub trait Queries {
     /// The inside test: whether world point `p` is inside object `id` (POV-Ray's; thin
     /// shapes have no inside; `inverse` swaps).
     fn inside(&self, id: ObjectId, p: DVec3) -> bool;
+
+    /// Whether a ray starting at `p` (a camera's) starts inside object `id`: as POV-Ray finds
+    /// the objects a camera ray starts in, the point must lie in the object's bounding box
+    /// too (a disc's inside is a half-space, but a camera outside the disc's flat box does not
+    /// start in it; its medium would change the Fresnel reflection of glass the ray leaves).
+    fn starts_inside(&self, id: ObjectId, p: DVec3) -> bool;
+
+    /// Calls `f`, in increasing order of id, with each object a ray starting at `p` starts
+    /// inside ([`Queries::starts_inside`]), finding them through the objects' boxes.
+    fn enclosing(&self, p: DVec3, f: impl FnMut(ObjectId));
+
+    /// Area-light culling: the objects that could meet a shadow ray running from near
+    /// `hull`'s apex to any point of its base (the unbounded objects it does not exclude, and
+    /// the bounded ones whose box it does not exclude), appended to `out`. The apex lies on
+    /// object `from`: a plane cannot meet a shadow ray leaving its own surface (the ray starts
+    /// off it, on the side it travels to), so a plane `from` is left out.
+    fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>);
+
+    /// Whether some object of `candidates` can let light through to a shadow ray (then only
+    /// transport's shadow walk tells what reaches the light).
+    fn any_filters_shadows(&self, candidates: &[u32]) -> bool;
+
+    /// Whether an opaque object among `candidates` blocks the shadow ray: when no candidate
+    /// filters shadows ([`Queries::any_filters_shadows`]) and every object the ray can meet is
+    /// a candidate, the ray's transmittance is 0 if so and 1 if not.
+    fn blocked_among(&self, ray: &Ray, candidates: &[u32]) -> bool;
 }
 
 impl Queries for Scene {
@@ -433,6 +392,68 @@ impl Queries for Scene {
 
     fn inside(&self, id: ObjectId, p: DVec3) -> bool {
         self.contains(&self.objects[id.0 as usize], p)
+    }
+
+    fn starts_inside(&self, id: ObjectId, p: DVec3) -> bool {
+        let object = &self.objects[id.0 as usize];
+        // (The inside test first: an orthographic camera asks this for every ray, and the box
+        // is worked out from the object's transformation.)
+        self.contains(object, p)
+            && object
+                .world_bounds()
+                .is_none_or(|(lo, hi)| p.cmpge(lo).all() && p.cmple(hi).all())
+    }
+
+    fn enclosing(&self, p: DVec3, mut f: impl FnMut(ObjectId)) {
+        self.each_near(p, |i| {
+            if self.starts_inside(ObjectId(i), p) {
+                f(ObjectId(i));
+            }
+        });
+    }
+
+    fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>) {
+        let own_plane =
+            |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
+        match &self.index {
+            Some(index) => {
+                let objects = &self.objects;
+                out.extend(
+                    (index.unbounded.iter().copied()).filter(|&i| {
+                        !own_plane(i) && !hull.excludes_unbounded(&objects[i as usize])
+                    }),
+                );
+                index.each_kept(|lo, hi| !hull.excludes(lo, hi), |i| out.push(i));
+            }
+            None => {
+                for (i, b) in self.scan_bounds.iter().enumerate() {
+                    let kept = match b {
+                        Some((lo, hi)) => !hull.excludes(*lo, *hi),
+                        None => !own_plane(i as u32) && !hull.excludes_unbounded(&self.objects[i]),
+                    };
+                    if kept {
+                        out.push(i as u32);
+                    }
+                }
+            }
+        }
+    }
+
+    fn any_filters_shadows(&self, candidates: &[u32]) -> bool {
+        candidates.iter().any(|&i| self.filters_shadows(i))
+    }
+
+    fn blocked_among(&self, ray: &Ray, candidates: &[u32]) -> bool {
+        let inv = ray.direction.recip();
+        candidates.iter().any(|&i| {
+            let object = &self.objects[i as usize];
+            // (A scene with a top-level index keeps no boxes per object: the shape decides.)
+            let bounds = self.scan_bounds.get(i as usize).copied().flatten();
+            !object.no_shadow
+                && may_hit(bounds, ray, inv)
+                && object.admits(ray)
+                && object.shape.occludes(&Self::local_ray(object, ray))
+        })
     }
 }
 

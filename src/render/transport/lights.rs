@@ -3,7 +3,7 @@
 
 use super::Tracer;
 use crate::geometry::Ray;
-use crate::scene::{AreaLight, Light, LightKind, Rgb, ShadowHull, SurfaceHit};
+use crate::scene::{AreaLight, Light, LightKind, Queries, Rgb, ShadowHull, SurfaceHit};
 use glam::DVec3;
 
 /// POV-Ray ignores a light whose cosine with the normal is below this.

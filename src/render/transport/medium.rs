@@ -1,7 +1,7 @@
 //! The media a ray is in (the medium stack, POV-Ray's interior list), what crossing a surface
 //! does to it (refraction's and Fresnel's ratios of indices), and the interior fade.
 
-use crate::scene::{Interior, ObjectId, Rgb, Scene};
+use crate::scene::{Interior, ObjectId, Queries, Rgb, Scene};
 use glam::DVec3;
 
 /// |η − 1| below this counts as "no change of medium" (POV-Ray's test).
@@ -31,16 +31,10 @@ impl MediumStack {
         let mut list = MediumStack::default();
         let mut later = MediumStack::default();
         let bounded_last = scene.bounded_last();
-        // Only objects whose boxes hold the point can hold it (the first pass lists the
-        // unbounded ones when the bounded come last).
-        scene.each_near(p, |i| {
-            let object = scene.object(ObjectId(i));
-            if scene.starts_inside(object, p) {
-                match bounded_last && object.bounded {
-                    false => list.push(ObjectId(i)),
-                    true => later.push(ObjectId(i)),
-                }
-            }
+        // (The unbounded ones first when the bounded come last.)
+        scene.enclosing(p, |id| match bounded_last && scene.object(id).bounded {
+            false => list.push(id),
+            true => later.push(id),
         });
         for &i in &later.ids[..later.len] {
             list.push(ObjectId(i));
@@ -183,7 +177,7 @@ mod tests {
                 for i in 0..scene.object_count() {
                     let object = scene.object(ObjectId(i as u32));
                     let second = scene.bounded_last() && object.bounded;
-                    if second == pass && scene.starts_inside(object, p) {
+                    if second == pass && scene.starts_inside(ObjectId(i as u32), p) {
                         list.push(ObjectId(i as u32));
                     }
                 }
