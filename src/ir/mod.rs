@@ -910,6 +910,9 @@ pub struct Interior {
     /// What the light passing through the surface is multiplied by (default 1): POV-Ray's
     /// old `refraction` (of a finish, which a plain texture's finish sets; or of an interior).
     pub refraction: f64,
+    /// Fake caustics (`caustics F`, stored as POV-Ray stores it: F·45, default 0): a shadow
+    /// ray crossing the surface is brightened by 1 + |cos|^caustics for each texture layer.
+    pub caustics: f64,
 }
 
 impl Default for Interior {
@@ -920,6 +923,7 @@ impl Default for Interior {
             fade_power: 0.0,
             fade_colour: Rgb::ZERO,
             refraction: 1.0,
+            caustics: 0.0,
         }
     }
 }
@@ -934,6 +938,9 @@ impl std::fmt::Debug for Interior {
             .field("fade_colour", &self.fade_colour);
         if self.refraction != 1.0 {
             d.field("refraction", &self.refraction);
+        }
+        if self.caustics != 0.0 {
+            d.field("caustics", &self.caustics);
         }
         d.finish()
     }
@@ -979,6 +986,9 @@ pub struct Finish {
     pub legacy_ior: Option<f64>,
     /// POV-Ray's old `refraction` of a finish (default 1): moved to the interior likewise.
     pub legacy_refraction: f64,
+    /// POV-Ray's old `caustics` of a finish (moved to the object's interior, as written: not
+    /// times 45 as `interior { caustics }` is; a negative value is not moved).
+    pub legacy_caustics: Option<f64>,
 }
 
 // (The old interior items are shown only when given: scenes without them read as before.)
@@ -1004,6 +1014,9 @@ impl std::fmt::Debug for Finish {
         }
         if self.legacy_refraction != 1.0 {
             d.field("legacy_refraction", &self.legacy_refraction);
+        }
+        if let Some(c) = self.legacy_caustics {
+            d.field("legacy_caustics", &c);
         }
         d.finish()
     }
@@ -1039,6 +1052,7 @@ impl Default for Finish {
             irid: Irid::default(),
             legacy_ior: None,
             legacy_refraction: 1.0,
+            legacy_caustics: None,
         }
     }
 }

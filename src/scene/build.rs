@@ -220,6 +220,7 @@ fn interior_key(i: &Interior) -> u64 {
         i.fade_colour.y,
         i.fade_colour.z,
         i.refraction,
+        i.caustics,
     ]
     .iter()
     .fold(0u64, |h, v| {

@@ -188,6 +188,33 @@ impl Material {
             .fold(Rgb::ONE, |a, b| a * b)
     }
 
+    /// [`Material::filter_on`] with POV-Ray's fake caustics (`interior { caustics }`): each
+    /// layer's filter times 1 + |n·d|^`caustics`, `n` the surface normal `raw` as the layer's own
+    /// normal pattern tilts it (if it has one), `d` the shadow ray's unit direction.
+    pub fn filter_with_caustics(
+        &self,
+        p: DVec3,
+        surface: &crate::pattern::Surface,
+        (raw, d): (DVec3, DVec3),
+        caustics: f64,
+    ) -> Rgb {
+        if let Some(m) = &self.map {
+            return m.blend(p, surface, |e, at| {
+                e.filter_with_caustics(at, surface, (raw, d), caustics)
+            });
+        }
+        self.layers()
+            .map(|l| {
+                let n = l
+                    .normal
+                    .as_ref()
+                    .map_or(raw, |n| n.perturb_on(p, raw, surface));
+                filter_colour(&l.pigment.colour_on(p, surface))
+                    * (1.0 + n.dot(d).abs().powf(caustics))
+            })
+            .fold(Rgb::ONE, |a, b| a * b)
+    }
+
     /// What the surface lets through at `p`: the product over the layers of
     /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {

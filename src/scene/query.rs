@@ -377,8 +377,9 @@ impl Queries for Scene {
     fn crossing_filter(&self, ray: &Ray, c: &ShadowCrossing) -> Rgb {
         let (i, t, part) = (c.object.0, c.t, c.part);
         let object = &self.objects[i as usize];
+        let caustics = self.interior(object).caustics;
         let material = self.crossing_material(object, ray, t, part);
-        if !material.uses_surface() {
+        if !material.uses_surface() && caustics == 0.0 {
             return material.filter_at(ray.at(t));
         }
         let hit = Hit {
@@ -387,7 +388,18 @@ impl Queries for Scene {
             part,
         };
         let s = self.surface(ray, &hit);
-        self.material(s.material).filter_on(s.point, &s.surface)
+        let material = self.material(s.material);
+        if caustics != 0.0 {
+            let d = ray.direction / ray.direction.length();
+            // (The normal turned to face the shadow ray, as POV-Ray turns it.)
+            let n = if s.normal.dot(d) > 0.0 {
+                -s.normal
+            } else {
+                s.normal
+            };
+            return material.filter_with_caustics(s.point, &s.surface, (n, d), caustics);
+        }
+        material.filter_on(s.point, &s.surface)
     }
 
     fn inside(&self, id: ObjectId, p: DVec3) -> bool {

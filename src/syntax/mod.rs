@@ -241,6 +241,8 @@ pub enum NodeKind {
     Refraction,
     FadeDistance,
     FadePower,
+    /// `caustics F` of an interior.
+    Caustics,
     FadeColour,
     // Directives.
     IfDef,
@@ -954,6 +956,7 @@ impl<'u> Lower<'u> {
             Rule::refraction => NodeKind::Refraction,
             Rule::fade_distance => NodeKind::FadeDistance,
             Rule::fade_power => NodeKind::FadePower,
+            Rule::caustics => NodeKind::Caustics,
             Rule::fade_colour => NodeKind::FadeColour,
             Rule::write_item => NodeKind::WriteItem,
             Rule::layered_texture => NodeKind::LayeredTexture,
@@ -1495,6 +1498,7 @@ fn is_word(rule: Rule) -> bool {
             | kw_refraction
             | kw_fade_distance
             | kw_fade_power
+            | kw_caustics
             | kw_fade_color
             | kw_fade_colour
             | kw_if

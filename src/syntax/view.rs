@@ -222,6 +222,7 @@ pub enum View<'a> {
     Refraction(&'a Expr),
     FadeDistance(&'a Expr),
     FadePower(&'a Expr),
+    Caustics(&'a Expr),
     FadeColour(&'a Expr),
     RangeHead {
         low: &'a Expr,
@@ -696,6 +697,7 @@ impl Node {
             NodeKind::Refraction => one(args).map_or(View::Malformed, View::Refraction),
             NodeKind::FadeDistance => one(args).map_or(View::Malformed, View::FadeDistance),
             NodeKind::FadePower => one(args).map_or(View::Malformed, View::FadePower),
+            NodeKind::Caustics => one(args).map_or(View::Malformed, View::Caustics),
             NodeKind::FadeColour => one(args).map_or(View::Malformed, View::FadeColour),
             NodeKind::RangeHead => match args {
                 [low, high] => View::RangeHead { low, high },

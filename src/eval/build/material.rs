@@ -1768,6 +1768,13 @@ impl Evaluator<'_> {
                 (_, View::ReflectionExponent(value)) => f.reflection.exponent = ev.float(value)?,
                 // POV-Ray's old interior items in a finish: moved to the object's interior
                 // when it is placed (`Evaluator::place`), with POV-Ray's warnings.
+                (_, View::Caustics(value)) => {
+                    f.legacy_caustics = Some(ev.float(value)?);
+                    ev.warnings.push(Diagnostic::warning(
+                        "caustics should be given in `interior { … }` (POV-Ray reads it from a finish too, but not times 45 as there)",
+                        item.word_span,
+                    ));
+                }
                 (_, View::Ior(value)) => {
                     let ior = ev.float(value)?;
                     if ior <= 0.0 {
@@ -1846,6 +1853,8 @@ impl Evaluator<'_> {
                 }
                 (_, View::FadeDistance(value)) => interior.fade_distance = ev.float(value)?,
                 (_, View::FadePower(value)) => interior.fade_power = ev.float(value)?,
+                // (POV-Ray keeps the value times 45: the exponent of the cosine.)
+                (_, View::Caustics(value)) => interior.caustics = ev.float(value)? * 45.0,
                 (_, View::FadeColour(value)) => interior.fade_colour = ev.rgb_arg(value)?,
                 // (Set again by a plain texture's finish when the object is placed.)
                 (_, View::Refraction(value)) => {

@@ -1295,12 +1295,17 @@ impl Evaluator<'_> {
             // (its `ior` if given, its `refraction` always: POV-Ray's Post_Process).
             let mut own = part.interior.or(object.interior);
             let finish = &texture.finish;
+            let legacy_caustics = finish.legacy_caustics.filter(|c| *c >= 0.0);
             if texture.map.is_none()
-                && (own.is_some() || finish.legacy_ior.is_some() || finish.legacy_refraction != 1.0)
+                && (own.is_some()
+                    || finish.legacy_ior.is_some()
+                    || finish.legacy_refraction != 1.0
+                    || legacy_caustics.is_some())
             {
                 let mut i = own.unwrap_or_default();
                 i.ior = finish.legacy_ior.unwrap_or(i.ior);
                 i.refraction = finish.legacy_refraction;
+                i.caustics = legacy_caustics.unwrap_or(i.caustics);
                 own = Some(i);
             }
             // (Objects without an interior share one default interior.)

@@ -71,6 +71,7 @@ impl Evaluator<'_> {
             i.fade_colour.x,
             i.fade_colour.y,
             i.fade_colour.z,
+            i.caustics,
         ]);
         share(&mut self.scene.interiors, key, interior)
     }

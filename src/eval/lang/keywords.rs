@@ -65,6 +65,7 @@ const SUPPORTED: &[&str] = &[
     "bumps",
     "camera",
     "case",
+    "caustics",
     "ceil",
     "cells",
     "charset",
@@ -478,7 +479,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
         "polynomial" | "lemon" => "this shape is not supported by trace yet",
         "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
         | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
-        "dispersion" | "caustics" => "this interior item is outside trace's subset",
+        "dispersion" => "this interior item is outside trace's subset",
         "albedo" => "this finish item is outside trace's subset",
         "media_interaction" | "media_attenuation" => {
             "this light_source item is outside trace's subset"
