@@ -928,6 +928,29 @@ impl Default for Interior {
     }
 }
 
+impl Interior {
+    /// The bits of its values, as a key for sharing equal interiors (equal interiors, equal
+    /// keys; the sharing still compares the values).
+    pub fn key(&self) -> u64 {
+        [
+            self.ior,
+            self.fade_distance,
+            self.fade_power,
+            self.fade_colour.x,
+            self.fade_colour.y,
+            self.fade_colour.z,
+            self.refraction,
+            self.caustics,
+        ]
+        .iter()
+        .fold(0u64, |h, v| {
+            (h ^ v.to_bits())
+                .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                .rotate_left(29)
+        })
+    }
+}
+
 // (The old `refraction` is shown only when set: scenes without it read as before.)
 impl std::fmt::Debug for Interior {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

@@ -210,26 +210,6 @@ fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
     }
 }
 
-/// The bits of an interior, as a key for sharing equal ones.
-fn interior_key(i: &Interior) -> u64 {
-    [
-        i.ior,
-        i.fade_distance,
-        i.fade_power,
-        i.fade_colour.x,
-        i.fade_colour.y,
-        i.fade_colour.z,
-        i.refraction,
-        i.caustics,
-    ]
-    .iter()
-    .fold(0u64, |h, v| {
-        (h ^ v.to_bits())
-            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
-            .rotate_left(29)
-    })
-}
-
 impl Scene {
     /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
@@ -251,7 +231,7 @@ impl Scene {
         let generator = ir.settings.noise_generator;
         let (interior_ids, interiors) = shared_ids(
             &ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(),
-            interior_key,
+            |i| i.key(),
             |a, b| a == b,
         );
         let interiors: Vec<Interior> = interiors.into_iter().copied().collect();

@@ -63,16 +63,7 @@ impl Evaluator<'_> {
         &mut self,
         interior: ir::Interior,
     ) -> std::sync::Arc<ir::Interior> {
-        let i = &interior;
-        let key = bits_key([
-            i.ior,
-            i.fade_distance,
-            i.fade_power,
-            i.fade_colour.x,
-            i.fade_colour.y,
-            i.fade_colour.z,
-            i.caustics,
-        ]);
+        let key = interior.key();
         share(&mut self.scene.interiors, key, interior)
     }
 }
