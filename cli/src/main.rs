@@ -662,6 +662,16 @@ fn stats_block(
         "Reflected: {:>12}   Refracted: {:>12}   Cut at max_trace_level: {}",
         c.reflected, c.transmitted, c.depth_limited
     );
+    // (POV-Ray's line, printed as it prints it: only when media were sampled.)
+    if c.media_intervals > 0 {
+        let _ = writeln!(
+            out,
+            "Media Intervals: {:>15}   Media Samples: {:>15} ({:4.2})",
+            c.media_intervals,
+            c.media_samples,
+            c.media_samples as f64 / c.media_intervals as f64
+        );
+    }
     let _ = writeln!(out, "{line}");
     let _ = writeln!(
         out,

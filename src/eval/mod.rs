@@ -303,6 +303,7 @@ impl<'a> Evaluator<'a> {
             scene: build::Builder {
                 sky_sphere: None,
                 fogs: Vec::new(),
+                atmosphere: Vec::new(),
                 settings: ir::Settings::default(),
                 camera: None,
                 lights: Vec::new(),
@@ -516,6 +517,10 @@ impl<'a> Evaluator<'a> {
             (NodeKind::Fog, _) => {
                 let fog = self.fog(node)?;
                 self.scene.fogs.push(fog);
+            }
+            (NodeKind::Media, _) => {
+                let media = self.media(node)?;
+                self.scene.atmosphere.push(media);
             }
             (_, View::Background(value)) => {
                 let v = self.eval(value)?;

@@ -39,6 +39,7 @@ pub enum Value {
     /// A colour: red, green, blue, filter, transmit.
     Colour([f64; 5]),
     Pigment(Box<ir::Pigment>),
+    Media(Box<ir::Media>),
     /// A declared normal.
     Normal(Box<ir::Normal>),
     /// A declared sky_sphere.
@@ -99,6 +100,7 @@ impl Value {
             Value::Vector(_) => "a vector",
             Value::Colour(_) => "a colour",
             Value::Pigment(_) => "a pigment",
+            Value::Media(_) => "a media",
             Value::Normal(_) => "a normal",
             Value::SkySphere(_) => "a sky_sphere",
             Value::Finish(_) => "a finish",

@@ -47,7 +47,7 @@ pub trait ObjectQuery: Send + Sync {
 }
 
 /// The whole scene.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Scene {
     /// The camera (POV-Ray's default camera when the scene has none).
     pub camera: Camera,
@@ -66,8 +66,28 @@ pub struct Scene {
     pub sky_sphere: Option<SkySphere>,
     /// `fog { … }` statements (their order does not matter).
     pub fogs: Vec<Fog>,
+    /// Top-level `media { … }` blocks: the atmosphere, in source order.
+    pub atmosphere: Vec<Media>,
     /// Scene-wide settings.
     pub settings: Settings,
+}
+
+// (The atmosphere is shown only when there is one: scenes without read as before.)
+impl std::fmt::Debug for Scene {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Scene");
+        d.field("camera", &self.camera)
+            .field("lights", &self.lights)
+            .field("objects", &self.objects)
+            .field("background", &self.background)
+            .field("background_alpha", &self.background_alpha)
+            .field("sky_sphere", &self.sky_sphere)
+            .field("fogs", &self.fogs);
+        if !self.atmosphere.is_empty() {
+            d.field("atmosphere", &self.atmosphere);
+        }
+        d.field("settings", &self.settings).finish()
+    }
 }
 
 /// `fog { … }`: along a ray segment of length `w` in hollow space, the colour `c` becomes
@@ -257,7 +277,7 @@ impl Projection {
 }
 
 /// A point light. `.rt`: `light_source { <x, y, z>, color rgb <r, g, b> }`.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Light {
     /// World position (after the light's transformations).
     pub position: DVec3,
@@ -273,10 +293,37 @@ pub struct Light {
     pub area: Option<AreaLight>,
     /// The `light_group` the light belongs to: it lights only that group's objects.
     pub group: Option<u32>,
+    /// `media_interaction` (default on): the light scatters in media.
+    pub media_interaction: bool,
+    /// `media_attenuation` (default off): the atmosphere dims the light's shadow rays.
+    pub media_attenuation: bool,
     /// `projected_through { … }`: the light reaches a point only along rays that cross this
     /// object (its parts, placed in the world); nothing between it and the light casts a
     /// shadow.
     pub projected_through: Option<Arc<Vec<Object>>>,
+}
+
+// (The media flags are shown only when not the defaults: scenes without them read as
+// before.)
+impl std::fmt::Debug for Light {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mut d = f.debug_struct("Light");
+        d.field("position", &self.position)
+            .field("colour", &self.colour)
+            .field("kind", &self.kind)
+            .field("shadowless", &self.shadowless)
+            .field("fade", &self.fade)
+            .field("area", &self.area)
+            .field("group", &self.group)
+            .field("projected_through", &self.projected_through);
+        if !self.media_interaction {
+            d.field("media_interaction", &false);
+        }
+        if self.media_attenuation {
+            d.field("media_attenuation", &true);
+        }
+        d.finish()
+    }
 }
 
 /// How a light emits.
@@ -896,8 +943,8 @@ impl Default for ColourMap {
 /// A decoded image (`image_map`, `image_pattern`, `bump_map`).
 pub use crate::pattern::image::ImageMap;
 
-/// `interior { ior fade_distance fade_power fade_color }`.
-#[derive(Clone, Copy, PartialEq)]
+/// `interior { ior fade_distance fade_power fade_color caustics media {…} }`.
+#[derive(Clone, PartialEq)]
 pub struct Interior {
     /// Index of refraction (default 1).
     pub ior: f64,
@@ -913,6 +960,8 @@ pub struct Interior {
     /// Fake caustics (`caustics F`, stored as POV-Ray stores it: F·45, default 0): a shadow
     /// ray crossing the surface is brightened by 1 + |cos|^caustics for each texture layer.
     pub caustics: f64,
+    /// `media { … }` blocks, in source order (seen only by rays inside a hollow object).
+    pub media: Vec<Media>,
 }
 
 impl Default for Interior {
@@ -924,6 +973,7 @@ impl Default for Interior {
             fade_colour: Rgb::ZERO,
             refraction: 1.0,
             caustics: 0.0,
+            media: Vec::new(),
         }
     }
 }
@@ -941,6 +991,7 @@ impl Interior {
             self.fade_colour.z,
             self.refraction,
             self.caustics,
+            self.media.len() as f64,
         ]
         .iter()
         .fold(0u64, |h, v| {
@@ -964,6 +1015,9 @@ impl std::fmt::Debug for Interior {
         }
         if self.caustics != 0.0 {
             d.field("caustics", &self.caustics);
+        }
+        if !self.media.is_empty() {
+            d.field("media", &self.media);
         }
         d.finish()
     }
@@ -1114,6 +1168,92 @@ impl Reflection {
     /// Whether this finish reflects at all.
     pub fn is_some(&self) -> bool {
         self.min.max_element() > 0.0 || self.max.max_element() > 0.0
+    }
+}
+
+impl Interior {
+    /// Moves the interior's media densities by `t` (an object's transformation: the media's
+    /// coefficients stay per unit of world length, as in POV-Ray).
+    pub fn transform(&mut self, t: Transform) {
+        for m in &mut self.media {
+            m.transform(t);
+        }
+    }
+}
+
+/// `media { … }`: participating media, POV-Ray 3.7's, every default filled in for the
+/// scene's `#version` (method 3, one interval, 10 samples from 3.5 on; method 1, 10
+/// intervals, 1 sample before).
+///
+/// `.rt`: `media { absorption 0.5 emission <1, 0.5, 0> scattering { 1, 0.2 } density { … } }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Media {
+    /// `method` 1 (random samples), 2 (stratified) or 3 (adaptive).
+    pub method: u32,
+    /// `intervals` (at least 1).
+    pub intervals: u32,
+    /// `samples Min, Max` (1 ≤ Min ≤ Max).
+    pub samples: (u32, u32),
+    /// `confidence` (default 0.9) and `variance` (default 1/128): when methods 1 and 2 take
+    /// more samples.
+    pub confidence: f64,
+    /// See `confidence`.
+    pub variance: f64,
+    /// `ratio` (default 0.9): the share of intervals given to lit parts of a ray.
+    pub ratio: f64,
+    /// `jitter` (default 0).
+    pub jitter: f64,
+    /// `aa_threshold` (default 0.1) and `aa_level` (default 3): method 3's refinement.
+    pub aa_threshold: f64,
+    /// See `aa_threshold`.
+    pub aa_level: u32,
+    /// `absorption`, per unit of world length.
+    pub absorption: Rgb,
+    /// `emission`, per unit of world length.
+    pub emission: Rgb,
+    /// `scattering { TYPE, … }`: 1 isotropic, 2 Mie hazy, 3 Mie murky, 4 Rayleigh,
+    /// 5 Henyey-Greenstein (any other number scatters as 1).
+    pub scattering_type: i32,
+    /// The scattering colour, per unit of world length.
+    pub scattering: Rgb,
+    /// `eccentricity` of type 5.
+    pub eccentricity: f64,
+    /// `extinction` (default 1): how much scattering also dims the light.
+    pub extinction: f64,
+    /// `density { … }` blocks, the last written first (POV-Ray's list order); the densities
+    /// multiply, and a medium without one has density 1.
+    pub densities: Vec<Pigment>,
+}
+
+impl Media {
+    /// POV-Ray's defaults for a scene of `#version` `version` (3.5 changed four).
+    pub fn new(version: f64) -> Media {
+        let modern = version >= 3.5 - 1e-9;
+        Media {
+            method: if modern { 3 } else { 1 },
+            intervals: if modern { 1 } else { 10 },
+            samples: if modern { (10, 10) } else { (1, 1) },
+            confidence: 0.9,
+            variance: 1.0 / 128.0,
+            ratio: 0.9,
+            jitter: 0.0,
+            aa_threshold: 0.1,
+            aa_level: 3,
+            absorption: Rgb::ZERO,
+            emission: Rgb::ZERO,
+            scattering_type: 1,
+            scattering: Rgb::ZERO,
+            eccentricity: 0.0,
+            extinction: 1.0,
+            densities: Vec::new(),
+        }
+    }
+
+    /// Moves every density by `t` (after its own transformations).
+    pub fn transform(&mut self, t: Transform) {
+        for d in &mut self.densities {
+            t.append_to(&mut d.transform);
+        }
     }
 }
 

@@ -234,7 +234,7 @@ impl Scene {
             |i| i.key(),
             |a, b| a == b,
         );
-        let interiors: Vec<Interior> = interiors.into_iter().copied().collect();
+        let interiors: Vec<Interior> = interiors.into_iter().cloned().collect();
         let mut materials: Vec<Material> = textures
             .into_iter()
             .map(|t| Material::new(t, pattern_defaults(ir)))
@@ -343,6 +343,8 @@ impl Scene {
                     fade: l.fade,
                     area: l.area.clone(),
                     group: l.group,
+                    media_interaction: l.media_interaction,
+                    media_attenuation: l.media_attenuation,
                     through: l.projected_through.as_ref().map(|parts| {
                         parts
                             .iter()
@@ -353,7 +355,18 @@ impl Scene {
                 .collect(),
             objects,
             materials,
+            interior_media: interiors
+                .iter()
+                .map(|i| {
+                    (i.media.iter())
+                        .map(|m| Media::new(m, pattern_defaults(ir)))
+                        .collect()
+                })
+                .collect(),
             interiors,
+            atmosphere: (ir.atmosphere.iter())
+                .map(|m| Media::new(m, pattern_defaults(ir)))
+                .collect(),
             background: ir.background,
             background_alpha: ir.background_alpha,
             sky_sphere: ir.sky_sphere.as_ref().map(|s| SkySphere {
@@ -862,6 +875,7 @@ mod tests {
             background_alpha: 0.0,
             sky_sphere: None,
             fogs: vec![],
+            atmosphere: vec![],
             settings: ir::Settings::default(),
         };
         Scene::build(&ir)

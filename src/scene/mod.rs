@@ -15,6 +15,7 @@ mod accel;
 pub mod blur;
 mod build;
 mod material;
+mod media;
 pub mod meshcam;
 mod normal;
 mod pigment;
@@ -27,6 +28,7 @@ pub use crate::ir::{
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
 pub use material::{Material, filter_colour};
+pub use media::Media;
 pub use normal::Normal;
 pub use pigment::{Pigment, pigment_function};
 pub use probe::object_query;
@@ -59,6 +61,10 @@ pub struct Scene {
     materials: Vec<Material>,
     /// Distinct interiors.
     interiors: Vec<Interior>,
+    /// The media of each of `interiors` (most have none).
+    interior_media: Vec<Vec<Media>>,
+    /// Top-level `media`: the atmosphere.
+    atmosphere: Vec<Media>,
     /// Colour of escaped rays.
     background: Rgb,
     /// The background's opacity in an alpha channel.
@@ -160,6 +166,23 @@ impl Scene {
         &self.fogs
     }
 
+    /// The atmosphere: top-level media, seen on rays in hollow space.
+    #[inline]
+    pub fn atmosphere(&self) -> &[Media] {
+        &self.atmosphere
+    }
+
+    /// The media inside object `id` (seen by rays inside it when it is hollow).
+    #[inline]
+    pub fn media_in(&self, id: ObjectId) -> &[Media] {
+        &self.interior_media[self.objects[id.0 as usize].interior as usize]
+    }
+
+    /// Whether any object holds media.
+    pub fn any_interior_media(&self) -> bool {
+        self.interior_media.iter().any(|m| !m.is_empty())
+    }
+
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
     /// unbounded objects first.
     #[inline]
@@ -259,6 +282,10 @@ pub struct Light {
     pub through: Option<Box<[BoundShape]>>,
     /// The `light_group` it lights alone.
     pub group: Option<u32>,
+    /// It scatters in media (`media_interaction`).
+    pub media_interaction: bool,
+    /// The atmosphere dims its shadow rays (`media_attenuation`).
+    pub media_attenuation: bool,
 }
 
 /// The sky: pigments of the ray's direction, the last on top.

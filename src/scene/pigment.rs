@@ -98,6 +98,11 @@ impl Pigment {
         }
     }
 
+    /// Whether the pigment is one colour everywhere.
+    pub fn is_solid(&self) -> bool {
+        matches!(self.kind, Kind::Solid(_))
+    }
+
     /// The colour at world point `p`, off any surface.
     pub fn colour_at(&self, p: DVec3) -> Colour {
         self.colour_on(p, &Surface::default())

@@ -43,6 +43,18 @@ pub enum NodeKind {
     FogOffset,
     TurbDepth,
     FogColour,
+    /// `media { … }`: in an interior, or (standing alone) the atmosphere.
+    Media,
+    /// A media setting (`samples 10, 20`, `absorption C`): its word and values.
+    MediaSetting,
+    /// `scattering { TYPE, COLOUR … }`.
+    Scattering,
+    /// `eccentricity G` or `extinction E` in a scattering block.
+    ScatteringSetting,
+    /// `density { … }`: a pigment's body whose colour is a medium's density.
+    Density,
+    /// `media_interaction B` or `media_attenuation B` of a light.
+    LightMedia,
     GlobalSettings,
     AssumedGamma,
     MaxTraceLevel,
@@ -808,6 +820,12 @@ impl<'u> Lower<'u> {
             Rule::light_source => NodeKind::LightSource,
             Rule::background => NodeKind::Background,
             Rule::fog => NodeKind::Fog,
+            Rule::media => NodeKind::Media,
+            Rule::media_setting => NodeKind::MediaSetting,
+            Rule::scattering => NodeKind::Scattering,
+            Rule::scattering_setting => NodeKind::ScatteringSetting,
+            Rule::density => NodeKind::Density,
+            Rule::light_media => NodeKind::LightMedia,
             Rule::fog_distance => NodeKind::FogDistance,
             Rule::fog_type => NodeKind::FogType,
             Rule::fog_alt => NodeKind::FogAlt,
@@ -1355,6 +1373,13 @@ fn is_word(rule: Rule) -> bool {
             | kw_contained_by
             | iso_word
             | camera_blur_kw
+            | media_kw
+            | scattering_kw
+            | light_media_kw
+            | kw_media
+            | kw_scattering
+            | kw_density
+            | kw_density_map
             | kw_threshold
             | kw_component
             | kw_strength

@@ -86,6 +86,21 @@ pub enum View<'a> {
         value: &'a Expr,
         max: Option<&'a Expr>,
     },
+    /// A media setting: its word is the node's; `second` only for `samples Min, Max`.
+    MediaSetting {
+        value: &'a Expr,
+        second: Option<&'a Expr>,
+    },
+    /// `scattering { TYPE, COLOUR … }` (eccentricity and extinction are its children).
+    Scattering {
+        kind: &'a Expr,
+        colour: &'a Expr,
+    },
+    ScatteringSetting(&'a Expr),
+    /// `media_interaction [B]` / `media_attenuation [B]` (the word says which).
+    LightMedia {
+        on: Option<&'a Expr>,
+    },
     Function {
         body: Option<&'a Expr>,
     },
@@ -478,6 +493,24 @@ impl Node {
                 [major, minor] => View::Torus { major, minor },
                 _ => View::Malformed,
             },
+            NodeKind::MediaSetting => match args {
+                [value, rest @ ..] if rest.len() <= 1 => View::MediaSetting {
+                    value,
+                    second: rest.first(),
+                },
+                _ => View::Malformed,
+            },
+            NodeKind::Scattering => match args {
+                [kind, colour] => View::Scattering { kind, colour },
+                _ => View::Malformed,
+            },
+            NodeKind::ScatteringSetting => {
+                one(args).map_or(View::Malformed, View::ScatteringSetting)
+            }
+            NodeKind::LightMedia => match args {
+                rest if rest.len() <= 1 => View::LightMedia { on: rest.first() },
+                _ => View::Malformed,
+            },
             NodeKind::CameraBlur => match args {
                 [value, rest @ ..] if rest.len() <= 1 => {
                     let mut rest = rest.iter();
@@ -560,7 +593,7 @@ impl Node {
             NodeKind::Rotate => one(args).map_or(View::Malformed, View::Rotate),
             NodeKind::Scale => one(args).map_or(View::Malformed, View::Scale),
             NodeKind::Matrix => one(args).map_or(View::Malformed, View::Matrix),
-            NodeKind::Pigment => match args {
+            NodeKind::Pigment | NodeKind::Density => match args {
                 rest if rest.len() <= 1 => {
                     let mut rest = rest.iter();
                     View::Pigment {
@@ -833,6 +866,7 @@ impl Node {
             NodeKind::Default
             | NodeKind::Camera
             | NodeKind::Fog
+            | NodeKind::Media
             | NodeKind::GlobalSettings
             | NodeKind::Perspective
             | NodeKind::CameraType

@@ -12,6 +12,7 @@ mod ir_snapshots;
 mod keywords;
 mod layers;
 mod lenient;
+mod media;
 mod parsing;
 mod povray_cli;
 

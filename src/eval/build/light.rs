@@ -74,6 +74,7 @@ impl Evaluator<'_> {
         // for the error if there is no area_light at all.
         let (mut jitter, mut circular, mut orient, mut illumination) = (false, false, false, false);
         let mut adaptive = 100;
+        let (mut media_interaction, mut media_attenuation) = (true, false);
         // Every area-light modifier given, in order (POV-Ray accepts them before `area_light`).
         let mut area_modifiers: Vec<(String, Span)> = Vec::new();
         let mut transform: Option<Transform> = None;
@@ -172,6 +173,13 @@ impl Evaluator<'_> {
                     area_modifiers.push((item.word.to_string(), item.word_span));
                     adaptive = ev.float(value)?.max(0.0) as u32;
                 }
+                (NodeKind::LightMedia, _) => {
+                    let on = ev.optional_float(item, 1.0)? > 0.0;
+                    match item.word.as_str() {
+                        "media_interaction" => media_interaction = on,
+                        _ => media_attenuation = on,
+                    }
+                }
                 (NodeKind::AreaIllumination, _) => {
                     area_modifiers.push((item.word.to_string(), item.word_span));
                     illumination = ev.optional_float(item, 1.0)? != 0.0;
@@ -268,6 +276,8 @@ impl Evaluator<'_> {
             area,
             projected_through: None,
             group: None,
+            media_interaction,
+            media_attenuation,
         };
         if let Some(t) = transform {
             transform_light(&mut light, &t.matrix);

@@ -1856,6 +1856,7 @@ impl Evaluator<'_> {
                 // (POV-Ray keeps the value times 45: the exponent of the cosine.)
                 (_, View::Caustics(value)) => interior.caustics = ev.float(value)? * 45.0,
                 (_, View::FadeColour(value)) => interior.fade_colour = ev.rgb_arg(value)?,
+                (NodeKind::Media, _) => interior.media.push(ev.media(item)?),
                 // (Set again by a plain texture's finish when the object is placed.)
                 (_, View::Refraction(value)) => {
                     interior.refraction = ev.float(value)?;
@@ -1871,6 +1872,150 @@ impl Evaluator<'_> {
         Ok(interior)
     }
 
+    /// `media { [Name] … }`: POV-Ray's defaults for the scene's `#version` unless it starts
+    /// from a declared media (whose values it keeps), then its items in order.
+    pub(in crate::eval) fn media(&mut self, node: &Node) -> Result<ir::Media> {
+        let mut media = ir::Media::new(self.lang.version.unwrap_or(3.7));
+        self.each_item(&node.children, &mut |ev, item| {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
+                    Value::Media(m) => media = *m,
+                    other => return Err(type_error("a media", &other, item.span)),
+                },
+                (_, View::MediaSetting { value, second }) => {
+                    ev.media_setting(item, value, second, &mut media)?
+                }
+                (_, View::Scattering { kind, colour }) => {
+                    let k = ev.float(kind)?;
+                    media.scattering_type = k as i32;
+                    if !(1..=5).contains(&media.scattering_type) {
+                        ev.warnings.push(Diagnostic::warning(
+                            "unknown scattering type: it scatters as type 1 (isotropic)",
+                            kind.span,
+                        ));
+                    }
+                    media.scattering = ev.rgb_arg(colour)?;
+                    for setting in &item.children {
+                        let View::ScatteringSetting(value) = setting.view() else {
+                            return Err(ev.unknown_item(setting, "scattering"));
+                        };
+                        let v = ev.float(value)?;
+                        match setting.word.as_str() {
+                            "eccentricity" if media.scattering_type != 5 => {
+                                return Err(Diagnostic::error(
+                                    "eccentricity is for scattering type 5 (Henyey-Greenstein) only",
+                                    setting.word_span,
+                                ));
+                            }
+                            "eccentricity" => media.eccentricity = v,
+                            "extinction" => media.extinction = v,
+                            _ => return Err(ev.unknown_item(setting, "scattering")),
+                        }
+                    }
+                }
+                (NodeKind::Density, _) => {
+                    let density = ev.density(item)?;
+                    // (The last written is the head of POV-Ray's list.)
+                    media.densities.insert(0, density);
+                }
+                // Transformations move the densities written before them only.
+                _ if Self::is_transform(item) => {
+                    let t = ev.transform(item)?;
+                    media.transform(t);
+                }
+                _ => return Err(ev.unknown_item(item, "media")),
+            }
+            Ok(())
+        })?;
+        Ok(media)
+    }
+
+    /// One media setting (`intervals 2`, `samples 10, 20`, `absorption C` …), checked as
+    /// POV-Ray checks it.
+    fn media_setting(
+        &mut self,
+        item: &Node,
+        value: &crate::syntax::Expr,
+        second: Option<&crate::syntax::Expr>,
+        media: &mut ir::Media,
+    ) -> Result<()> {
+        let word = item.word.as_str();
+        if let Some(extra) = second.filter(|_| word != "samples") {
+            return Err(Diagnostic::error(
+                format!("`{word}` takes one value"),
+                extra.span,
+            ));
+        }
+        let fail = |message: &str| Err(Diagnostic::error(message.to_string(), value.span));
+        match word {
+            "absorption" => media.absorption = self.rgb_arg(value)?,
+            "emission" => media.emission = self.rgb_arg(value)?,
+            "collect" => {
+                // (Photons only: read and ignored.)
+                self.float(value)?;
+            }
+            _ => {
+                let v = self.float(value)?;
+                match word {
+                    "method" => {
+                        if !matches!(v as i32, 1..=3) {
+                            return fail("media method must be 1, 2 or 3");
+                        }
+                        media.method = v as u32;
+                    }
+                    "intervals" => {
+                        if (v as i64) < 1 {
+                            return fail("media needs at least one interval");
+                        }
+                        media.intervals = v as u32;
+                    }
+                    "samples" => {
+                        let min = v as i64;
+                        let max = match second {
+                            Some(e) => self.float(e)? as i64,
+                            None => min,
+                        };
+                        if min < 1 {
+                            return fail("media needs at least one sample per interval");
+                        }
+                        if max < min {
+                            return fail("media samples: the most is below the least");
+                        }
+                        media.samples = (min as u32, max as u32);
+                    }
+                    "confidence" => {
+                        if !(0.0..1.0).contains(&v) {
+                            return fail("media confidence must be at least 0 and below 1");
+                        }
+                        media.confidence = v;
+                    }
+                    "variance" => media.variance = v,
+                    "ratio" => media.ratio = v,
+                    "jitter" => media.jitter = v,
+                    "aa_threshold" => {
+                        if v <= 0.0 {
+                            return fail("media aa_threshold must be greater than 0");
+                        }
+                        media.aa_threshold = v;
+                    }
+                    "aa_level" => {
+                        if (v as i64) < 1 {
+                            return fail("media aa_level must be at least 1");
+                        }
+                        media.aa_level = v as u32;
+                    }
+                    _ => return Err(self.unknown_item(item, "media")),
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `density { … }`: a pigment's body (an empty one is black: no density).
+    pub(in crate::eval) fn density(&mut self, node: &Node) -> Result<ir::Pigment> {
+        self.pigment(node, Pigment::solid(Colour::default()))
+    }
+
     /// `material { [Name] texture {…} interior_texture {…} interior {…} transforms }`: what
     /// it sets, each only if given (transforms move the textures).
     pub(in crate::eval) fn material(&mut self, node: &Node) -> Result<MaterialValue> {
@@ -1884,7 +2029,7 @@ impl Evaluator<'_> {
                 NodeKind::Texture => m.texture = Some(ev.texture(item)?),
                 NodeKind::InteriorTexture => m.interior_texture = Some(ev.texture(item)?),
                 NodeKind::Interior => {
-                    let base = m.interior.unwrap_or_default();
+                    let base = m.interior.take().unwrap_or_default();
                     m.interior = Some(ev.interior(item, base)?);
                 }
                 _ if Self::is_transform(item) => {

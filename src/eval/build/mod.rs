@@ -26,6 +26,8 @@ use std::sync::Arc;
 pub(in crate::eval) struct Builder {
     pub(in crate::eval) sky_sphere: Option<ir::SkySphere>,
     pub(in crate::eval) fogs: Vec<ir::Fog>,
+    /// Top-level `media { … }`: the atmosphere.
+    pub(in crate::eval) atmosphere: Vec<ir::Media>,
     pub(in crate::eval) settings: ir::Settings,
     pub(in crate::eval) camera: Option<CameraItems>,
     pub(in crate::eval) lights: Vec<ir::Light>,

@@ -245,6 +245,9 @@ impl ObjectValue {
             {
                 tex.transform(t);
             }
+            if let Some(interior) = &mut part.interior {
+                interior.transform(t);
+            }
             for b in &mut part.bounds {
                 b.transform = compose(b.transform.take().map(|t| *t), t).map(Box::new);
             }
@@ -257,6 +260,9 @@ impl ObjectValue {
             .flatten()
         {
             tex.transform(t);
+        }
+        if let Some(interior) = &mut self.interior {
+            interior.transform(t);
         }
         for light in &mut self.lights {
             crate::eval::build::light::transform_light(light, &t.matrix);
@@ -517,7 +523,7 @@ impl Evaluator<'_> {
                         if part.interior.is_some() {
                             part.interior_group += base;
                         } else if m.interior.is_some() {
-                            part.interior = m.interior;
+                            part.interior = m.interior.clone();
                             part.interior_group = base + m.own_interiors;
                         }
                         group.parts.push(part);
@@ -1121,7 +1127,7 @@ impl Evaluator<'_> {
                 })?;
             }
             NodeKind::Interior => {
-                let base = object.interior.unwrap_or_default();
+                let base = object.interior.take().unwrap_or_default();
                 object.interior = Some(self.interior(m, base)?);
             }
             NodeKind::Flag if m.word == "hollow" => {
@@ -1293,7 +1299,7 @@ impl Evaluator<'_> {
                 .or_else(|| object.interior_texture.clone());
             // A plain texture's finish gives the interior POV-Ray's old items written there
             // (its `ior` if given, its `refraction` always: POV-Ray's Post_Process).
-            let mut own = part.interior.or(object.interior);
+            let mut own = part.interior.or_else(|| object.interior.clone());
             let finish = &texture.finish;
             let legacy_caustics = finish.legacy_caustics.filter(|c| *c >= 0.0);
             if texture.map.is_none()

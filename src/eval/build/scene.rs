@@ -180,6 +180,8 @@ impl Evaluator<'_> {
             NodeKind::NormalMap => Value::NormalMap(self.normal_map(node, false)?),
             NodeKind::SlopeMap => Value::SlopeMap(self.slope_map(node)?),
             NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
+            NodeKind::Media => Value::Media(Box::new(self.media(node)?)),
+            NodeKind::Density => Value::Pigment(Box::new(self.density(node)?)),
             NodeKind::Transform => Value::Transform(Box::new(self.transform(node)?)),
             NodeKind::Camera => {
                 Value::Camera(Box::new(self.camera_items(node, CameraItems::default())?))
@@ -433,7 +435,7 @@ impl Evaluator<'_> {
     pub(in crate::eval) fn optional_float(&mut self, node: &Node, default: f64) -> Result<f64> {
         let value = match node.view() {
             View::Metallic { amount } => amount,
-            View::Fresnel { on } | View::AreaIllumination { on } => on,
+            View::Fresnel { on } | View::AreaIllumination { on } | View::LightMedia { on } => on,
             _ => return Err(malformed(node, "a flag with an optional value")),
         };
         value.map_or(Ok(default), |e| self.float(e))
@@ -480,6 +482,7 @@ impl Evaluator<'_> {
                 background_alpha: self.scene.background_alpha,
                 sky_sphere: self.scene.sky_sphere,
                 fogs: self.scene.fogs,
+                atmosphere: self.scene.atmosphere,
                 settings: self.scene.settings,
             },
             warnings: self.warnings,

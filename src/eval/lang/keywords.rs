@@ -11,7 +11,10 @@ pub use crate::syntax::keywords::POVRAY_KEYWORDS;
 /// The POV-Ray keywords trace reads (somewhere: a keyword in the wrong place is still an
 /// error), sorted.
 const SUPPORTED: &[&str] = &[
+    "aa_level",
+    "aa_threshold",
     "abs",
+    "absorption",
     "accuracy",
     "acos",
     "acosh",
@@ -74,6 +77,7 @@ const SUPPORTED: &[&str] = &[
     "circular",
     "clock",
     "clock_on",
+    "collect",
     "color",
     "color_map",
     "colour",
@@ -105,7 +109,9 @@ const SUPPORTED: &[&str] = &[
     "default",
     "defined",
     "degrees",
+    "density",
     "density_file",
+    "density_map",
     "dents",
     "deprecated",
     "df3",
@@ -118,6 +124,7 @@ const SUPPORTED: &[&str] = &[
     "distance",
     "div",
     "double_illuminate",
+    "eccentricity",
     "else",
     "elseif",
     "emission",
@@ -128,6 +135,7 @@ const SUPPORTED: &[&str] = &[
     "exponent",
     "exr",
     "exterior",
+    "extinction",
     "face_indices",
     "facets",
     "fade_color",
@@ -183,6 +191,7 @@ const SUPPORTED: &[&str] = &[
     "interior_texture",
     "internal",
     "interpolate",
+    "intervals",
     "inverse",
     "ior",
     "irid",
@@ -221,10 +230,14 @@ const SUPPORTED: &[&str] = &[
     "max_iteration",
     "max_trace",
     "max_trace_level",
+    "media",
+    "media_attenuation",
+    "media_interaction",
     "mesh",
     "mesh2",
     "mesh_camera",
     "metallic",
+    "method",
     "metric",
     "min",
     "min_extent",
@@ -302,6 +315,7 @@ const SUPPORTED: &[&str] = &[
     "ramp_wave",
     "rand",
     "range",
+    "ratio",
     "read",
     "red",
     "reflection",
@@ -317,8 +331,10 @@ const SUPPORTED: &[&str] = &[
     "ripples",
     "rotate",
     "roughness",
+    "samples",
     "scale",
     "scallop_wave",
+    "scattering",
     "seed",
     "select",
     "shadowless",
@@ -477,33 +493,29 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "polynomial" | "lemon" => "this shape is not supported by trace yet",
-        "media" | "rainbow" | "photons" | "radiosity" | "subsurface" | "scattering"
-        | "absorption" | "density" | "emission_media" | "mm_per_unit" => "outside trace's subset",
+        "rainbow" | "photons" | "radiosity" | "subsurface" | "emission_media" | "mm_per_unit" => {
+            "outside trace's subset"
+        }
         "dispersion" => "this interior item is outside trace's subset",
         "albedo" => "this finish item is outside trace's subset",
-        "media_interaction" | "media_attenuation" => {
-            "this light_source item is outside trace's subset"
-        }
-        "density_map" => LATER,
         "iff" => "trace reads png, jpeg, gif, pot, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "clipped_by" | "split_union" | "cutaway_textures" => LATER,
         "spherical_camera" | "cylinder_camera" => {
             "this camera type or item is not supported by trace yet"
         }
         "noise_generator_gs" | "subsurface_gs" => "this global setting is outside trace's subset",
-        "aa_level" | "aa_threshold" | "always_sample" | "anisotropy" | "autostop" | "collect"
-        | "dispersion_samples" | "eccentricity" | "expand_thresholds" | "extinction" | "gather"
-        | "global" | "importance" | "intervals" | "load_file" | "max_sample" | "method"
-        | "pass_through" | "pretrace_end" | "pretrace_start" | "samples" | "save_file"
-        | "spacing" | "steps" | "target" | "arc_angle" | "falloff_angle" | "brightness"
-        | "count" | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
+        "always_sample" | "anisotropy" | "autostop" | "dispersion_samples"
+        | "expand_thresholds" | "gather" | "global" | "importance" | "load_file" | "max_sample"
+        | "pass_through" | "pretrace_end" | "pretrace_start" | "save_file" | "spacing"
+        | "steps" | "target" | "arc_angle" | "falloff_angle" | "brightness" | "count"
+        | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
         | "maximum_reuse" | "minimum_reuse" | "nearest_count" | "recursion_limit" => {
-            "media, radiosity, photons and subsurface scattering are outside trace's subset"
+            "radiosity, photons and subsurface scattering are outside trace's subset"
         }
         "evaluate" | "pwr" | "reciprocal" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "ratio" | "width" => "this pattern or pattern modifier is not supported by trace yet",
+        "width" => "this pattern or pattern modifier is not supported by trace yet",
         "premultiplied" => "this image_map item is not supported by trace yet",
         "translucency" => "this finish item is outside trace's subset",
         "area_illumination" => "this light_source item is not supported by trace yet",

@@ -85,17 +85,7 @@ impl Tracer<'_> {
         if light.colour == Rgb::ZERO {
             return None;
         }
-        let (direction, distance) = match &light.kind {
-            LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
-                let l = (light.position - *point_at).normalize();
-                (l, (light.position - hit.point).dot(l))
-            }
-            _ => {
-                let to = light.position - hit.point;
-                let distance = to.length();
-                (to / distance, distance)
-            }
-        };
+        let (direction, distance) = toward(light, hit.point);
         let cos = n.dot(direction);
         if cos < MIN_LIGHT_COSINE && !(back && cos < 0.0) {
             return None;
@@ -104,21 +94,8 @@ impl Tracer<'_> {
         if colour == Rgb::ZERO {
             return None;
         }
-        // `projected_through`: dark unless the way to the light crosses the object, and only
-        // what lies before that crossing casts shadows.
-        let mut reach = None;
-        if let Some(through) = &light.through {
-            let ray = scene.spawn(hit, from, direction);
-            let length = shadow_length(light, &ray, distance);
-            let first = through
-                .iter()
-                .filter_map(|s| s.first_hit(&ray))
-                .reduce(f64::min);
-            match first {
-                Some(t) if t < length => reach = Some(t),
-                _ => return None,
-            }
-        }
+        let mut shadow = scene.spawn(hit, from, direction);
+        shadow.tmax = reach(light, &shadow, distance)?;
         if !light.shadowless {
             let visible = match &light.area {
                 Some(area) if area.size1 * area.size2 > 1 => match self.light_stream {
@@ -126,10 +103,8 @@ impl Tracer<'_> {
                     None => self.area_visibility(light, area, hit, from),
                 },
                 _ => {
-                    let mut shadow = scene.spawn(hit, from, direction);
-                    shadow.tmax = reach.unwrap_or_else(|| shadow_length(light, &shadow, distance));
                     self.counts.shadow += 1;
-                    super::transmittance(scene, &shadow)
+                    self.shadow_seen(&shadow, light)
                 }
             };
             colour *= visible;
@@ -205,11 +180,15 @@ impl Tracer<'_> {
         let mut shadow = self.scene.spawn(hit, from, to / to.length());
         shadow.tmax = (point - shadow.origin).length();
         self.counts.shadow += 1;
-        self.shadow_through(&shadow, blockers)
+        self.shadow_through(&shadow, light, blockers)
     }
 
-    /// What reaches the end of a shadow ray whose possible blockers are `blockers`.
-    fn shadow_through(&self, shadow: &Ray, blockers: Blockers) -> Rgb {
+    /// What reaches the end of a shadow ray toward `light` whose possible blockers are
+    /// `blockers` (all of them where media may dim it).
+    fn shadow_through(&mut self, shadow: &Ray, light: &Light, blockers: Blockers) -> Rgb {
+        if self.media_dims_shadows(light) {
+            return self.shadow_seen(shadow, light);
+        }
         match blockers {
             Blockers::None => Rgb::ONE,
             Blockers::Opaque if self.scene.blocked_among(shadow, &self.blockers) => Rgb::ZERO,
@@ -399,8 +378,39 @@ fn square_to_disc(x: f64, y: f64) -> (f64, f64) {
     (a * s, b * s)
 }
 
+/// The unit direction from `point` toward `light` and the distance to it (along the
+/// light's axis for parallel and cylinder lights).
+pub(super) fn toward(light: &Light, point: DVec3) -> (DVec3, f64) {
+    match &light.kind {
+        LightKind::Parallel { point_at } | LightKind::Cylinder { point_at, .. } => {
+            let l = (light.position - *point_at).normalize();
+            (l, (light.position - point).dot(l))
+        }
+        _ => {
+            let to = light.position - point;
+            let distance = to.length();
+            (to / distance, distance)
+        }
+    }
+}
+
+/// How far the shadow ray `shadow` toward `light` (`distance` away) goes: to the light,
+/// or with `projected_through` to where it first crosses the object (only what lies before
+/// casts shadows); `None` when it does not cross it (no light arrives).
+pub(super) fn reach(light: &Light, shadow: &Ray, distance: f64) -> Option<f64> {
+    let length = shadow_length(light, shadow, distance);
+    let Some(through) = &light.through else {
+        return Some(length);
+    };
+    let first = through
+        .iter()
+        .filter_map(|s| s.first_hit(shadow))
+        .reduce(f64::min);
+    first.filter(|&t| t < length)
+}
+
 /// Spotlight cone, cylinder and distance fade (POV-Ray §8.1–8.2) at `point`.
-fn attenuation(light: &Light, point: DVec3, direction: DVec3, distance: f64) -> f64 {
+pub(super) fn attenuation(light: &Light, point: DVec3, direction: DVec3, distance: f64) -> f64 {
     let mut a = 1.0;
     if let LightKind::Cylinder {
         point_at,

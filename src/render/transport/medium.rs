@@ -62,13 +62,22 @@ impl MediumStack {
         self.len -= 1;
     }
 
+    pub(super) fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The objects listed, in the order entered.
+    pub(super) fn objects(&self) -> impl Iterator<Item = ObjectId> + '_ {
+        self.ids[..self.len].iter().map(|&i| ObjectId(i))
+    }
+
     pub(super) fn last(&self) -> Option<ObjectId> {
         (self.len > 0).then(|| ObjectId(self.ids[self.len - 1]))
     }
 
-    /// Whether a ray here travels through hollow space only (fog reaches it): inside no
-    /// object, or inside hollow ones only.
-    pub(super) fn fog_reaches(&self, scene: &Scene) -> bool {
+    /// Whether a ray here travels through hollow space only (fog and media reach it):
+    /// inside no object, or inside hollow ones only.
+    pub(super) fn hollow_space(&self, scene: &Scene) -> bool {
         self.ids[..self.len]
             .iter()
             .all(|&i| scene.object(ObjectId(i)).hollow)

@@ -5,6 +5,7 @@
 
 mod fog;
 mod lights;
+mod media;
 mod medium;
 mod shadow;
 
@@ -36,6 +37,10 @@ pub struct RayCounts {
     /// Secondary rays not traced because the ray was at `max_trace_level` (POV-Ray returns
     /// black for them: stacked glass turns dark).
     pub depth_limited: u64,
+    /// Media intervals sampled (POV-Ray's `Media Intervals`).
+    pub media_intervals: u64,
+    /// Media samples taken (POV-Ray's `Media Samples`).
+    pub media_samples: u64,
 }
 
 impl RayCounts {
@@ -46,6 +51,8 @@ impl RayCounts {
         self.transmitted += o.transmitted;
         self.shadow += o.shadow;
         self.depth_limited += o.depth_limited;
+        self.media_intervals += o.media_intervals;
+        self.media_samples += o.media_samples;
     }
 
     /// Rays traced of every kind.
@@ -74,6 +81,9 @@ pub struct Tracer<'a> {
     pub(super) lens_stream: Option<(u32, u32)>,
     /// The objects that may block the shadow rays to the area light being sampled.
     pub(super) blockers: Vec<u32>,
+    /// The media the ray being shaded is in: where its shadow rays start (POV-Ray's shadow
+    /// rays copy the viewing ray's interior list).
+    shadow_start: MediumStack,
 }
 
 /// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
@@ -121,6 +131,7 @@ impl<'a> Tracer<'a> {
             light_stream: None,
             lens_stream: None,
             blockers: Vec::new(),
+            shadow_start: MediumStack::default(),
         }
     }
 
@@ -135,24 +146,70 @@ impl<'a> Tracer<'a> {
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let (colour, depth) = match self.scene.nearest_hit(&ray, self.reflected) {
+        let (mut colour, depth, hit) = match self.scene.nearest_hit(&ray, self.reflected) {
             None => {
                 self.see_through = match self.scene.sky_sphere() {
                     None => 1.0 - self.scene.background_alpha(),
                     Some(_) => 0.0,
                 };
-                (self.escaped(ray.direction), MISS_DEPTH)
+                (self.escaped(ray.direction), MISS_DEPTH, None)
             }
             Some(hit) => {
                 let surface = self.scene.surface(&ray, &hit);
                 let colour = self.shade(&ray, hit.t, &surface, level, weight, media);
-                (colour, hit.t)
+                (colour, hit.t, Some(hit.object))
             }
         };
-        if self.scene.fogs().is_empty() || !media.fog_reaches(self.scene) {
+        let scene = self.scene;
+        let any_media = !scene.atmosphere().is_empty() || (hit.is_some() && !media.is_empty());
+        if (scene.fogs().is_empty() && !any_media) || !media.hollow_space(scene) {
             return colour;
         }
-        fogged(self.scene, ray.origin, ray.direction, depth, colour)
+        if any_media {
+            colour = self.seen_through_media(&ray, depth, hit, media, colour);
+        }
+        if scene.fogs().is_empty() {
+            return colour;
+        }
+        fogged(scene, ray.origin, ray.direction, depth, colour)
+    }
+
+    /// `colour`, seen at distance `depth` along `ray` (in hollow space, ending on `hit`)
+    /// through the media of the objects it is inside (when it ends on a surface), then the
+    /// atmosphere (POV-Ray's order).
+    fn seen_through_media(
+        &mut self,
+        ray: &Ray,
+        depth: f64,
+        hit: Option<crate::scene::ObjectId>,
+        media: &MediumStack,
+        mut colour: Rgb,
+    ) -> Rgb {
+        let scene = self.scene;
+        let seg = media::Segment {
+            origin: ray.origin,
+            direction: ray.direction,
+            depth,
+            shadow: false,
+            inside: media,
+            hit,
+        };
+        if hit.is_some() && !media.is_empty() {
+            let pooled: Vec<&'a crate::scene::Media> =
+                media.objects().flat_map(|id| scene.media_in(id)).collect();
+            if !pooled.is_empty() {
+                let (c, t) = self.through_media(&pooled, &seg, colour);
+                colour = c;
+                self.see_through *= grey(t);
+            }
+        }
+        if !scene.atmosphere().is_empty() {
+            let atmosphere: Vec<&'a crate::scene::Media> = scene.atmosphere().iter().collect();
+            let (c, t) = self.through_media(&atmosphere, &seg, colour);
+            colour = c;
+            self.see_through *= grey(t);
+        }
+        colour
     }
 
     /// What a camera ray first meets, for AOV layers: its distance, the shading normal turned
@@ -307,6 +364,7 @@ impl<'a> Tracer<'a> {
         (seen, warp): (&mut DVec3, Option<&DMat3>),
     ) -> Rgb {
         let scene = self.scene;
+        self.shadow_start = *media;
         let d = ray.direction;
         // Shade the side facing the ray (decided by the shading normal, as POV-Ray decides it:
         // a smooth triangle seen at a grazing angle may face away by its smooth normal).

@@ -18,12 +18,23 @@ const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
 /// segments run inside objects whose fade_power is positive (see `walk`). Objects with
 /// `no_shadow` are skipped; refraction is ignored, as in POV-Ray.
 pub fn transmittance(scene: &Scene, ray: &Ray) -> Rgb {
+    transmittance_and(scene, ray, |_| Rgb::ONE)
+}
+
+/// [`transmittance`] times what `along` makes of the crossings, in order along the ray
+/// (one per point; none without transparent objects), unless no light gets through them:
+/// where media dim the ray between its crossings.
+pub(super) fn transmittance_and(
+    scene: &Scene,
+    ray: &Ray,
+    along: impl FnOnce(&[ShadowCrossing]) -> Rgb,
+) -> Rgb {
     // First any opaque blocker (stops at the first), then the transparent ones.
     if scene.occluded(ray) {
         return Rgb::ZERO;
     }
     if !scene.any_transparent() {
-        return Rgb::ONE;
+        return along(&[]);
     }
     thread_local! {
         /// Per thread: the crossings and the list of media.
@@ -34,26 +45,19 @@ pub fn transmittance(scene: &Scene, ray: &Ray) -> Rgb {
         crossings.clear();
         media.clear();
         scene.shadow_crossings(ray, crossings);
-        walk(scene, ray, crossings, media)
+        distinct(ray, crossings);
+        let through = walk(scene, ray, crossings, media);
+        if through == Rgb::ZERO {
+            return through;
+        }
+        through * along(crossings)
     })
 }
 
-/// What a shadow ray lets through the transparent objects it crosses: POV-Ray's walk from
-/// the surface to the light, one crossing after the other, each filtering the light. As
-/// POV-Ray's walk starts each step at the crossing before, a crossing at the same point as
-/// the one before (a duplicated surface) is passed over: the light is filtered once there.
-/// Where interiors fade, the walk also keeps a list of the media the ray is in. At a
-/// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
-/// applies over the distance from the previous crossing of any object (so a medium
-/// shared by overlapping union members fades only between their surfaces, and an object
-/// around another fades only from the inner one's exit); otherwise it enters. The list
-/// starts with the media of the crossed objects that contain the ray's origin.
-fn walk(
-    scene: &Scene,
-    ray: &Ray,
-    crossings: &mut Vec<ShadowCrossing>,
-    media: &mut Vec<u32>,
-) -> Rgb {
+/// Sorts a shadow ray's crossings along it and drops each at the same point as the one
+/// kept before (a duplicated surface): POV-Ray's walk starts each step at the crossing
+/// before, so it meets such a surface once.
+fn distinct(ray: &Ray, crossings: &mut Vec<ShadowCrossing>) {
     crossings.sort_by(|a, b| a.t.total_cmp(&b.t).then(a.object.0.cmp(&b.object.0)));
     // (Crossings closer than rounding to the one kept before are the same point.)
     let length = ray.direction.length();
@@ -67,6 +71,18 @@ fn walk(
         }
         !same
     });
+}
+
+/// What a shadow ray lets through the transparent objects it crosses (in order, one per
+/// point: [`distinct`]): POV-Ray's walk from the surface to the light, one crossing after
+/// the other, each filtering the light. Where interiors fade, the walk also keeps a list of the media the ray is in. At a
+/// crossing of an object whose medium is listed, the ray leaves it, and the medium's fade
+/// applies over the distance from the previous crossing of any object (so a medium
+/// shared by overlapping union members fades only between their surfaces, and an object
+/// around another fades only from the inner one's exit); otherwise it enters. The list
+/// starts with the media of the crossed objects that contain the ray's origin.
+fn walk(scene: &Scene, ray: &Ray, crossings: &[ShadowCrossing], media: &mut Vec<u32>) -> Rgb {
+    let length = ray.direction.length();
     if !scene.shadow_fades() {
         return crossings
             .iter()
