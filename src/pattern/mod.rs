@@ -1345,15 +1345,27 @@ fn crackle(p: DVec3, c: &Crackle, generator: u8) -> f64 {
         }
     };
     // The 81 points around a cell depend on the cell alone; neighbouring samples mostly fall
-    // in the cell of the last one (as POV-Ray, each thread keeps the last cell's points).
+    // in a cell met lately (as POV-Ray, each thread keeps cells' points): a few cells kept,
+    // each in its slot by a hash of the cell, so that two crackle patterns sampled in turn
+    // (two media densities) do not keep replacing each other's.
+    const SLOTS: usize = 64;
+    type Slot = ([i32; 3], [DVec3; 81]);
     thread_local! {
-        static LAST: std::cell::RefCell<([i32; 3], [DVec3; 81])> =
-            const { std::cell::RefCell::new(([i32::MIN; 3], [DVec3::ZERO; 81])) };
+        static CELLS: std::cell::RefCell<Vec<Slot>> = const { std::cell::RefCell::new(Vec::new()) };
     }
-    let (mut m1, mut m2, mut m3, nearest) = LAST.with_borrow_mut(|(key, points)| {
+    let (mut m1, mut m2, mut m3, nearest) = CELLS.with_borrow_mut(|cells| {
+        if cells.is_empty() {
+            cells.resize(SLOTS, ([i32::MIN; 3], [DVec3::ZERO; 81]));
+        }
+        let h =
+            (cell[0] as u32 as u64) << 42 ^ (cell[1] as u32 as u64) << 21 ^ cell[2] as u32 as u64;
+        let slot = (h.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 58) as usize;
+        let (key, points) = &mut cells[slot];
         if *key != cell {
             let offsets = crackle_offsets();
-            *points = std::array::from_fn(|i| point(&offsets[i]));
+            for (q, o) in points.iter_mut().zip(offsets.iter()) {
+                *q = point(o);
+            }
             *key = cell;
         }
         let (mut m1, mut m2, mut m3) = (dist(points[0]), dist(points[1]), dist(points[2]));

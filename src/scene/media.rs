@@ -123,6 +123,10 @@ impl Media {
         let mut d = Rgb::ONE;
         for pigment in &self.densities {
             d *= pigment.colour_at(p).rgb;
+            // (Nothing multiplies a zero back: the densities after it are not looked at.)
+            if d == Rgb::ZERO {
+                break;
+            }
         }
         d
     }

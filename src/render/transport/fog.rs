@@ -10,6 +10,18 @@ pub(super) const MISS_DEPTH: f64 = 2.0e10;
 /// long, applied to the colour `c` seen at its end (POV-Ray's ComputeFog: attenuations
 /// multiply, fog colours add up, so the fogs' order does not matter).
 pub(super) fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64, c: Rgb) -> Rgb {
+    let (attenuation, added) = fog_terms(scene, origin, direction, depth);
+    added + attenuation * c
+}
+
+/// What the fogs let through of a segment's light: [`fogged`] without the fogs' own colour
+/// (what a shadow ray sees of them).
+pub(super) fn fog_attenuation(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64) -> Rgb {
+    fog_terms(scene, origin, direction, depth).0
+}
+
+/// The fogs' attenuation of the light at a segment's end and the colour they add.
+fn fog_terms(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64) -> (Rgb, Rgb) {
     let (mut attenuation, mut added) = (Rgb::ONE, Rgb::ZERO);
     for fog in scene.fogs() {
         let mut width = depth;
@@ -41,5 +53,5 @@ pub(super) fn fogged(scene: &Scene, origin: DVec3, direction: DVec3, depth: f64,
         attenuation *= a * (Rgb::splat(1.0 - c.filter) + c.rgb * c.filter);
         added += c.rgb * (1.0 - a);
     }
-    added + attenuation * c
+    (attenuation, added)
 }

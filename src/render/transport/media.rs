@@ -13,7 +13,7 @@
 //! with `media_attenuation`.
 
 use super::Tracer;
-use super::fog::fogged;
+use super::fog::fog_attenuation;
 use super::medium::MediumStack;
 use crate::geometry::Ray;
 use crate::scene::{Light, LightKind, Media, ObjectId, Rgb, ShadowCrossing};
@@ -48,6 +48,50 @@ struct LitPart {
     light: usize,
     s0: f64,
     s1: f64,
+}
+
+/// A tracer's reusable lists for media (no allocation per ray once they have grown): one
+/// set for viewing rays and one for the shadow rays their samples send (which run while a
+/// viewing ray's are in use).
+#[derive(Default)]
+pub(super) struct Scratch<'a> {
+    /// Media pooled from the objects a ray is inside: [viewing, shadow].
+    pooled: [Vec<&'a Media>; 2],
+    /// Sampling intervals: [viewing, shadow].
+    intervals: [Vec<Interval>; 2],
+    /// Lit and unlit parts of the ray: [viewing, shadow].
+    lit: [Vec<LitInterval>; 2],
+    lights: Vec<LitPart>,
+    ends: (Vec<f64>, Vec<f64>),
+}
+
+/// The media one call pools: the atmosphere's, or those of the objects a ray is inside.
+#[derive(Clone, Copy)]
+pub(super) enum MediaList<'m, 'a> {
+    /// A list of media held by the scene (the atmosphere).
+    Held(&'a [Media]),
+    /// Media gathered from several objects.
+    Gathered(&'m [&'a Media]),
+}
+
+impl<'a> MediaList<'_, 'a> {
+    fn len(self) -> usize {
+        match self {
+            MediaList::Held(m) => m.len(),
+            MediaList::Gathered(m) => m.len(),
+        }
+    }
+
+    fn get(self, i: usize) -> &'a Media {
+        match self {
+            MediaList::Held(m) => &m[i],
+            MediaList::Gathered(m) => m[i],
+        }
+    }
+
+    fn iter(self) -> impl Iterator<Item = &'a Media> {
+        (0..self.len()).map(move |i| self.get(i))
+    }
 }
 
 /// A lit or unlit part of a segment.
@@ -117,7 +161,7 @@ fn exp(v: Rgb) -> Rgb {
 /// What the pooled media of one call share (POV-Ray takes them from the medium with the
 /// most intervals).
 struct Pool<'m, 'a> {
-    media: &'m [&'a Media],
+    media: MediaList<'m, 'a>,
     /// The first medium with the most intervals.
     lead: &'a Media,
     aa_threshold: f64,
@@ -130,17 +174,17 @@ impl<'a> Tracer<'a> {
     /// the transmittance.
     pub(super) fn through_media(
         &mut self,
-        media: &[&'a Media],
+        media: MediaList<'_, 'a>,
         seg: &Segment,
         colour: Rgb,
     ) -> (Rgb, Rgb) {
-        let Some(&first) = media.first() else {
+        if media.len() == 0 {
             return (colour, Rgb::ONE);
-        };
-        let mut lead = first;
+        }
+        let mut lead = media.get(0);
         let mut pool_threshold = f64::INFINITY;
         let (mut dims, mut scatters, mut plain) = (false, false, seg.shadow);
-        for m in media {
+        for m in media.iter() {
             if m.intervals > lead.intervals {
                 lead = m;
             }
@@ -158,8 +202,12 @@ impl<'a> Tracer<'a> {
             aa_threshold: pool_threshold,
             scatters,
         };
-        let mut lights = Vec::new();
-        let mut lit = Vec::new();
+        let which = usize::from(seg.shadow);
+        let mut lights = std::mem::take(&mut self.media_scratch.lights);
+        let mut lit = std::mem::take(&mut self.media_scratch.lit[which]);
+        let mut intervals = std::mem::take(&mut self.media_scratch.intervals[which]);
+        lights.clear();
+        lit.clear();
         if !seg.shadow {
             self.lit_parts(seg, &mut lights, &mut lit);
         }
@@ -170,7 +218,7 @@ impl<'a> Tracer<'a> {
                 s1: seg.depth,
             });
         }
-        let mut intervals = sample_intervals(&lit, lead);
+        sample_intervals(&lit, lead, &mut intervals);
         let mut numbers = Numbers::new(seg);
         if lead.method == 3 && !plain {
             self.adaptive(&pool, &lights, &mut intervals, seg, &mut numbers);
@@ -184,14 +232,33 @@ impl<'a> Tracer<'a> {
             te += i.te * n * exp(-od);
             od += i.od * n;
         }
+        self.media_scratch.lights = lights;
+        self.media_scratch.lit[which] = lit;
+        self.media_scratch.intervals[which] = intervals;
         let t = exp(-od);
         (colour * t + te, t)
+    }
+
+    /// The media of the objects in `list`, pooled (for a viewing or a shadow ray): give the
+    /// list back with [`Tracer::give_pooled`].
+    pub(super) fn pooled(&mut self, list: &MediumStack, shadow: bool) -> Vec<&'a Media> {
+        let scene = self.scene;
+        let mut pooled = std::mem::take(&mut self.media_scratch.pooled[usize::from(shadow)]);
+        pooled.clear();
+        for id in list.objects() {
+            pooled.extend(scene.media_in(id));
+        }
+        pooled
+    }
+
+    pub(super) fn give_pooled(&mut self, pooled: Vec<&'a Media>, shadow: bool) {
+        self.media_scratch.pooled[usize::from(shadow)] = pooled;
     }
 
     /// The lights that scatter in the media along `seg`, each with the part of the segment
     /// it reaches, and those parts merged into lit and unlit intervals (POV-Ray's
     /// ComputeMediaLightInterval, whose merge sorts the starts and the ends apart).
-    fn lit_parts(&self, seg: &Segment, lights: &mut Vec<LitPart>, lit: &mut Vec<LitInterval>) {
+    fn lit_parts(&mut self, seg: &Segment, lights: &mut Vec<LitPart>, lit: &mut Vec<LitInterval>) {
         let scene = self.scene;
         for (index, light) in scene.lights().iter().enumerate() {
             let lights_it = match seg.hit {
@@ -230,8 +297,11 @@ impl<'a> Tracer<'a> {
         if lights.is_empty() {
             return;
         }
-        let mut s0: Vec<f64> = lights.iter().map(|l| l.s0).collect();
-        let mut s1: Vec<f64> = lights.iter().map(|l| l.s1).collect();
+        let (s0, s1) = &mut self.media_scratch.ends;
+        s0.clear();
+        s1.clear();
+        s0.extend(lights.iter().map(|l| l.s0));
+        s1.extend(lights.iter().map(|l| l.s1));
         s0.sort_by(f64::total_cmp);
         s1.sort_by(f64::total_cmp);
         if s0[0] > 0.0 {
@@ -449,7 +519,7 @@ impl<'a> Tracer<'a> {
         let t = i.s0 + d0;
         let p = seg.origin + seg.direction * t;
         let (mut extinction, mut emission, mut scattering) = (Rgb::ZERO, Rgb::ZERO, Rgb::ZERO);
-        for m in pool.media {
+        for m in pool.media.iter() {
             let rho = m.density(p);
             extinction += rho * m.extinction;
             if !seg.shadow {
@@ -468,7 +538,9 @@ impl<'a> Tracer<'a> {
                 }
                 if let Some((toward, light)) = self.media_light(part.light, p, seg.inside) {
                     let alpha = toward.dot(seg.direction);
-                    let k = pool.media.iter().map(|m| m.phase.value(alpha)).sum::<f64>()
+                    let k = (pool.media.iter())
+                        .map(|m| m.phase.value(alpha))
+                        .sum::<f64>()
                         / pool.media.len() as f64;
                     emission += scattering * light * k;
                 }
@@ -563,17 +635,15 @@ impl<'a> Tracer<'a> {
         let mut list = *inside;
         let mut through = Rgb::ONE;
         let mut last = 0.0;
-        let mut pooled: Vec<&'a Media> = Vec::new();
         for c in crossings {
             let width = (c.t - last) * length;
             let origin = ray.origin + direction * (last * length);
             let hollow = list.hollow_space(scene);
             if hollow && !list.is_empty() {
-                pooled.clear();
-                for id in list.objects() {
-                    pooled.extend(scene.media_in(id));
-                }
-                through = self.shadow_segment(&pooled, origin, direction, width, through);
+                let pooled = self.pooled(&list, true);
+                let list = MediaList::Gathered(&pooled);
+                through = self.shadow_segment(list, origin, direction, width, through);
+                self.give_pooled(pooled, true);
             }
             if atmosphere {
                 through = self.shadow_atmosphere(origin, direction, width, through, hollow);
@@ -595,13 +665,13 @@ impl<'a> Tracer<'a> {
     /// `light` dimmed by `media` over a stretch of a shadow ray.
     fn shadow_segment(
         &mut self,
-        media: &[&'a Media],
+        media: MediaList<'_, 'a>,
         origin: DVec3,
         direction: DVec3,
         depth: f64,
         light: Rgb,
     ) -> Rgb {
-        if media.is_empty() || light.max_element() < EPSILON {
+        if media.len() == 0 || light.max_element() < EPSILON {
             return light;
         }
         let none = MediumStack::default();
@@ -617,7 +687,7 @@ impl<'a> Tracer<'a> {
     }
 
     /// `light` through the atmosphere and the fog (when `fog` and hollow) over a stretch of
-    /// a shadow ray.
+    /// a shadow ray (fog only dims a shadow ray: POV-Ray adds no fog colour to it).
     fn shadow_atmosphere(
         &mut self,
         origin: DVec3,
@@ -630,10 +700,10 @@ impl<'a> Tracer<'a> {
             return light;
         }
         let scene = self.scene;
-        let atmosphere: Vec<&'a Media> = scene.atmosphere().iter().collect();
-        let light = self.shadow_segment(&atmosphere, origin, direction, depth, light);
+        let atmosphere = MediaList::Held(scene.atmosphere());
+        let light = self.shadow_segment(atmosphere, origin, direction, depth, light);
         if fog && !scene.fogs().is_empty() {
-            return fogged(scene, origin, direction, depth, light);
+            return light * fog_attenuation(scene, origin, direction, depth);
         }
         light
     }
@@ -642,7 +712,8 @@ impl<'a> Tracer<'a> {
 /// The intervals a segment is sampled in (POV-Ray's ComputeMediaSampleInterval): at least
 /// `intervals`, at least one per lit or unlit part, shared out by `ratio`; a single unlit
 /// part of media without density is one interval whatever `intervals` says.
-fn sample_intervals(lit: &[LitInterval], lead: &Media) -> Vec<Interval> {
+fn sample_intervals(lit: &[LitInterval], lead: &Media, out: &mut Vec<Interval>) {
+    out.clear();
     let count = (lead.intervals as usize).max(lit.len());
     let interval = |lit: bool, s0: f64, ds: f64| Interval {
         lit,
@@ -653,7 +724,6 @@ fn sample_intervals(lit: &[LitInterval], lead: &Media) -> Vec<Interval> {
         te2: Rgb::ZERO,
         samples: 0,
     };
-    let mut out = Vec::with_capacity(count + 2);
     if let [only] = lit {
         if !only.lit && lead.constant() {
             out.push(interval(false, only.s0, only.s1 - only.s0));
@@ -679,7 +749,6 @@ fn sample_intervals(lit: &[LitInterval], lead: &Media) -> Vec<Interval> {
             remaining -= share;
         }
     }
-    out
 }
 
 /// Where a ray meets a spotlight's falloff cone (apex `centre`, unit `axis`, cosine of the

@@ -84,6 +84,8 @@ pub struct Tracer<'a> {
     /// The media the ray being shaded is in: where its shadow rays start (POV-Ray's shadow
     /// rays copy the viewing ray's interior list).
     shadow_start: MediumStack,
+    /// Lists reused by media.
+    media_scratch: media::Scratch<'a>,
 }
 
 /// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
@@ -132,6 +134,7 @@ impl<'a> Tracer<'a> {
             lens_stream: None,
             blockers: Vec::new(),
             shadow_start: MediumStack::default(),
+            media_scratch: media::Scratch::default(),
         }
     }
 
@@ -195,17 +198,17 @@ impl<'a> Tracer<'a> {
             hit,
         };
         if hit.is_some() && !media.is_empty() {
-            let pooled: Vec<&'a crate::scene::Media> =
-                media.objects().flat_map(|id| scene.media_in(id)).collect();
+            let pooled = self.pooled(media, false);
             if !pooled.is_empty() {
-                let (c, t) = self.through_media(&pooled, &seg, colour);
+                let (c, t) = self.through_media(media::MediaList::Gathered(&pooled), &seg, colour);
                 colour = c;
                 self.see_through *= grey(t);
             }
+            self.give_pooled(pooled, false);
         }
         if !scene.atmosphere().is_empty() {
-            let atmosphere: Vec<&'a crate::scene::Media> = scene.atmosphere().iter().collect();
-            let (c, t) = self.through_media(&atmosphere, &seg, colour);
+            let atmosphere = media::MediaList::Held(scene.atmosphere());
+            let (c, t) = self.through_media(atmosphere, &seg, colour);
             colour = c;
             self.see_through *= grey(t);
         }
