@@ -751,6 +751,21 @@ fn sample_intervals(lit: &[LitInterval], lead: &Media, out: &mut Vec<Interval>) 
     }
 }
 
+/// The roots of a t² + 2b t + c = 0 (discriminant `d` = b² − ac > 0), in order, with their
+/// distances along the light's axis (k2 + t·k1); `None` when both lie behind the light.
+fn roots_ahead(a: f64, b: f64, d: f64, k1: f64, k2: f64) -> Option<((f64, f64), (f64, f64))> {
+    let d = d.sqrt();
+    let (mut t1, mut t2) = ((-b + d) / a, (-b - d) / a);
+    if t1 > t2 {
+        std::mem::swap(&mut t1, &mut t2);
+    }
+    let (l1, l2) = (k2 + t1 * k1, k2 + t2 * k1);
+    if l1 <= 0.0 && l2 <= 0.0 {
+        return None;
+    }
+    Some(((t1, t2), (l1, l2)))
+}
+
 /// Where a ray meets a spotlight's falloff cone (apex `centre`, unit `axis`, cosine of the
 /// falloff angle `cos_falloff`): POV-Ray's ComputeSpotLightInterval.
 fn spot_part(seg: &Segment, centre: DVec3, axis: DVec3, cos_falloff: f64) -> Option<(f64, f64)> {
@@ -773,15 +788,7 @@ fn spot_part(seg: &Segment, centre: DVec3, axis: DVec3, cos_falloff: f64) -> Opt
     }
     let d = b * b - a * c;
     if d > EPSILON {
-        let d = d.sqrt();
-        let (mut t1, mut t2) = ((-b + d) / a, (-b - d) / a);
-        if t1 > t2 {
-            std::mem::swap(&mut t1, &mut t2);
-        }
-        let (l1, l2) = (k2 + t1 * k1, k2 + t2 * k1);
-        if l1 <= 0.0 && l2 <= 0.0 {
-            return None;
-        }
+        let ((t1, t2), (l1, l2)) = roots_ahead(a, b, d, k1, k2)?;
         if l1 <= 0.0 {
             // (The first root is on the mirror cone.)
             if in_cone {
@@ -829,15 +836,7 @@ fn cylinder_part(seg: &Segment, centre: DVec3, axis: DVec3, falloff: f64) -> Opt
     if d <= EPSILON {
         return None;
     }
-    let d = d.sqrt();
-    let (mut t1, mut t2) = ((-b + d) / a, (-b - d) / a);
-    if t1 > t2 {
-        std::mem::swap(&mut t1, &mut t2);
-    }
-    let (l1, l2) = (k2 + t1 * k1, k2 + t2 * k1);
-    if l1 <= 0.0 && l2 <= 0.0 {
-        return None;
-    }
+    let ((mut t1, mut t2), (l1, l2)) = roots_ahead(a, b, d, k1, k2)?;
     if l1 <= 0.0 {
         t1 = 0.0;
     } else if l2 <= 0.0 {
