@@ -1166,3 +1166,47 @@ pub fn thin_wall(method: OffsetMethod, side: f64, rays: u64) -> Count {
     }
     count
 }
+
+// ---------------------------------------------------------------------------------------------
+// S13: participating media far from the origin and at grazing angles.
+
+/// The S13 scene: a slab of absorbing media 0.1 thick (a hollow box, clear surface, 2000
+/// wide) seen by an orthographic camera 0.02 across at `angle` degrees to its plane, the
+/// whole moved by `shift` along (1, 1, 1), over a white background. Every ray crosses the
+/// slab's top and bottom faces, through 0.1/sin(angle) of the medium.
+pub fn media_slab_scene(angle: f64, shift: f64) -> String {
+    let a = angle.to_radians();
+    // (The camera looks down at the slab's centre from 10 away, along the angle.)
+    let d = DVec3::new(0.0, -a.sin(), a.cos());
+    let eye = -d * 10.0;
+    let place = format!("translate <{shift}, {shift}, {shift}>");
+    format!(
+        "#version 3.7;\nglobal_settings {{ assumed_gamma 1.0 }}\n\
+         background {{ rgb 1 }}\n\
+         camera {{ orthographic location <{}, {}, {}> direction <{}, {}, {}> \
+         right 0.02*x up 0.02*y sky <0, 1, 0> {place} }}\n\
+         box {{ <-1000, -0.05, -1000>, <1000, 0.05, 1000> pigment {{ rgbt 1 }} hollow \
+         interior {{ media {{ absorption 1 }} }} {place} }}\n",
+        eye.x, eye.y, eye.z, d.x, d.y, d.z
+    )
+}
+
+/// S13: pixels of the S13 scene whose transmittance differs from e^(−0.1/sin(angle)) by more
+/// than 1e-4 of it (a ray that misses a face, or enters and never leaves, is far off), at
+/// `width`×`height` without anti-aliasing.
+pub fn media_slab(angle: f64, shift: f64, width: u32, height: u32) -> Count {
+    let ir = load_scene(media_slab_scene(angle, shift), width, height);
+    let film = render_built(&trace::scene::Scene::build(&ir), width, height, None);
+    let expected = (-0.1 / angle.to_radians().sin()).exp();
+    let mut c = Count::default();
+    for p in &film.pixels {
+        c.rays += 1;
+        // (A NaN is off too.)
+        let off = p[..3].iter().any(|&v| {
+            let v = f64::from(v);
+            !v.is_finite() || (v - expected).abs() > 1e-4 * expected + 1e-7
+        });
+        c.failures += u64::from(off);
+    }
+    c
+}

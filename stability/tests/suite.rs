@@ -4,8 +4,8 @@
 
 use trace_stability::{
     OffsetMethod, SphereMethod, TriangleMethod, box_grid_failures, contact_shadow,
-    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, mesh_leaks,
-    pane_stack, scale_invariance, sphere_acne, thread_determinism,
+    ellipsoid_normals, far_sphere, far_torus, glass_sphere_nan, grazing, grid_leaks, media_slab,
+    mesh_leaks, pane_stack, scale_invariance, sphere_acne, thread_determinism,
 };
 
 #[test]
@@ -147,5 +147,13 @@ fn s11_new_shapes_far_away() {
         let c = trace_stability::far_shape(&shape, 4.5e3, 2000);
         assert_eq!(c.failures, 0, "{label}: {c:?}");
         assert!(c.rays >= 2000, "{label}: {c:?}");
+    }
+}
+
+#[test]
+fn media_slabs_dim_by_their_exact_chord_near_and_far_and_at_grazing_angles() {
+    for (angle, shift) in [(90.0, 0.0), (10.0, 1e3), (1.0, 1e5), (0.1, 0.0)] {
+        let c = media_slab(angle, shift, 16, 16);
+        assert_eq!(c.failures, 0, "angle {angle}, shift {shift}: {c:?}");
     }
 }
