@@ -255,7 +255,7 @@ pub trait Queries {
     /// the bounded ones whose box it does not exclude), appended to `out`. The apex lies on
     /// object `from`: a plane cannot meet a shadow ray leaving its own surface (the ray starts
     /// off it, on the side it travels to), so a plane `from` is left out.
-    fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>);
+    fn shadow_candidates(&self, hull: &ShadowHull, from: Option<ObjectId>, out: &mut Vec<u32>);
 
     /// Whether some object of `candidates` can let light through to a shadow ray (then only
     /// transport's shadow walk tells what reaches the light).
@@ -424,9 +424,11 @@ impl Queries for Scene {
         });
     }
 
-    fn shadow_candidates(&self, hull: &ShadowHull, from: ObjectId, out: &mut Vec<u32>) {
-        let own_plane =
-            |i: u32| i == from.0 && matches!(self.objects[i as usize].shape, Shape::Plane(_));
+    fn shadow_candidates(&self, hull: &ShadowHull, from: Option<ObjectId>, out: &mut Vec<u32>) {
+        let own_plane = |i: u32| {
+            from.is_some_and(|f| f.0 == i)
+                && matches!(self.objects[i as usize].shape, Shape::Plane(_))
+        };
         match &self.index {
             Some(index) => {
                 let objects = &self.objects;

@@ -325,3 +325,34 @@ fn light_media_flags_read_as_povray_reads_them() {
         .collect();
     assert_eq!(flags, [(false, true), (false, true), (true, false)]);
 }
+
+/// A medium lit by an area light sees the light's grid from each sample, as POV-Ray traces it
+/// (sampling the light's centre alone differed by mean FLIP 0.026 on this scene).
+#[test]
+fn an_area_light_scatters_through_its_grid() {
+    let film = render_text(
+        "#version 3.7; global_settings { assumed_gamma 1.0 }
+         camera { location <0, 2, -8> look_at <0, 1.5, 0> angle 50 }
+         background { rgb 0 }
+         light_source { <0, 6, 0> color rgb 2 area_light 2*x, 2*z, 4, 4 adaptive 1 }
+         plane { y, 0 pigment { rgb 0.7 } }
+         sphere { <0, 3, 0>, 0.6 pigment { rgb <1, 0.3, 0.2> } }
+         box { <-4, 0.01, -4>, <4, 5, 4> pigment { rgbt 1 } hollow
+           interior { media { scattering { 1, 0.05 } } } }",
+        160,
+        120,
+        Antialias::Off,
+    );
+    // POV-Ray's values (its 16-bit linear PNG).
+    let povray = [
+        ((80, 20), [0.50805, 0.35019, 0.32764]),
+        ((80, 40), [0.37755, 0.32004, 0.31183]),
+        ((60, 40), [0.56841; 3]),
+        ((100, 50), [0.59724; 3]),
+        ((80, 70), [0.74392; 3]),
+        ((40, 30), [0.6033; 3]),
+    ];
+    for ((x, y), v) in povray {
+        assert_povray(film.get(x, y), v, &format!("pixel ({x}, {y})"));
+    }
+}

@@ -3,7 +3,9 @@
 
 use super::Tracer;
 use crate::geometry::Ray;
-use crate::scene::{AreaLight, Light, LightKind, Queries, Rgb, ShadowHull, SurfaceHit};
+use crate::scene::{
+    AreaLight, Light, LightKind, ObjectId, Queries, Rgb, Scene, ShadowHull, SurfaceHit,
+};
 use glam::DVec3;
 
 /// POV-Ray ignores a light whose cosine with the normal is below this.
@@ -69,6 +71,41 @@ fn jitter(p: DVec3, u: u32, v: u32) -> (f64, f64) {
     (a - 0.5, b - 0.5)
 }
 
+/// Where shadow rays leave for a light: a surface (the ray offset off it, toward the side
+/// it leaves by) or a point in a medium (a media sample).
+#[derive(Clone, Copy)]
+pub(super) enum ShadowStart<'h> {
+    /// A surface point, seen from a ray that started at the given point.
+    Surface(&'h SurfaceHit, DVec3),
+    /// A point in space.
+    Medium(DVec3),
+}
+
+impl ShadowStart<'_> {
+    fn point(self) -> DVec3 {
+        match self {
+            ShadowStart::Surface(hit, _) => hit.point,
+            ShadowStart::Medium(p) => p,
+        }
+    }
+
+    /// The object the point lies on, if any.
+    fn object(self) -> Option<ObjectId> {
+        match self {
+            ShadowStart::Surface(hit, _) => Some(hit.object),
+            ShadowStart::Medium(_) => None,
+        }
+    }
+
+    /// A shadow ray from here along the unit `direction`.
+    fn ray(self, scene: &Scene, direction: DVec3) -> Ray {
+        match self {
+            ShadowStart::Surface(hit, from) => scene.spawn(hit, from, direction),
+            ShadowStart::Medium(p) => Ray::new(p, direction),
+        }
+    }
+}
+
 impl Tracer<'_> {
     /// The light `index` as seen from `hit` (normal `n` facing the viewer), or `None` if it
     /// contributes nothing there.
@@ -99,8 +136,11 @@ impl Tracer<'_> {
         if !light.shadowless {
             let visible = match &light.area {
                 Some(area) if area.size1 * area.size2 > 1 => match self.light_stream {
-                    Some((seed, n)) => self.area_sampled(light, index, area, hit, from, (seed, n)),
-                    None => self.area_visibility(light, area, hit, from),
+                    Some((seed, n)) => {
+                        let start = ShadowStart::Surface(hit, from);
+                        self.area_sampled(light, index, area, start, (seed, n))
+                    }
+                    None => self.area_visibility(light, area, ShadowStart::Surface(hit, from)),
                 },
                 _ => {
                     self.counts.shadow += 1;
@@ -121,7 +161,12 @@ impl Tracer<'_> {
 
     /// What may block the shadow rays from `hit` to an area light spanning ±`half.0` and
     /// ±`half.1` around its position: the candidates go to `self.blockers`.
-    fn area_blockers(&mut self, light: &Light, half: (DVec3, DVec3), hit: &SurfaceHit) -> Blockers {
+    fn area_blockers(
+        &mut self,
+        light: &Light,
+        half: (DVec3, DVec3),
+        start: ShadowStart,
+    ) -> Blockers {
         if !self.scene.cull_shadow_rays() {
             return Blockers::Unknown;
         }
@@ -141,12 +186,13 @@ impl Tracer<'_> {
             (false, false) => (h1, h2),
         };
         let corners = [c - h1 - h2, c + h1 - h2, c + h1 + h2, c - h1 + h2];
-        let Some(hull) = ShadowHull::new(hit.point, corners) else {
+        let Some(hull) = ShadowHull::new(start.point(), corners) else {
             return Blockers::Unknown;
         };
         let mut list = std::mem::take(&mut self.blockers);
         list.clear();
-        self.scene.shadow_candidates(&hull, hit.object, &mut list);
+        self.scene
+            .shadow_candidates(&hull, start.object(), &mut list);
         let kind = if list.is_empty() {
             Blockers::None
         } else if self.scene.any_filters_shadows(&list) {
@@ -167,7 +213,7 @@ impl Tracer<'_> {
         area: &AreaLight,
         (a1, a2): (DVec3, DVec3),
         (s1, s2): (f64, f64),
-        (hit, from): (&SurfaceHit, DVec3),
+        start: ShadowStart,
         blockers: Blockers,
     ) -> Rgb {
         let (s1, s2) = if area.circular || area.orient {
@@ -176,8 +222,8 @@ impl Tracer<'_> {
             (s1, s2)
         };
         let point = light.position + a1 * s1 + a2 * s2;
-        let to = point - hit.point;
-        let mut shadow = self.scene.spawn(hit, from, to / to.length());
+        let to = point - start.point();
+        let mut shadow = start.ray(self.scene, to / to.length());
         shadow.tmax = (point - shadow.origin).length();
         self.counts.shadow += 1;
         self.shadow_through(&shadow, light, blockers)
@@ -201,20 +247,22 @@ impl Tracer<'_> {
     /// sample `n` of the pixel whose seed is `seed` (a stream of its own for each light) picks
     /// points anywhere on the light, so that the pixel's samples together cover it evenly and
     /// converge on the whole light rather than on its grid.
-    fn area_sampled(
+    pub(super) fn area_sampled(
         &mut self,
         light: &Light,
         index: usize,
         area: &AreaLight,
-        hit: &SurfaceHit,
-        from: DVec3,
+        origin: ShadowStart,
         (seed, n): (u32, u32),
     ) -> Rgb {
-        let (a1, a2) = grid_axes(light, area, hit.point);
+        let (a1, a2) = grid_axes(light, area, origin.point());
         // square_to_disc's bias moves points up to 0.001 beyond the square.
         let half = |size: u32| if size == 1 { 0.0 } else { 0.502 };
-        let blockers =
-            self.area_blockers(light, (a1 * half(area.size1), a2 * half(area.size2)), hit);
+        let blockers = self.area_blockers(
+            light,
+            (a1 * half(area.size1), a2 * half(area.size2)),
+            origin,
+        );
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
@@ -236,7 +284,7 @@ impl Tracer<'_> {
             if area.size2 == 1 {
                 s2 = 0.0;
             }
-            self.visibility_of(light, area, (a1, a2), (s1, s2), (hit, from), blockers)
+            self.visibility_of(light, area, (a1, a2), (s1, s2), origin, blockers)
         };
         let mut sum = Rgb::ZERO;
         let mut seen = None;
@@ -257,17 +305,16 @@ impl Tracer<'_> {
 
     /// The average visibility (0..1 per channel) of an area light's grid from `hit`, by POV-Ray's
     /// recursive subdivision: grid points get equal weight only for sizes 1, 2, 4, 8, …
-    fn area_visibility(
+    pub(super) fn area_visibility(
         &mut self,
         light: &Light,
         area: &AreaLight,
-        hit: &SurfaceHit,
-        from: DVec3,
+        start: ShadowStart,
     ) -> Rgb {
         let cells = (area.size1 * area.size2) as usize;
         self.area_cache.clear();
         self.area_cache.resize(cells, None);
-        let (a1, a2) = grid_axes(light, area, hit.point);
+        let (a1, a2) = grid_axes(light, area, start.point());
         // Jitter moves grid points up to half a cell beyond the grid's edge, square_to_disc's
         // bias up to 0.001.
         let reach = |size: u32| match (area.jitter, size) {
@@ -275,8 +322,11 @@ impl Tracer<'_> {
             (true, n) => 0.502 + 0.5 / f64::from(n - 1),
             (false, _) => 0.502,
         };
-        let blockers =
-            self.area_blockers(light, (a1 * reach(area.size1), a2 * reach(area.size2)), hit);
+        let blockers = self.area_blockers(
+            light,
+            (a1 * reach(area.size1), a2 * reach(area.size2)),
+            start,
+        );
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
@@ -287,7 +337,7 @@ impl Tracer<'_> {
             }
             let (mut fu, mut fv) = (u as f64, v as f64);
             if area.jitter {
-                let (ju, jv) = jitter(hit.point, u, v);
+                let (ju, jv) = jitter(start.point(), u, v);
                 fu += ju;
                 fv += jv;
             }
@@ -301,7 +351,7 @@ impl Tracer<'_> {
             } else {
                 0.0
             };
-            let c = tracer.visibility_of(light, area, (a1, a2), (s1, s2), (hit, from), blockers);
+            let c = tracer.visibility_of(light, area, (a1, a2), (s1, s2), start, blockers);
             tracer.area_cache[k] = Some(c);
             c
         };

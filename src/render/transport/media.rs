@@ -14,6 +14,7 @@
 
 use super::Tracer;
 use super::fog::fog_attenuation;
+use super::lights::ShadowStart;
 use super::medium::MediumStack;
 use crate::geometry::Ray;
 use crate::scene::{Light, LightKind, Media, ObjectId, Rgb, ShadowCrossing};
@@ -578,8 +579,23 @@ impl<'a> Tracer<'a> {
         }
         let mut shadow = Ray::new(p, direction);
         shadow.tmax = super::lights::reach(light, &shadow, distance)?;
-        self.counts.shadow += 1;
-        colour *= self.shadow_seen_from(&shadow, light, inside);
+        colour *= match &light.area {
+            // An area light's grid, as from a surface (its shadow rays start in `inside`).
+            Some(area) if area.size1 * area.size2 > 1 => {
+                let was = std::mem::replace(&mut self.shadow_start, *inside);
+                let start = ShadowStart::Medium(p);
+                let seen = match self.light_stream {
+                    Some(stream) => self.area_sampled(light, index, area, start, stream),
+                    None => self.area_visibility(light, area, start),
+                };
+                self.shadow_start = was;
+                seen
+            }
+            _ => {
+                self.counts.shadow += 1;
+                self.shadow_seen_from(&shadow, light, inside)
+            }
+        };
         (colour.abs().max_element() >= EPSILON).then_some((direction, colour))
     }
 
