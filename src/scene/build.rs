@@ -363,6 +363,7 @@ impl Scene {
                         .collect()
                 })
                 .collect(),
+            any_interior_media: interiors.iter().any(|i| !i.media.is_empty()),
             interiors,
             atmosphere: (ir.atmosphere.iter())
                 .map(|m| Media::new(m, pattern_defaults(ir)))

@@ -65,6 +65,8 @@ pub struct Scene {
     interior_media: Vec<Vec<Media>>,
     /// Top-level `media`: the atmosphere.
     atmosphere: Vec<Media>,
+    /// Whether any interior holds media (asked by every shadow ray).
+    any_interior_media: bool,
     /// Colour of escaped rays.
     background: Rgb,
     /// The background's opacity in an alpha channel.
@@ -179,8 +181,9 @@ impl Scene {
     }
 
     /// Whether any object holds media.
+    #[inline]
     pub fn any_interior_media(&self) -> bool {
-        self.interior_media.iter().any(|m| !m.is_empty())
+        self.any_interior_media
     }
 
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
