@@ -303,6 +303,7 @@ impl<'a> Evaluator<'a> {
             scene: build::Builder {
                 sky_sphere: None,
                 fogs: Vec::new(),
+                rainbows: Vec::new(),
                 atmosphere: Vec::new(),
                 settings: ir::Settings::default(),
                 camera: None,
@@ -521,6 +522,10 @@ impl<'a> Evaluator<'a> {
             (NodeKind::Media, _) => {
                 let media = self.media(node)?;
                 self.scene.atmosphere.push(media);
+            }
+            (NodeKind::Rainbow, _) => {
+                let rainbow = self.rainbow_items(node)?;
+                self.scene.rainbows.extend(rainbow.seen());
             }
             (_, View::Background(value)) => {
                 let v = self.eval(value)?;

@@ -51,6 +51,7 @@ pub enum Value {
     Camera(Box<super::build::camera::CameraItems>),
     Interior(Box<ir::Interior>),
     Fog(Box<super::build::scene::FogItems>),
+    Rainbow(Box<super::build::scene::RainbowItems>),
     /// `material {…}`: a texture, an interior texture and an interior, each only if given.
     Material(Box<MaterialValue>),
     ColourMap(ir::ColourMap),
@@ -110,6 +111,7 @@ impl Value {
             Value::Camera(_) => "a camera",
             Value::Interior(_) => "an interior",
             Value::Fog(_) => "a fog",
+            Value::Rainbow(_) => "a rainbow",
             Value::Material(..) => "a material",
             Value::ColourMap(_) => "a color_map",
             Value::PigmentMap(_) => "a pigment_map",

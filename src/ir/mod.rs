@@ -68,6 +68,9 @@ pub struct Scene {
     pub fogs: Vec<Fog>,
     /// Top-level `media { … }` blocks: the atmosphere, in source order.
     pub atmosphere: Vec<Media>,
+    /// `rainbow { … }` statements that can be seen (with a colour map, a width and a
+    /// distance), in source order.
+    pub rainbows: Vec<Rainbow>,
     /// Scene-wide settings.
     pub settings: Settings,
 }
@@ -86,8 +89,42 @@ impl std::fmt::Debug for Scene {
         if !self.atmosphere.is_empty() {
             d.field("atmosphere", &self.atmosphere);
         }
+        if !self.rainbows.is_empty() {
+            d.field("rainbows", &self.rainbows);
+        }
         d.field("settings", &self.settings).finish()
     }
+}
+
+/// `rainbow { … }`, as POV-Ray holds it once read: a ray of unit direction `d` whose angle to
+/// `up` in the plane of `up` and `right` is within `arc_angle`, and whose angle θ to
+/// `antisolar` is under 90°, takes the colour of `colours` at `(θ − angle) / width` when that
+/// lies in [0, 1) (POV-Ray's ComputeRainbow).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rainbow {
+    /// The ring's inner edge, in radians (POV-Ray's `angle − width/2`, converted).
+    pub angle: f64,
+    /// The ring's width, in radians.
+    pub width: f64,
+    /// `distance`: a surface at depth `t` keeps `e^(−t/distance)` of its colour.
+    pub distance: f64,
+    /// `jitter`: the map index moves by up to this much, at random.
+    pub jitter: f64,
+    /// Half the `arc_angle`, in radians (or POV-Ray's unconverted default, 180, which no
+    /// angle reaches).
+    pub arc_angle: f64,
+    /// Half the `falloff_angle` in radians, past which the ring fades out towards
+    /// `arc_angle` (by default equal to it: no fading).
+    pub falloff_angle: f64,
+    /// `direction`: the centre of the ring, unit length.
+    pub antisolar: DVec3,
+    /// `up`, made perpendicular to `antisolar`, unit length.
+    pub up: DVec3,
+    /// `up × antisolar`, unit length.
+    pub right: DVec3,
+    /// `color_map`: the ring's colours from inside out; filter and transmit let the scene
+    /// through.
+    pub colours: ColourMap,
 }
 
 /// `fog { … }`: along a ray segment of length `w` in hollow space, the colour `c` becomes
@@ -943,11 +980,22 @@ impl Default for ColourMap {
 /// A decoded image (`image_map`, `image_pattern`, `bump_map`).
 pub use crate::pattern::image::ImageMap;
 
-/// `interior { ior fade_distance fade_power fade_color caustics media {…} }`.
+/// `interior { ior dispersion dispersion_samples fade_distance fade_power fade_color caustics
+/// media {…} }`.
 #[derive(Clone, PartialEq)]
 pub struct Interior {
     /// Index of refraction (default 1).
     pub ior: f64,
+    /// `dispersion`: the ratio of the index of refraction at the violet end of the spectrum
+    /// to that at the red end (default 1: none; POV-Ray keeps it only with an `ior`, as
+    /// single precision).
+    pub dispersion: f64,
+    /// `dispersion_samples`: how many wavelengths a dispersing refraction splits a ray into
+    /// (default 7, at least 2).
+    pub dispersion_samples: u32,
+    /// Whether an `ior` was written for this interior (POV-Ray drops a dispersion without
+    /// one when the object is placed; the reader's own bookkeeping).
+    pub(crate) ior_given: bool,
     /// `fade_distance` (default 0: no fade).
     pub fade_distance: f64,
     /// `fade_power` (default 0).
@@ -968,6 +1016,9 @@ impl Default for Interior {
     fn default() -> Interior {
         Interior {
             ior: 1.0,
+            dispersion: 1.0,
+            dispersion_samples: 7,
+            ior_given: false,
             fade_distance: 0.0,
             fade_power: 0.0,
             fade_colour: Rgb::ZERO,
@@ -984,6 +1035,7 @@ impl Interior {
     pub fn key(&self) -> u64 {
         [
             self.ior,
+            self.dispersion,
             self.fade_distance,
             self.fade_power,
             self.fade_colour.x,
@@ -1015,6 +1067,10 @@ impl std::fmt::Debug for Interior {
         }
         if self.caustics != 0.0 {
             d.field("caustics", &self.caustics);
+        }
+        if self.dispersion != 1.0 {
+            d.field("dispersion", &self.dispersion)
+                .field("dispersion_samples", &self.dispersion_samples);
         }
         if !self.media.is_empty() {
             d.field("media", &self.media);

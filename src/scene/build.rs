@@ -384,6 +384,7 @@ impl Scene {
                 .filter(|f| f.distance.abs() > 1e-10)
                 .cloned()
                 .collect(),
+            rainbows: ir.rainbows.clone(),
             max_trace_level: ir.settings.max_trace_level,
             adc_bailout: ir.settings.adc_bailout,
             ambient_light: ir.settings.ambient_light,
@@ -876,6 +877,7 @@ mod tests {
             background_alpha: 0.0,
             sky_sphere: None,
             fogs: vec![],
+            rainbows: vec![],
             atmosphere: vec![],
             settings: ir::Settings::default(),
         };

@@ -23,14 +23,15 @@ mod probe;
 mod query;
 
 pub use crate::ir::{
-    AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection, Rgb,
+    AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
+    Rainbow, Rgb,
 };
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
 pub use material::{Material, filter_colour};
 pub use media::Media;
 pub use normal::Normal;
-pub use pigment::{Pigment, pigment_function};
+pub use pigment::{Pigment, lookup as colour_map_at, pigment_function};
 pub use probe::object_query;
 pub use query::{Queries, ShadowCrossing, ShadowHull, fades};
 
@@ -75,6 +76,8 @@ pub struct Scene {
     sky_sphere: Option<SkySphere>,
     /// Fogs with a positive distance (POV-Ray skips the others).
     fogs: Vec<Fog>,
+    /// Rainbows, seen on rays in hollow space.
+    rainbows: Vec<Rainbow>,
     /// POV-Ray's bounding is on (three or more top-level objects and lights): it then tests
     /// unbounded objects first.
     bounded_last: bool,
@@ -166,6 +169,12 @@ impl Scene {
     #[inline]
     pub fn fogs(&self) -> &[Fog] {
         &self.fogs
+    }
+
+    /// Rainbows, seen on rays in hollow space (not on shadow rays).
+    #[inline]
+    pub fn rainbows(&self) -> &[Rainbow] {
+        &self.rainbows
     }
 
     /// The atmosphere: top-level media, seen on rays in hollow space.

@@ -23,6 +23,7 @@ pub fn object_query(objects: Vec<ir::Object>) -> Box<dyn ir::ObjectQuery> {
         background_alpha: 0.0,
         sky_sphere: None,
         fogs: Vec::new(),
+        rainbows: Vec::new(),
         atmosphere: Vec::new(),
         settings: ir::Settings::default(),
     };

@@ -55,6 +55,12 @@ pub enum NodeKind {
     Density,
     /// `media_interaction B` or `media_attenuation B` of a light.
     LightMedia,
+    /// `dispersion D` or `dispersion_samples N` of an interior.
+    Dispersion,
+    /// `rainbow { … }`.
+    Rainbow,
+    /// A rainbow's `angle`, `width`, `distance`, `jitter`, `arc_angle` or `falloff_angle`.
+    RainbowSetting,
     GlobalSettings,
     AssumedGamma,
     MaxTraceLevel,
@@ -822,6 +828,9 @@ impl<'u> Lower<'u> {
             Rule::fog => NodeKind::Fog,
             Rule::media => NodeKind::Media,
             Rule::media_setting => NodeKind::MediaSetting,
+            Rule::rainbow => NodeKind::Rainbow,
+            Rule::dispersion => NodeKind::Dispersion,
+            Rule::rainbow_setting => NodeKind::RainbowSetting,
             Rule::scattering => NodeKind::Scattering,
             Rule::scattering_setting => NodeKind::ScatteringSetting,
             Rule::density => NodeKind::Density,
@@ -1376,6 +1385,9 @@ fn is_word(rule: Rule) -> bool {
             | media_kw
             | scattering_kw
             | light_media_kw
+            | rainbow_kw
+            | dispersion_kw
+            | kw_rainbow
             | kw_media
             | kw_scattering
             | kw_density

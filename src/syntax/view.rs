@@ -97,6 +97,10 @@ pub enum View<'a> {
         colour: &'a Expr,
     },
     ScatteringSetting(&'a Expr),
+    /// A rainbow's setting: its word is the node's.
+    RainbowSetting(&'a Expr),
+    /// `dispersion D` or `dispersion_samples N`: the word is the node's.
+    Dispersion(&'a Expr),
     /// `media_interaction [B]` / `media_attenuation [B]` (the word says which).
     LightMedia {
         on: Option<&'a Expr>,
@@ -507,6 +511,8 @@ impl Node {
             NodeKind::ScatteringSetting => {
                 one(args).map_or(View::Malformed, View::ScatteringSetting)
             }
+            NodeKind::RainbowSetting => one(args).map_or(View::Malformed, View::RainbowSetting),
+            NodeKind::Dispersion => one(args).map_or(View::Malformed, View::Dispersion),
             NodeKind::LightMedia => match args {
                 rest if rest.len() <= 1 => View::LightMedia { on: rest.first() },
                 _ => View::Malformed,
@@ -867,6 +873,7 @@ impl Node {
             | NodeKind::Camera
             | NodeKind::Fog
             | NodeKind::Media
+            | NodeKind::Rainbow
             | NodeKind::GlobalSettings
             | NodeKind::Perspective
             | NodeKind::CameraType

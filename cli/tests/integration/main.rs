@@ -3,6 +3,7 @@
 mod analytic;
 mod cli;
 mod directives;
+mod dispersion;
 mod errors;
 mod farm;
 mod fuzz_replay;
@@ -15,6 +16,7 @@ mod lenient;
 mod media;
 mod parsing;
 mod povray_cli;
+mod rainbow;
 
 use std::path::{Path, PathBuf};
 

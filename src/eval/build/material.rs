@@ -1850,6 +1850,28 @@ impl Evaluator<'_> {
                     if interior.ior <= 0.0 {
                         return Err(Diagnostic::error("ior must be positive", value.span));
                     }
+                    interior.ior_given = true;
+                }
+                (_, View::Dispersion(value)) if item.word == "dispersion" => {
+                    let d = ev.float(value)?;
+                    if d <= 0.0 {
+                        return Err(Diagnostic::error(
+                            "dispersion must be positive (with zero or less, POV-Ray's indices of refraction become infinite or undefined)",
+                            value.span,
+                        ));
+                    }
+                    // (POV-Ray keeps it in single precision.)
+                    interior.dispersion = f64::from(d as f32);
+                }
+                (_, View::Dispersion(value)) if item.word == "dispersion_samples" => {
+                    let n = ev.float(value)? as i64;
+                    if n < 2 {
+                        return Err(Diagnostic::error(
+                            "dispersion_samples must be at least 2",
+                            value.span,
+                        ));
+                    }
+                    interior.dispersion_samples = n.min(i64::from(u32::MAX)) as u32;
                 }
                 (_, View::FadeDistance(value)) => interior.fade_distance = ev.float(value)?,
                 (_, View::FadePower(value)) => interior.fade_power = ev.float(value)?,

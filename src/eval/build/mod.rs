@@ -28,6 +28,8 @@ pub(in crate::eval) struct Builder {
     pub(in crate::eval) fogs: Vec<ir::Fog>,
     /// Top-level `media { … }`: the atmosphere.
     pub(in crate::eval) atmosphere: Vec<ir::Media>,
+    /// `rainbow { … }` statements that can be seen.
+    pub(in crate::eval) rainbows: Vec<ir::Rainbow>,
     pub(in crate::eval) settings: ir::Settings,
     pub(in crate::eval) camera: Option<CameraItems>,
     pub(in crate::eval) lights: Vec<ir::Light>,

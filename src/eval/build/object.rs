@@ -1309,10 +1309,20 @@ impl Evaluator<'_> {
                     || legacy_caustics.is_some())
             {
                 let mut i = own.unwrap_or_default();
-                i.ior = finish.legacy_ior.unwrap_or(i.ior);
+                if let Some(ior) = finish.legacy_ior {
+                    // (With the finish's ior comes the finish's dispersion, which is 1.)
+                    i.ior = ior;
+                    i.ior_given = true;
+                    i.dispersion = 1.0;
+                }
                 i.refraction = finish.legacy_refraction;
                 i.caustics = legacy_caustics.unwrap_or(i.caustics);
                 own = Some(i);
+            }
+            // An interior given no ior takes the air's, and the air's dispersion with it (POV-Ray's
+            // Post_Process).
+            if let Some(i) = own.as_mut().filter(|i| !i.ior_given) {
+                i.dispersion = 1.0;
             }
             // (Objects without an interior share one default interior.)
             let interior = match own {

@@ -103,7 +103,146 @@ pub(in crate::eval) struct FogItems {
     up: DVec3,
 }
 
+/// A rainbow as POV-Ray holds it once read. A declared rainbow is held so, and a rainbow that
+/// starts from one reads its items over it and is finished again, as POV-Ray does (which
+/// converts its angle and width to radians a second time).
+#[derive(Clone, Debug)]
+pub(in crate::eval) struct RainbowItems {
+    angle: f64,
+    width: f64,
+    distance: f64,
+    jitter: f64,
+    arc_angle: f64,
+    falloff_angle: f64,
+    antisolar: DVec3,
+    up: DVec3,
+    right: DVec3,
+    colours: Option<ir::ColourMap>,
+}
+
+impl Default for RainbowItems {
+    /// POV-Ray's defaults: no colours, no width, distance 1e7, arc and falloff 180
+    /// (unconverted), up y.
+    fn default() -> RainbowItems {
+        RainbowItems {
+            angle: 0.0,
+            width: 0.0,
+            distance: 1.0e7,
+            jitter: 0.0,
+            arc_angle: 180.0,
+            falloff_angle: 180.0,
+            antisolar: DVec3::ZERO,
+            up: DVec3::Y,
+            right: DVec3::X,
+            colours: None,
+        }
+    }
+}
+
+impl RainbowItems {
+    /// The rainbow as the renderer sees it, if it can be seen (POV-Ray skips one without a
+    /// colour map, a distance or a width).
+    pub(in crate::eval) fn seen(self) -> Option<ir::Rainbow> {
+        if self.distance == 0.0 || self.width == 0.0 {
+            return None;
+        }
+        Some(ir::Rainbow {
+            angle: self.angle,
+            width: self.width,
+            distance: self.distance,
+            jitter: self.jitter,
+            arc_angle: self.arc_angle,
+            falloff_angle: self.falloff_angle,
+            antisolar: self.antisolar,
+            up: self.up,
+            right: self.right,
+            colours: self.colours?,
+        })
+    }
+}
+
 impl Evaluator<'_> {
+    /// `rainbow { [Name] items }`, read and finished as POV-Ray's Parse_Rainbow does: the
+    /// falloff angle defaults to the arc angle when only that is given, both are halved and
+    /// converted to radians, up is made perpendicular to the direction, and the angle moves
+    /// to the ring's inner edge.
+    pub(in crate::eval) fn rainbow_items(&mut self, node: &Node) -> Result<RainbowItems> {
+        let mut r = RainbowItems::default();
+        let (mut falloff_given, mut arc_given) = (false, false);
+        self.each_item(&node.children, &mut |ev, item| {
+            match (item.kind, item.view()) {
+                (NodeKind::IdentRef, _) => match ev.lookup(item)? {
+                    Value::Rainbow(declared) => {
+                        ev.warn(Diagnostic::warning(
+                            "POV-Ray 3.7 converts a copied rainbow's angle and width to radians \
+                             again (its ring shrinks to the centre, as here) and frees its colours \
+                             before rendering (it draws the ring black, then crashes)",
+                            item.span,
+                        ));
+                        r = *declared;
+                    }
+                    other => return Err(expr::type_error("a rainbow", &other, item.span)),
+                },
+                (_, View::RainbowSetting(value)) => {
+                    let v = ev.float(value)?;
+                    let half_angle = |what: &str| {
+                        if (0.0..=360.0).contains(&v) {
+                            Ok(v * (std::f64::consts::PI / 360.0))
+                        } else {
+                            Err(Diagnostic::error(
+                                format!("a rainbow's {what} must be from 0 to 360 degrees"),
+                                value.span,
+                            ))
+                        }
+                    };
+                    match item.word.as_str() {
+                        "angle" => r.angle = v,
+                        "width" => r.width = v,
+                        "distance" => r.distance = v,
+                        "jitter" => r.jitter = v,
+                        "falloff_angle" => {
+                            r.falloff_angle = half_angle("falloff_angle")?;
+                            falloff_given = true;
+                        }
+                        _ => {
+                            r.arc_angle = half_angle("arc_angle")?;
+                            arc_given = true;
+                        }
+                    }
+                }
+                (_, View::Direction(value)) => r.antisolar = ev.vec3(value)?,
+                (_, View::Up(value)) => r.up = ev.vec3(value)?,
+                (NodeKind::ColourMap, _) => r.colours = Some(ev.colour_map(item)?),
+                _ => return Err(ev.unknown_item(item, "rainbow")),
+            }
+            Ok(())
+        })?;
+        if arc_given && !falloff_given {
+            r.falloff_angle = r.arc_angle;
+        }
+        let fail = |message: &str| Err(Diagnostic::error(message.to_string(), node.word_span));
+        if r.arc_angle < r.falloff_angle {
+            return fail("a rainbow's arc_angle is smaller than its falloff_angle");
+        }
+        const EPSILON: f64 = 1e-10;
+        if r.antisolar.length_squared() < EPSILON {
+            return fail("a rainbow's direction vector is zero (or missing)");
+        }
+        if r.up.length_squared() < EPSILON {
+            return fail("a rainbow's up vector is zero");
+        }
+        r.antisolar = r.antisolar.normalize();
+        r.up = r.up.normalize();
+        if (1.0 - r.up.dot(r.antisolar).abs()).abs() < EPSILON {
+            return fail("a rainbow's up and direction vectors are parallel");
+        }
+        r.right = r.up.cross(r.antisolar).normalize();
+        r.up = r.antisolar.cross(r.right).normalize();
+        r.angle = (r.angle - 0.5 * r.width).to_radians();
+        r.width = r.width.to_radians();
+        Ok(r)
+    }
+
     /// `sky_sphere { [Name] pigment {…}… [emission C] transforms }`. The transformations move
     /// the whole sky, pigments given after them included (as in POV-Ray).
     pub(in crate::eval) fn sky_sphere(&mut self, node: &Node) -> Result<ir::SkySphere> {
@@ -180,6 +319,7 @@ impl Evaluator<'_> {
             NodeKind::NormalMap => Value::NormalMap(self.normal_map(node, false)?),
             NodeKind::SlopeMap => Value::SlopeMap(self.slope_map(node)?),
             NodeKind::Fog => Value::Fog(Box::new(self.fog_items(node)?)),
+            NodeKind::Rainbow => Value::Rainbow(Box::new(self.rainbow_items(node)?)),
             NodeKind::Media => Value::Media(Box::new(self.media(node)?)),
             NodeKind::Density => Value::Pigment(Box::new(self.density(node)?)),
             NodeKind::Transform => Value::Transform(Box::new(self.transform(node)?)),
@@ -483,6 +623,7 @@ impl Evaluator<'_> {
                 sky_sphere: self.scene.sky_sphere,
                 fogs: self.scene.fogs,
                 atmosphere: self.scene.atmosphere,
+                rainbows: self.scene.rainbows,
                 settings: self.scene.settings,
             },
             warnings: self.warnings,

@@ -32,6 +32,7 @@ const SUPPORTED: &[&str] = &[
     "aoi",
     "aperture",
     "append",
+    "arc_angle",
     "area_light",
     "array",
     "asc",
@@ -120,6 +121,8 @@ const SUPPORTED: &[&str] = &[
     "dimensions",
     "direction",
     "disc",
+    "dispersion",
+    "dispersion_samples",
     "dist_exp",
     "distance",
     "div",
@@ -143,6 +146,7 @@ const SUPPORTED: &[&str] = &[
     "fade_distance",
     "fade_power",
     "falloff",
+    "falloff_angle",
     "false",
     "fclose",
     "file_exists",
@@ -312,6 +316,7 @@ const SUPPORTED: &[&str] = &[
     "radial",
     "radians",
     "radius",
+    "rainbow",
     "ramp_wave",
     "rand",
     "range",
@@ -451,6 +456,7 @@ const SUPPORTED: &[&str] = &[
     "water_level",
     "waves",
     "while",
+    "width",
     "wood",
     "wrinkles",
     "write",
@@ -493,10 +499,9 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "polynomial" | "lemon" => "this shape is not supported by trace yet",
-        "rainbow" | "photons" | "radiosity" | "subsurface" | "emission_media" | "mm_per_unit" => {
+        "photons" | "radiosity" | "subsurface" | "emission_media" | "mm_per_unit" => {
             "outside trace's subset"
         }
-        "dispersion" => "this interior item is outside trace's subset",
         "albedo" => "this finish item is outside trace's subset",
         "iff" => "trace reads png, jpeg, gif, pot, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "clipped_by" | "split_union" | "cutaway_textures" => LATER,
@@ -504,18 +509,16 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this camera type or item is not supported by trace yet"
         }
         "noise_generator_gs" | "subsurface_gs" => "this global setting is outside trace's subset",
-        "always_sample" | "anisotropy" | "autostop" | "dispersion_samples"
-        | "expand_thresholds" | "gather" | "global" | "importance" | "load_file" | "max_sample"
-        | "pass_through" | "pretrace_end" | "pretrace_start" | "save_file" | "spacing"
-        | "steps" | "target" | "arc_angle" | "falloff_angle" | "brightness" | "count"
-        | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
+        "always_sample" | "anisotropy" | "autostop" | "expand_thresholds" | "gather" | "global"
+        | "importance" | "load_file" | "max_sample" | "pass_through" | "pretrace_end"
+        | "pretrace_start" | "save_file" | "spacing" | "steps" | "target" | "brightness"
+        | "count" | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
         | "maximum_reuse" | "minimum_reuse" | "nearest_count" | "recursion_limit" => {
             "radiosity, photons and subsurface scattering are outside trace's subset"
         }
         "evaluate" | "pwr" | "reciprocal" => {
             "this shape or shape item is not supported by trace yet"
         }
-        "width" => "this pattern or pattern modifier is not supported by trace yet",
         "premultiplied" => "this image_map item is not supported by trace yet",
         "translucency" => "this finish item is outside trace's subset",
         "area_illumination" => "this light_source item is not supported by trace yet",

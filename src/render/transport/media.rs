@@ -117,20 +117,25 @@ struct Interval {
     samples: u32,
 }
 
-/// The deterministic numbers where POV-Ray draws random ones (method 1, jitter): a hash
-/// of the segment, so the same ray gets the same numbers on any thread.
-struct Numbers(u64);
+/// The deterministic numbers where POV-Ray draws random ones (media's method 1, jitter; a
+/// rainbow's jitter): a hash of the ray, so the same ray gets the same numbers on any thread.
+pub(super) struct Numbers(u64);
 
 impl Numbers {
     fn new(seg: &Segment) -> Numbers {
+        Numbers::along(seg.origin, seg.direction)
+    }
+
+    /// The numbers of the ray from `origin` along `direction`.
+    pub(super) fn along(origin: DVec3, direction: DVec3) -> Numbers {
         let mut h: u64 = 0x243F_6A88_85A3_08D3;
         for w in [
-            seg.origin.x,
-            seg.origin.y,
-            seg.origin.z,
-            seg.direction.x,
-            seg.direction.y,
-            seg.direction.z,
+            origin.x,
+            origin.y,
+            origin.z,
+            direction.x,
+            direction.y,
+            direction.z,
         ] {
             h = (h ^ w.to_bits()).wrapping_mul(0x9E37_79B9_7F4A_7C15);
             h ^= h >> 29;
@@ -139,7 +144,7 @@ impl Numbers {
     }
 
     /// The next number in [0, 1).
-    fn next(&mut self) -> f64 {
+    pub(super) fn next(&mut self) -> f64 {
         // (splitmix64)
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;

@@ -105,6 +105,10 @@ pub(super) struct Refraction {
     pub(super) inside: bool,
     /// n_from / n_to for the refraction direction.
     pub(super) refraction_eta: f64,
+    /// The dispersions' ratio, from / to, as [`Refraction::refraction_eta`] (1: none).
+    pub(super) dispersion: f64,
+    /// How many wavelengths a dispersing refraction traces.
+    pub(super) bands: u32,
     /// n_to / n_from as POV-Ray's `ComputeRelativeIOR` gives it to the Fresnel term.
     pub(super) fresnel_eta: f64,
     /// The interior list of the transmitted ray.
@@ -113,34 +117,43 @@ pub(super) struct Refraction {
 
 impl Refraction {
     pub(super) fn new(scene: &Scene, list: &MediumStack, o: ObjectId) -> Refraction {
-        let ior = |id: ObjectId| scene.interior(scene.object(id)).ior;
+        let interior = |id: ObjectId| scene.interior(scene.object(id));
+        let ior = |id: ObjectId| interior(id).ior;
         let n_o = ior(o);
+        let (d_o, bands_o) = (interior(o).dispersion, interior(o).dispersion_samples);
         let mut after = *list;
         let position = list.position(scene, o);
         // The medium entered last is `o`'s (POV-Ray compares interiors, not objects).
         let innermost = list
             .last()
             .is_some_and(|l| scene.object(l).medium == scene.object(o).medium);
-        let refraction_eta = match (position, list.last()) {
+        let (refraction_eta, dispersion, bands) = match (position, list.last()) {
             // Entering from air.
             (None, None) => {
                 after.push(o);
-                1.0 / n_o
+                (1.0 / n_o, 1.0 / d_o, bands_o)
             }
             // Entering while inside others.
             (None, Some(last)) => {
                 after.push(o);
-                ior(last) / n_o
+                (ior(last) / n_o, interior(last).dispersion / d_o, bands_o)
             }
-            // Leaving the innermost medium.
+            // Leaving the innermost medium (into another: the more bands of the two).
             (Some(i), Some(_)) if innermost => {
                 after.remove(i);
-                n_o / after.last().map_or(1.0, ior)
+                match after.last() {
+                    None => (n_o, d_o, bands_o),
+                    Some(next) => (
+                        n_o / ior(next),
+                        d_o / interior(next).dispersion,
+                        bands_o.max(interior(next).dispersion_samples),
+                    ),
+                }
             }
             // Leaving an object that is not the innermost: no bending.
             (Some(i), _) => {
                 after.remove(i);
-                1.0
+                (1.0, 1.0, bands_o)
             }
         };
         let fresnel_eta = match (position.is_some(), list.last()) {
@@ -152,6 +165,8 @@ impl Refraction {
         Refraction {
             inside: position.is_some(),
             refraction_eta,
+            dispersion,
+            bands,
             fresnel_eta,
             after,
         }

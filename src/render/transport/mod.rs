@@ -1,13 +1,15 @@
 //! POV-Ray's shading model and Whitted recursion (pov-semantics §6–9): ambient, emission,
 //! diffuse, phong, specular, metallic, reflection (plain and Fresnel), transmission through
 //! filter and transmit, refraction with POV-Ray's interior bookkeeping (`medium`), interior
-//! fade, fog (`fog`), lights and shadows (`lights`).
+//! fade, fog (`fog`), rainbows (`rainbow`), media (`media`), lights and shadows (`lights`).
 
 mod fog;
 mod lights;
 mod media;
 mod medium;
+mod rainbow;
 mod shadow;
+mod spectrum;
 
 use crate::geometry::Ray;
 use crate::scene::{
@@ -86,6 +88,10 @@ pub struct Tracer<'a> {
     shadow_start: MediumStack,
     /// Lists reused by media.
     media_scratch: media::Scratch<'a>,
+    /// The band of the spectrum the ray being traced carries, once a dispersing refraction
+    /// has split it (POV-Ray's monochromatic rays): later dispersing surfaces bend it by its
+    /// wavelength instead of splitting it again.
+    band: Option<spectrum::Band>,
 }
 
 /// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
@@ -135,6 +141,7 @@ impl<'a> Tracer<'a> {
             blockers: Vec::new(),
             shadow_start: MediumStack::default(),
             media_scratch: media::Scratch::default(),
+            band: None,
         }
     }
 
@@ -165,8 +172,16 @@ impl<'a> Tracer<'a> {
         };
         let scene = self.scene;
         let any_media = !scene.atmosphere().is_empty() || (hit.is_some() && !media.is_empty());
-        if (scene.fogs().is_empty() && !any_media) || !media.hollow_space(scene) {
+        let rainbows = scene.rainbows();
+        if (scene.fogs().is_empty() && rainbows.is_empty() && !any_media)
+            || !media.hollow_space(scene)
+        {
             return colour;
+        }
+        if !rainbows.is_empty() {
+            let (c, transmit) = rainbow::rainbowed(rainbows, &ray, depth, colour);
+            colour = c;
+            self.see_through *= transmit;
         }
         if any_media {
             colour = self.seen_through_media(&ray, depth, hit, media, colour);
@@ -432,29 +447,58 @@ impl<'a> Tracer<'a> {
         }
         if wants_transmission && level < scene.max_trace_level() {
             let w = weight * filter.abs().max_element();
-            let eta = refraction.refraction_eta;
-            if (eta - 1.0).abs() < SAME_IOR {
+            let mut eta = refraction.refraction_eta;
+            let disperses = (refraction.dispersion - 1.0).abs() >= SAME_IOR;
+            if disperses {
+                if let Some(band) = self.band {
+                    // (A ray of one wavelength bends by that wavelength's index.)
+                    eta = band.ior(eta, refraction.dispersion);
+                }
+            }
+            if disperses && self.band.is_none() {
+                // Dispersion: one ray per band, each refracted (or totally reflected) by its
+                // own index and weighted by its hue; their mean is filtered as one refracted
+                // ray (with no transmit left for the alpha channel, as in POV-Ray).
+                let mut sum = Rgb::ZERO;
+                for i in 0..refraction.bands {
+                    let band = spectrum::Band::new(i, refraction.bands);
+                    self.band = Some(band);
+                    let eta = band.ior(eta, refraction.dispersion);
+                    let c = match refracted(d, n, cos_i, eta) {
+                        Some(dir) => {
+                            let refracted = scene.spawn(hit, ray.origin, dir);
+                            self.counts.transmitted += 1;
+                            self.trace(&refracted, level + 1, w, &refraction.after)
+                        }
+                        None => {
+                            let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
+                            self.counts.reflected += 1;
+                            self.trace_reflected(&mirror, level + 1, w, media)
+                        }
+                    };
+                    sum += c * band.hue();
+                }
+                self.band = None;
+                result += fade * (sum / f64::from(refraction.bands)) * filter;
+            } else if (eta - 1.0).abs() < SAME_IOR && !disperses {
                 let through = scene.spawn(hit, ray.origin, d);
                 self.counts.transmitted += 1;
                 result += fade * self.trace(&through, level, w, &refraction.after) * filter;
                 see_through = self.see_through * grey(filter);
             } else {
-                // Heckbert's refraction, c = −D·N with N facing the ray.
-                let k = 1.0 + eta * eta * (cos_i * cos_i - 1.0);
-                if k < 0.0 {
+                if let Some(dir) = refracted(d, n, cos_i, eta) {
+                    let refracted = scene.spawn(hit, ray.origin, dir);
+                    self.counts.transmitted += 1;
+                    result +=
+                        fade * self.trace(&refracted, level + 1, w, &refraction.after) * filter;
+                    see_through = self.see_through * grey(filter);
+                } else {
                     // Total internal reflection: the mirror ray at full weight, instead of the
                     // surface's own reflection.
                     total_internal_reflection = true;
                     let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                     self.counts.reflected += 1;
                     result += fade * self.trace_reflected(&mirror, level + 1, weight, media);
-                } else {
-                    let dir = (eta * d + (eta * cos_i - k.sqrt()) * n).normalize();
-                    let refracted = scene.spawn(hit, ray.origin, dir);
-                    self.counts.transmitted += 1;
-                    result +=
-                        fade * self.trace(&refracted, level + 1, w, &refraction.after) * filter;
-                    see_through = self.see_through * grey(filter);
                 }
             }
         }
@@ -678,6 +722,14 @@ impl<'a> Tracer<'a> {
 }
 
 /// A number in [0, 1) for `crand`, from the bits of the point and the light's index.
+/// The direction of a ray of unit direction `d` refracted by the relative index `eta` at a
+/// surface of normal `n` (facing the ray, `cos_i` = −d·n), by Heckbert's method; `None` under
+/// total internal reflection.
+fn refracted(d: DVec3, n: DVec3, cos_i: f64, eta: f64) -> Option<DVec3> {
+    let k = 1.0 + eta * eta * (cos_i * cos_i - 1.0);
+    (k >= 0.0).then(|| (eta * d + (eta * cos_i - k.sqrt()) * n).normalize())
+}
+
 fn grain(p: DVec3, light: usize) -> f64 {
     let mut h = (light as u64).wrapping_add(0x9E37_79B9_7F4A_7C15);
     for v in [p.x, p.y, p.z] {
