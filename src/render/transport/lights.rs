@@ -237,7 +237,12 @@ impl Tracer<'_> {
         }
         match blockers {
             Blockers::None => Rgb::ONE,
-            Blockers::Opaque if self.scene.blocked_among(shadow, &self.blockers) => Rgb::ZERO,
+            Blockers::Opaque
+                if (self.scene)
+                    .blocked_among(&super::shadow::blocking_part(shadow), &self.blockers) =>
+            {
+                Rgb::ZERO
+            }
             Blockers::Opaque => Rgb::ONE,
             Blockers::Unknown => super::transmittance(self.scene, shadow),
         }

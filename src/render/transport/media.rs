@@ -16,6 +16,7 @@ use super::Tracer;
 use super::fog::fog_attenuation;
 use super::lights::ShadowStart;
 use super::medium::MediumStack;
+use super::shadow::SHADOW_TOLERANCE;
 use crate::geometry::Ray;
 use crate::scene::{Light, LightKind, Media, ObjectId, Rgb, ShadowCrossing};
 use glam::DVec3;
@@ -24,9 +25,6 @@ use glam::DVec3;
 const MAX_DISTANCE: f64 = 1e7;
 /// POV-Ray's `SMALL_TOLERANCE`: a light's part must end beyond this.
 const SMALL_TOLERANCE: f64 = 1e-3;
-/// POV-Ray's `SHADOW_TOLERANCE`: the rest of a shadow ray shorter than this sees no
-/// atmosphere.
-const SHADOW_TOLERANCE: f64 = 1e-3;
 /// POV-Ray's `EPSILON` (a quadric's discriminant within it is a tangent).
 const EPSILON: f64 = 1e-10;
 

@@ -12,6 +12,19 @@ use std::cell::RefCell;
 /// involved, are taken for the same point (a few thousand times the rounding of a double).
 const COINCIDENT: f64 = 1.0 / (1u64 << 40) as f64;
 
+/// POV-Ray's `SHADOW_TOLERANCE`: a surface closer than this to the light casts no shadow
+/// (a light on an object's surface shines out of it), and the rest of a shadow ray shorter
+/// than this sees no atmosphere.
+pub(super) const SHADOW_TOLERANCE: f64 = 1e-3;
+
+/// The part of the shadow ray `ray`, which ends at its light, where surfaces may block it:
+/// all but the last [`SHADOW_TOLERANCE`] before the light.
+pub(super) fn blocking_part(ray: &Ray) -> Ray {
+    let mut part = *ray;
+    part.tmax -= SHADOW_TOLERANCE / ray.direction.length();
+    part
+}
+
 /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
 /// object, and the product of `rgb·filter + transmit` over every crossing of transparent
 /// objects (POV-Ray filters at each surface crossing), times the interior fade of the
@@ -30,6 +43,7 @@ pub(super) fn transmittance_and(
     along: impl FnOnce(&[ShadowCrossing]) -> Rgb,
 ) -> Rgb {
     // First any opaque blocker (stops at the first), then the transparent ones.
+    let ray = &blocking_part(ray);
     if scene.occluded(ray) {
         return Rgb::ZERO;
     }
