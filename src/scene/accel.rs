@@ -134,12 +134,6 @@ impl ObjectIndex {
         })
     }
 
-    /// Visits every bounded object whose box the ray meets.
-    pub fn each(&self, ray: &Ray, mut f: impl FnMut(u32)) {
-        self.bvh
-            .ray_traverse_anyhit(bvh_ray(ray, ray.tmax), |_, k| f(self.bounded[k]));
-    }
-
     /// Visits every bounded object in a leaf whose box `keep(min, max)` keeps, descending only
     /// into nodes it keeps (the node boxes hold their objects' boxes, rounded outward).
     pub fn each_kept(

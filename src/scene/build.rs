@@ -339,6 +339,20 @@ impl Scene {
                     position: l.position,
                     colour: l.colour,
                     kind: l.kind.clone(),
+                    axis: match l.kind {
+                        LightKind::Spot { point_at, .. } | LightKind::Cylinder { point_at, .. } => {
+                            (point_at - l.position).normalize_or_zero()
+                        }
+                        LightKind::Point | LightKind::Parallel { .. } => DVec3::ZERO,
+                    },
+                    cos_radius: match l.kind {
+                        LightKind::Spot { radius_deg, .. } => radius_deg.to_radians().cos(),
+                        _ => 1.0,
+                    },
+                    cos_falloff: match l.kind {
+                        LightKind::Spot { falloff_deg, .. } => falloff_deg.to_radians().cos(),
+                        _ => 1.0,
+                    },
                     shadowless: l.shadowless,
                     fade: l.fade,
                     area: l.area.clone(),

@@ -284,6 +284,12 @@ pub struct Light {
     pub colour: Rgb,
     /// Point, spot or parallel.
     pub kind: LightKind,
+    /// The unit axis of a spot or cylinder light, toward its `point_at` (zero for others).
+    pub axis: DVec3,
+    /// A spotlight's cos(radius) (1 for other lights).
+    pub cos_radius: f64,
+    /// A spotlight's cos(falloff) (1 for other lights).
+    pub cos_falloff: f64,
     /// No shadows, no highlights.
     pub shadowless: bool,
     /// Distance attenuation.

@@ -49,7 +49,7 @@ pub struct Normal {
 impl Normal {
     /// Whether the normal (or one in its map) is uv-mapped.
     pub fn uses_uv(&self) -> bool {
-        self.pattern.kind == PatternKind::UvMapping
+        matches!(self.pattern.kind, PatternKind::UvMapping)
             || self
                 .map
                 .as_ref()
@@ -93,7 +93,7 @@ impl Normal {
     /// (facing the ray).
     pub fn perturb_on(&self, p: DVec3, n: DVec3, surface: &Surface) -> DVec3 {
         // `uv_mapping`: the entry perturbs at the surface's (u, v, 0), whatever moved the normal.
-        if self.pattern.kind == PatternKind::UvMapping {
+        if matches!(self.pattern.kind, PatternKind::UvMapping) {
             if let Some(map) = &self.map {
                 return map[0]
                     .1
@@ -155,7 +155,7 @@ impl Normal {
                     let d = tp - *src;
                     let len = d.length();
                     let len = if len == 0.0 { 1.0 } else { len };
-                    let s = if pattern.kind == PatternKind::Ripples {
+                    let s = if matches!(pattern.kind, PatternKind::Ripples) {
                         cycloidal(len * pattern.wave.frequency + pattern.wave.phase) * a
                     } else {
                         (cycloidal(len * pattern.wave.frequency * f + pattern.wave.phase) * a) / f

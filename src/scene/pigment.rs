@@ -120,11 +120,11 @@ impl Pigment {
         match &self.kind {
             Kind::Solid(c) => *c,
             // `uv_mapping`: the entry sees the surface's (u, v, 0), whatever moved the pigment.
-            Kind::Pattern(m) if m.pattern.kind == PatternKind::UvMapping => match &m.map {
+            Kind::Pattern(m) if matches!(m.pattern.kind, PatternKind::UvMapping) => match &m.map {
                 Map::Pigments(ps) => ps[0].1.colour_on(surface.uv.extend(0.0), surface),
                 Map::Colours(cs) => cs[0].1,
             },
-            Kind::Pattern(m) if m.pattern.kind == PatternKind::Average => {
+            Kind::Pattern(m) if matches!(m.pattern.kind, PatternKind::Average) => {
                 // POV-Ray's average: the entries weighted by their values.
                 let w = m.pattern.warp(q);
                 match &m.map {

@@ -227,9 +227,11 @@ pub trait Queries {
     /// extent (stops at the first found).
     fn occluded(&self, ray: &Ray) -> bool;
 
-    /// The crossings along `ray` with every object that casts shadows and may let light
-    /// through, appended to `out` in no particular order.
-    fn shadow_crossings(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>);
+    /// [`Queries::occluded`] and the crossings along `ray` with every object that casts
+    /// shadows and may let light through, in one pass over the objects: whether an opaque
+    /// object blocks `ray` (the pass then stops, `out` holding part of the crossings), else
+    /// every crossing appended to `out`, in no particular order.
+    fn shadow_pass(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool;
 
     /// What the surface lets through at a crossing (its surface worked out, as for a camera
     /// ray's hit, where the material's patterns see more than the point: uv mapping, slope,
@@ -343,33 +345,30 @@ impl Queries for Scene {
         }
     }
 
-    fn shadow_crossings(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) {
-        let mut cross = |i: u32| {
+    fn shadow_pass(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool {
+        let mut visit = |i: u32| {
             let object = &self.objects[i as usize];
-            if self.filters_shadows(i) && object.admits(ray) {
-                object
-                    .shape
-                    .for_each_crossing(&Self::local_ray(object, ray), |t, part| {
-                        out.push(ShadowCrossing {
-                            t,
-                            object: ObjectId(i),
-                            part,
-                        })
-                    });
+            if object.no_shadow || !object.admits(ray) {
+                return false;
             }
+            let local = Self::local_ray(object, ray);
+            if self.filters_shadows(i) {
+                object.shape.for_each_crossing(&local, |t, part| {
+                    out.push(ShadowCrossing {
+                        t,
+                        object: ObjectId(i),
+                        part,
+                    })
+                });
+            }
+            !self.material(object.material).may_be_transparent() && object.shape.occludes(&local)
         };
         match &self.index {
-            Some(index) => {
-                index.unbounded.iter().for_each(|&i| cross(i));
-                index.each(ray, &mut cross);
-            }
+            Some(index) => index.unbounded.iter().any(|&i| visit(i)) || index.any(ray, visit),
             None => {
                 let inv = ray.direction.recip();
-                for (i, b) in self.scan_bounds.iter().enumerate() {
-                    if may_hit(*b, ray, inv) {
-                        cross(i as u32);
-                    }
-                }
+                (self.scan_bounds.iter().enumerate())
+                    .any(|(i, b)| may_hit(*b, ray, inv) && visit(i as u32))
             }
         }
     }

@@ -468,15 +468,15 @@ pub(super) fn reach(light: &Light, shadow: &Ray, distance: f64) -> Option<f64> {
 pub(super) fn attenuation(light: &Light, point: DVec3, direction: DVec3, distance: f64) -> f64 {
     let mut a = 1.0;
     if let LightKind::Cylinder {
-        point_at,
         radius,
         falloff,
         tightness,
+        ..
     } = &light.kind
     {
         // Nothing behind the light's plane or beyond `falloff` from the axis; a smooth step
         // from `radius` out.
-        let axis = (*point_at - light.position).normalize_or_zero();
+        let axis = light.axis;
         let v = point - light.position;
         let along = v.dot(axis);
         if along <= 0.0 {
@@ -493,23 +493,20 @@ pub(super) fn attenuation(light: &Light, point: DVec3, direction: DVec3, distanc
         }
     }
     if let LightKind::Spot {
-        point_at,
         radius_deg,
-        falloff_deg,
         tightness,
+        ..
     } = &light.kind
     {
-        let axis = (*point_at - light.position).normalize_or_zero();
-        let cos = (-direction).dot(axis);
+        let cos = (-direction).dot(light.axis);
         if cos <= 0.0 {
             return 0.0;
         }
         if *tightness != 0.0 {
             a *= cos.powf(*tightness);
         }
-        let cos_radius = radius_deg.to_radians().cos();
-        if *radius_deg < 90.0 && cos < cos_radius {
-            a *= smooth_step(falloff_deg.to_radians().cos(), cos_radius, cos);
+        if *radius_deg < 90.0 && cos < light.cos_radius {
+            a *= smooth_step(light.cos_falloff, light.cos_radius, cos);
         }
     }
     if let Some(f) = &light.fade {

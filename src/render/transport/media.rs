@@ -158,7 +158,11 @@ fn distance(a: Rgb, b: Rgb) -> f64 {
     (a - b).abs().element_sum()
 }
 
+/// e^v channel by channel (once for a grey v: media are mostly grey).
 fn exp(v: Rgb) -> Rgb {
+    if v.x == v.y && v.y == v.z {
+        return Rgb::splat(v.x.exp());
+    }
     Rgb::new(v.x.exp(), v.y.exp(), v.z.exp())
 }
 
@@ -273,19 +277,11 @@ impl<'a> Tracer<'a> {
                 continue;
             }
             let part = match &light.kind {
-                LightKind::Spot {
-                    point_at,
-                    falloff_deg,
-                    ..
-                } => {
-                    let axis = (*point_at - light.position).normalize_or_zero();
-                    spot_part(seg, light.position, axis, falloff_deg.to_radians().cos())
+                LightKind::Spot { .. } => {
+                    spot_part(seg, light.position, light.axis, light.cos_falloff)
                 }
-                LightKind::Cylinder {
-                    point_at, falloff, ..
-                } => {
-                    let axis = (*point_at - light.position).normalize_or_zero();
-                    cylinder_part(seg, light.position, axis, *falloff)
+                LightKind::Cylinder { falloff, .. } => {
+                    cylinder_part(seg, light.position, light.axis, *falloff)
                 }
                 LightKind::Point | LightKind::Parallel { .. } => Some((0.0, seg.depth)),
             };

@@ -42,12 +42,13 @@ pub(super) fn transmittance_and(
     ray: &Ray,
     along: impl FnOnce(&[ShadowCrossing]) -> Rgb,
 ) -> Rgb {
-    // First any opaque blocker (stops at the first), then the transparent ones.
+    // Without transparent objects, any opaque blocker (the search stops at the first);
+    // else the crossings of the transparent ones too, in the same pass.
     let ray = &blocking_part(ray);
-    if scene.occluded(ray) {
-        return Rgb::ZERO;
-    }
     if !scene.any_transparent() {
+        if scene.occluded(ray) {
+            return Rgb::ZERO;
+        }
         return along(&[]);
     }
     thread_local! {
@@ -58,7 +59,9 @@ pub(super) fn transmittance_and(
     SCRATCH.with_borrow_mut(|(crossings, media)| {
         crossings.clear();
         media.clear();
-        scene.shadow_crossings(ray, crossings);
+        if scene.shadow_pass(ray, crossings) {
+            return Rgb::ZERO;
+        }
         distinct(ray, crossings);
         let through = walk(scene, ray, crossings, media);
         if through == Rgb::ZERO {
