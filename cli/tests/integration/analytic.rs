@@ -10,12 +10,7 @@ fn centre_pixel(scene: &str) -> [f32; 3] {
 
 /// Compares a film pixel (f32, so about 1e-7 relative precision) with a value computed by hand.
 fn assert_close(actual: [f32; 3], expected: [f64; 3], tolerance: f64) {
-    for c in 0..3 {
-        assert!(
-            (actual[c] as f64 - expected[c]).abs() <= tolerance,
-            "channel {c}: got {actual:?}, expected {expected:?}"
-        );
-    }
+    crate::assert_near(actual, expected, tolerance, "pixel");
 }
 
 const HEADER: &str = "#version 3.7; global_settings { assumed_gamma 1.0 }\n";

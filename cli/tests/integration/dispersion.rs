@@ -37,13 +37,7 @@ fn a_dispersing_ball_splits_the_stripes_as_povray_does() {
         ((31, 30), [0.00000, 0.00000, 0.00000]),
     ];
     for ((x, y), v) in povray {
-        let got = film.get(x, y);
-        for c in 0..3 {
-            assert!(
-                (f64::from(got[c]) - v[c]).abs() <= 1.2e-4,
-                "pixel ({x}, {y}): got {got:?}, POV-Ray gives {v:?}"
-            );
-        }
+        crate::assert_near(film.get(x, y), v, 1.2e-4, &format!("pixel ({x}, {y})"));
     }
 }
 

@@ -34,6 +34,17 @@ pub fn povray_includes() -> PathBuf {
     )
 }
 
+/// Asserts each channel of a film pixel (f32) within `tolerance` of a value computed by hand
+/// or read from POV-Ray's render of the same scene; `what` names the pixel in the message.
+pub fn assert_near(actual: [f32; 3], expected: [f64; 3], tolerance: f64, what: &str) {
+    for c in 0..3 {
+        assert!(
+            (f64::from(actual[c]) - expected[c]).abs() <= tolerance,
+            "{what}: got {actual:?}, expected {expected:?}"
+        );
+    }
+}
+
 /// Loads scene text at a given image size, panicking with the rendered diagnostic on error.
 pub fn load_text(text: &str, width: u32, height: u32) -> trace::ir::Scene {
     let options = trace::LoadOptions {

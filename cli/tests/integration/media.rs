@@ -24,12 +24,7 @@ fn render(body: &str) -> trace::Film {
 
 /// Each channel within 1e-4 of POV-Ray's (its values were read from 16-bit PNGs).
 fn assert_povray(actual: [f32; 3], povray: [f64; 3], what: &str) {
-    for c in 0..3 {
-        assert!(
-            (f64::from(actual[c]) - povray[c]).abs() <= 1.2e-4,
-            "{what}: got {actual:?}, POV-Ray gives {povray:?}"
-        );
-    }
+    crate::assert_near(actual, povray, 1.2e-4, what);
 }
 
 #[test]

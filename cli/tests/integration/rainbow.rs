@@ -38,13 +38,7 @@ fn a_rainbow_blends_as_povray_blends_it() {
         ((0, 59), [0.1, 0.5, 0.9]),
     ];
     for ((x, y), v) in povray {
-        let got = film.get(x, y);
-        for c in 0..3 {
-            assert!(
-                (f64::from(got[c]) - v[c]).abs() <= 1.2e-4,
-                "pixel ({x}, {y}): got {got:?}, POV-Ray gives {v:?}"
-            );
-        }
+        crate::assert_near(film.get(x, y), v, 1.2e-4, &format!("pixel ({x}, {y})"));
     }
 }
 
