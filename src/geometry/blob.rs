@@ -264,12 +264,13 @@ impl Blob {
             POLYS.with_borrow_mut(|polys| {
                 events.clear();
                 polys.clear();
-                // The polynomials are formed about the point of the ray nearest the blob's
-                // centre (distances s = t − shift), so that a far ray origin costs no
-                // precision.
+                // The polynomials are formed about the point where the ray enters the blob's
+                // box (distances s = t − shift), or its origin if that is inside, so that a far
+                // ray origin costs no precision; the point nearest the box's centre would,
+                // in a blob as long as it is thin (a tube 5000 long), be as far from the
+                // surface the ray meets.
                 let d = ray.direction;
-                let centre = 0.5 * (self.bounds.0 + self.bounds.1);
-                let shift = (centre - ray.origin).dot(d) / d.length_squared();
+                let shift = box_entry(ray.origin, d, self.bounds).max(0.0);
                 let origin = ray.origin + shift * d;
                 let lowest = ray.tmin.max(DEPTH_TOLERANCE);
                 for e in self.elements.iter() {
@@ -323,6 +324,20 @@ impl Blob {
                 }
             })
         });
+    }
+}
+
+/// Where the line `o + t·d` enters the box `(lo, hi)` (its t; negative when `o` is inside or
+/// past the box; 0 when the line misses it).
+fn box_entry(o: DVec3, d: DVec3, (lo, hi): (DVec3, DVec3)) -> f64 {
+    let inv = d.recip();
+    let (t0, t1) = ((lo - o) * inv, (hi - o) * inv);
+    let near = t0.min(t1);
+    let (enter, exit) = (near.max_element(), t0.max(t1).min_element());
+    if enter.is_finite() && enter <= exit {
+        enter
+    } else {
+        0.0
     }
 }
 
@@ -443,5 +458,30 @@ mod tests {
         );
         let c = b.intersect(&Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
         assert!((c.first().unwrap() - (5.0 - 2.0 * r)).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_thin_tube_thousands_long_is_hit_where_it_is() {
+        // Strength 1, threshold 0.25: the surface lies at r = R·√½ from the axis. A tube of
+        // radius 0.2 and length 5000 seen across near its top end (the box's centre is 2500
+        // away: the polynomials must not be formed about it).
+        let top = DVec3::new(0.0, 0.0, 0.0);
+        let parts = BlobElement::cylinder(top, DVec3::new(0.0, -5000.0, 0.0), 0.2, 1.0, None);
+        let b = Blob::new(0.25, parts.into_iter().collect());
+        let r = 0.2 * 0.5f64.sqrt();
+        for k in 0..200 {
+            let y = -0.1 - 0.05 * f64::from(k);
+            let d = DVec3::new(1.0, 0.01 * f64::from(k % 7), 0.3).normalize();
+            let origin = DVec3::new(0.0, y, 0.0) - 3.0 * d;
+            let c = b.intersect(&Ray::new(origin, d));
+            let t = c.first().expect("the ray meets the tube");
+            // Where the ray is r from the axis (the y axis), on the way in.
+            let p = origin + d * t;
+            assert!(
+                (p.x.hypot(p.z) - r).abs() < 1e-7,
+                "ray {k}: hit {p} is {} from the axis",
+                p.x.hypot(p.z)
+            );
+        }
     }
 }
