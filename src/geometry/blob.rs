@@ -42,6 +42,17 @@ pub struct BlobElement {
     normal_to_blob: DMat3,
 }
 
+/// A ray's line as one element sees it: the interval `lo..hi` of distances where the
+/// element's field acts, and the offset `v` from the field's centre (point or axis) at the
+/// line's origin with its change `w` per unit distance.
+#[derive(Clone, Copy, Debug)]
+struct Along {
+    lo: f64,
+    hi: f64,
+    v: DVec3,
+    w: DVec3,
+}
+
 impl BlobElement {
     /// A sphere component (`transform`: the component's own transformations).
     pub fn sphere(
@@ -129,9 +140,9 @@ impl BlobElement {
         }
     }
 
-    /// Along `o + s·d` (blob space): the interval of s where the field acts and the field
-    /// there as a quartic in s (lowest power first).
-    fn along(&self, o: DVec3, d: DVec3) -> Option<(f64, f64, [f64; 5])> {
+    /// Along `o + s·d` (blob space): the interval of s where the field acts, and the line in
+    /// the element's frame ([`Along`]), from which [`BlobElement::quartic`] forms the field.
+    fn along(&self, o: DVec3, d: DVec3) -> Option<Along> {
         let (a, b) = match self.to_local {
             Some(m) => (m.transform_point3(o), m.transform_vector3(d)),
             None => (o, d),
@@ -172,23 +183,25 @@ impl BlobElement {
         } else if a.z < zlo || a.z > zhi {
             return None;
         }
-        if lo >= hi {
-            return None;
-        }
+        (lo < hi).then_some(Along { lo, hi, v, w })
+    }
+
+    /// The field along the line `along` describes, as a quartic in the distance from the
+    /// point `by` further along it than its origin (lowest power first): the offset is moved
+    /// there before it is squared, so no precision is lost to a distant origin.
+    fn quartic(&self, along: &Along, by: f64) -> [f64; 5] {
+        let (v, w) = (along.v + by * along.w, along.w);
+        let (q2, q1, q0) = (w.dot(w), 2.0 * v.dot(w), v.dot(v));
         let c0 = self.strength / (self.r2 * self.r2);
         let c1 = -2.0 * self.strength / self.r2;
         let c2 = self.strength;
-        Some((
-            lo,
-            hi,
-            [
-                c0 * q0 * q0 + c1 * q0 + c2,
-                c0 * 2.0 * q0 * q1 + c1 * q1,
-                c0 * (q1 * q1 + 2.0 * q0 * q2) + c1 * q2,
-                c0 * 2.0 * q1 * q2,
-                c0 * q2 * q2,
-            ],
-        ))
+        [
+            c0 * q0 * q0 + c1 * q0 + c2,
+            c0 * 2.0 * q0 * q1 + c1 * q1,
+            c0 * (q1 * q1 + 2.0 * q0 * q2) + c1 * q2,
+            c0 * 2.0 * q1 * q2,
+            c0 * q2 * q2,
+        ]
     }
 
     /// The element's box in blob space (its reach).
@@ -224,10 +237,19 @@ pub struct Blob {
     bounds: (DVec3, DVec3),
 }
 
+/// Per-thread room for a ray's work, so that no ray allocates.
+#[derive(Default)]
+struct Scratch {
+    /// The lines of the elements whose fields the ray meets, with their indices.
+    lines: Vec<(u32, Along)>,
+    /// Their quartics.
+    polys: Vec<[f64; 5]>,
+    /// Where each starts (2i) and stops (2i + 1) acting.
+    events: Vec<(f64, u32)>,
+}
+
 thread_local! {
-    /// Per-thread room for a ray's events, so that no ray allocates.
-    static EVENTS: RefCell<Vec<(f64, u32)>> = const { RefCell::new(Vec::new()) };
-    static POLYS: RefCell<Vec<[f64; 5]>> = const { RefCell::new(Vec::new()) };
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
 }
 
 impl Blob {
@@ -260,69 +282,84 @@ impl Blob {
 
     /// Calls `f` with the crossings in increasing distance until it returns false.
     fn crossings(&self, ray: &Ray, mut f: impl FnMut(f64) -> bool) {
-        EVENTS.with_borrow_mut(|events| {
-            POLYS.with_borrow_mut(|polys| {
-                events.clear();
-                polys.clear();
-                // The polynomials are formed about the point where the ray enters the blob's
-                // box (distances s = t − shift), or its origin if that is inside, so that a far
-                // ray origin costs no precision; the point nearest the box's centre would,
-                // in a blob as long as it is thin (a tube 5000 long), be as far from the
-                // surface the ray meets.
-                let d = ray.direction;
-                let shift = box_entry(ray.origin, d, self.bounds).max(0.0);
-                let origin = ray.origin + shift * d;
-                let lowest = ray.tmin.max(DEPTH_TOLERANCE);
-                for e in self.elements.iter() {
-                    if let Some((lo, hi, poly)) = e.along(origin, d) {
-                        let (lo, hi) = (lo + shift, hi + shift);
-                        if hi <= lowest || lo >= ray.tmax {
-                            continue;
-                        }
-                        let i = polys.len() as u32;
-                        polys.push(poly);
-                        // Entries as 2i, exits as 2i + 1: at equal distances exits go first.
-                        events.push((lo, 2 * i));
-                        events.push((hi, 2 * i + 1));
-                    }
-                }
-                if events.is_empty() {
-                    return;
-                }
-                events.sort_by(|a, b| a.0.total_cmp(&b.0).then((b.1 & 1).cmp(&(a.1 & 1))));
-                let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
-                let mut active = 0usize;
-                for k in 0..events.len() {
-                    let (t, id) = events[k];
-                    let poly = &polys[(id / 2) as usize];
-                    let sign = if id & 1 == 0 { 1.0 } else { -1.0 };
-                    for (s, c) in sum.iter_mut().zip(poly) {
-                        *s += sign * c;
-                    }
-                    if id & 1 == 0 {
-                        active += 1;
-                    } else {
-                        active -= 1;
-                    }
-                    let Some(&(next, _)) = events.get(k + 1) else {
-                        break;
-                    };
-                    if active == 0 || next - t < 1e-10 {
+        SCRATCH.with_borrow_mut(|scratch| {
+            let Scratch {
+                lines,
+                polys,
+                events,
+            } = scratch;
+            events.clear();
+            polys.clear();
+            lines.clear();
+            // The lines are first seen from where the ray enters the blob's box (or from
+            // its origin if that is inside), so that a far ray origin costs no precision.
+            let d = ray.direction;
+            let entry = box_entry(ray.origin, d, self.bounds).max(0.0);
+            let origin = ray.origin + entry * d;
+            let lowest = ray.tmin.max(DEPTH_TOLERANCE);
+            let (mut first, mut last) = (f64::INFINITY, f64::NEG_INFINITY);
+            for (k, e) in self.elements.iter().enumerate() {
+                if let Some(line) = e.along(origin, d) {
+                    if line.hi + entry <= lowest || line.lo + entry >= ray.tmax {
                         continue;
                     }
-                    let (lo, hi) = (t.max(lowest), next.min(ray.tmax));
-                    if lo > hi {
-                        continue;
-                    }
-                    let c = [sum[0], sum[1], sum[2], sum[3], sum[4], 0.0, 0.0];
-                    for &root in roots_in(&c, 4, lo - shift, hi - shift).as_slice() {
-                        let t = root + shift;
-                        if t > lowest && ray.contains(t) && !f(t) {
-                            return;
-                        }
+                    first = first.min(line.lo);
+                    last = last.max(line.hi);
+                    lines.push((k as u32, line));
+                }
+            }
+            // The quartics are formed about the point of the ray nearest the box's centre
+            // where that lies where the fields act (the roots of a grazing pair are then
+            // near it), else about the nearer end of that stretch: a tube 5000 long seen
+            // across near one end is met far from the box's centre.
+            let centre = 0.5 * (self.bounds.0 + self.bounds.1);
+            let nearest = (centre - origin).dot(d) / d.length_squared();
+            let by = nearest.clamp(first, last.max(first));
+            let shift = entry + by;
+            for (k, line) in lines.iter() {
+                let e = &self.elements[*k as usize];
+                let i = polys.len() as u32;
+                polys.push(e.quartic(line, by));
+                // Entries as 2i, exits as 2i + 1: at equal distances exits go first.
+                events.push((line.lo + entry, 2 * i));
+                events.push((line.hi + entry, 2 * i + 1));
+            }
+            if events.is_empty() {
+                return;
+            }
+            events.sort_by(|a, b| a.0.total_cmp(&b.0).then((b.1 & 1).cmp(&(a.1 & 1))));
+            let mut sum = [-self.threshold, 0.0, 0.0, 0.0, 0.0];
+            let mut active = 0usize;
+            for k in 0..events.len() {
+                let (t, id) = events[k];
+                let poly = &polys[(id / 2) as usize];
+                let sign = if id & 1 == 0 { 1.0 } else { -1.0 };
+                for (s, c) in sum.iter_mut().zip(poly) {
+                    *s += sign * c;
+                }
+                if id & 1 == 0 {
+                    active += 1;
+                } else {
+                    active -= 1;
+                }
+                let Some(&(next, _)) = events.get(k + 1) else {
+                    break;
+                };
+                if active == 0 || next - t < 1e-10 {
+                    continue;
+                }
+                let (lo, hi) = (t.max(lowest), next.min(ray.tmax));
+                if lo > hi {
+                    continue;
+                }
+                let c = [sum[0], sum[1], sum[2], sum[3], sum[4], 0.0, 0.0];
+                for &root in roots_in(&c, 4, lo - shift, hi - shift).as_slice() {
+                    let t = root + shift;
+                    if t > lowest && ray.contains(t) && !f(t) {
+                        return;
                     }
                 }
-            })
+            }
         });
     }
 }
