@@ -10,6 +10,7 @@ mod fuzz_replay;
 mod golden;
 mod hostile;
 mod ir_snapshots;
+mod irid;
 mod keywords;
 mod layers;
 mod lenient;
@@ -74,4 +75,30 @@ pub fn render_text(
         ..Default::default()
     };
     trace::render(&scene, &options).expect("renders").film
+}
+
+/// Renders a scene on one thread and on two without anti-aliasing, asserts the two films equal
+/// pixel for pixel, and returns the film.
+pub fn render_at_one_and_two_threads(
+    scene: &trace::ir::Scene,
+    width: u32,
+    height: u32,
+) -> trace::Film {
+    let film = |threads| {
+        let options = trace::RenderOptions {
+            width,
+            height,
+            antialias: trace::Antialias::Off,
+            threads: Some(threads),
+            ..Default::default()
+        };
+        trace::render(scene, &options).expect("renders").film
+    };
+    let (one, two) = (film(1), film(2));
+    for y in 0..height {
+        for x in 0..width {
+            assert_eq!(one.get(x, y), two.get(x, y), "pixel ({x}, {y})");
+        }
+    }
+    one
 }

@@ -473,7 +473,8 @@ impl<'a> Tracer<'a> {
                         None => {
                             let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                             self.counts.reflected += 1;
-                            self.trace_reflected(&mirror, level + 1, w, media)
+                            let seen = self.trace_reflected(&mirror, level + 1, w, media);
+                            seen * self.irid(material, &mirror, d, n, hit)
                         }
                     };
                     sum += c * band.hue();
@@ -498,7 +499,8 @@ impl<'a> Tracer<'a> {
                     total_internal_reflection = true;
                     let mirror = scene.spawn(hit, ray.origin, mirror_direction(d, n, raw));
                     self.counts.reflected += 1;
-                    result += fade * self.trace_reflected(&mirror, level + 1, weight, media);
+                    let seen = self.trace_reflected(&mirror, level + 1, weight, media);
+                    result += fade * seen * self.irid(material, &mirror, d, n, hit);
                 }
             }
         }
@@ -620,14 +622,24 @@ impl<'a> Tracer<'a> {
             rf.max.max_element().max(rf.min.max_element())
         };
         let mut seen = self.trace_reflected(&reflected, level + 1, weight * bound, media);
-        if layer.finish.irid.amount > 0.0 {
-            let to = reflected.direction.normalize();
-            seen *= scene.irid(&layer.finish, to, ray.direction, n, hit.point);
-        }
+        seen *= self.irid(layer, &reflected, ray.direction, n, hit);
         if rf.exponent != 1.0 {
             seen = seen.max(DVec3::ZERO).powf(1.0 / rf.exponent);
         }
         reflec * seen
+    }
+
+    /// The tint a layer's `irid` gives light reflected into `mirror` (any mirror ray, totally
+    /// internally reflected ones included, as POV-Ray's ComputeReflection applies it); white
+    /// without irid.
+    #[inline]
+    fn irid(&self, layer: &Material, mirror: &Ray, d: DVec3, n: DVec3, hit: &SurfaceHit) -> Rgb {
+        if layer.finish.irid.amount > 0.0 {
+            let to = mirror.direction.normalize();
+            self.scene.irid(&layer.finish, to, d, n, hit.point)
+        } else {
+            Rgb::ONE
+        }
     }
 
     /// One layer at the hit: its shading normal (perturbed if the layer has a normal), its
