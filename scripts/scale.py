@@ -173,6 +173,13 @@ def svg_chart(rows, path):
 
 
 def main():
+    known = {"--quick", "--from-csv", "--family", "--throughput", "--realistic"}
+    flags = [a for a in sys.argv[1:] if a.startswith("-")]
+    if any(a not in known for a in flags):
+        # Anything else (--help among them) prints the usage rather than starting an
+        # hour-long run.
+        print(__doc__)
+        sys.exit(0 if flags == ["--help"] or flags == ["-h"] else 2)
     if "--from-csv" in sys.argv:
         docs = os.path.join(ROOT, "docs")
         with open(os.path.join(docs, "scale.csv"), newline="") as fh:

@@ -260,22 +260,7 @@ fn media_renders_the_same_at_any_thread_count() {
              density {{ bozo scale 2 }} }} }} }}"
     );
     let scene = crate::load_text(&scene, 160, 120);
-    let film = |threads| {
-        let options = trace::RenderOptions {
-            width: 160,
-            height: 120,
-            antialias: Antialias::Off,
-            threads: Some(threads),
-            ..Default::default()
-        };
-        trace::render(&scene, &options).expect("renders").film
-    };
-    let (one, two) = (film(1), film(2));
-    for y in 0..120 {
-        for x in 0..160 {
-            assert_eq!(one.get(x, y), two.get(x, y), "pixel ({x}, {y})");
-        }
-    }
+    crate::render_at_one_and_two_threads(&scene, 160, 120);
 }
 
 #[test]
