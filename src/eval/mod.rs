@@ -318,6 +318,8 @@ impl<'a> Evaluator<'a> {
                 default_interior: Default::default(),
                 finishes: HashMap::new(),
                 interiors: HashMap::new(),
+                pictures: HashMap::new(),
+                texels: HashMap::new(),
                 mesh_files: HashMap::new(),
                 fonts: HashMap::new(),
                 charset: crate::font::Charset::Ascii,

@@ -2,6 +2,7 @@
 //! `image_map` (colours), `image_pattern` (a value) and `bump_map` (a normal).
 
 use glam::DVec3;
+use std::sync::Arc;
 
 /// POV-Ray's weights for the grey of a colour (`Colour::greyscale`).
 const GREY: [f32; 3] = [0.297, 0.589, 0.114];
@@ -44,7 +45,8 @@ pub struct ImageMap {
     /// Pixels, top row first: rgb, filter and transmit (1 − alpha, plus the image_map's
     /// `filter`/`transmit` settings). For `image_map` the rgb is linear (working gamma); for
     /// `image_pattern` and `bump_map` it is the file's values, as POV-Ray reads them there.
-    pub pixels: Vec<[f32; 5]>,
+    /// Shared by every use of the same file with the same settings.
+    pub texels: Arc<Texels>,
     /// For `bump_map … use_index` on a palette image: each pixel's palette index, the height
     /// POV-Ray takes then (without interpolation).
     pub indices: Option<Vec<u8>>,
@@ -101,6 +103,151 @@ fn longitude(x: f64, z: f64, len: f64) -> f64 {
             std::f64::consts::TAU - theta
         } else {
             theta
+        }
+    }
+}
+
+/// An image's pixels as its patterns read them (rgb, filter, transmit), stored at the file's
+/// own precision: an 8- or 16-bit file keeps its codes (4 or 8 bytes a pixel) with the value
+/// each code stands for, worked out once; other files keep the values (20 bytes a pixel).
+pub struct Texels(Store);
+
+impl std::fmt::Debug for Texels {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let store = match &self.0 {
+            Store::Bytes(_) => "8-bit codes",
+            Store::Words(_) => "16-bit codes",
+            Store::Values(_) => "values",
+        };
+        write!(f, "Texels({} pixels, {store})", self.len())
+    }
+}
+
+impl PartialEq for Texels {
+    /// The same pixel values (bit for bit), however stored.
+    fn eq(&self, other: &Texels) -> bool {
+        std::ptr::eq(self, other)
+            || self.len() == other.len()
+                && (0..self.len())
+                    .all(|i| self.get(i).map(f32::to_bits) == other.get(i).map(f32::to_bits))
+    }
+}
+
+enum Store {
+    /// 8-bit red, green, blue and alpha codes.
+    Bytes(Codes<u8>),
+    /// 16-bit codes.
+    Words(Codes<u16>),
+    /// The values themselves.
+    Values(Vec<[f32; 5]>),
+}
+
+/// Codes with what they stand for: a colour code's value (the same table for red, green and
+/// blue), an alpha code's transmit, and the one filter of every pixel.
+struct Codes<T> {
+    codes: Vec<[T; 4]>,
+    colour: Box<[f32]>,
+    transmit: Box<[f32]>,
+    filter: f32,
+}
+
+impl<T: Copy + Into<usize>> Codes<T> {
+    #[inline]
+    fn get(&self, i: usize) -> [f32; 5] {
+        let [r, g, b, a] = self.codes[i].map(Into::into);
+        [
+            self.colour[r],
+            self.colour[g],
+            self.colour[b],
+            self.filter,
+            self.transmit[a],
+        ]
+    }
+}
+
+impl Texels {
+    /// Texels holding `values` as they are.
+    pub fn values(values: Vec<[f32; 5]>) -> Texels {
+        Texels(Store::Values(values))
+    }
+
+    /// The texels of `pixels` (rgba, each channel `code / max` for a file of `bits` bits a
+    /// channel) whose colours are `colour(channel)`, transmit `transmit(alpha)` and filter
+    /// `filter`; `None` unless every channel of every pixel is exactly such a code, 8 or 16
+    /// bits (the caller then keeps the values).
+    pub fn coded(
+        pixels: &[[f32; 4]],
+        bits: u32,
+        colour: impl Fn(f32) -> f32,
+        transmit: impl Fn(f32) -> f32,
+        filter: f32,
+    ) -> Option<Texels> {
+        fn codes<T: Copy + TryFrom<u32>>(pixels: &[[f32; 4]], max: u32) -> Option<Vec<[T; 4]>> {
+            let scale = max as f32;
+            let mut out = Vec::with_capacity(pixels.len());
+            for p in pixels {
+                let mut px = [None; 4];
+                for (c, &v) in px.iter_mut().zip(p) {
+                    let k = (v * scale).round();
+                    if !(0.0..=scale).contains(&k) || k as u32 as f32 / scale != v {
+                        return None;
+                    }
+                    *c = T::try_from(k as u32).ok();
+                }
+                out.push([px[0]?, px[1]?, px[2]?, px[3]?]);
+            }
+            Some(out)
+        }
+        let table = |max: u32, f: &dyn Fn(f32) -> f32| -> Box<[f32]> {
+            (0..=max).map(|k| f(k as f32 / max as f32)).collect()
+        };
+        Some(Texels(match bits {
+            8 => Store::Bytes(Codes {
+                codes: codes::<u8>(pixels, 255)?,
+                colour: table(255, &colour),
+                transmit: table(255, &transmit),
+                filter,
+            }),
+            16 => Store::Words(Codes {
+                codes: codes::<u16>(pixels, 65535)?,
+                colour: table(65535, &colour),
+                transmit: table(65535, &transmit),
+                filter,
+            }),
+            _ => return None,
+        }))
+    }
+
+    /// Pixel `i` (top row first).
+    #[inline]
+    pub fn get(&self, i: usize) -> [f32; 5] {
+        match &self.0 {
+            Store::Bytes(codes) => codes.get(i),
+            Store::Words(codes) => codes.get(i),
+            Store::Values(values) => values[i],
+        }
+    }
+
+    /// How many pixels.
+    pub fn len(&self) -> usize {
+        match &self.0 {
+            Store::Bytes(c) => c.codes.len(),
+            Store::Words(c) => c.codes.len(),
+            Store::Values(v) => v.len(),
+        }
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The bytes they take.
+    pub fn bytes(&self) -> usize {
+        match &self.0 {
+            Store::Bytes(c) => c.codes.len() * 4 + (c.colour.len() + c.transmit.len()) * 4,
+            Store::Words(c) => c.codes.len() * 8 + (c.colour.len() + c.transmit.len()) * 4,
+            Store::Values(v) => v.len() * 20,
         }
     }
 }
@@ -199,7 +346,7 @@ impl ImageMap {
             }
         };
         let (i, j) = (index(x, w, self.width), index(y, h, self.height));
-        self.pixels[j * self.width as usize + i]
+        self.texels.get(j * self.width as usize + i)
     }
 
     /// The pixel value at pixel coordinates `(u, y)`, blended as `interpolate` says.

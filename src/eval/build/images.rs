@@ -17,7 +17,7 @@ use crate::diag::Diagnostic;
 use crate::eval::lang::expr::type_error;
 use crate::eval::value::Value;
 use crate::ir::{self, ImageMap, Pattern, PatternKind};
-use crate::pattern::image::{ImageUse, Interpolation, MapType};
+use crate::pattern::image::{ImageUse, Interpolation, MapType, Texels as ImageTexels};
 use crate::syntax::{Node, NodeKind, View};
 use std::path::Path;
 use std::sync::Arc;
@@ -26,7 +26,7 @@ use std::sync::Arc;
 const MAX_PIXELS: u64 = 1 << 26;
 
 /// An image file format, as a scene names it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(in crate::eval) enum FileType {
     Png,
     Jpeg,
@@ -560,7 +560,7 @@ impl crate::eval::Evaluator<'_> {
         ty: Option<FileType>,
         type_span: crate::diag::Span,
         name_span: crate::diag::Span,
-    ) -> crate::eval::Result<(std::path::PathBuf, Picture)> {
+    ) -> crate::eval::Result<(std::path::PathBuf, Arc<Picture>)> {
         use crate::diag::Diagnostic;
         let ty = match ty.or_else(|| FileType::from_name(name)) {
             Some(ty) => ty,
@@ -593,12 +593,18 @@ impl crate::eval::Evaluator<'_> {
             Some(path) => path,
             None => self.find_file(name, "image", name_span)?,
         };
-        let picture = read(&path, ty).map_err(|e| {
+        // A file is decoded once, however many maps and height fields use it.
+        let key = (path.clone(), ty);
+        if let Some(picture) = self.scene.pictures.get(&key) {
+            return Ok((path, picture.clone()));
+        }
+        let picture = Arc::new(read(&path, ty).map_err(|e| {
             Diagnostic::error(
                 format!("cannot read image {}: {e}", path.display()),
                 name_span,
             )
-        })?;
+        })?);
+        self.scene.pictures.insert(key, picture.clone());
         if picture.interlaced {
             self.warn(Diagnostic::warning(
                 "an interlaced GIF: trace reads it as the picture it is; POV-Ray 3.7 reads its rows in the file's interlaced order, a scrambled picture",
@@ -641,8 +647,6 @@ impl crate::eval::Evaluator<'_> {
         let (mut once, mut map_type, mut interpolation) =
             (false, MapType::Planar, Interpolation::Nearest);
         let (mut use_, mut use_index, mut bump_size) = (ImageUse::Colour, false, None);
-        // (filter or transmit, the palette entry and where it is named, the amount)
-        type SeeThrough = (bool, Option<(i64, crate::diag::Span)>, f32);
         let mut see_through: Vec<SeeThrough> = Vec::new();
         let (mut file_type, mut type_span, mut gamma) = (None, file_expr.span, None);
         self.each_item(&node.children, &mut |ev, item| {
@@ -733,7 +737,7 @@ impl crate::eval::Evaluator<'_> {
             }
             Ok(())
         })?;
-        let (_, picture) = self.read_image(file, file_type, type_span, file_expr.span)?;
+        let (path, picture) = self.read_image(file, file_type, type_span, file_expr.span)?;
         // An image_map's colours are decoded to linear light (by the scene's `gamma`, else by
         // the file's own encoding), then put in the working gamma; image_pattern and bump_map
         // take the numbers as they are, unless the scene gives a `gamma`.
@@ -745,70 +749,36 @@ impl crate::eval::Evaluator<'_> {
         // no gamma at all, and with one the file's default gamma is the working gamma, which
         // puts the numbers back where they were.
         let uncorrected = self.lang.version.unwrap_or(3.62) < 3.7 - 1e-9;
-        let to_working = |v: f32| {
-            let v = f64::from(v);
-            let linear = match (colours, gamma) {
-                (false, None) => return v as f32,
-                (true, None) if uncorrected => return v as f32,
-                (true, None) if encoding == Encoding::AsWorking => return v as f32,
-                _ => encoding.decode(v),
-            };
-            (if working == 1.0 || !colours {
-                linear
-            } else {
-                linear.powf(1.0 / working)
-            }) as f32
-        };
-        let mut pixels: Vec<[f32; 5]> = picture
-            .pixels
-            .iter()
-            .map(|p| {
-                [
-                    to_working(p[0]),
-                    to_working(p[1]),
-                    to_working(p[2]),
-                    0.0,
-                    1.0 - p[3],
-                ]
-            })
-            .collect();
-        // `filter`/`transmit`: a palette image's entries take them (all, or one by index);
-        // another image adds `all`'s amount to every pixel, as POV-Ray does.
-        for (filter, index, value) in see_through {
-            let channel = if filter { 3 } else { 4 };
-            match (&picture.indices, index) {
-                (Some(indices), index) => {
-                    if let Some((i, span)) = index {
-                        if !(0..256).contains(&i) {
-                            return Err(Diagnostic::error(
-                                format!("palette entry {i} is out of range for this image"),
-                                span,
-                            ));
-                        }
-                    }
-                    for (px, &k) in pixels.iter_mut().zip(indices) {
-                        if index.is_none_or(|(i, _)| i == i64::from(k)) {
-                            px[channel] = value;
-                        }
-                    }
-                }
-                (None, None) => pixels.iter_mut().for_each(|px| px[channel] += value),
-                (None, Some((_, span))) => {
-                    return Err(Diagnostic::error(
-                        format!(
-                            "`{} N, V` sets a palette entry: this image has no palette (use `{} all V`)",
-                            if filter { "filter" } else { "transmit" },
-                            if filter { "filter" } else { "transmit" },
-                        ),
-                        span,
-                    ));
-                }
+        // (The same file read with the same settings shares its texels.)
+        let key = format!(
+            "{path:?} {file_type:?} {colours} {gamma:?} {} {uncorrected} {see_through:?}",
+            working.to_bits()
+        );
+        let texels = match self.scene.texels.get(&key) {
+            Some(texels) => texels.clone(),
+            None => {
+                let texels = Arc::new(texels(&picture, &see_through, &|v: f32| {
+                    let v = f64::from(v);
+                    let linear = match (colours, gamma) {
+                        (false, None) => return v as f32,
+                        (true, None) if uncorrected => return v as f32,
+                        (true, None) if encoding == Encoding::AsWorking => return v as f32,
+                        _ => encoding.decode(v),
+                    };
+                    (if working == 1.0 || !colours {
+                        linear
+                    } else {
+                        linear.powf(1.0 / working)
+                    }) as f32
+                })?);
+                self.scene.texels.insert(key, texels.clone());
+                texels
             }
-        }
+        };
         // `use_index` on a palette image: bump heights are the pixels' indices; a
         // material_map picks its textures by them.
         let indices = if use_index && role == "bump_map" || role == "material_map" {
-            picture.indices
+            picture.indices.clone()
         } else {
             None
         };
@@ -816,7 +786,7 @@ impl crate::eval::Evaluator<'_> {
             file: file.clone(),
             width: picture.width,
             height: picture.height,
-            pixels,
+            texels,
             indices,
             has_alpha: picture.has_alpha,
             once,
@@ -830,6 +800,96 @@ impl crate::eval::Evaluator<'_> {
         };
         Ok(ImageRead { image, kind })
     }
+}
+
+/// `filter`/`transmit` settings of an image_map: filter (else transmit), the palette entry
+/// and where it is named (all entries when absent), the amount.
+type SeeThrough = (bool, Option<(i64, crate::diag::Span)>, f32);
+
+/// The texels of `picture`, its colour channels through `to_working`, with the image_map's
+/// `filter`/`transmit` settings: a palette image's entries take them (all, or one by index);
+/// another image adds `all`'s amount to every pixel, as POV-Ray does. An 8- or 16-bit file
+/// keeps its codes when no palette entry has a setting of its own.
+fn texels(
+    picture: &Picture,
+    see_through: &[SeeThrough],
+    to_working: &dyn Fn(f32) -> f32,
+) -> crate::eval::Result<ImageTexels> {
+    let by_entry = picture.indices.is_some() && !see_through.is_empty();
+    let is_float = matches!(picture.encoding, Encoding::Linear);
+    if !by_entry && !is_float {
+        let add = |start: f32, filter: bool| {
+            see_through
+                .iter()
+                .filter(|(f, _, _)| *f == filter)
+                .fold(start, |v, (_, _, amount)| v + amount)
+        };
+        let bits = if picture.deep { 16 } else { 8 };
+        let coded = ImageTexels::coded(
+            &picture.pixels,
+            bits,
+            to_working,
+            |alpha| add(1.0 - alpha, false),
+            add(0.0, true),
+        );
+        if let Some(texels) = coded {
+            return Ok(texels);
+        }
+    }
+    texel_values(picture, see_through, to_working).map(ImageTexels::values)
+}
+
+/// The texels of [`texels`] as values (20 bytes a pixel).
+fn texel_values(
+    picture: &Picture,
+    see_through: &[SeeThrough],
+    to_working: &dyn Fn(f32) -> f32,
+) -> crate::eval::Result<Vec<[f32; 5]>> {
+    let mut pixels: Vec<[f32; 5]> = picture
+        .pixels
+        .iter()
+        .map(|p| {
+            [
+                to_working(p[0]),
+                to_working(p[1]),
+                to_working(p[2]),
+                0.0,
+                1.0 - p[3],
+            ]
+        })
+        .collect();
+    for &(filter, index, value) in see_through {
+        let channel = if filter { 3 } else { 4 };
+        match (&picture.indices, index) {
+            (Some(indices), index) => {
+                if let Some((i, span)) = index {
+                    if !(0..256).contains(&i) {
+                        return Err(Diagnostic::error(
+                            format!("palette entry {i} is out of range for this image"),
+                            span,
+                        ));
+                    }
+                }
+                for (px, &k) in pixels.iter_mut().zip(indices) {
+                    if index.is_none_or(|(i, _)| i == i64::from(k)) {
+                        px[channel] = value;
+                    }
+                }
+            }
+            (None, None) => pixels.iter_mut().for_each(|px| px[channel] += value),
+            (None, Some((_, span))) => {
+                return Err(Diagnostic::error(
+                    format!(
+                        "`{} N, V` sets a palette entry: this image has no palette (use `{} all V`)",
+                        if filter { "filter" } else { "transmit" },
+                        if filter { "filter" } else { "transmit" },
+                    ),
+                    span,
+                ));
+            }
+        }
+    }
+    Ok(pixels)
 }
 
 impl crate::eval::Evaluator<'_> {
@@ -878,6 +938,53 @@ impl crate::eval::Evaluator<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// 8- and 16-bit files keep their codes, and every pixel reads back bit for bit the value
+    /// the value path computes, through a gamma and with filter and transmit added; float
+    /// files and palette entries with their own settings keep the values.
+    #[test]
+    fn coded_texels_read_back_the_values() {
+        let span = crate::diag::Span::default();
+        let gamma = |v: f32| f64::from(v).powf(2.2) as f32;
+        let see = [(true, None, 0.25f32), (false, None, 0.125)];
+        let cases: [(&str, FileType, &[SeeThrough], usize); 7] = [
+            ("logo.jpg", FileType::Jpeg, &see, 4),
+            ("trace_logo.png", FileType::Png, &[], 4),
+            ("spots_alpha.png", FileType::Png, &see, 4),
+            ("hills16.pgm", FileType::Pgm, &see, 8),
+            ("logo16.png", FileType::Png, &[], 4),
+            ("sky.exr", FileType::Exr, &[], 20),
+            (
+                "logo.gif",
+                FileType::Gif,
+                &[(true, Some((1, span)), 0.5)],
+                20,
+            ),
+        ];
+        for (name, ty, see_through, bytes) in cases {
+            let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("examples")
+                .join(name);
+            let path = if path.exists() { path } else { example(name) };
+            let picture = read(&path, ty).expect("reads");
+            let texels = texels(&picture, see_through, &gamma).expect("texels");
+            let values = texel_values(&picture, see_through, &gamma).expect("values");
+            let n = values.len();
+            assert_eq!(texels.len(), n, "{name}");
+            assert!(
+                texels.bytes() >= n * bytes && texels.bytes() < n * bytes + 600_000,
+                "{name}: {} bytes for {n} pixels",
+                texels.bytes()
+            );
+            for (i, v) in values.iter().enumerate() {
+                assert_eq!(
+                    texels.get(i).map(f32::to_bits),
+                    v.map(f32::to_bits),
+                    "{name}, pixel {i}"
+                );
+            }
+        }
+    }
 
     fn example(name: &str) -> std::path::PathBuf {
         Path::new(env!("CARGO_MANIFEST_DIR"))

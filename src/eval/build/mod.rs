@@ -49,6 +49,12 @@ pub(in crate::eval) struct Builder {
     /// again is shared (a million spheres each with `finish { phong 0.5 }` hold one finish).
     pub(in crate::eval) finishes: HashMap<u64, std::sync::Arc<ir::Finish>>,
     pub(in crate::eval) interiors: HashMap<u64, std::sync::Arc<ir::Interior>>,
+    /// Image files decoded so far, by path and format: a file used twice is decoded once.
+    pub(in crate::eval) pictures:
+        HashMap<(std::path::PathBuf, super::build::images::FileType), Arc<images::Picture>>,
+    /// Texels made so far, by file and the settings that make them: maps of the same file
+    /// with the same settings share one copy.
+    pub(in crate::eval) texels: HashMap<String, Arc<crate::pattern::image::Texels>>,
     /// Mesh files read so far: a file used twice is read and stored once.
     pub(in crate::eval) mesh_files: HashMap<std::path::PathBuf, std::sync::Arc<ir::Mesh>>,
     /// How `text` reads its strings (`global_settings { charset … }`).
