@@ -749,9 +749,14 @@ impl crate::eval::Evaluator<'_> {
         // no gamma at all, and with one the file's default gamma is the working gamma, which
         // puts the numbers back where they were.
         let uncorrected = self.lang.version.unwrap_or(3.62) < 3.7 - 1e-9;
-        // (The same file read with the same settings shares its texels.)
+        // (The same file read with the same settings shares its texels; where a setting is
+        // written does not matter.)
+        let settings: Vec<_> = see_through
+            .iter()
+            .map(|&(filter, index, amount)| (filter, index.map(|(i, _)| i), amount.to_bits()))
+            .collect();
         let key = format!(
-            "{path:?} {file_type:?} {colours} {gamma:?} {} {uncorrected} {see_through:?}",
+            "{path:?} {file_type:?} {colours} {gamma:?} {} {uncorrected} {settings:?}",
             working.to_bits()
         );
         let texels = match self.scene.texels.get(&key) {
