@@ -11,7 +11,9 @@
 //! The interface is small:
 //! - the pipeline: [`load`] (or [`load_str`]) a scene into the [`ir`], then [`render`] it to
 //!   a [`Film`] in memory, or [`render_to_file`] band by band into an EXR or PNG file (memory
-//!   independent of the image size);
+//!   independent of the image size), or [`prepare`] it once and render it several times
+//!   (`trace watch`'s passes); a [`Cancel`] token stops a load or a render, and a [`Preview`]
+//!   shows a render's blocks as they finish;
 //! - [`ir`], the evaluated scene as plain data (a test may build one by hand and render it);
 //! - [`film`], images: reading, writing, comparing (FLIP with the default feature `flip`);
 //! - what the command line needs besides: [`memory`] (the allocator that enforces
@@ -26,6 +28,7 @@
 
 #![warn(missing_docs)]
 
+pub mod cancel;
 pub mod diag;
 pub mod film;
 pub mod font;
@@ -70,11 +73,13 @@ mod syntax;
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;
 
+pub use cancel::Cancel;
 pub use eval::{Clock, DEFAULT_MAX_STEPS, LoadOptions, standard_include_folder};
 pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
 pub use render::{
-    Antialias, Aov, Cancel, Progress, RayCounts, RenderOptions, RenderStats, Rendered, bytes_needed,
+    Antialias, Aov, Preview, Progress, RayCounts, RenderOptions, RenderStats, Rendered,
+    bytes_needed,
 };
 pub use syntax::{MAX_NESTING, is_identifier};
 
@@ -91,6 +96,8 @@ pub struct LoadError {
     pub diagnostic: Diagnostic,
     /// The files read, for rendering the diagnostic.
     pub sources: SourceMap,
+    /// Every file the scene read before it failed, the scene first (see [`Loaded::files`]).
+    pub files: Vec<std::path::PathBuf>,
 }
 
 impl std::fmt::Display for LoadError {
@@ -112,6 +119,10 @@ pub struct Loaded {
     pub debug_output: String,
     /// A key of the texts read (the scene and its includes): equal texts, equal keys.
     pub sources_key: u64,
+    /// Every file the scene read, each once, the scene first: includes, images, meshes,
+    /// fonts, data files, and files whose existence it asked about (what `trace watch`
+    /// watches).
+    pub files: Vec<std::path::PathBuf>,
 }
 
 /// Errors of the whole pipeline.
@@ -175,7 +186,12 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
         pigment_function: scene::pigment_function,
         object_query: scene::object_query,
     };
-    match eval::evaluate(&mut sources, file, options, services) {
+    let mut read = Vec::new();
+    let outcome = eval::evaluate(&mut sources, file, options, services, &mut read);
+    let scene_file = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
+    read.retain(|f| *f != scene_file);
+    let files = std::iter::once(path.to_path_buf()).chain(read).collect();
+    match outcome {
         Ok(evaluated) => Ok(Loaded {
             scene: evaluated.scene,
             warnings: evaluated
@@ -185,23 +201,60 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
                 .collect(),
             debug_output: evaluated.debug_output,
             sources_key: sources.key(),
+            files,
         }),
         Err(diagnostic) => Err(Error::Scene(LoadError {
             diagnostic,
             sources,
+            files,
         })),
     }
 }
 
 /// Renders a scene (building the render-ready scene inside) into a film held in memory.
 pub fn render(scene: &ir::Scene, options: &RenderOptions) -> Result<Rendered, Error> {
-    let pool = render::thread_pool(options)?;
+    let pool = render::thread_pool(options.threads)?;
     let start = std::time::Instant::now();
     let built = pool.install(|| scene::Scene::build(scene));
-    let build_time = start.elapsed();
-    let mut rendered = render::render(&built, options, &pool);
-    rendered.stats.build_time = build_time;
-    Ok(rendered)
+    let prepared = Prepared {
+        built,
+        pool,
+        build_time: start.elapsed(),
+    };
+    Ok(prepared.render(options))
+}
+
+/// A scene built for rendering (shapes, materials, acceleration structures) with its worker
+/// threads, to render more than once: `trace watch` renders a quick small pass, then the
+/// picture, then its anti-aliasing, from one build.
+pub struct Prepared {
+    built: scene::Scene,
+    pool: rayon::ThreadPool,
+    /// What building took.
+    pub build_time: std::time::Duration,
+}
+
+/// Builds a scene for rendering on `threads` worker threads (`None`: one per core), freeing
+/// the IR as it goes.
+pub fn prepare(scene: ir::Scene, threads: Option<usize>) -> Result<Prepared, Error> {
+    let pool = render::thread_pool(threads)?;
+    let start = std::time::Instant::now();
+    let built = pool.install(|| scene::Scene::build_owned(scene));
+    Ok(Prepared {
+        built,
+        pool,
+        build_time: start.elapsed(),
+    })
+}
+
+impl Prepared {
+    /// Renders into a film held in memory, on the prepared threads (`options.threads` is not
+    /// read); the statistics' build time is the preparation's.
+    pub fn render(&self, options: &RenderOptions) -> Rendered {
+        let mut rendered = render::render(&self.built, options, &self.pool);
+        rendered.stats.build_time = self.build_time;
+        rendered
+    }
 }
 
 /// Renders a scene straight into the image file `path` (the extension picks EXR or PNG),
@@ -214,7 +267,7 @@ pub fn render_to_file(
     layout: &film::Layout,
     path: &Path,
 ) -> Result<RenderStats, Error> {
-    let pool = render::thread_pool(options)?;
+    let pool = render::thread_pool(options.threads)?;
     let start = std::time::Instant::now();
     let built = pool.install(|| scene::Scene::build_owned(scene));
     let build_time = start.elapsed();

@@ -6,6 +6,7 @@ mod job;
 mod parts;
 mod povray;
 mod progress;
+mod watch;
 
 use clap::{Args, CommandFactory, Parser, Subcommand};
 use std::io::IsTerminal;
@@ -142,6 +143,56 @@ struct RenderArgs {
     max_memory: Option<usize>,
 }
 
+/// `trace watch`'s options.
+#[derive(Args, Debug)]
+struct WatchArgs {
+    /// Scene file (.rt or .pov).
+    scene: PathBuf,
+    /// Port to serve the page on [default: a free one, printed].
+    #[arg(long, default_value_t = 0)]
+    port: u16,
+    /// Address to serve on [default: 127.0.0.1, this machine only]. Another address lets
+    /// other machines see the page and the picture.
+    #[arg(long, value_name = "ADDRESS")]
+    bind: Option<std::net::IpAddr>,
+    /// Image width in pixels (the page can change it).
+    #[arg(long, default_value_t = 640, value_parser = clap::value_parser!(u32).range(1..=8192))]
+    width: u32,
+    /// Image height in pixels (the page can change it).
+    #[arg(long, default_value_t = 480, value_parser = clap::value_parser!(u32).range(1..=8192))]
+    height: u32,
+    /// Anti-aliasing, rendered after the picture: `off` or a threshold (method 3)
+    /// [default: 0.3].
+    #[arg(long, value_parser = parse_aa)]
+    aa: Option<AaSetting>,
+    /// Anti-aliasing depth, 1..=9.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=9))]
+    aa_depth: u32,
+    /// The clock (the page has a slider for it).
+    #[arg(long)]
+    clock: Option<f64>,
+    /// Also stream each picture to a running tev image viewer at HOST:PORT (tev listens on
+    /// 127.0.0.1:14158).
+    #[arg(long, value_name = "HOST:PORT")]
+    tev: Option<String>,
+    /// Declare a float identifier before the scene is read, NAME=VALUE (repeatable).
+    #[arg(long, value_name = "NAME=VALUE", value_parser = parse_declare)]
+    declare: Vec<(String, f64)>,
+    /// A folder to search for `#include` files, fonts and images (repeatable).
+    #[arg(short = 'L', long = "include-path", value_name = "DIR")]
+    include_path: Vec<PathBuf>,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// Most evaluation steps a load may take: a scene that never finishes stops here with
+    /// an error on the page.
+    #[arg(long, default_value_t = trace::DEFAULT_MAX_STEPS, value_name = "N")]
+    max_steps: u64,
+    /// Print nothing but the address, errors and warnings.
+    #[arg(short, long)]
+    quiet: bool,
+}
+
 fn parse_region(s: &str) -> Result<trace::film::Region, String> {
     let v: Vec<u32> = s
         .split(',')
@@ -236,6 +287,10 @@ enum Command {
         #[arg(required = true)]
         parts: Vec<PathBuf>,
     },
+    /// Render a scene again whenever it, or a file it reads, is saved, and show it on a page
+    /// served at http://127.0.0.1:PORT/ (printed): the picture as it progresses, the error
+    /// with its place when the scene breaks (docs/watch.md).
+    Watch(WatchArgs),
     /// Convert a mesh file (OBJ or PLY) to a POV-Ray include declaring it as a mesh2, so a
     /// scene using trace's `mesh_file` extension can be rendered by POV-Ray too.
     Convert {
@@ -320,6 +375,7 @@ fn run(cli: Cli, pov: povray::PovSettings) -> Result<(), Failure> {
         }) => compare(&reference, &test, diff.as_deref()),
         Some(Command::Merge { output, parts }) => merge(&output, &parts),
         Some(Command::Convert { mesh, output, name }) => convert(&mesh, &output, name),
+        Some(Command::Watch(args)) => watch(args),
         None => render(&cli.render, pov),
     }
 }
@@ -438,6 +494,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         max_steps: args.max_steps,
         clock: frame.clock,
         declares: job.declares.clone(),
+        cancel: trace::Cancel::new(),
     };
     let loaded = trace::load(&job.scene, &load_options)?;
     if !args.quiet {
@@ -503,6 +560,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         alpha: job.alpha,
         aovs: job.aovs.clone(),
         cancel: CANCEL.clone(),
+        preview: None,
     };
     // Rendered beside the output, then moved (or cut, if stopped) into place: the output
     // only ever holds whole images and parts.
@@ -585,6 +643,44 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         );
     }
     Ok(())
+}
+
+fn watch(args: WatchArgs) -> Result<(), Failure> {
+    let memory = trace::memory::available().unwrap_or(usize::MAX);
+    trace::memory::set_limit(memory);
+    let include_paths = std::iter::once(PathBuf::from("."))
+        .chain(args.include_path)
+        .chain(trace::standard_include_folder())
+        .collect();
+    let options = watch::Options {
+        scene: args.scene,
+        bind: args
+            .bind
+            .unwrap_or(std::net::IpAddr::V4(std::net::Ipv4Addr::LOCALHOST)),
+        bind_given: args.bind.is_some(),
+        port: args.port,
+        settings: watch::Settings {
+            width: args.width,
+            height: args.height,
+            aa: match args.aa {
+                Some(AaSetting::Off) => None,
+                Some(AaSetting::Threshold(t)) => Some(t),
+                None => Some(0.3),
+            },
+            aa_depth: args.aa_depth,
+            clock: args.clock,
+        },
+        include_paths,
+        declares: args.declare,
+        threads: args.threads,
+        max_steps: args.max_steps,
+        quiet: args.quiet,
+        tev: args.tev,
+    };
+    watch::run(options).map_err(|e| Failure {
+        message: format!("error: {e}"),
+        code: 2,
+    })
 }
 
 fn merge(output: &std::path::Path, parts: &[PathBuf]) -> Result<(), Failure> {

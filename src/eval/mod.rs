@@ -47,6 +47,9 @@ pub struct LoadOptions {
     pub clock: Clock,
     /// Identifiers declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     pub declares: Vec<(String, f64)>,
+    /// Stops the load with an error when cancelled (checked every few thousand steps), for a
+    /// caller that no longer wants the scene (`trace watch`, when the file is saved again).
+    pub cancel: crate::cancel::Cancel,
 }
 
 /// The animation values a scene reads (POV-Ray's `clock`, `clock_delta`, `clock_on`,
@@ -139,6 +142,7 @@ impl Default for LoadOptions {
             max_steps: DEFAULT_MAX_STEPS,
             clock: Clock::still(None),
             declares: Vec::new(),
+            cancel: crate::cancel::Cancel::new(),
         }
     }
 }
@@ -172,12 +176,15 @@ pub struct Services {
     pub object_query: ObjectQueryMaker,
 }
 
-/// Evaluates the file `file` of `sources` into a scene.
+/// Evaluates the file `file` of `sources` into a scene. `read` receives every other file the
+/// scene read (includes, images, meshes, fonts, data files, each once), whether or not it
+/// loads.
 pub fn evaluate(
     sources: &mut SourceMap,
     file: FileId,
     options: &LoadOptions,
     services: Services,
+    read: &mut Vec<std::path::PathBuf>,
 ) -> Result<Evaluated> {
     let scene_dir = sources
         .file(file)
@@ -192,7 +199,9 @@ pub fn evaluate(
     for (name, value) in &options.declares {
         ev.set(name.clone(), value::Value::Float(*value));
     }
-    ev.read_scene(file)?;
+    let outcome = ev.read_scene(file);
+    *read = ev.sandbox.found();
+    outcome?;
     ev.finish()
 }
 

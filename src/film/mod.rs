@@ -114,6 +114,20 @@ impl Film {
         self.pixels.iter().flat_map(|p| p.map(srgb8)).collect()
     }
 
+    /// The film as an 8-bit sRGB PNG file's bytes, compressed quickly (for a live view).
+    pub fn to_png(&self) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        let mut encoder = png::Encoder::new(&mut bytes, self.width, self.height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.set_compression(png::Compression::Fast);
+        let written = encoder
+            .write_header()
+            .and_then(|mut w| w.write_image_data(&self.to_srgb8()));
+        written.expect("a PNG written to memory");
+        bytes
+    }
+
     /// Number of pixels with a NaN or infinite channel.
     pub fn non_finite_pixels(&self) -> usize {
         self.pixels

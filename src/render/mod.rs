@@ -8,17 +8,16 @@
 mod antialias;
 mod block;
 mod camera;
-mod cancel;
 mod sampler;
 mod transport;
 
 pub use antialias::Antialias;
-pub use cancel::Cancel;
 pub use transport::RayCounts;
 /// The shadow test, for the stability suite's counts of light leaking through surfaces.
 #[cfg(feature = "internals")]
 pub use transport::transmittance;
 
+use crate::cancel::Cancel;
 use crate::film::{Film, Region, Rows};
 use crate::geometry::counters;
 use crate::scene::{Gamma, Rgb, Scene};
@@ -64,6 +63,71 @@ pub struct RenderOptions {
     pub sampled_blur: bool,
     /// Stops the render when cancelled (a clone kept by the caller, e.g. for Ctrl-C).
     pub cancel: Cancel,
+    /// A picture of the render as it goes, each block copied in as it finishes (a live view,
+    /// `trace watch`): the pixels are the output's, the order of blocks the threads'.
+    pub preview: Option<std::sync::Arc<Preview>>,
+}
+
+/// The picture of a render in progress: the region's output values, each block written in
+/// when it is finished over whatever the picture held before (a caller may fill it with a
+/// coarser pass first), and a count of the blocks written.
+#[derive(Debug)]
+pub struct Preview {
+    film: std::sync::Mutex<Film>,
+    blocks: std::sync::atomic::AtomicU64,
+}
+
+impl Preview {
+    /// A black picture of `width` × `height` (the region's size).
+    pub fn new(width: u32, height: u32) -> Preview {
+        Preview {
+            film: std::sync::Mutex::new(Film::new(width, height)),
+            blocks: Default::default(),
+        }
+    }
+
+    /// Replaces the whole picture (of the same size).
+    pub fn fill(&self, film: Film) {
+        let mut mine = self.film.lock().unwrap_or_else(|e| e.into_inner());
+        if (film.width, film.height) == (mine.width, mine.height) {
+            *mine = film;
+        }
+    }
+
+    /// A copy of the picture now.
+    pub fn picture(&self) -> Film {
+        self.film.lock().unwrap_or_else(|e| e.into_inner()).clone()
+    }
+
+    /// Blocks written so far.
+    pub fn blocks(&self) -> u64 {
+        self.blocks.load(std::sync::atomic::Ordering::Relaxed)
+    }
+
+    /// Writes a finished block's pixels (those inside `region`, whose corner is the
+    /// picture's).
+    fn write(&self, block: &block::BlockResult, region: Region, gamma: Gamma) {
+        let mut film = self.film.lock().unwrap_or_else(|e| e.into_inner());
+        for (k, value) in block.pixels.iter().enumerate() {
+            let (x, y) = (
+                block.x0 + k as u32 % block.width,
+                block.y0 + k as u32 / block.width,
+            );
+            if x < region.x0 || x >= region.x1 || y < region.y0 || y >= region.y1 {
+                continue;
+            }
+            let v = output_value(value.truncate(), gamma);
+            let v = if v.iter().all(|c| c.is_finite()) {
+                v
+            } else {
+                [0.0; 3]
+            };
+            film.set(x - region.x0, y - region.y0, v);
+        }
+        drop(film);
+        self.blocks
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    }
 }
 
 /// An arbitrary output value layer: what the camera ray through a pixel's centre first meets,
@@ -122,6 +186,7 @@ impl Default for RenderOptions {
             sampled_lights: false,
             sampled_blur: false,
             cancel: Cancel::new(),
+            preview: None,
         }
     }
 }
@@ -173,12 +238,12 @@ pub struct RenderStats {
     pub stopped: Option<u32>,
 }
 
-/// The worker threads `options` ask for.
+/// `threads` worker threads (`None`: one per core).
 pub fn thread_pool(
-    options: &RenderOptions,
+    threads: Option<usize>,
 ) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
     rayon::ThreadPoolBuilder::new()
-        .num_threads(options.threads.unwrap_or(0))
+        .num_threads(threads.unwrap_or(0))
         .build()
 }
 
@@ -302,6 +367,9 @@ impl<'a> Bands<'a> {
                             * inside(block.y0, block.height(), region.y0, region.y1);
                         p.pixels.fetch_add(u64::from(pixels), Relaxed);
                         p.rays.fetch_add(block.counts.total(), Relaxed);
+                    }
+                    if let Some(preview) = &options.preview {
+                        preview.write(&block, region, scene.gamma());
                     }
                     Some(block)
                 })
@@ -449,6 +517,31 @@ mod tests {
     }
 
     #[test]
+    fn the_preview_ends_as_the_film_whatever_it_held() {
+        let (w, h) = (70, 45);
+        let scene = built(w, h);
+        let pool = thread_pool(Some(2)).expect("a pool");
+        let preview = std::sync::Arc::new(Preview::new(w, h));
+        // (A coarser picture put there first is overwritten block by block.)
+        let mut grey = Film::new(w, h);
+        grey.pixels.fill([0.5; 3]);
+        preview.fill(grey);
+        let options = RenderOptions {
+            width: w,
+            height: h,
+            antialias: Antialias::Sampled {
+                threshold: 0.1,
+                depth: 3,
+            },
+            preview: Some(preview.clone()),
+            ..RenderOptions::default()
+        };
+        let rendered = render(&scene, &options, &pool);
+        assert_eq!(preview.picture(), rendered.film);
+        assert_eq!(preview.blocks(), 3 * 2, "a count of 32x32 blocks");
+    }
+
+    #[test]
     fn bands_of_any_height_give_the_same_pixels_and_counts() {
         let (w, h) = (70, 100);
         let scene = built(w, h);
@@ -474,7 +567,7 @@ mod tests {
                 threads: Some(2),
                 ..RenderOptions::default()
             };
-            let pool = thread_pool(&options).expect("a pool");
+            let pool = thread_pool(options.threads).expect("a pool");
             let whole = render(&scene, &options, &pool);
             for rows in [1, 2, 3] {
                 let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
@@ -543,7 +636,7 @@ mod tests {
                     sampled_blur: true,
                     ..RenderOptions::default()
                 };
-                let pool = thread_pool(&options).expect("a pool");
+                let pool = thread_pool(options.threads).expect("a pool");
                 render(&scene, &options, &pool)
             };
             let one = render_with(1, None);
@@ -634,7 +727,7 @@ mod tests {
                 threads: Some(1),
                 ..RenderOptions::default()
             };
-            let pool = thread_pool(&options).expect("a pool");
+            let pool = thread_pool(options.threads).expect("a pool");
             let film = render(&scene, &options, &pool).film;
             // The mean error over the pixels the edge crosses.
             let (mut sum, mut count) = (0.0, 0);

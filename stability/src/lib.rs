@@ -771,7 +771,7 @@ fn render_built(
         threads,
         ..Default::default()
     };
-    let pool = trace::render::thread_pool(&options).expect("a thread pool");
+    let pool = trace::render::thread_pool(options.threads).expect("a thread pool");
     trace::render::render(scene, &options, &pool).film
 }
 
@@ -1102,7 +1102,7 @@ pub fn pane_stack(n: u32, max_trace_level: Option<u32>, width: u32, height: u32)
         threads: None,
         ..Default::default()
     };
-    let pool = trace::render::thread_pool(&options).expect("a thread pool");
+    let pool = trace::render::thread_pool(options.threads).expect("a thread pool");
     let rendered = trace::render::render(&scene, &options, &pool);
     (
         black_pixels(&rendered.film.to_srgb8()),

@@ -51,3 +51,53 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
         assert!(message.contains("nested more than"), "{open}: {message}");
     }
 }
+
+#[test]
+fn a_cancelled_load_stops_with_a_located_error() {
+    let text = "#declare I = 0;\n#while (I < 1e9)\n  #declare I = I + 1;\n#end\n";
+    let options = trace::LoadOptions::default();
+    let cancel = options.cancel.clone();
+    let stopper = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(50));
+        cancel.cancel();
+    });
+    let start = std::time::Instant::now();
+    let message = trace::load_str(std::path::Path::new("loop.rt"), text.into(), &options)
+        .expect_err("cancelled")
+        .to_string();
+    stopper.join().unwrap();
+    assert!(
+        message.contains("cancelled") && message.contains("-->"),
+        "{message}"
+    );
+    // (A billion passes would take minutes: the load stopped soon after the cancel.)
+    assert!(start.elapsed() < std::time::Duration::from_secs(20));
+}
+
+#[test]
+fn a_load_lists_every_file_it_read_even_when_it_fails() {
+    let dir = std::env::temp_dir().join(format!("trace-files-read-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("a.inc"), "#declare A = 1;\n").unwrap();
+    std::fs::write(dir.join("b.inc"), "#declare B = 2;\n").unwrap();
+    let scene = dir.join("scene.rt");
+    let names = |files: &[std::path::PathBuf]| -> Vec<String> {
+        files
+            .iter()
+            .map(|f| f.file_name().unwrap().to_string_lossy().into_owned())
+            .collect()
+    };
+    std::fs::write(
+        &scene,
+        "#include \"a.inc\"\n#include \"b.inc\"\n#include \"a.inc\"\n#if (file_exists(\"c.inc\")) #end\nsphere { 0, A }\n",
+    )
+    .unwrap();
+    let loaded = trace::load(&scene, &trace::LoadOptions::default()).unwrap();
+    assert_eq!(names(&loaded.files), ["scene.rt", "a.inc", "b.inc"]);
+    std::fs::write(&scene, "#include \"b.inc\"\nsphere { 0, Nothing }\n").unwrap();
+    match trace::load(&scene, &trace::LoadOptions::default()) {
+        Err(trace::Error::Scene(e)) => assert_eq!(names(&e.files), ["scene.rt", "b.inc"]),
+        other => panic!("{other:?}"),
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}

@@ -15,7 +15,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     (
         "eval",
         &[
-            "syntax", "ir", "diag", "meshfile", "pattern", "font", "func", "noise",
+            "syntax", "ir", "diag", "meshfile", "pattern", "font", "func", "noise", "cancel",
         ],
     ),
     ("ir", &["diag", "pattern", "func", "noise"]),
@@ -29,7 +29,8 @@ const ALLOWED: &[(&str, &[&str])] = &[
     // noise: POV-Ray's noise, turbulence and hashes (patterns, functions, normals, blur).
     ("noise", &[]),
     ("scene", &["ir", "geometry", "pattern", "func", "noise"]),
-    ("render", &["scene", "geometry", "film"]),
+    // cancel: a load or render stopped by its caller.
+    ("render", &["scene", "geometry", "film", "cancel"]),
     // output: temporary files removed on interrupt or when memory runs out.
     ("film", &["output"]),
     ("meshfile", &["output"]),
@@ -37,6 +38,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("font", &["ir"]),
     ("memory", &["output"]),
     ("output", &[]),
+    ("cancel", &[]),
 ];
 
 #[test]

@@ -18,6 +18,7 @@ mod media;
 mod parsing;
 mod povray_cli;
 mod rainbow;
+mod watch;
 
 use std::path::{Path, PathBuf};
 

@@ -305,7 +305,15 @@ impl<'a> Evaluator<'a> {
     /// a statement or block item is one step, a loop pass one, a macro call a few (see
     /// `reader.rs`). Nested loops cannot run for hours.
     pub(in crate::eval) fn charge(&mut self, cost: u64, what: &str, span: Span) -> Result<()> {
-        self.lang.steps = self.lang.steps.saturating_add(cost);
+        let before = self.lang.steps;
+        self.lang.steps = before.saturating_add(cost);
+        // (The caller's cancel flag, looked at once every 4096 steps.)
+        if (before ^ self.lang.steps) >> 12 != 0 && self.options.cancel.is_cancelled() {
+            return Err(Diagnostic::error(
+                format!("evaluation stopped at this {what}: the load was cancelled"),
+                span,
+            ));
+        }
         if self.lang.steps <= self.options.max_steps {
             return Ok(());
         }

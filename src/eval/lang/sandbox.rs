@@ -20,6 +20,8 @@ pub(crate) struct Sandbox {
     search: Vec<PathBuf>,
     /// Canonical forms of the folders that exist: a file must lie under one of these.
     roots: Vec<PathBuf>,
+    /// Every file found, in the order first found (what a scene read, for `trace watch`).
+    found: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 /// Why a name gave no readable file.
@@ -46,7 +48,16 @@ impl Sandbox {
             .iter()
             .filter_map(|dir| dir.canonicalize().ok())
             .collect();
-        Sandbox { search, roots }
+        Sandbox {
+            search,
+            roots,
+            found: Default::default(),
+        }
+    }
+
+    /// The files found so far, each once, in the order first found.
+    pub(crate) fn found(&self) -> Vec<PathBuf> {
+        self.found.borrow().clone()
     }
 
     /// The canonical path of the file `name` names: the first folder that has it decides.
@@ -66,6 +77,10 @@ impl Sandbox {
             .components()
             .all(|c| matches!(c, std::path::Component::Normal(_)));
         if self.roots.iter().any(|root| canonical.starts_with(root)) || (folder > 0 && plain) {
+            let mut found = self.found.borrow_mut();
+            if !found.contains(&canonical) {
+                found.push(canonical.clone());
+            }
             Ok(canonical)
         } else {
             Err(Refusal::Outside)

@@ -635,7 +635,7 @@ mod tests {
                         threads: Some(1),
                         ..RenderOptions::default()
                     };
-                    let pool = thread_pool(&options).expect("a pool");
+                    let pool = thread_pool(options.threads).expect("a pool");
                     let culled = render(&scene, &options, &pool);
                     let every_ray = render(&uncut, &options, &pool);
                     let what = format!(

@@ -1,11 +1,12 @@
-//! A render's cancel token: whoever holds a clone may stop the render it was given to.
+//! A cancel token: whoever holds a clone may stop the load or render it was given to.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Stops a render where it is: blocks not yet started are not rendered, and the rows
-/// finished are kept (`RenderStats::stopped`). Clones share one flag; a new token (or
-/// `Default`) is one nobody else holds, so two renders in one process stop independently.
+/// finished are kept (`RenderStats::stopped`); stops a load at its next few thousand
+/// evaluation steps with an error. Clones share one flag; a new token (or `Default`) is one
+/// nobody else holds, so two renders in one process stop independently.
 #[derive(Clone, Debug, Default)]
 pub struct Cancel(Arc<AtomicBool>);
 

@@ -1,0 +1,623 @@
+//! `trace watch`: its HTTP interface (the picture, the status, the event stream, settings,
+//! who may ask), saves of the scene and of what it includes, a flood of saves, a scene that
+//! never finishes loading; and the page itself in a real browser (Chromium, headless, driven
+//! through its DevTools protocol), which runs where Chromium is installed and is required
+//! when TRACE_REQUIRE_BROWSER=1 (CI installs it and sets it).
+
+use serde_json::Value;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::TcpStream;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// A scene of one sphere lit by its ambient only, so the picture's centre is exactly the
+/// sphere's colour; `pigment` is the pigment keyword as written (a misspelling breaks it on
+/// line 4, column 17).
+fn scene(pigment: &str, colour: &str) -> String {
+    format!(
+        "camera {{ location <0, 0, -5> look_at 0 angle 40 }}\n\
+         light_source {{ <4, 8, -5>, rgb 1 }}\n\
+         // the sphere\n\
+         sphere {{ 0, 1.5 {pigment} {{ rgb {colour} }} finish {{ ambient 1 diffuse 0 }} }}\n"
+    )
+}
+
+/// A scratch folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("trace-watch-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Writes a file as an editor saves it: a new text, a new modification time.
+fn save(path: &Path, text: &str) {
+    std::fs::write(path, text).unwrap();
+}
+
+/// A running `trace watch`, stopped when dropped.
+struct Watch {
+    child: Child,
+    port: u16,
+}
+
+impl Watch {
+    fn start(dir: &Path, args: &[&str]) -> Watch {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_trace"))
+            .arg("watch")
+            .args(args)
+            .current_dir(dir)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("trace runs");
+        let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
+        let first = lines.next().expect("a first line").unwrap();
+        let port = first
+            .split("http://127.0.0.1:")
+            .nth(1)
+            .and_then(|rest| rest.split('/').next())
+            .and_then(|p| p.parse().ok())
+            .unwrap_or_else(|| panic!("no local address in {first:?}"));
+        // (The rest of standard error is read so that trace never waits on a full pipe.)
+        std::thread::spawn(move || for _ in lines {});
+        Watch { child, port }
+    }
+
+    /// A request's status code and body.
+    fn request(&self, method: &str, path: &str, host: &str) -> (u16, Vec<u8>) {
+        http(self.port, method, path, host)
+    }
+
+    fn get(&self, path: &str) -> (u16, Vec<u8>) {
+        self.request("GET", path, &format!("127.0.0.1:{}", self.port))
+    }
+
+    fn status(&self) -> Value {
+        let (code, body) = self.get("/status");
+        assert_eq!(code, 200);
+        serde_json::from_slice(&body).expect("the status is JSON")
+    }
+
+    /// The status once `done` says so (within a minute).
+    fn wait(&self, what: &str, done: impl Fn(&Value) -> bool) -> Value {
+        let start = Instant::now();
+        loop {
+            let s = self.status();
+            if done(&s) {
+                return s;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "waited a minute for {what}; the status: {s:#}"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+
+    /// The picture shown now, decoded.
+    fn picture(&self, dir: &Path) -> trace::Film {
+        let (code, png) = self.get("/image.png");
+        assert_eq!(code, 200, "{}", String::from_utf8_lossy(&png));
+        let path = dir.join("shown.png");
+        std::fs::write(&path, png).unwrap();
+        trace::Film::read(&path).unwrap()
+    }
+}
+
+impl Drop for Watch {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// One HTTP/1.1 request to 127.0.0.1:`port`; the status code and the body.
+fn http(port: u16, method: &str, path: &str, host: &str) -> (u16, Vec<u8>) {
+    let mut stream = TcpStream::connect(("127.0.0.1", port)).expect("the server is there");
+    stream
+        .set_read_timeout(Some(Duration::from_secs(30)))
+        .unwrap();
+    write!(
+        stream,
+        "{method} {path} HTTP/1.1\r\nHost: {host}\r\nConnection: close\r\n\r\n"
+    )
+    .unwrap();
+    // The head, then as many bytes as it announces (Chromium keeps the connection open), or
+    // all there is.
+    let mut reader = BufReader::new(stream);
+    let mut head = String::new();
+    loop {
+        let mut line = String::new();
+        reader.read_line(&mut line).unwrap();
+        if line.trim().is_empty() {
+            break;
+        }
+        head += &line;
+    }
+    let code = head
+        .split_whitespace()
+        .nth(1)
+        .and_then(|c| c.parse().ok())
+        .expect("a status code");
+    let length = head.lines().find_map(|l| {
+        let (name, value) = l.split_once(':')?;
+        name.eq_ignore_ascii_case("content-length")
+            .then(|| value.trim().parse::<usize>().ok())?
+    });
+    let mut body = Vec::new();
+    match length {
+        Some(n) => {
+            body.resize(n, 0);
+            reader.read_exact(&mut body).unwrap();
+        }
+        None => {
+            reader.read_to_end(&mut body).unwrap();
+        }
+    }
+    (code, body)
+}
+
+fn state(s: &Value) -> &str {
+    s["state"].as_str().unwrap_or("")
+}
+
+/// The picture's centre pixel, in 8-bit sRGB.
+fn centre(film: &trace::Film) -> [u8; 3] {
+    let p = film.get(film.width / 2, film.height / 2);
+    p.map(|v| (255.0 * trace::film::linear_to_srgb(f64::from(v)) + 0.5) as u8)
+}
+
+#[test]
+fn the_page_s_picture_is_the_render_and_follows_saves_and_errors() {
+    let dir = scratch("follow");
+    let path = dir.join("scene.rt");
+    save(&path, &scene("pigment", "<1, 0, 0>"));
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "64", "--height", "48"]);
+    let first = watch.wait("the first render", |s| state(s) == "done");
+    assert_eq!(first["settings"]["width"], 64);
+
+    // The picture served is the picture `trace` renders with the same settings.
+    let shown = watch.picture(&dir);
+    let out = Command::new(env!("CARGO_BIN_EXE_trace"))
+        .args([
+            "scene.rt",
+            "-o",
+            "reference.png",
+            "--width",
+            "64",
+            "--height",
+            "48",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let reference = trace::Film::read(&dir.join("reference.png")).unwrap();
+    assert_eq!((shown.width, shown.height), (64, 48));
+    assert_eq!(shown.pixels, reference.pixels);
+    assert_eq!(centre(&shown), [255, 0, 0]);
+
+    // A broken save: the error with its place; the last picture stays.
+    let (_, before) = watch.get("/image.png");
+    save(&path, &scene("pigmnt", "<0, 0, 1>"));
+    let broken = watch.wait("the error", |s| state(s) == "error");
+    let error = &broken["errors"][0];
+    assert_eq!(
+        (error["line"].as_u64(), error["column"].as_u64()),
+        (Some(4), Some(17))
+    );
+    assert!(
+        error["file"].as_str().unwrap().ends_with("scene.rt"),
+        "{error}"
+    );
+    let text = error["text"].as_str().unwrap();
+    assert!(text.contains("pigmnt") && text.contains("^^^^^^"), "{text}");
+    assert!(text.contains("did you mean `pigment`"), "{text}");
+    assert_eq!(watch.get("/image.png"), (200, before));
+
+    // Fixed: rendered again, the error gone.
+    save(&path, &scene("pigment", "<0, 0, 1>"));
+    let fixed = watch.wait("the fixed render", |s| {
+        state(s) == "done" && s["id"].as_u64() > broken["id"].as_u64()
+    });
+    assert_eq!(fixed["errors"].as_array().map(Vec::len), Some(0));
+    assert_eq!(centre(&watch.picture(&dir)), [0, 0, 255]);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_saved_include_renders_again() {
+    let dir = scratch("include");
+    save(
+        &dir.join("colour.inc"),
+        "#declare Colour = rgb <1, 0, 0>;\n",
+    );
+    save(
+        &dir.join("scene.rt"),
+        &format!("#include \"colour.inc\"\n{}", scene("pigment", "Colour")),
+    );
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "32", "--height", "24"]);
+    let first = watch.wait("the first render", |s| state(s) == "done");
+    let files: Vec<&str> = first["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
+    assert!(files.iter().any(|f| f.ends_with("colour.inc")), "{files:?}");
+    assert_eq!(centre(&watch.picture(&dir)), [255, 0, 0]);
+    save(
+        &dir.join("colour.inc"),
+        "#declare Colour = rgb <0, 1, 0>;\n",
+    );
+    watch.wait("the render after the include's save", |s| {
+        state(s) == "done" && s["id"].as_u64() > first["id"].as_u64()
+    });
+    assert_eq!(centre(&watch.picture(&dir)), [0, 255, 0]);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_flood_of_saves_ends_with_the_last_one_rendered() {
+    let dir = scratch("flood");
+    let path = dir.join("scene.rt");
+    save(&path, &scene("pigment", "<1, 1, 1>"));
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "96", "--height", "72"]);
+    watch.wait("the first render", |s| state(s) == "done");
+    // Forty saves, 5 ms apart, every second one broken; the last green.
+    for i in 0..40 {
+        let text = if i % 2 == 1 {
+            scene("pigmnt", "<1, 0, 0>")
+        } else {
+            scene("pigment", &format!("<{}, 0, 1>", i as f64 / 40.0))
+        };
+        save(&path, &text);
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    save(&path, &scene("pigment", "<0, 1, 0>"));
+    let start = Instant::now();
+    loop {
+        let s = watch.wait("a finished render", |s| state(s) == "done");
+        if centre(&watch.picture(&dir)) == [0, 255, 0] {
+            assert_eq!(s["errors"].as_array().map(Vec::len), Some(0));
+            break;
+        }
+        assert!(start.elapsed() < Duration::from_secs(60), "{s:#}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_scene_that_never_finishes_loading_stops_at_its_budget() {
+    let dir = scratch("endless");
+    let path = dir.join("scene.rt");
+    save(
+        &path,
+        "#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end\n",
+    );
+    let watch = Watch::start(&dir, &["scene.rt", "--max-steps", "100000"]);
+    let s = watch.wait("the budget's error", |s| state(s) == "error");
+    let message = s["errors"][0]["message"].as_str().unwrap();
+    assert!(message.contains("budget"), "{message}");
+    assert_eq!(watch.get("/image.png").0, 404, "no picture yet");
+    save(&path, &scene("pigment", "<1, 0, 0>"));
+    watch.wait("the render after the fix", |s| state(s) == "done");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn the_server_answers_this_machine_and_outlives_its_clients() {
+    let dir = scratch("server");
+    let path = dir.join("scene.rt");
+    save(&path, &scene("pigment", "<1, 0, 0>"));
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "40", "--height", "30"]);
+    watch.wait("the first render", |s| state(s) == "done");
+    let (code, page) = watch.get("/");
+    assert_eq!(code, 200);
+    assert!(String::from_utf8_lossy(&page).contains("EventSource"));
+    // Another host name (a page elsewhere, through DNS rebinding), another path, another
+    // method, a bad setting.
+    let elsewhere = watch.request("GET", "/status", "evil.example");
+    assert_eq!(elsewhere.0, 403);
+    assert_eq!(watch.get("/../scene.rt").0, 404);
+    assert_eq!(watch.get("/scene.rt").0, 404);
+    let local = format!("localhost:{}", watch.port);
+    assert_eq!(watch.request("DELETE", "/status", &local).0, 405);
+    assert_eq!(watch.request("POST", "/settings?width=0", &local).0, 400);
+
+    // Clients that leave: event streams dropped after their first event, and one that
+    // never finishes its request.
+    for _ in 0..5 {
+        let mut stream = TcpStream::connect(("127.0.0.1", watch.port)).unwrap();
+        write!(stream, "GET /events HTTP/1.1\r\nHost: {local}\r\n\r\n").unwrap();
+        let mut first = [0u8; 64];
+        stream.read_exact(&mut first).unwrap();
+        assert!(first.starts_with(b"HTTP/1.1 200 OK"));
+    }
+    let mut idle = TcpStream::connect(("127.0.0.1", watch.port)).unwrap();
+    idle.write_all(b"GET /sta").unwrap();
+
+    // New settings: a new render at the new size.
+    let (code, _) = watch.request("POST", "/settings?width=20&height=10&aa=off", &local);
+    assert_eq!(code, 200);
+    let s = watch.wait("the render at the new size", |s| {
+        state(s) == "done" && s["settings"]["width"] == 20
+    });
+    assert_eq!(s["settings"]["aa"], "off");
+    let film = watch.picture(&dir);
+    assert_eq!((film.width, film.height), (20, 10));
+    drop(idle);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// The browser: Chromium headless, or `None` (where it is not installed).
+fn chromium() -> Option<PathBuf> {
+    let named = std::env::var_os("TRACE_CHROMIUM").map(PathBuf::from);
+    named
+        .into_iter()
+        .chain(["/usr/bin/chromium", "/usr/bin/chromium-browser"].map(PathBuf::from))
+        .find(|p| p.is_file())
+}
+
+/// A WebSocket client, enough for Chromium's DevTools protocol: text frames, masked as a
+/// client's must be.
+struct DevTools {
+    reader: BufReader<TcpStream>,
+    writer: TcpStream,
+    next: u64,
+}
+
+impl DevTools {
+    fn connect(url: &str) -> DevTools {
+        let rest = url.strip_prefix("ws://").expect("a ws:// address");
+        let (host, path) = rest.split_at(rest.find('/').unwrap());
+        let writer = TcpStream::connect(host).unwrap();
+        writer
+            .set_read_timeout(Some(Duration::from_secs(30)))
+            .unwrap();
+        let mut reader = BufReader::new(writer.try_clone().unwrap());
+        let mut w = writer.try_clone().unwrap();
+        write!(
+            w,
+            "GET {path} HTTP/1.1\r\nHost: {host}\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\
+             Sec-WebSocket-Key: dHJhY2Ugd2F0Y2ggdGVzdA==\r\nSec-WebSocket-Version: 13\r\n\r\n"
+        )
+        .unwrap();
+        let mut line = String::new();
+        reader.read_line(&mut line).unwrap();
+        assert!(line.contains(" 101 "), "the handshake: {line}");
+        loop {
+            line.clear();
+            reader.read_line(&mut line).unwrap();
+            if line.trim().is_empty() {
+                break;
+            }
+        }
+        DevTools {
+            reader,
+            writer,
+            next: 1,
+        }
+    }
+
+    fn send(&mut self, text: &str) {
+        let bytes = text.as_bytes();
+        let mut frame = vec![0x81u8];
+        match bytes.len() {
+            n if n < 126 => frame.push(0x80 | n as u8),
+            n if n < 65536 => {
+                frame.push(0x80 | 126);
+                frame.extend((n as u16).to_be_bytes());
+            }
+            n => {
+                frame.push(0x80 | 127);
+                frame.extend((n as u64).to_be_bytes());
+            }
+        }
+        let mask = [0x5a, 0x13, 0xc7, 0x2e];
+        frame.extend(mask);
+        frame.extend(bytes.iter().enumerate().map(|(i, b)| b ^ mask[i % 4]));
+        self.writer.write_all(&frame).unwrap();
+    }
+
+    /// The next whole text message.
+    fn receive(&mut self) -> String {
+        let mut message = Vec::new();
+        loop {
+            let mut head = [0u8; 2];
+            self.reader.read_exact(&mut head).unwrap();
+            let len = match head[1] & 0x7f {
+                126 => {
+                    let mut n = [0u8; 2];
+                    self.reader.read_exact(&mut n).unwrap();
+                    u64::from(u16::from_be_bytes(n))
+                }
+                127 => {
+                    let mut n = [0u8; 8];
+                    self.reader.read_exact(&mut n).unwrap();
+                    u64::from_be_bytes(n)
+                }
+                n => u64::from(n),
+            };
+            let mut payload = vec![0u8; len as usize];
+            self.reader.read_exact(&mut payload).unwrap();
+            if head[0] & 0x0f <= 2 {
+                message.extend(payload);
+                if head[0] & 0x80 != 0 {
+                    return String::from_utf8(message).unwrap();
+                }
+            }
+        }
+    }
+
+    /// Calls a DevTools method and returns its result.
+    fn call(&mut self, method: &str, params: Value) -> Value {
+        let id = self.next;
+        self.next += 1;
+        let request = serde_json::json!({ "id": id, "method": method, "params": params });
+        self.send(&request.to_string());
+        loop {
+            let reply: Value = serde_json::from_str(&self.receive()).unwrap();
+            if reply["id"].as_u64() == Some(id) {
+                assert!(reply.get("error").is_none(), "{method}: {reply}");
+                return reply["result"].clone();
+            }
+        }
+    }
+
+    /// What the page shows: its state, the error box's text, and the centre pixel of the
+    /// picture on screen (read back through a canvas).
+    fn page(&mut self) -> Value {
+        const LOOK: &str = "(() => {
+            const img = document.getElementById('picture');
+            let centre = null;
+            if (!img.hidden && img.complete && img.naturalWidth > 0) {
+                const c = document.createElement('canvas');
+                c.width = img.naturalWidth; c.height = img.naturalHeight;
+                const g = c.getContext('2d');
+                g.drawImage(img, 0, 0);
+                centre = Array.from(g.getImageData(c.width >> 1, c.height >> 1, 1, 1).data).slice(0, 3);
+            }
+            const error = document.getElementById('error');
+            return JSON.stringify({
+                state: document.body.dataset.state,
+                error: error.hidden ? '' : error.textContent,
+                centre,
+            });
+        })()";
+        let r = self.call(
+            "Runtime.evaluate",
+            serde_json::json!({ "expression": LOOK, "returnByValue": true }),
+        );
+        serde_json::from_str(r["result"]["value"].as_str().unwrap_or("{}")).unwrap()
+    }
+
+    /// The page once `done` says so (within a minute).
+    fn wait(&mut self, what: &str, done: impl Fn(&Value) -> bool) -> Value {
+        let start = Instant::now();
+        loop {
+            let p = self.page();
+            if done(&p) {
+                return p;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "waited a minute for the page to show {what}: {p}"
+            );
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+}
+
+/// A headless Chromium, killed when dropped.
+struct Browser(Child);
+
+impl Drop for Browser {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[test]
+fn the_page_in_a_browser_shows_the_picture_the_error_and_the_fix() {
+    let required = std::env::var_os("TRACE_REQUIRE_BROWSER").is_some_and(|v| v == "1");
+    let Some(program) = chromium() else {
+        assert!(
+            !required,
+            "TRACE_REQUIRE_BROWSER=1 but Chromium is not installed"
+        );
+        eprintln!("the browser test is skipped: install Debian's chromium to run it");
+        return;
+    };
+    let dir = scratch("browser");
+    let path = dir.join("scene.rt");
+    save(&path, &scene("pigment", "<1, 0, 0>"));
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "96", "--height", "72"]);
+    let mut child = Command::new(program)
+        .args([
+            "--headless=new",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--no-first-run",
+            "--remote-debugging-port=0",
+            &format!("--user-data-dir={}", dir.join("profile").display()),
+            "about:blank",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("chromium starts");
+    let stderr = child.stderr.take().unwrap();
+    let browser = Browser(child);
+    let mut lines = BufReader::new(stderr).lines();
+    let endpoint = lines
+        .by_ref()
+        .map_while(Result::ok)
+        .find_map(|l| {
+            l.split("DevTools listening on ")
+                .nth(1)
+                .map(|s| s.trim().to_string())
+        })
+        .expect("chromium says where its DevTools listen");
+    std::thread::spawn(move || for _ in lines {});
+    // The page target's own socket, from the browser's list of targets.
+    let devtools_port: u16 = endpoint
+        .trim_start_matches("ws://127.0.0.1:")
+        .split('/')
+        .next()
+        .and_then(|p| p.parse().ok())
+        .expect("a local DevTools port");
+    let (_, list) = http(
+        devtools_port,
+        "GET",
+        "/json/list",
+        &format!("127.0.0.1:{devtools_port}"),
+    );
+    let targets: Value = serde_json::from_slice(&list).unwrap();
+    let page_socket = targets
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["type"] == "page")
+        .and_then(|t| t["webSocketDebuggerUrl"].as_str())
+        .expect("a page target")
+        .to_string();
+    let mut devtools = DevTools::connect(&page_socket);
+    let url = format!("http://127.0.0.1:{}/", watch.port);
+    devtools.call("Page.navigate", serde_json::json!({ "url": url }));
+
+    // The picture.
+    devtools.wait("the red sphere", |p| {
+        p["state"] == "done" && p["centre"] == serde_json::json!([255, 0, 0])
+    });
+    // A broken save: the error with its line and caret above the last picture.
+    save(&path, &scene("pigmnt", "<0, 0, 1>"));
+    let p = devtools.wait("the error", |p| p["state"] == "error");
+    let error = p["error"].as_str().unwrap();
+    assert!(
+        error.contains("scene.rt:4:17") && error.contains("^^^^^^"),
+        "{error}"
+    );
+    assert_eq!(
+        p["centre"],
+        serde_json::json!([255, 0, 0]),
+        "the last picture stays"
+    );
+    // Fixed: the new picture, no error.
+    save(&path, &scene("pigment", "<0, 0, 1>"));
+    let p = devtools.wait("the blue sphere", |p| {
+        p["state"] == "done" && p["centre"] == serde_json::json!([0, 0, 255])
+    });
+    assert_eq!(p["error"], "");
+    drop(devtools);
+    drop(browser);
+    let _ = std::fs::remove_dir_all(dir);
+}
