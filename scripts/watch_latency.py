@@ -91,8 +91,8 @@ def material_edit(text):
 
 
 def measure(watch, path, edit):
-    """Saves the edited text; returns (first pixels, done) in seconds after the save, and
-    the renderer's own timings."""
+    """Saves the edited text; returns (first pixels, done) in seconds after the save (None
+    where the edit broke the scene)."""
     text = open(path).read()
     edited = edit(text)
     if edited is None:
@@ -102,18 +102,23 @@ def measure(watch, path, edit):
     saved = time.perf_counter()
     with open(path, "w") as f:
         f.write(edited)
-    first, _ = watch.wait(lambda s: s["id"] > last and s["picture_id"] == s["id"], since)
-    done, status = watch.wait(lambda s: s["id"] > last and s["state"] in ("done", "error"),
-                              since)
-    if status["state"] == "error":
-        raise RuntimeError(f"{path}: {status['errors'][0]['text']}")
+    first, status = watch.wait(
+        lambda s: s["id"] > last and (s["picture_id"] == s["id"] or s["state"] == "error"),
+        since)
+    if status["state"] != "error":
+        done, status = watch.wait(lambda s: s["id"] > last and s["state"] in ("done", "error"),
+                                  since)
+    failed = status["state"] == "error"
+    if failed:
+        print(f"{os.path.basename(path)}: the edited scene fails: {status['errors'][0]['message']}",
+              file=sys.stderr)
     # Back to the text as it was (and its render), so the next edit starts from it.
     since = watch.count()
     last = status["id"]
     with open(path, "w") as f:
         f.write(text)
     watch.wait(lambda s: s["id"] > last and s["state"] in ("done", "error"), since)
-    return first - saved, done - saved, status["timings"]
+    return None if failed else (first - saved, done - saved)
 
 
 def mesh_scene(folder, triangles=1_000_000):
