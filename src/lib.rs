@@ -234,12 +234,30 @@ pub struct Prepared {
     pub build_time: std::time::Duration,
 }
 
+/// What one build of a scene keeps for the next ([`prepare`]): its meshes, built with their
+/// trees, taken again where the next scene has the same mesh data (a save that moves the
+/// camera or edits a material does not build a big mesh again).
+#[derive(Default)]
+pub struct BuildCache(scene::MeshCache);
+
+impl BuildCache {
+    /// Meshes kept now.
+    pub fn meshes(&self) -> usize {
+        self.0.count()
+    }
+}
+
 /// Builds a scene for rendering on `threads` worker threads (`None`: one per core), freeing
-/// the IR as it goes.
-pub fn prepare(scene: ir::Scene, threads: Option<usize>) -> Result<Prepared, Error> {
+/// the IR as it goes; meshes come from `cache` where it has them, and the cache keeps this
+/// build's meshes for the next.
+pub fn prepare(
+    scene: ir::Scene,
+    threads: Option<usize>,
+    cache: &BuildCache,
+) -> Result<Prepared, Error> {
     let pool = render::thread_pool(threads)?;
     let start = std::time::Instant::now();
-    let built = pool.install(|| scene::Scene::build_owned(scene));
+    let built = pool.install(|| scene::Scene::build_owned(scene, Some(&cache.0)));
     Ok(Prepared {
         built,
         pool,
@@ -269,7 +287,7 @@ pub fn render_to_file(
 ) -> Result<RenderStats, Error> {
     let pool = render::thread_pool(options.threads)?;
     let start = std::time::Instant::now();
-    let built = pool.install(|| scene::Scene::build_owned(scene));
+    let built = pool.install(|| scene::Scene::build_owned(scene, None));
     let build_time = start.elapsed();
     let mut bands = render::Bands::new(&built, options, &pool);
     let region = options.region();

@@ -210,23 +210,89 @@ fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
     }
 }
 
+/// Render-ready meshes kept from one build to the next (`trace watch` builds the scene again
+/// at every save): a mesh whose data did not change is not built again (its tree included).
+/// Each build keeps only the meshes it used.
+#[derive(Default)]
+pub struct MeshCache {
+    meshes: std::sync::Mutex<HashMap<u128, Arc<TriangleMesh>>>,
+}
+
+impl MeshCache {
+    /// Meshes kept now.
+    pub fn count(&self) -> usize {
+        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).len()
+    }
+}
+
+/// A fingerprint of everything [`build_mesh`] reads of a mesh: two independent 64-bit mixes
+/// of its values' bits and its lists' lengths (equal meshes, equal prints; a different mesh
+/// with the same print is a 2^-128 chance).
+fn mesh_print(mesh: &ir::Mesh) -> u128 {
+    struct Mix(u64, u64);
+    impl Mix {
+        fn word(&mut self, w: u64) {
+            self.0 = (self.0 ^ w)
+                .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                .rotate_left(31);
+            self.1 = (self.1 ^ w.rotate_left(17))
+                .wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
+                .rotate_left(27);
+        }
+        fn list<T>(&mut self, items: &[T], words: impl Fn(&T) -> [u64; 2]) {
+            self.word(items.len() as u64);
+            for item in items {
+                let [a, b] = words(item);
+                self.word(a);
+                self.word(b);
+            }
+        }
+    }
+    let mut m = Mix(0x243F_6A88_85A3_08D3, 0x1319_8A2E_0370_7344);
+    let v3 = |v: &glam::Vec3| {
+        [
+            u64::from(v.x.to_bits()) << 32 | u64::from(v.y.to_bits()),
+            u64::from(v.z.to_bits()),
+        ]
+    };
+    let i3 = |t: &[u32; 3]| [u64::from(t[0]) << 32 | u64::from(t[1]), u64::from(t[2])];
+    m.list(&mesh.vertices, v3);
+    m.list(&mesh.normals, v3);
+    m.list(&mesh.triangles, i3);
+    m.list(&mesh.normal_indices, i3);
+    m.list(&mesh.uvs, |uv| [uv.x.to_bits(), uv.y.to_bits()]);
+    m.list(&mesh.uv_indices, i3);
+    m.list(&mesh.face_textures, i3);
+    match mesh.inside_vector {
+        Some(v) => m.list(&[v], |v| {
+            [v.x.to_bits() ^ v.z.to_bits().rotate_left(7), v.y.to_bits()]
+        }),
+        None => m.word(u64::MAX),
+    }
+    m.word(u64::from(mesh.world_uv));
+    u128::from(m.0) << 64 | u128::from(m.1)
+}
+
 impl Scene {
     /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
-        let (scene, bounds) = Scene::build_objects(ir);
+        let (scene, bounds) = Scene::build_objects(ir, None);
         scene.with_index(bounds)
     }
 
     /// Like [`Scene::build`], but frees the IR's objects before building the acceleration
-    /// structure, which needs the most memory.
-    pub fn build_owned(ir: ir::Scene) -> Scene {
-        let (scene, bounds) = Scene::build_objects(&ir);
+    /// structure, which needs the most memory; meshes come from `cache` where it has them.
+    pub fn build_owned(ir: ir::Scene, cache: Option<&MeshCache>) -> Scene {
+        let (scene, bounds) = Scene::build_objects(&ir, cache);
         drop(ir);
         scene.with_index(bounds)
     }
 
     /// Everything but the acceleration structure, and the world bounds of each object.
-    fn build_objects(ir: &ir::Scene) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
+    fn build_objects(
+        ir: &ir::Scene,
+        cache: Option<&MeshCache>,
+    ) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
         let (mut ids, textures) = material_ids(ir);
         let generator = ir.settings.noise_generator;
         let (interior_ids, interiors) = shared_ids(
@@ -250,14 +316,34 @@ impl Scene {
                 *id = (own, own);
             }
         }
-        // Each distinct mesh is built once, for all its instances (keyed by address).
+        // Each distinct mesh is built once, for all its instances (keyed by address), or
+        // taken from the cache (keyed by its data).
         let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
+        let mut kept = cache.map(|c| {
+            let mut old = c.meshes.lock().unwrap_or_else(|e| e.into_inner());
+            (std::mem::take(&mut *old), HashMap::new())
+        });
         for o in &ir.objects {
             if let ir::Shape::Mesh(mesh) = &o.shape {
                 meshes
                     .entry(Arc::as_ptr(mesh) as usize)
-                    .or_insert_with(|| Arc::new(build_mesh(mesh)));
+                    .or_insert_with(|| match &mut kept {
+                        Some((old, used)) => {
+                            let print = mesh_print(mesh);
+                            let built = used
+                                .get(&print)
+                                .or_else(|| old.get(&print))
+                                .cloned()
+                                .unwrap_or_else(|| Arc::new(build_mesh(mesh)));
+                            used.insert(print, built.clone());
+                            built
+                        }
+                        None => Arc::new(build_mesh(mesh)),
+                    });
             }
+        }
+        if let (Some(cache), Some((_, used))) = (cache, kept) {
+            *cache.meshes.lock().unwrap_or_else(|e| e.into_inner()) = used;
         }
         let (objects, bounds): (Vec<Object>, Vec<_>) = ir
             .objects
@@ -896,6 +982,72 @@ mod tests {
             settings: ir::Settings::default(),
         };
         Scene::build(&ir)
+    }
+
+    #[test]
+    fn a_mesh_of_unchanged_data_is_taken_from_the_cache() {
+        let mesh = |y: f32| ir::Mesh {
+            vertices: vec![
+                glam::Vec3::ZERO,
+                glam::Vec3::X,
+                glam::Vec3::new(0.0, y, 0.0),
+            ],
+            triangles: vec![[0, 1, 2]],
+            ..ir::Mesh::default()
+        };
+        let scene = |m: ir::Mesh| ir::Scene {
+            objects: (0..2)
+                .map(|_| ir::Object {
+                    shape: ir::Shape::Mesh(Arc::new(m.clone())),
+                    transform: None,
+                    texture: ir::Texture::default(),
+                    extras: None,
+                    interior: Default::default(),
+                    no_shadow: false,
+                    inverse: false,
+                    hollow: false,
+                    member: 0,
+                    medium: 0,
+                })
+                .collect(),
+            camera: ir::Camera::default(),
+            lights: vec![],
+            background: Rgb::ZERO,
+            background_alpha: 0.0,
+            sky_sphere: None,
+            fogs: vec![],
+            rainbows: vec![],
+            atmosphere: vec![],
+            settings: ir::Settings::default(),
+        };
+        let built = |s: &Scene| -> Vec<*const TriangleMesh> {
+            (s.objects.iter())
+                .map(|o| match &o.shape {
+                    Shape::Mesh(m) => Arc::as_ptr(m),
+                    _ => panic!("a mesh"),
+                })
+                .collect()
+        };
+        let cache = MeshCache::default();
+        let first = Scene::build_owned(scene(mesh(1.0)), Some(&cache));
+        // (Two objects of equal data share one built mesh, though their IR meshes differ.)
+        assert_eq!(built(&first)[0], built(&first)[1]);
+        assert_eq!(cache.count(), 1);
+        let again = Scene::build_owned(scene(mesh(1.0)), Some(&cache));
+        assert_eq!(built(&again), built(&first), "the same data: the same mesh");
+        let moved = Scene::build_owned(scene(mesh(1.5)), Some(&cache));
+        assert_ne!(
+            built(&moved)[0],
+            built(&first)[0],
+            "a vertex moved: built again"
+        );
+        assert_eq!(cache.count(), 1, "only the meshes of the last build are kept");
+        assert_ne!(mesh_print(&mesh(1.0)), mesh_print(&mesh(1.5)));
+        let flat_uv = ir::Mesh {
+            world_uv: true,
+            ..mesh(1.0)
+        };
+        assert_ne!(mesh_print(&mesh(1.0)), mesh_print(&flat_uv));
     }
 
     #[test]

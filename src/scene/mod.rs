@@ -28,6 +28,7 @@ pub use crate::ir::{
 };
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
+pub use build::MeshCache;
 pub use material::{Material, filter_colour};
 pub use media::Media;
 pub use normal::Normal;

@@ -28,7 +28,7 @@ pub fn object_query(objects: Vec<ir::Object>) -> Box<dyn ir::ObjectQuery> {
         settings: ir::Settings::default(),
     };
     Box::new(Probe {
-        scene: Scene::build_owned(scene),
+        scene: Scene::build_owned(scene, None),
     })
 }
 

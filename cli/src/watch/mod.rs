@@ -177,6 +177,8 @@ pub struct Session {
     watched: Mutex<Vec<(PathBuf, Stamp)>>,
     /// The last picture encoded, by its key.
     png: Mutex<(String, Arc<Vec<u8>>)>,
+    /// What the last build keeps for the next (its meshes).
+    cache: trace::BuildCache,
 }
 
 fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
@@ -214,6 +216,7 @@ impl Session {
             asked: Condvar::new(),
             watched: Mutex::new(vec![(scene.clone(), stamp(&scene))]),
             png: Mutex::new((String::new(), Arc::new(Vec::new()))),
+            cache: trace::BuildCache::default(),
             options,
         }
     }
@@ -347,17 +350,18 @@ impl Session {
             s.files = files;
             s.timings = vec![("parse", parsed)];
         });
-        let prepared = match trace::prepare(loaded.scene, o.threads.map(|t| t as usize)) {
-            Ok(p) => p,
-            Err(e) => {
-                let message = error_message(&e);
-                self.update(|s| {
-                    s.phase = Phase::Error;
-                    s.errors = vec![message];
-                });
-                return;
-            }
-        };
+        let prepared =
+            match trace::prepare(loaded.scene, o.threads.map(|t| t as usize), &self.cache) {
+                Ok(p) => p,
+                Err(e) => {
+                    let message = error_message(&e);
+                    self.update(|s| {
+                        s.phase = Phase::Error;
+                        s.errors = vec![message];
+                    });
+                    return;
+                }
+            };
         self.update(|s| s.timings.push(("build", at.elapsed().as_secs_f64())));
         let (w, h) = (settings.width, settings.height);
         let options = |width, height, antialias, progress, preview| RenderOptions {

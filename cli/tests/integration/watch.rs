@@ -621,3 +621,112 @@ fn the_page_in_a_browser_shows_the_picture_the_error_and_the_fix() {
     drop(browser);
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// One tev packet read from `stream`: its type and body (after the type byte).
+fn tev_packet(stream: &mut TcpStream) -> (u8, Vec<u8>) {
+    let mut length = [0u8; 4];
+    stream.read_exact(&mut length).unwrap();
+    let length = u32::from_le_bytes(length) as usize;
+    assert!((5..1 << 28).contains(&length), "a packet of {length} bytes");
+    let mut body = vec![0u8; length - 4];
+    stream.read_exact(&mut body).unwrap();
+    (body[0], body[1..].to_vec())
+}
+
+/// Reads a NUL-ended string at `*at`.
+fn tev_string(body: &[u8], at: &mut usize) -> String {
+    let end = *at + body[*at..].iter().position(|&b| b == 0).expect("a NUL");
+    let s = String::from_utf8(body[*at..end].to_vec()).unwrap();
+    *at = end + 1;
+    s
+}
+
+fn tev_i32(body: &[u8], at: &mut usize) -> i32 {
+    let v = i32::from_le_bytes(body[*at..*at + 4].try_into().unwrap());
+    *at += 4;
+    v
+}
+
+#[test]
+fn tev_is_sent_the_picture_as_its_protocol_says() {
+    // A stand-in for tev: it accepts one connection and reads packets.
+    let tev = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let address = tev.local_addr().unwrap().to_string();
+    let dir = scratch("tev");
+    save(&dir.join("scene.rt"), &scene("pigment", "<1, 0.5, 0.25>"));
+    let watch = Watch::start(
+        &dir,
+        &[
+            "scene.rt", "--width", "150", "--height", "40", "--tev", &address,
+        ],
+    );
+    watch.wait("the first render", |s| state(s) == "done");
+    let (mut stream, _) = tev.accept().unwrap();
+    stream
+        .set_read_timeout(Some(Duration::from_secs(30)))
+        .unwrap();
+    // First the image, 150 x 40 with channels R, G, B, named after the scene, focused.
+    let (kind, body) = tev_packet(&mut stream);
+    assert_eq!(kind, 4, "create image first");
+    assert_eq!(body[0], 1, "grab focus");
+    let mut at = 1;
+    assert_eq!(tev_string(&body, &mut at), "scene.rt");
+    let size = [
+        tev_i32(&body, &mut at),
+        tev_i32(&body, &mut at),
+        tev_i32(&body, &mut at),
+    ];
+    assert_eq!(size, [150, 40, 3]);
+    let channels: Vec<String> = (0..3).map(|_| tev_string(&body, &mut at)).collect();
+    assert_eq!(channels, ["R", "G", "B"]);
+    assert_eq!(at, body.len());
+    // Then tiles of each channel: read until every pixel holds the finished picture, the
+    // linear values `trace` writes to an EXR with the same settings.
+    let out = Command::new(env!("CARGO_BIN_EXE_trace"))
+        .args([
+            "scene.rt",
+            "-o",
+            "reference.exr",
+            "--width",
+            "150",
+            "--height",
+            "40",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let reference = trace::Film::read(&dir.join("reference.exr")).unwrap();
+    let mut image = vec![[f32::NAN; 3]; 150 * 40];
+    let start = Instant::now();
+    while image != reference.pixels {
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "tev never got the picture"
+        );
+        let (kind, body) = tev_packet(&mut stream);
+        assert_eq!(kind, 3, "then updates");
+        assert_eq!(body[0], 0, "updates do not grab focus");
+        let mut at = 1;
+        assert_eq!(tev_string(&body, &mut at), "scene.rt");
+        let channel = tev_string(&body, &mut at);
+        let c = ["R", "G", "B"]
+            .iter()
+            .position(|n| *n == channel)
+            .expect("a channel of the image");
+        let [x, y, w, h] = [0; 4].map(|_| tev_i32(&body, &mut at) as usize);
+        assert!(
+            x + w <= 150 && y + h <= 40 && w <= 128 && h <= 128,
+            "{x} {y} {w} {h}"
+        );
+        assert_eq!(body.len() - at, 4 * w * h, "one float a pixel");
+        for (k, v) in body[at..].chunks_exact(4).enumerate() {
+            image[(y + k / w) * 150 + x + k % w][c] = f32::from_le_bytes(v.try_into().unwrap());
+        }
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
