@@ -81,6 +81,7 @@ pub use render::{
     Antialias, Aov, Preview, Progress, RayCounts, RenderOptions, RenderStats, Rendered,
     bytes_needed,
 };
+pub use syntax::bulk::ListCache;
 pub use syntax::{MAX_NESTING, is_identifier};
 
 /// POV-Ray 3.7's reserved words, each with what trace does with it, as the Markdown table of

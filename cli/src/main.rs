@@ -495,6 +495,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         clock: frame.clock,
         declares: job.declares.clone(),
         cancel: trace::Cancel::new(),
+        lists: Default::default(),
     };
     let loaded = trace::load(&job.scene, &load_options)?;
     if !args.quiet {

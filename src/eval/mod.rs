@@ -50,6 +50,9 @@ pub struct LoadOptions {
     /// Stops the load with an error when cancelled (checked every few thousand steps), for a
     /// caller that no longer wants the scene (`trace watch`, when the file is saved again).
     pub cancel: crate::cancel::Cancel,
+    /// Big mesh2 lists read by earlier loads, taken from here where the text of a list is
+    /// unchanged (`trace watch`: the lists of a 35 MB mesh are not read again at each save).
+    pub lists: crate::syntax::bulk::ListCache,
 }
 
 /// The animation values a scene reads (POV-Ray's `clock`, `clock_delta`, `clock_on`,
@@ -143,6 +146,7 @@ impl Default for LoadOptions {
             clock: Clock::still(None),
             declares: Vec::new(),
             cancel: crate::cancel::Cancel::new(),
+            lists: Default::default(),
         }
     }
 }
@@ -201,6 +205,7 @@ pub fn evaluate(
     }
     let outcome = ev.read_scene(file);
     *read = ev.sandbox.found();
+    options.lists.finish_load(outcome.is_ok());
     outcome?;
     ev.finish()
 }

@@ -1041,7 +1041,11 @@ mod tests {
             built(&first)[0],
             "a vertex moved: built again"
         );
-        assert_eq!(cache.count(), 1, "only the meshes of the last build are kept");
+        assert_eq!(
+            cache.count(),
+            1,
+            "only the meshes of the last build are kept"
+        );
         assert_ne!(mesh_print(&mesh(1.0)), mesh_print(&mesh(1.5)));
         let flat_uv = ir::Mesh {
             world_uv: true,

@@ -8,13 +8,16 @@
 //! a directive) leaves it to the usual reading, so the meaning is the same either way
 //! (`parsing.rs` tests the two against each other).
 
+use std::sync::Arc;
+
 /// Lists shorter than this are left to the grammar (nothing to gain).
 const MIN_ENTRIES: usize = 16;
 
 /// The text that stands for a list body read here; the grammar's `bulk_list` rule matches it.
 pub const MARKER: &str = "\u{1}";
 
-/// A list body read by the fast path.
+/// A list body read by the fast path. Its values and spans are shared by the copies a
+/// [`ListCache`] hands out.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BulkList {
     /// The announced entry count, as written.
@@ -22,9 +25,46 @@ pub struct BulkList {
     /// Byte range of the count in the file.
     pub count_range: (u32, u32),
     /// The entries.
-    pub values: Vec<[f64; 3]>,
-    /// Where each entry starts and ends in the file.
-    pub spans: Vec<(u32, u32)>,
+    pub values: Arc<Vec<[f64; 3]>>,
+    /// Where each entry starts and ends in the text it was read from, `shift` bytes before
+    /// where it stands in this list's file (wrapping).
+    spans: Arc<Vec<(u32, u32)>>,
+    shift: u32,
+}
+
+impl BulkList {
+    /// A list of `values`, each written at `spans` of its file.
+    pub fn new(
+        count: f64,
+        count_range: (u32, u32),
+        values: Vec<[f64; 3]>,
+        spans: Vec<(u32, u32)>,
+    ) -> BulkList {
+        BulkList {
+            count,
+            count_range,
+            values: Arc::new(values),
+            spans: Arc::new(spans),
+            shift: 0,
+        }
+    }
+
+    /// Where entry `k` starts and ends in the file.
+    pub fn span(&self, k: usize) -> (u32, u32) {
+        let (start, end) = self.spans[k];
+        (start.wrapping_add(self.shift), end.wrapping_add(self.shift))
+    }
+
+    /// The same list, `by` bytes further on in its file (wrapping: a move back is a
+    /// wrapping move forward); the values and spans are shared.
+    fn moved_by(&self, by: u32) -> BulkList {
+        let (a, b) = self.count_range;
+        BulkList {
+            count_range: (a.wrapping_add(by), b.wrapping_add(by)),
+            shift: self.shift.wrapping_add(by),
+            ..self.clone()
+        }
+    }
 }
 
 /// The words whose `{ … }` lists the fast path reads.
@@ -43,6 +83,114 @@ pub fn read_list(text: &str, pos: usize, end: usize) -> Option<(BulkList, usize)
     let bytes = &text.as_bytes()[..end.min(text.len())];
     let (list, close) = read_body(bytes, pos, 0)?;
     (list.values.len() >= MIN_ENTRIES).then_some((list, close))
+}
+
+/// Lists read by earlier loads, kept for the next (`trace watch` reads the scene again at
+/// every save): a list body whose bytes equal those of a body read before (compared in full)
+/// is taken from here, sharing its values, instead of read again. Only bodies that end at
+/// their first `}` are kept, so a body is found again by looking for that byte. Each
+/// complete load keeps only the lists it used ([`ListCache::finish_load`]). Clones share the
+/// lists.
+#[derive(Clone, Default)]
+pub struct ListCache(Arc<std::sync::Mutex<Lists>>);
+
+#[derive(Default)]
+struct Lists {
+    kept: Vec<Kept>,
+    /// The lists the load in progress used or read.
+    used: Vec<Kept>,
+}
+
+/// A list and the text it was read from (kept alive to compare against).
+#[derive(Clone)]
+struct Kept {
+    text: Arc<String>,
+    /// The body's bytes: from after its `{` to its `}`.
+    body: std::ops::Range<usize>,
+    list: BulkList,
+}
+
+impl std::fmt::Debug for ListCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ListCache({} lists)", self.count())
+    }
+}
+
+impl ListCache {
+    /// [`read_list`], through the cache.
+    pub fn read_list(
+        &self,
+        text: &Arc<String>,
+        pos: usize,
+        end: usize,
+    ) -> Option<(BulkList, usize)> {
+        let end = end.min(text.len());
+        let first_close = pos + text.get(pos..end)?.find('}')?;
+        let body = &text.as_bytes()[pos..first_close];
+        let mut lists = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let Lists { kept, used } = &mut *lists;
+        let same = |k: &&Kept| {
+            k.body.len() == body.len()
+                && (Arc::ptr_eq(&k.text, text) && k.body.start == pos
+                    || &k.text.as_bytes()[k.body.clone()] == body)
+        };
+        if let Some(k) = used
+            .iter()
+            .find(same)
+            .or_else(|| kept.iter().find(same))
+            .cloned()
+        {
+            let list = k
+                .list
+                .moved_by((pos as u32).wrapping_sub(k.body.start as u32));
+            if !used
+                .iter()
+                .any(|u| Arc::ptr_eq(&u.text, &k.text) && u.body == k.body)
+            {
+                used.push(k);
+            }
+            return Some((list, first_close));
+        }
+        drop(lists);
+        let (list, close) = read_list(text, pos, end)?;
+        if close == first_close {
+            let k = Kept {
+                text: Arc::clone(text),
+                body: pos..close,
+                list: list.clone(),
+            };
+            self.0
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .used
+                .push(k);
+        }
+        Some((list, close))
+    }
+
+    /// Ends a load: after a `complete` one the lists it used are kept for the next and the
+    /// others let go; after one that stopped early (an error, a cancel) the lists it read are
+    /// added and none let go (the next load may reach the lists this one did not).
+    pub fn finish_load(&self, complete: bool) {
+        let mut lists = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let used = std::mem::take(&mut lists.used);
+        if complete {
+            lists.kept = used;
+        } else {
+            for u in used {
+                let known =
+                    (lists.kept.iter()).any(|k| Arc::ptr_eq(&k.text, &u.text) && k.body == u.body);
+                if !known {
+                    lists.kept.push(u);
+                }
+            }
+        }
+    }
+
+    /// Lists kept now.
+    pub fn count(&self) -> usize {
+        self.0.lock().unwrap_or_else(|e| e.into_inner()).kept.len()
+    }
 }
 
 /// Past the blanks and comments at `i` (the lexer's trivia; an unclosed comment is left
@@ -93,12 +241,7 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
     // Room for the announced entries, but no more than the rest of the file can hold (an
     // entry takes at least 8 bytes: `,<0,0,0>`), whatever the count says.
     let room = count.clamp(0.0, ((bytes.len() - i) / 8) as f64) as usize;
-    let mut list = BulkList {
-        count,
-        count_range,
-        values: Vec::with_capacity(room),
-        spans: Vec::with_capacity(room),
-    };
+    let (mut values, mut spans) = (Vec::with_capacity(room), Vec::with_capacity(room));
     loop {
         match bytes.get(i)? {
             b'}' => break,
@@ -126,11 +269,11 @@ fn read_body(bytes: &[u8], i: usize, offset: usize) -> Option<(BulkList, usize)>
             }
             i += 1;
         }
-        list.values.push(v);
-        list.spans.push((start, (offset + i) as u32));
+        values.push(v);
+        spans.push((start, (offset + i) as u32));
         i = skip_ws(bytes, i);
     }
-    Some((list, i))
+    Some((BulkList::new(count, count_range, values, spans), i))
 }
 
 #[cfg(test)]
@@ -154,11 +297,9 @@ mod tests {
         let (list, close) = read_list(&text, start, text.len()).expect("a list");
         assert_eq!(list.count, 20.0);
         assert_eq!(list.values[3], [3.0, -3.5, 30.0]);
-        assert_eq!(list.spans.len(), 20);
-        assert_eq!(
-            &text[list.spans[3].0 as usize..list.spans[3].1 as usize],
-            "<3, -3.5,3e1 >"
-        );
+        assert_eq!(list.values.len(), 20);
+        let (a, b) = list.span(3);
+        assert_eq!(&text[a as usize..b as usize], "<3, -3.5,3e1 >");
         assert_eq!(&text[close..close + 1], "}");
         // The short face list is left to the grammar.
         let faces = text.find("{ 1,").unwrap() + 1;
@@ -169,6 +310,42 @@ mod tests {
         assert_eq!(again.values, list.values);
         // A list that does not end before `end` is not read.
         assert!(read_list(&text, start, close).is_none());
+    }
+
+    #[test]
+    fn a_cached_list_is_the_list_read_again_wherever_it_moved() {
+        let text = |before: &str, n: usize| {
+            Arc::new(format!("{before}vertex_vectors {{ {n}, {} }}", body(n)))
+        };
+        let start = |t: &str| t.find('{').unwrap() + 1;
+        let cache = ListCache::default();
+        let first = text("", 20);
+        let (a, close) = cache.read_list(&first, start(&first), first.len()).unwrap();
+        cache.finish_load(true);
+        assert_eq!(cache.count(), 1);
+        // The same body after a longer prefix: the values shared, every place moved.
+        let moved = text("// a line added above\n", 20);
+        let (b, b_close) = cache.read_list(&moved, start(&moved), moved.len()).unwrap();
+        let (fresh, fresh_close) = read_list(&moved, start(&moved), moved.len()).unwrap();
+        assert!(Arc::ptr_eq(&a.values, &b.values), "taken from the cache");
+        assert_eq!(b.values, fresh.values);
+        assert_eq!(b.count_range, fresh.count_range);
+        assert_eq!(
+            (0..20).map(|k| b.span(k)).collect::<Vec<_>>(),
+            (0..20).map(|k| fresh.span(k)).collect::<Vec<_>>()
+        );
+        assert_eq!((b_close, close + 22), (fresh_close, fresh_close));
+        // A body of other bytes is read anew; a load that stops early lets nothing go, a
+        // complete one keeps only what it used.
+        let other = text("", 21);
+        let (c, _) = cache.read_list(&other, start(&other), other.len()).unwrap();
+        assert!(!Arc::ptr_eq(&a.values, &c.values));
+        assert_eq!(c.values.len(), 21);
+        cache.finish_load(false);
+        assert_eq!(cache.count(), 2);
+        cache.read_list(&other, start(&other), other.len()).unwrap();
+        cache.finish_load(true);
+        assert_eq!(cache.count(), 1);
     }
 
     #[test]

@@ -177,8 +177,10 @@ pub struct Session {
     watched: Mutex<Vec<(PathBuf, Stamp)>>,
     /// The last picture encoded, by its key.
     png: Mutex<(String, Arc<Vec<u8>>)>,
-    /// What the last build keeps for the next (its meshes).
+    /// What the last build keeps for the next (its meshes), and the last load (its big
+    /// mesh2 lists).
     cache: trace::BuildCache,
+    lists: trace::ListCache,
 }
 
 fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
@@ -217,6 +219,7 @@ impl Session {
             watched: Mutex::new(vec![(scene.clone(), stamp(&scene))]),
             png: Mutex::new((String::new(), Arc::new(Vec::new()))),
             cache: trace::BuildCache::default(),
+            lists: trace::ListCache::default(),
             options,
         }
     }
@@ -305,6 +308,7 @@ impl Session {
             clock: trace::Clock::still(settings.clock),
             declares: o.declares.clone(),
             cancel: cancel.clone(),
+            lists: self.lists.clone(),
         };
         let loaded = trace::load(&o.scene, &load_options);
         if cancel.is_cancelled() {

@@ -747,3 +747,49 @@ fn an_image_used_by_several_maps_is_decoded_and_stored_once() {
     let pixels = texels[0].len();
     assert_eq!(texels[0].bytes(), pixels * 4 + 2 * 256 * 4);
 }
+
+/// Big mesh2 lists taken from a `ListCache` (as `trace watch` reads a scene again) give the
+/// scene and the errors a fresh read gives, wherever the lists moved in their file.
+#[test]
+fn mesh2_lists_from_the_cache_are_the_lists_read_again() {
+    let mesh = |prefix: &str, vertices: usize| {
+        let v: Vec<String> = (0..vertices)
+            .map(|k| format!("<{k}, {}, 0>", k % 3))
+            .collect();
+        let f: Vec<String> = (0..20)
+            .map(|k| format!("<{k}, {}, 0>", (k + 1) % 20))
+            .collect();
+        format!(
+            "{prefix}camera {{ location <0, 0, -30> look_at 0 }}\n\
+             mesh2 {{ vertex_vectors {{ {vertices}, {} }}\n face_indices {{ 20, {} }}\n\
+             pigment {{ rgb 1 }} }}\n",
+            v.join(", "),
+            f.join(",\n")
+        )
+    };
+    let cache = trace::ListCache::default();
+    let load = |text: String, lists: Option<&trace::ListCache>| {
+        let options = trace::LoadOptions {
+            lists: lists.cloned().unwrap_or_default(),
+            ..Default::default()
+        };
+        trace::load_str(std::path::Path::new("mesh.rt"), text, &options)
+            .map(|l| format!("{:?}", l.scene.objects))
+            .map_err(|e| e.to_string())
+    };
+    let first = load(mesh("", 20), Some(&cache)).expect("loads");
+    assert_eq!(cache.count(), 2, "both lists kept");
+    assert_eq!(load(mesh("", 20), None).unwrap(), first);
+    // The same lists two lines lower: the same scene.
+    let lower = mesh("// two lines\n// added\n", 20);
+    assert_eq!(load(lower.clone(), Some(&cache)), load(lower, None));
+    // Fewer vertices: the face list, taken from the cache, is out of range at the same place
+    // as when read again.
+    let fewer = mesh("#declare A = 1;\n", 10);
+    let cached = load(fewer.clone(), Some(&cache)).unwrap_err();
+    assert!(
+        cached.contains("out of range") && cached.contains("mesh.rt:"),
+        "{cached}"
+    );
+    assert_eq!(cached, load(fewer, None).unwrap_err());
+}

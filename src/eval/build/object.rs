@@ -1671,7 +1671,7 @@ impl Evaluator<'_> {
                 for (slot, &c) in face.iter_mut().zip(v) {
                     let i = c.trunc();
                     if !(i >= 0.0 && (i as usize) < limit) {
-                        let (start, end) = list.spans[k];
+                        let (start, end) = list.span(k);
                         let span = Span::new(node.span.file, start as usize, end as usize);
                         return Err(Diagnostic::error(
                             format!("index {i} is out of range (0..{limit})"),

@@ -1162,7 +1162,11 @@ impl<'a> Evaluator<'a> {
         if b.get(open) != Some(&b'{') {
             return false;
         }
-        let Some((list, close)) = syntax::bulk::read_list(&input.text, open + 1, input.end) else {
+        let Some((list, close)) = self
+            .options
+            .lists
+            .read_list(&input.text, open + 1, input.end)
+        else {
             return false;
         };
         let at = |start: usize, end: usize| Tok {
@@ -2474,12 +2478,12 @@ fn vector_list(
         }
         spans.push((tok.start, tok.end));
     }
-    Some(syntax::bulk::BulkList {
+    Some(syntax::bulk::BulkList::new(
         count,
-        count_range: (count_tok.start, count_tok.end),
+        (count_tok.start, count_tok.end),
         values,
         spans,
-    })
+    ))
 }
 
 fn is_item(text: &str) -> bool {
