@@ -957,22 +957,28 @@ mod tests {
         );
     }
 
-    fn scene_with(shape: ir::Shape, transform: DMat4) -> Scene {
-        let ir = ir::Scene {
+    /// An object of `shape` with the defaults, placed by `transform`.
+    fn ir_object(shape: ir::Shape, transform: Option<DMat4>) -> ir::Object {
+        ir::Object {
+            shape,
+            transform: transform.map(|matrix| Box::new(ir::Transform { matrix })),
+            texture: ir::Texture::default(),
+            extras: None,
+            interior: Default::default(),
+            no_shadow: false,
+            inverse: false,
+            hollow: false,
+            member: 0,
+            medium: 0,
+        }
+    }
+
+    /// A scene of `objects` and nothing else.
+    fn ir_scene(objects: Vec<ir::Object>) -> ir::Scene {
+        ir::Scene {
             camera: ir::Camera::default(),
             lights: vec![],
-            objects: vec![ir::Object {
-                shape,
-                transform: Some(Box::new(ir::Transform { matrix: transform })),
-                texture: ir::Texture::default(),
-                extras: None,
-                interior: Default::default(),
-                no_shadow: false,
-                inverse: false,
-                hollow: false,
-                member: 0,
-                medium: 0,
-            }],
+            objects,
             background: Rgb::ZERO,
             background_alpha: 0.0,
             sky_sphere: None,
@@ -980,8 +986,11 @@ mod tests {
             rainbows: vec![],
             atmosphere: vec![],
             settings: ir::Settings::default(),
-        };
-        Scene::build(&ir)
+        }
+    }
+
+    fn scene_with(shape: ir::Shape, transform: DMat4) -> Scene {
+        Scene::build(&ir_scene(vec![ir_object(shape, Some(transform))]))
     }
 
     #[test]
@@ -995,30 +1004,13 @@ mod tests {
             triangles: vec![[0, 1, 2]],
             ..ir::Mesh::default()
         };
-        let scene = |m: ir::Mesh| ir::Scene {
-            objects: (0..2)
-                .map(|_| ir::Object {
-                    shape: ir::Shape::Mesh(Arc::new(m.clone())),
-                    transform: None,
-                    texture: ir::Texture::default(),
-                    extras: None,
-                    interior: Default::default(),
-                    no_shadow: false,
-                    inverse: false,
-                    hollow: false,
-                    member: 0,
-                    medium: 0,
-                })
-                .collect(),
-            camera: ir::Camera::default(),
-            lights: vec![],
-            background: Rgb::ZERO,
-            background_alpha: 0.0,
-            sky_sphere: None,
-            fogs: vec![],
-            rainbows: vec![],
-            atmosphere: vec![],
-            settings: ir::Settings::default(),
+        // (Two objects, each with its own copy of the mesh's data.)
+        let scene = |m: ir::Mesh| {
+            ir_scene(
+                (0..2)
+                    .map(|_| ir_object(ir::Shape::Mesh(Arc::new(m.clone())), None))
+                    .collect(),
+            )
         };
         let built = |s: &Scene| -> Vec<*const TriangleMesh> {
             (s.objects.iter())

@@ -82,18 +82,11 @@ impl Watch {
 
     /// The status once `done` says so (within a minute).
     fn wait(&self, what: &str, done: impl Fn(&Value) -> bool) -> Value {
-        let start = Instant::now();
-        loop {
-            let s = self.status();
-            if done(&s) {
-                return s;
-            }
-            assert!(
-                start.elapsed() < Duration::from_secs(60),
-                "waited a minute for {what}; the status: {s:#}"
-            );
-            std::thread::sleep(Duration::from_millis(20));
-        }
+        poll(
+            &format!("the status to show {what}"),
+            || self.status(),
+            done,
+        )
     }
 
     /// The picture shown now, decoded.
@@ -110,6 +103,22 @@ impl Drop for Watch {
     fn drop(&mut self) {
         let _ = self.child.kill();
         let _ = self.child.wait();
+    }
+}
+
+/// What `look` sees once `done` says so, looking every 20 ms for a minute at most.
+fn poll(what: &str, mut look: impl FnMut() -> Value, done: impl Fn(&Value) -> bool) -> Value {
+    let start = Instant::now();
+    loop {
+        let seen = look();
+        if done(&seen) {
+            return seen;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "waited a minute for {what}; saw {seen:#}"
+        );
+        std::thread::sleep(Duration::from_millis(20));
     }
 }
 
@@ -159,6 +168,27 @@ fn http(port: u16, method: &str, path: &str, host: &str) -> (u16, Vec<u8>) {
     (code, body)
 }
 
+/// What `trace scene.rt -o NAME --width W --height H` writes in `dir`, read back.
+fn rendered(dir: &Path, name: &str, (width, height): (u32, u32)) -> trace::Film {
+    let out = Command::new(env!("CARGO_BIN_EXE_trace"))
+        .args(["scene.rt", "-o", name])
+        .args([
+            "--width",
+            &width.to_string(),
+            "--height",
+            &height.to_string(),
+        ])
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    trace::Film::read(&dir.join(name)).unwrap()
+}
+
 fn state(s: &Value) -> &str {
     s["state"].as_str().unwrap_or("")
 }
@@ -180,25 +210,7 @@ fn the_page_s_picture_is_the_render_and_follows_saves_and_errors() {
 
     // The picture served is the picture `trace` renders with the same settings.
     let shown = watch.picture(&dir);
-    let out = Command::new(env!("CARGO_BIN_EXE_trace"))
-        .args([
-            "scene.rt",
-            "-o",
-            "reference.png",
-            "--width",
-            "64",
-            "--height",
-            "48",
-        ])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let reference = trace::Film::read(&dir.join("reference.png")).unwrap();
+    let reference = rendered(&dir, "reference.png", (64, 48));
     assert_eq!((shown.width, shown.height), (64, 48));
     assert_eq!(shown.pixels, reference.pixels);
     assert_eq!(centre(&shown), [255, 0, 0]);
@@ -501,18 +513,7 @@ impl DevTools {
 
     /// The page once `done` says so (within a minute).
     fn wait(&mut self, what: &str, done: impl Fn(&Value) -> bool) -> Value {
-        let start = Instant::now();
-        loop {
-            let p = self.page();
-            if done(&p) {
-                return p;
-            }
-            assert!(
-                start.elapsed() < Duration::from_secs(60),
-                "waited a minute for the page to show {what}: {p}"
-            );
-            std::thread::sleep(Duration::from_millis(50));
-        }
+        poll(&format!("the page to show {what}"), || self.page(), done)
     }
 }
 
@@ -682,25 +683,7 @@ fn tev_is_sent_the_picture_as_its_protocol_says() {
     assert_eq!(at, body.len());
     // Then tiles of each channel: read until every pixel holds the finished picture, the
     // linear values `trace` writes to an EXR with the same settings.
-    let out = Command::new(env!("CARGO_BIN_EXE_trace"))
-        .args([
-            "scene.rt",
-            "-o",
-            "reference.exr",
-            "--width",
-            "150",
-            "--height",
-            "40",
-        ])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let reference = trace::Film::read(&dir.join("reference.exr")).unwrap();
+    let reference = rendered(&dir, "reference.exr", (150, 40));
     let mut image = vec![[f32::NAN; 3]; 150 * 40];
     let start = Instant::now();
     while image != reference.pixels {
