@@ -99,6 +99,8 @@ pub struct LoadError {
     pub sources: SourceMap,
     /// Every file the scene read before it failed, the scene first (see [`Loaded::files`]).
     pub files: Vec<std::path::PathBuf>,
+    /// The files it looked for in vain (see [`Loaded::missing`]).
+    pub missing: Vec<std::path::PathBuf>,
 }
 
 impl std::fmt::Display for LoadError {
@@ -124,6 +126,10 @@ pub struct Loaded {
     /// fonts, data files, and files whose existence it asked about (what `trace watch`
     /// watches).
     pub files: Vec<std::path::PathBuf>,
+    /// Where each file the scene looked for and did not find would stand in its folder
+    /// (`file_exists` of a missing file, an include found only as `NAME.inc`): one appearing
+    /// there changes what the scene reads, so `trace watch` watches these too.
+    pub missing: Vec<std::path::PathBuf>,
 }
 
 /// Errors of the whole pipeline.
@@ -139,7 +145,7 @@ pub enum Error {
     },
     /// The scene is invalid or outside the subset.
     #[error("{0}")]
-    Scene(#[from] LoadError),
+    Scene(#[from] Box<LoadError>),
     /// The thread pool could not be built.
     #[error("cannot start worker threads: {0}")]
     Threads(#[from] rayon::ThreadPoolBuildError),
@@ -187,11 +193,14 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
         pigment_function: scene::pigment_function,
         object_query: scene::object_query,
     };
-    let mut read = Vec::new();
-    let outcome = eval::evaluate(&mut sources, file, options, services, &mut read);
+    let mut seen = eval::FilesSeen::default();
+    let outcome = eval::evaluate(&mut sources, file, options, services, &mut seen);
     let scene_file = path.canonicalize().unwrap_or_else(|_| path.to_path_buf());
-    read.retain(|f| *f != scene_file);
-    let files = std::iter::once(path.to_path_buf()).chain(read).collect();
+    seen.read.retain(|f| *f != scene_file);
+    let files = std::iter::once(path.to_path_buf())
+        .chain(seen.read)
+        .collect();
+    let missing = seen.missing;
     match outcome {
         Ok(evaluated) => Ok(Loaded {
             scene: evaluated.scene,
@@ -203,12 +212,14 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
             debug_output: evaluated.debug_output,
             sources_key: sources.key(),
             files,
+            missing,
         }),
-        Err(diagnostic) => Err(Error::Scene(LoadError {
+        Err(diagnostic) => Err(Error::Scene(Box::new(LoadError {
             diagnostic,
             sources,
             files,
-        })),
+            missing,
+        }))),
     }
 }
 

@@ -180,15 +180,23 @@ pub struct Services {
     pub object_query: ObjectQueryMaker,
 }
 
-/// Evaluates the file `file` of `sources` into a scene. `read` receives every other file the
-/// scene read (includes, images, meshes, fonts, data files, each once), whether or not it
-/// loads.
+/// The files a load read besides the scene, and those it looked for in vain.
+#[derive(Debug, Default)]
+pub struct FilesSeen {
+    /// Includes, images, meshes, fonts, data files: each once, in the order first read.
+    pub read: Vec<std::path::PathBuf>,
+    /// Where each name looked for and not found would stand in the scene's folder.
+    pub missing: Vec<std::path::PathBuf>,
+}
+
+/// Evaluates the file `file` of `sources` into a scene. `seen` receives the files the scene
+/// read and looked for, whether or not it loads.
 pub fn evaluate(
     sources: &mut SourceMap,
     file: FileId,
     options: &LoadOptions,
     services: Services,
-    read: &mut Vec<std::path::PathBuf>,
+    seen: &mut FilesSeen,
 ) -> Result<Evaluated> {
     let scene_dir = sources
         .file(file)
@@ -204,7 +212,10 @@ pub fn evaluate(
         ev.set(name.clone(), value::Value::Float(*value));
     }
     let outcome = ev.read_scene(file);
-    *read = ev.sandbox.found();
+    *seen = FilesSeen {
+        read: ev.sandbox.found(),
+        missing: ev.sandbox.missing(),
+    };
     options.lists.finish_load(outcome.is_ok());
     outcome?;
     ev.finish()

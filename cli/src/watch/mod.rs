@@ -314,13 +314,12 @@ impl Session {
         if cancel.is_cancelled() {
             return;
         }
-        let files = match &loaded {
-            Ok(l) => l.files.clone(),
-            Err(Error::Scene(e)) => e.files.clone(),
-            Err(_) => vec![o.scene.clone()],
+        let (files, missing) = match &loaded {
+            Ok(l) => (l.files.clone(), l.missing.clone()),
+            Err(Error::Scene(e)) => (e.files.clone(), e.missing.clone()),
+            Err(_) => (vec![o.scene.clone()], Vec::new()),
         };
-        *lock(&self.watched) = files
-            .iter()
+        *lock(&self.watched) = (files.iter().chain(&missing))
             .map(|f| {
                 let known = before.iter().find(|(p, _)| p == f).map(|(_, s)| *s);
                 (f.clone(), known.unwrap_or_else(|| stamp(f)))

@@ -94,6 +94,11 @@ fn a_load_lists_every_file_it_read_even_when_it_fails() {
     .unwrap();
     let loaded = trace::load(&scene, &trace::LoadOptions::default()).unwrap();
     assert_eq!(names(&loaded.files), ["scene.rt", "a.inc", "b.inc"]);
+    assert_eq!(
+        loaded.missing,
+        [dir.join("c.inc")],
+        "looked for in the scene's folder"
+    );
     std::fs::write(&scene, "#include \"b.inc\"\nsphere { 0, Nothing }\n").unwrap();
     match trace::load(&scene, &trace::LoadOptions::default()) {
         Err(trace::Error::Scene(e)) => assert_eq!(names(&e.files), ["scene.rt", "b.inc"]),

@@ -276,6 +276,28 @@ fn a_saved_include_renders_again() {
 }
 
 #[test]
+fn a_file_the_scene_looked_for_renders_again_when_it_appears() {
+    let dir = scratch("missing");
+    save(
+        &dir.join("scene.rt"),
+        &format!(
+            "#declare Colour = rgb <1, 0, 0>;\n\
+             #if (file_exists(\"extra.inc\")) #include \"extra.inc\" #end\n{}",
+            scene("pigment", "Colour")
+        ),
+    );
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "32", "--height", "24"]);
+    let first = watch.wait("the first render", |s| state(s) == "done");
+    assert_eq!(centre(&watch.picture(&dir)), [255, 0, 0]);
+    save(&dir.join("extra.inc"), "#declare Colour = rgb <0, 0, 1>;\n");
+    watch.wait("the render after the file appeared", |s| {
+        state(s) == "done" && s["id"].as_u64() > first["id"].as_u64()
+    });
+    assert_eq!(centre(&watch.picture(&dir)), [0, 0, 255]);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
 fn a_flood_of_saves_ends_with_the_last_one_rendered() {
     let dir = scratch("flood");
     let path = dir.join("scene.rt");

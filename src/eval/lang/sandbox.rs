@@ -22,6 +22,9 @@ pub(crate) struct Sandbox {
     roots: Vec<PathBuf>,
     /// Every file found, in the order first found (what a scene read, for `trace watch`).
     found: std::cell::RefCell<Vec<PathBuf>>,
+    /// Where each name looked for and not found would be in the scene's folder (a file that
+    /// appears there changes what the scene reads).
+    missing: std::cell::RefCell<Vec<PathBuf>>,
 }
 
 /// Why a name gave no readable file.
@@ -52,6 +55,7 @@ impl Sandbox {
             search,
             roots,
             found: Default::default(),
+            missing: Default::default(),
         }
     }
 
@@ -60,15 +64,27 @@ impl Sandbox {
         self.found.borrow().clone()
     }
 
+    /// Where the names looked for and not found would stand in the scene's folder, each once.
+    pub(crate) fn missing(&self) -> Vec<PathBuf> {
+        self.missing.borrow().clone()
+    }
+
     /// The canonical path of the file `name` names: the first folder that has it decides.
     pub(crate) fn find(&self, name: &str) -> Result<PathBuf, Refusal> {
-        let (folder, found) = self
+        let Some((folder, found)) = self
             .search
             .iter()
             .map(|dir| dir.join(name))
             .enumerate()
             .find(|(_, p)| p.is_file())
-            .ok_or(Refusal::NotFound)?;
+        else {
+            let mut missing = self.missing.borrow_mut();
+            let there = self.search[0].join(name);
+            if !missing.contains(&there) {
+                missing.push(there);
+            }
+            return Err(Refusal::NotFound);
+        };
         let canonical = found.canonicalize().map_err(|_| Refusal::NotFound)?;
         // A plain name found in a folder the user gave (not the scene's own) may be a link
         // placed there by whoever set the folder up (Debian links POV-Ray's fonts into its
