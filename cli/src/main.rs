@@ -149,8 +149,8 @@ struct WatchArgs {
     /// Scene file (.rt or .pov).
     scene: PathBuf,
     /// Port to serve the page on [default: a free one, printed].
-    #[arg(long, default_value_t = 0)]
-    port: u16,
+    #[arg(long)]
+    port: Option<u16>,
     /// Address to serve on [default: 127.0.0.1, this machine only]. Another address lets
     /// other machines see the page and the picture.
     #[arg(long, value_name = "ADDRESS")]
@@ -659,7 +659,7 @@ fn watch(args: WatchArgs) -> Result<(), Failure> {
             .bind
             .unwrap_or(std::net::IpAddr::V4(std::net::Ipv4Addr::LOCALHOST)),
         bind_given: args.bind.is_some(),
-        port: args.port,
+        port: args.port.unwrap_or(0),
         settings: watch::Settings {
             width: args.width,
             height: args.height,
@@ -678,10 +678,8 @@ fn watch(args: WatchArgs) -> Result<(), Failure> {
         quiet: args.quiet,
         tev: args.tev,
     };
-    watch::run(options).map_err(|e| Failure {
-        message: format!("error: {e}"),
-        code: 2,
-    })
+    // (A scene that cannot be read, an address that cannot be served: I/O failures.)
+    watch::run(options).map_err(io_failure)
 }
 
 fn merge(output: &std::path::Path, parts: &[PathBuf]) -> Result<(), Failure> {
