@@ -329,6 +329,47 @@ fn a_flood_of_saves_ends_with_the_last_one_rendered() {
 }
 
 #[test]
+fn a_save_cancels_the_render_in_progress_at_once() {
+    let dir = scratch("cancel");
+    let path = dir.join("scene.rt");
+    save(&path, &scene("pigment", "<1, 0, 0>"));
+    // Every pixel supersampled to depth 9 (up to 1024 samples each): minutes of work.
+    let watch = Watch::start(
+        &dir,
+        &[
+            "scene.rt",
+            "--width",
+            "320",
+            "--height",
+            "240",
+            "--aa",
+            "0",
+            "--aa-depth",
+            "9",
+        ],
+    );
+    let first = watch.wait("the anti-aliasing pass", |s| s["pass"] == "anti-aliasing");
+    let saved = Instant::now();
+    save(&path, &scene("pigment", "<0, 0, 1>"));
+    // The new render's own pictures come while the old one would still be running.
+    let second = watch.wait("the new render's pictures", |s| {
+        s["picture_id"].as_u64() > first["id"].as_u64() && s["pass"] != "quick"
+    });
+    assert!(
+        saved.elapsed() < Duration::from_secs(20),
+        "the new render began {:?} after the save",
+        saved.elapsed()
+    );
+    assert_ne!(
+        state(&second),
+        "done",
+        "the second render is as long: still going"
+    );
+    assert_eq!(centre(&watch.picture(&dir)), [0, 0, 255]);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
 fn a_scene_that_never_finishes_loading_stops_at_its_budget() {
     let dir = scratch("endless");
     let path = dir.join("scene.rt");
