@@ -47,7 +47,7 @@ pub trait ObjectQuery: Send + Sync {
 }
 
 /// The whole scene.
-#[derive(Clone)]
+#[derive(Clone, PartialEq)]
 pub struct Scene {
     /// The camera (POV-Ray's default camera when the scene has none).
     pub camera: Camera,
@@ -170,7 +170,7 @@ pub enum FogKind {
 }
 
 /// `global_settings` and version-dependent behaviour.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     /// How working values become linear output values.
     pub gamma: Gamma,
@@ -203,7 +203,7 @@ pub enum Gamma {
 }
 
 /// A perspective or orthographic camera, resolved to its four vectors (POV-Ray §4.2 applied).
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Camera {
     /// Projection.
     pub projection: Projection,
@@ -314,7 +314,7 @@ impl Projection {
 }
 
 /// A point light. `.rt`: `light_source { <x, y, z>, color rgb <r, g, b> }`.
-#[derive(Clone)]
+#[derive(Clone, PartialEq)]
 pub struct Light {
     /// World position (after the light's transformations).
     pub position: DVec3,
@@ -431,7 +431,7 @@ pub struct AreaLight {
 }
 
 /// A renderable object: a shape, where it is, and what it is made of.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
@@ -461,7 +461,7 @@ pub struct Object {
 }
 
 /// The parts of an object that few objects have.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ObjectExtras {
     /// `interior_texture`: the surface seen from inside (where the normal faces away from
     /// the ray), if it differs.
@@ -521,7 +521,7 @@ impl Object {
 }
 
 /// An object's `bounded_by`.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Bounds {
     /// The bounding shapes.
     pub shapes: Vec<Bound>,
@@ -530,7 +530,7 @@ pub struct Bounds {
 }
 
 /// A bounding shape of `bounded_by`, placed in the world.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Bound {
     /// The shape.
     pub shape: Shape,
@@ -539,7 +539,7 @@ pub struct Bound {
 }
 
 /// Analytic shapes, in object space.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     /// `sphere { centre, radius }`.
     Sphere {

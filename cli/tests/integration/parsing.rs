@@ -793,3 +793,27 @@ fn mesh2_lists_from_the_cache_are_the_lists_read_again() {
     );
     assert_eq!(cached, load(fewer, None).unwrap_err());
 }
+
+/// The IR compares as data: the same text loads to equal scenes, and a camera move changes
+/// the camera and nothing else (what a rebuild that keeps unchanged objects asks).
+#[test]
+fn the_same_text_loads_to_equal_scenes_and_a_camera_move_only_moves_the_camera() {
+    let text = |x: f64| {
+        format!(
+            "camera {{ location <{x}, 1, -5> look_at 0 }}\n\
+             light_source {{ <4, 8, -5>, rgb 1 area_light x, z, 2, 2 }}\n\
+             #declare T = texture {{ pigment {{ checker rgb 1, rgb 0 scale 0.5 }} finish {{ phong 0.5 }} }}\n\
+             sphere {{ 0, 1 texture {{ T }} interior {{ ior 1.5 }} }}\n\
+             box {{ -1, 1 translate x*3 pigment {{ rgb <1, 0, 0> }} bounded_by {{ sphere {{ 3*x, 2 }} }} }}\n\
+             plane {{ y, -1 pigment {{ granite }} normal {{ bumps 0.3 }} }}\n\
+             mesh2 {{ vertex_vectors {{ 3, <0,0,0>, <1,0,0>, <0,1,0> }} face_indices {{ 1, <0,1,2> }} }}\n"
+        )
+    };
+    let a = crate::load_text(&text(0.0), 64, 48);
+    let b = crate::load_text(&text(0.0), 64, 48);
+    assert!(a == b, "two loads of one text");
+    let moved = crate::load_text(&text(0.5), 64, 48);
+    assert!(moved.objects == a.objects && moved.lights == a.lights);
+    assert!(moved.settings == a.settings);
+    assert!(moved.camera != a.camera && moved != a);
+}
