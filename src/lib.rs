@@ -259,17 +259,16 @@ impl BuildCache {
     }
 }
 
-/// Builds a scene for rendering on `threads` worker threads (`None`: one per core), freeing
-/// the IR as it goes; meshes come from `cache` where it has them, and the cache keeps this
-/// build's meshes for the next.
+/// Builds a scene for rendering on `threads` worker threads (`None`: one per core); meshes
+/// come from `cache` where it has them, and the cache keeps this build's meshes for the next.
 pub fn prepare(
-    scene: ir::Scene,
+    scene: &ir::Scene,
     threads: Option<usize>,
     cache: &BuildCache,
 ) -> Result<Prepared, Error> {
     let pool = render::thread_pool(threads)?;
     let start = std::time::Instant::now();
-    let built = pool.install(|| scene::Scene::build_owned(scene, Some(&cache.0)));
+    let built = pool.install(|| scene::Scene::build_cached(scene, &cache.0));
     Ok(Prepared {
         built,
         pool,
@@ -278,6 +277,12 @@ pub fn prepare(
 }
 
 impl Prepared {
+    /// Puts the camera of `scene` in place, where `scene` is the IR this was prepared from
+    /// but for its camera ([`ir::Scene::same_but_camera`]): a camera edit builds nothing else.
+    pub fn set_camera(&mut self, scene: &ir::Scene) {
+        self.built.set_camera(scene);
+    }
+
     /// Renders into a film held in memory, on the prepared threads (`options.threads` is not
     /// read); the statistics' build time is the preparation's.
     pub fn render(&self, options: &RenderOptions) -> Rendered {

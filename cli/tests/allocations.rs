@@ -84,8 +84,8 @@ fn renders_allocate_per_block_not_per_ray() {
         };
         let loaded = trace::load(&examples.join(format!("{name}.rt")), &options)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
-        let prepared =
-            trace::prepare(loaded.scene, Some(1), &trace::BuildCache::default()).expect("a thread");
+        let prepared = trace::prepare(&loaded.scene, Some(1), &trace::BuildCache::default())
+            .expect("a thread");
         let (small, _) = allocations(&prepared, 64, 48);
         let (large, samples) = allocations(&prepared, 128, 96);
         let added_blocks = 4 * 3 - 2 * 2;

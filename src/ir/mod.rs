@@ -169,6 +169,35 @@ pub enum FogKind {
     },
 }
 
+impl Scene {
+    /// Whether `other` is this scene but for its camera (every other part equal): the
+    /// render-ready scene built from one serves the other with its camera swapped.
+    pub fn same_but_camera(&self, other: &Scene) -> bool {
+        // (Every field named, so that a new one is not forgotten here.)
+        let Scene {
+            camera: _,
+            lights,
+            objects,
+            background,
+            background_alpha,
+            sky_sphere,
+            fogs,
+            rainbows,
+            atmosphere,
+            settings,
+        } = self;
+        *lights == other.lights
+            && *background == other.background
+            && *background_alpha == other.background_alpha
+            && *sky_sphere == other.sky_sphere
+            && *fogs == other.fogs
+            && *rainbows == other.rainbows
+            && *atmosphere == other.atmosphere
+            && *settings == other.settings
+            && *objects == other.objects
+    }
+}
+
 /// `global_settings` and version-dependent behaviour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {

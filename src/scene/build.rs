@@ -273,10 +273,59 @@ fn mesh_print(mesh: &ir::Mesh) -> u128 {
     u128::from(m.0) << 64 | u128::from(m.1)
 }
 
+/// The camera's part of the render-ready scene: all a camera edit changes.
+struct View {
+    camera: Camera,
+    blur: Option<super::blur::Blur>,
+    normal: Option<Normal>,
+    mesh_camera: Option<super::meshcam::MeshCamera>,
+}
+
+impl View {
+    fn of(ir: &ir::Scene) -> View {
+        let c = &ir.camera;
+        View {
+            camera: Camera {
+                projection: c.projection,
+                location: c.location,
+                direction: c.direction,
+                right: c.right,
+                up: c.up,
+            },
+            blur: c
+                .blur
+                .as_ref()
+                .map(|b| super::blur::Blur::new(b, c.direction, c.up)),
+            normal: c
+                .normal
+                .as_deref()
+                .map(|n| Normal::new(n, pattern_defaults(ir))),
+            mesh_camera: c.mesh.as_ref().map(super::meshcam::MeshCamera::new),
+        }
+    }
+}
+
 impl Scene {
+    /// Puts the camera of `ir` in place of this scene's, for a scene built from an IR equal to
+    /// `ir` but for its camera (nothing else of the render-ready scene depends on the
+    /// camera): a camera edit builds nothing else.
+    pub fn set_camera(&mut self, ir: &ir::Scene) {
+        let view = View::of(ir);
+        self.camera = view.camera;
+        self.blur = view.blur;
+        self.camera_normal = view.normal;
+        self.mesh_camera = view.mesh_camera;
+    }
+
     /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
         let (scene, bounds) = Scene::build_objects(ir, None);
+        scene.with_index(bounds)
+    }
+
+    /// Like [`Scene::build`], with meshes from `cache` where it has them.
+    pub fn build_cached(ir: &ir::Scene, cache: &MeshCache) -> Scene {
+        let (scene, bounds) = Scene::build_objects(ir, Some(cache));
         scene.with_index(bounds)
     }
 
@@ -400,24 +449,12 @@ impl Scene {
                 (object, bounds)
             })
             .unzip();
-        let c = &ir.camera;
+        let view = View::of(ir);
         let mut scene = Scene {
-            camera: Camera {
-                projection: c.projection,
-                location: c.location,
-                direction: c.direction,
-                right: c.right,
-                up: c.up,
-            },
-            blur: c
-                .blur
-                .as_ref()
-                .map(|b| super::blur::Blur::new(b, c.direction, c.up)),
-            camera_normal: c
-                .normal
-                .as_deref()
-                .map(|n| Normal::new(n, pattern_defaults(ir))),
-            mesh_camera: c.mesh.as_ref().map(super::meshcam::MeshCamera::new),
+            camera: view.camera,
+            blur: view.blur,
+            camera_normal: view.normal,
+            mesh_camera: view.mesh_camera,
             lights: ir
                 .lights
                 .iter()

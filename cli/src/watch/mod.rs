@@ -140,6 +140,8 @@ struct Status {
     debug: String,
     /// Seconds from the change seen to the end of each step.
     timings: Vec<(&'static str, f64)>,
+    /// Whether the render-ready scene was built anew (not the last one with another camera).
+    built: bool,
     files: Vec<PathBuf>,
     settings: Settings,
     /// Bumped at every change, so the event stream knows when to speak.
@@ -180,6 +182,8 @@ pub struct Session {
     /// What the last build keeps for the next (its meshes), and the last load (its big
     /// mesh2 lists).
     cache: trace::BuildCache,
+    /// The last scene rendered and its render-ready form (used by the renderer only).
+    last: Mutex<Option<(trace::ir::Scene, trace::Prepared)>>,
     lists: trace::ListCache,
 }
 
@@ -204,6 +208,7 @@ impl Session {
                 warnings: Vec::new(),
                 debug: String::new(),
                 timings: Vec::new(),
+                built: false,
                 files: vec![scene.clone()],
                 settings: settings.clone(),
                 seq: 0,
@@ -219,6 +224,7 @@ impl Session {
             watched: Mutex::new(vec![(scene.clone(), stamp(&scene))]),
             png: Mutex::new((String::new(), Arc::new(Vec::new()))),
             cache: trace::BuildCache::default(),
+            last: Mutex::new(None),
             lists: trace::ListCache::default(),
             options,
         }
@@ -353,9 +359,23 @@ impl Session {
             s.files = files;
             s.timings = vec![("parse", parsed)];
         });
-        let prepared =
-            match trace::prepare(loaded.scene, o.threads.map(|t| t as usize), &self.cache) {
-                Ok(p) => p,
+        // The last render's scene serves again where only the camera changed; anything else
+        // builds it anew (its meshes from the cache).
+        let mut last = lock(&self.last);
+        let scene = loaded.scene;
+        let reused = last
+            .as_ref()
+            .is_some_and(|(old, _)| old.same_but_camera(&scene));
+        if reused {
+            let (old, prepared) = last.as_mut().expect("the last scene");
+            if old.camera != scene.camera {
+                prepared.set_camera(&scene);
+            }
+            *old = scene;
+        } else {
+            *last = None;
+            match trace::prepare(&scene, o.threads.map(|t| t as usize), &self.cache) {
+                Ok(p) => *last = Some((scene, p)),
                 Err(e) => {
                     let message = error_message(&e);
                     self.update(|s| {
@@ -364,8 +384,14 @@ impl Session {
                     });
                     return;
                 }
-            };
-        self.update(|s| s.timings.push(("build", at.elapsed().as_secs_f64())));
+            }
+        }
+        let prepared = &last.as_ref().expect("a prepared scene").1;
+        let step = if reused { "camera" } else { "build" };
+        self.update(|s| {
+            s.built = !reused;
+            s.timings.push((step, at.elapsed().as_secs_f64()));
+        });
         let (w, h) = (settings.width, settings.height);
         let options = |width, height, antialias, progress, preview| RenderOptions {
             width,
@@ -525,7 +551,7 @@ impl Session {
             .collect();
         let st = &s.settings;
         format!(
-            "{{\"id\":{},\"state\":\"{}\",\"pass\":\"{}\",\"progress\":{progress:.4},\"picture\":{},\"picture_id\":{},\"width\":{},\"height\":{},\"settings\":{{\"width\":{},\"height\":{},\"aa\":{},\"depth\":{},\"clock\":{}}},\"errors\":{},\"warnings\":{},\"debug\":{},\"timings\":{{{}}},\"files\":[{}],\"scene\":{}}}",
+            "{{\"id\":{},\"state\":\"{}\",\"pass\":\"{}\",\"progress\":{progress:.4},\"picture\":{},\"picture_id\":{},\"width\":{},\"height\":{},\"settings\":{{\"width\":{},\"height\":{},\"aa\":{},\"depth\":{},\"clock\":{}}},\"errors\":{},\"warnings\":{},\"debug\":{},\"timings\":{{{}}},\"built\":{},\"files\":[{}],\"scene\":{}}}",
             s.id,
             s.phase.name(),
             s.pass,
@@ -548,6 +574,7 @@ impl Session {
             messages(&s.warnings),
             json_string(&s.debug),
             timings.join(","),
+            s.built,
             files.join(","),
             json_string(&self.options.scene.display().to_string()),
         )

@@ -31,9 +31,14 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-/// Writes a file as an editor saves it: a new text, a new modification time.
+/// Writes a file as an editor saves it: the new text written beside it, then renamed into
+/// place, so the watcher never reads half a file (a save written in place can be seen half
+/// done, rendered, and rendered again when finished: a test waiting for the first render
+/// after it would see the half one).
 fn save(path: &Path, text: &str) {
-    std::fs::write(path, text).unwrap();
+    let beside = path.with_extension("saving");
+    std::fs::write(&beside, text).unwrap();
+    std::fs::rename(&beside, path).unwrap();
 }
 
 /// A running `trace watch`, stopped when dropped.
@@ -240,6 +245,39 @@ fn the_page_s_picture_is_the_render_and_follows_saves_and_errors() {
     });
     assert_eq!(fixed["errors"].as_array().map(Vec::len), Some(0));
     assert_eq!(centre(&watch.picture(&dir)), [0, 0, 255]);
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn a_camera_move_builds_nothing_else_and_gives_the_render_of_the_moved_camera() {
+    let dir = scratch("camera");
+    let path = dir.join("scene.rt");
+    let text = |camera: &str| {
+        scene("pigment", "<1, 0, 0>").replace("location <0, 0, -5> look_at 0", camera)
+            + "plane { y, -1.5 pigment { checker rgb 1, rgb 0.2 } }\n"
+    };
+    save(&path, &text("location <0, 0, -5> look_at 0"));
+    let watch = Watch::start(&dir, &["scene.rt", "--width", "48", "--height", "36"]);
+    let first = watch.wait("the first render", |s| state(s) == "done");
+    assert_eq!(first["built"], true);
+    save(&path, &text("location <1, 2, -5> look_at 0"));
+    let moved = watch.wait("the moved camera's render", |s| {
+        state(s) == "done" && s["id"].as_u64() > first["id"].as_u64()
+    });
+    assert_eq!(moved["built"], false, "only the camera changed: {moved}");
+    assert_eq!(
+        watch.picture(&dir).pixels,
+        rendered(&dir, "moved.png", (48, 36)).pixels
+    );
+    // Anything else (a light) builds anew.
+    save(
+        &path,
+        &(text("location <1, 2, -5> look_at 0") + "light_source { <-3, 3, -3>, rgb 0.5 }\n"),
+    );
+    let lit = watch.wait("the render with another light", |s| {
+        state(s) == "done" && s["id"].as_u64() > moved["id"].as_u64()
+    });
+    assert_eq!(lit["built"], true);
     let _ = std::fs::remove_dir_all(dir);
 }
 
