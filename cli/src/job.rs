@@ -18,6 +18,8 @@ pub struct Job {
     pub sampled_lights: bool,
     /// Method 3 draws focal blur's lens points from each pixel's sequence.
     pub sampled_blur: bool,
+    /// Radiosity's ground truth with this many paths a pixel.
+    pub radiosity_reference: Option<u32>,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -52,6 +54,8 @@ pub struct Own {
     pub sampled_lights: bool,
     /// `--focal-blur sampled`.
     pub sampled_blur: bool,
+    /// `--radiosity-reference N`.
+    pub radiosity_reference: Option<u32>,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -235,6 +239,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         antialias,
         sampled_lights: own.sampled_lights,
         sampled_blur: own.sampled_blur,
+        radiosity_reference: own.radiosity_reference,
         threads: own.threads.or(pov.threads),
         include_paths,
         declares,

@@ -77,6 +77,12 @@ struct RenderArgs {
     /// `sampled` (method 3 only), lens points from each pixel's sample sequence.
     #[arg(long, value_enum, default_value_t = Sampling::Pov)]
     focal_blur: Sampling,
+    /// Radiosity's ground truth instead of POV-Ray's cache: each pixel's centre ray traced N
+    /// times, every radiosity query answered by one ray in a random direction; the average
+    /// converges on what POV-Ray's radiosity estimates (docs/radiosity.md). Slow; for
+    /// measuring, not for pictures.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    radiosity_reference: Option<u32>,
     /// Render only this rectangle of the image, X0,Y0,X1,Y1 in pixels (ends exclusive): a
     /// part of the image, with the same pixels as the whole render, that `trace merge`
     /// assembles with the other parts (POV-Ray's +SC +EC +SR +ER map onto it).
@@ -428,6 +434,7 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
         aa_method: args.aa_method,
         sampled_lights: args.area_lights == Sampling::Sampled,
         sampled_blur: args.focal_blur == Sampling::Sampled,
+        radiosity_reference: args.radiosity_reference,
         threads: args.threads,
         include_paths: args.include_path.clone(),
         declares: args.declare.clone(),
@@ -555,6 +562,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         antialias: job.antialias,
         sampled_lights: job.sampled_lights,
         sampled_blur: job.sampled_blur,
+        radiosity_reference: job.radiosity_reference,
         threads: job.threads.map(|t| t as usize),
         region: Some(region),
         progress: Some(progress.clone()),
@@ -765,6 +773,24 @@ fn stats_block(
             c.media_intervals,
             c.media_samples,
             c.media_samples as f64 / c.media_intervals as f64
+        );
+    }
+    // (Radiosity's lines, only for a scene with radiosity.)
+    let p = &r.pretrace;
+    if p.passes > 0 {
+        let _ = writeln!(
+            out,
+            "Radiosity pretrace: {} passes, {} points, {} samples of {} rays in {:.3} s",
+            p.passes,
+            p.points,
+            p.samples,
+            p.rays,
+            p.time.as_secs_f64()
+        );
+        let _ = writeln!(
+            out,
+            "Radiosity final:    {} samples of {} rays, {} reused",
+            r.radiosity_samples, r.radiosity_rays, r.radiosity_reused
         );
     }
     let _ = writeln!(out, "{line}");

@@ -9,7 +9,7 @@ use trace::film::{Raster, Region};
 /// only with parts of the same key.
 pub fn key(sources: u64, job: &Job, frame: &Frame) -> String {
     let settings = format!(
-        "{} {} {:?} {} {} {:?} {:?} {} {} {:?}",
+        "{} {} {:?} {} {} {:?} {:?} {} {} {:?}{}",
         job.width,
         job.height,
         job.antialias,
@@ -19,7 +19,10 @@ pub fn key(sources: u64, job: &Job, frame: &Frame) -> String {
         job.declares,
         job.alpha,
         job.bits,
-        job.aovs
+        job.aovs,
+        // (Added only when given, so that keys of other parts stay as they were.)
+        job.radiosity_reference
+            .map_or(String::new(), |n| format!(" reference {n}"))
     );
     let mut h = sources;
     for b in settings.bytes() {

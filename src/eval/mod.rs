@@ -335,6 +335,7 @@ impl<'a> Evaluator<'a> {
                 lights: Vec::new(),
                 objects: Vec::new(),
                 next_medium: 0,
+                reuse_given: (false, false, None),
                 next_light_group: 0,
                 default_bump_size: material::DEFAULT_BUMP_SIZE,
                 background: Rgb::ZERO,
@@ -431,6 +432,12 @@ impl<'a> Evaluator<'a> {
         {
             return Diagnostic::error(
                 "a second colour cannot stand here: a pigment takes one colour, as its first item (POV-Ray refuses this too)",
+                node.word_span,
+            );
+        }
+        if node.word == "radiosity" && context != "global_settings" {
+            return Diagnostic::error(
+                "unsupported: an object's `radiosity { importance … }` (not supported by trace yet; radiosity itself goes in global_settings)",
                 node.word_span,
             );
         }

@@ -219,6 +219,83 @@ pub struct Settings {
     pub number_of_waves: u8,
     /// `irid_wavelength` (default <0.70, 0.52, 0.48>): the wavelengths `irid` uses.
     pub irid_wavelength: Rgb,
+    /// `radiosity { … }`: POV-Ray 3.7's diffuse interreflection, if the scene turns it on.
+    pub radiosity: Option<Radiosity>,
+}
+
+/// `global_settings { radiosity { … } }`: the settings of POV-Ray 3.7's radiosity (its
+/// irradiance cache), POV-Ray's defaults filled in and its consistency rules applied.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Radiosity {
+    /// `adc_bailout` (default 0.01): the bailout of the rays a sample shoots.
+    pub adc_bailout: f64,
+    /// `always_sample` (default off): whether the final render takes new samples where
+    /// it found some but fewer than `nearest_count`.
+    pub always_sample: bool,
+    /// `brightness` (default 1): multiplies the light gathered.
+    pub brightness: f64,
+    /// `count` (default 35): rays a sample shoots (halved at each deeper bounce, at least 5).
+    pub count: u32,
+    /// `count`'s second value (default 1600, at least `count`): the directions they are drawn
+    /// from, in turn.
+    pub directions: u32,
+    /// `error_bound` (default 1.8): how far a sample is reused.
+    pub error_bound: f64,
+    /// `gray_threshold` (default 0): how much of the light gathered is made grey.
+    pub gray_threshold: f64,
+    /// `low_error_factor` (default 0.5): `error_bound`'s factor during the pretrace.
+    pub low_error_factor: f64,
+    /// `max_sample` (default none, any value not above 0): the brightest a ray's light may be.
+    pub max_sample: f64,
+    /// `maximum_reuse` (default 0.2): the largest a sample's reach may be, over its distance
+    /// from the camera.
+    pub maximum_reuse: f64,
+    /// `minimum_reuse` (default 0.015): the smallest.
+    pub minimum_reuse: f64,
+    /// `nearest_count` (default 5, 1 to 20): samples a point needs to reuse, not sample.
+    pub nearest_count: u32,
+    /// `nearest_count`'s second value (default 0: off): the samples at which the adaptive
+    /// pretrace stops refining part of the image.
+    pub pretrace_count: u32,
+    /// `recursion_limit` (default 2, 1 to 20): bounces of diffuse light.
+    pub recursion_limit: u32,
+    /// `media` (default off): whether the rays of a sample see media, fog and rainbows.
+    pub media: bool,
+    /// `normal` (default off): whether samples see the surface's perturbed normal.
+    pub normal: bool,
+    /// `pretrace_start` (default 0.08): the first pretrace pass's grid, over the image size.
+    pub pretrace_start: f64,
+    /// `pretrace_end` (default 0.04): the last pass's.
+    pub pretrace_end: f64,
+    /// Whether `ambient` still lights surfaces (scenes before `#version 3.7`); from 3.7
+    /// only `emission` does once radiosity is on.
+    pub keeps_ambient: bool,
+}
+
+impl Default for Radiosity {
+    fn default() -> Radiosity {
+        Radiosity {
+            adc_bailout: 0.01,
+            always_sample: false,
+            brightness: 1.0,
+            count: 35,
+            directions: 1600,
+            error_bound: 1.8,
+            gray_threshold: 0.0,
+            low_error_factor: 0.5,
+            max_sample: -1.0,
+            maximum_reuse: 0.2,
+            minimum_reuse: 0.015,
+            nearest_count: 5,
+            pretrace_count: 0,
+            recursion_limit: 2,
+            media: false,
+            normal: false,
+            pretrace_start: 0.08,
+            pretrace_end: 0.04,
+            keeps_ambient: false,
+        }
+    }
 }
 
 /// The working-gamma mode (POV-Ray `assumed_gamma` and `#version`).
@@ -517,6 +594,8 @@ pub struct Sight {
     /// `double_illuminate`: lit from both sides (a light behind the surface lights it as one
     /// in front, with `diffuse`).
     pub double_illuminate: bool,
+    /// `no_radiosity`: unseen by the rays radiosity samples shoot (and the rays they spawn).
+    pub no_radiosity: bool,
 }
 
 /// The lights of an object in a `light_group`.
@@ -1399,6 +1478,7 @@ impl Default for Settings {
             noise_generator: 2,
             number_of_waves: 10,
             irid_wavelength: Rgb::new(0.70, 0.52, 0.48),
+            radiosity: None,
         }
     }
 }

@@ -1129,37 +1129,10 @@ pub fn wave_sources() -> &'static [(DVec3, f64); MAX_WAVES] {
 fn pattern_rands() -> &'static [f64] {
     static RANDS: OnceLock<Vec<f64>> = OnceLock::new();
     RANDS.get_or_init(|| {
-        const N: usize = 624;
-        let mut mt = [0u32; N];
-        mt[0] = 5489;
-        for i in 1..N {
-            mt[i] = 1_812_433_253u32
-                .wrapping_mul(mt[i - 1] ^ (mt[i - 1] >> 30))
-                .wrapping_add(i as u32);
-        }
-        let mut index = N;
-        let mut out = Vec::with_capacity(4100);
-        while out.len() < 4100 {
-            if index == N {
-                for i in 0..N {
-                    let y = (mt[i] & 0x8000_0000) | (mt[(i + 1) % N] & 0x7FFF_FFFF);
-                    let mut next = mt[(i + 397) % N] ^ (y >> 1);
-                    if y & 1 != 0 {
-                        next ^= 0x9908_B0DF;
-                    }
-                    mt[i] = next;
-                }
-                index = 0;
-            }
-            let mut y = mt[index];
-            index += 1;
-            y ^= y >> 11;
-            y ^= (y << 7) & 0x9D2C_5680;
-            y ^= (y << 15) & 0xEFC6_0000;
-            y ^= y >> 18;
-            out.push(f64::from(y) / 4294967296.0);
-        }
-        out
+        crate::noise::mt19937(4100)
+            .into_iter()
+            .map(|y| f64::from(y) / 4294967296.0)
+            .collect()
     })
 }
 

@@ -2,16 +2,18 @@
 //! the work they took.
 
 use super::antialias::{self, Block};
+use super::transport::radiosity::{Gathering, Pass, Shared};
 use super::transport::{MediumStack, Tracer};
 use super::{Aov, BLOCK_SIZE, Px, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
 use crate::scene::{Rgb, Scene};
 
-/// Renders the block whose top-left pixel is (x0, y0).
+/// Renders the block whose top-left pixel is (x0, y0), with the media camera rays start in
+/// (if the same for all) and radiosity's cache after the pretrace (if the scene has it).
 pub(super) fn render_block(
     scene: &Scene,
     options: &RenderOptions,
-    camera_media: Option<MediumStack>,
+    (camera_media, radiosity): (Option<MediumStack>, Option<&Shared>),
     x0: u32,
     y0: u32,
 ) -> BlockResult {
@@ -19,6 +21,15 @@ pub(super) fn render_block(
     let x1 = (x0 + BLOCK_SIZE).min(w);
     let y1 = (y0 + BLOCK_SIZE).min(h);
     let mut tracer = Tracer::new(scene);
+    // (Radiosity: the block adds its own samples to the pretrace's, seen by it alone.)
+    let serial = (y0 / BLOCK_SIZE) * w.div_ceil(BLOCK_SIZE) + x0 / BLOCK_SIZE;
+    tracer.gathering = radiosity.map(|shared| {
+        Gathering::new(
+            shared,
+            Pass::Final,
+            super::pretrace::pool_start(serial, 255),
+        )
+    });
     counters::take(); // (this block's counts start from zero)
     let block = Block {
         scene,
@@ -27,8 +38,16 @@ pub(super) fn render_block(
         xs: x0..x1,
         ys: y0..y1,
     };
-    let (pixels, samples) = antialias::block_pixels(&block, &mut tracer);
+    let (pixels, samples) = match (radiosity, options.radiosity_reference) {
+        (Some(shared), Some(paths)) => reference_pixels(&block, &mut tracer, shared, paths),
+        _ => antialias::block_pixels(&block, &mut tracer),
+    };
+    let radiosity = tracer
+        .gathering
+        .as_ref()
+        .map_or((0, 0, 0), |g| (g.taken, g.rays, g.reused));
     BlockResult {
+        radiosity,
         x0,
         y0,
         width: x1 - x0,
@@ -39,6 +58,41 @@ pub(super) fn render_block(
         tests: counters::take(),
         samples,
     }
+}
+
+/// Radiosity's ground truth for the pixels of a block: each pixel's centre ray traced
+/// `paths` times, each time with its own stream of random directions, and averaged.
+fn reference_pixels<'a>(
+    block: &Block,
+    tracer: &mut Tracer<'a>,
+    shared: &'a Shared,
+    paths: u32,
+) -> (Vec<super::Px>, u64) {
+    let (w, h) = (block.options.width, block.options.height);
+    let mut pixels = Vec::with_capacity(block.xs.len() * block.ys.len());
+    let mut taken = (0, 0);
+    for y in block.ys.clone() {
+        for x in block.xs.clone() {
+            let mut sum = glam::DVec4::ZERO;
+            for path in 0..paths.max(1) {
+                let seed = (u64::from(y) * u64::from(w) + u64::from(x)) << 24 | u64::from(path);
+                tracer.gathering = Some(Gathering::reference(shared, seed));
+                let ray = camera::camera_ray(block.scene, w, h, f64::from(x), f64::from(y));
+                let c = camera::trace_primary(tracer, block.camera_media, ray);
+                sum += c.extend(tracer.see_through);
+                if let Some(g) = &tracer.gathering {
+                    taken = (taken.0 + g.taken, taken.1 + g.rays);
+                }
+            }
+            pixels.push(sum / f64::from(paths.max(1)));
+        }
+    }
+    // (The block's radiosity counts: rays shot.)
+    let mut g = Gathering::reference(shared, 0);
+    (g.taken, g.rays) = taken;
+    tracer.gathering = Some(g);
+    let samples = pixels.len() as u64 * u64::from(paths.max(1));
+    (pixels, samples)
 }
 
 /// The AOV values of the pixels of a block, row by row (not counted as camera rays: they
@@ -90,6 +144,8 @@ pub(super) struct BlockResult {
     pub(super) counts: RayCounts,
     pub(super) tests: counters::Tests,
     pub(super) samples: u64,
+    /// Radiosity samples taken, their rays, and queries answered from the cache.
+    pub(super) radiosity: (u64, u64, u64),
 }
 
 impl BlockResult {

@@ -8,10 +8,12 @@
 mod antialias;
 mod block;
 mod camera;
+mod pretrace;
 mod sampler;
 mod transport;
 
 pub use antialias::Antialias;
+pub use pretrace::PretraceStats;
 pub use transport::RayCounts;
 /// The shadow test, for the stability suite's counts of light leaking through surfaces.
 #[cfg(feature = "internals")]
@@ -63,6 +65,11 @@ pub struct RenderOptions {
     pub sampled_blur: bool,
     /// Stops the render when cancelled (a clone kept by the caller, e.g. for Ctrl-C).
     pub cancel: Cancel,
+    /// Radiosity's ground truth instead of its cache: each pixel's centre ray traced this
+    /// many times, every radiosity query answered afresh by one ray in a random direction
+    /// (the nested mean POV-Ray's samples estimate, converging as the count grows). Ignored
+    /// for a scene without radiosity; anti-aliasing is not done.
+    pub radiosity_reference: Option<u32>,
     /// A picture of the render as it goes, each block copied in as it finishes (a live view,
     /// `trace watch`): the pixels are the output's, the order of blocks the threads'.
     pub preview: Option<std::sync::Arc<Preview>>,
@@ -186,6 +193,7 @@ impl Default for RenderOptions {
             sampled_lights: false,
             sampled_blur: false,
             cancel: Cancel::new(),
+            radiosity_reference: None,
             preview: None,
         }
     }
@@ -233,6 +241,14 @@ pub struct RenderStats {
     /// Pixels whose value overflowed to NaN or infinity (only from extreme inputs, such as a
     /// filter of 1e300, where POV-Ray's pixels are NaN too): written black, and reported.
     pub non_finite: u64,
+    /// Radiosity's pretrace (zero without radiosity).
+    pub pretrace: PretraceStats,
+    /// Radiosity samples the final render took.
+    pub radiosity_samples: u64,
+    /// The rays they shot.
+    pub radiosity_rays: u64,
+    /// Radiosity queries the final render answered from the cache.
+    pub radiosity_reused: u64,
     /// Rows of the region finished when the render was stopped ([`RenderOptions::cancel`]);
     /// `None` if it ran to the end. The rows after them are written black.
     pub stopped: Option<u32>,
@@ -287,6 +303,8 @@ pub struct Bands<'a> {
     blocks_x: std::ops::Range<u32>,
     /// Rows of blocks a band holds.
     band_block_rows: u32,
+    /// Radiosity's cache after the pretrace, if the scene has radiosity.
+    radiosity: Option<transport::radiosity::Shared>,
     /// Statistics of the bands rendered so far.
     pub stats: RenderStats,
 }
@@ -298,17 +316,36 @@ impl<'a> Bands<'a> {
         let camera_media =
             camera::one_eye_point(scene.camera()).map(|eye| MediumStack::at(scene, eye));
         let region = options.region();
+        let mut stats = RenderStats::default();
+        // Radiosity's pretrace, before the first band (its cache is shared by all blocks).
+        let start = std::time::Instant::now();
+        let radiosity = scene.radiosity().and_then(|settings| {
+            if options.radiosity_reference.is_some() {
+                return Some(transport::radiosity::Shared::new(
+                    settings,
+                    scene.camera().location,
+                ));
+            }
+            let (shared, pretrace) = pretrace::pretrace(scene, options, pool, camera_media)?;
+            stats.pretrace = pretrace;
+            Some(shared)
+        });
+        if scene.radiosity().is_some() && radiosity.is_none() {
+            stats.stopped = Some(0);
+        }
+        stats.trace_time += start.elapsed();
         Bands {
             scene,
             options,
             pool,
             camera_media,
+            radiosity,
             region,
             next_block_row: region.y0 / BLOCK_SIZE,
             block_rows: region.y1.div_ceil(BLOCK_SIZE),
             blocks_x: region.x0 / BLOCK_SIZE..region.x1.div_ceil(BLOCK_SIZE),
             band_block_rows: band_block_rows(region.width(), BAND_PIXELS),
-            stats: RenderStats::default(),
+            stats,
         }
     }
 
@@ -337,6 +374,7 @@ impl<'a> Bands<'a> {
             self.camera_media,
             self.blocks_x.clone(),
         );
+        let radiosity = self.radiosity.as_ref();
         let columns = blocks_x.len() as u32;
         let progress = options.progress.as_deref();
         let blocks: Vec<Option<block::BlockResult>> = self.pool.install(|| {
@@ -354,7 +392,7 @@ impl<'a> Bands<'a> {
                     let block = block::render_block(
                         scene,
                         options,
-                        media,
+                        (media, radiosity),
                         bx * BLOCK_SIZE,
                         by * BLOCK_SIZE,
                     );
@@ -419,6 +457,9 @@ impl<'a> Bands<'a> {
             self.stats.counts.add(&b.counts);
             self.stats.tests.add(&b.tests);
             self.stats.samples += b.samples;
+            self.stats.radiosity_samples += b.radiosity.0;
+            self.stats.radiosity_rays += b.radiosity.1;
+            self.stats.radiosity_reused += b.radiosity.2;
         }
         self.stats.trace_time += start.elapsed();
         Some(Rows {

@@ -528,6 +528,7 @@ impl Scene {
             legacy_transparency: ir.settings.legacy_transparency,
             noise_generator: ir.settings.noise_generator,
             irid_wavelength: ir.settings.irid_wavelength,
+            radiosity: ir.settings.radiosity.clone(),
             gamma: ir.settings.gamma,
             index: None,
             scan_bounds: Vec::new(),
@@ -562,7 +563,7 @@ impl Scene {
         scene.any_transparent = scene.objects.iter().any(|o| !o.no_shadow && see_through(o));
         scene.any_hidden = scene.objects.iter().any(|o| {
             let sight = o.sight();
-            sight.no_image || sight.no_reflection
+            sight.no_image || sight.no_reflection || sight.no_radiosity
         });
         scene.shadow_fades = scene.objects.iter().any(|o| {
             !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)

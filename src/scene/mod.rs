@@ -24,8 +24,9 @@ mod query;
 
 pub use crate::ir::{
     AreaLight, Colour, Finish, Fog, FogKind, Gamma, Interior, LightFade, LightKind, Projection,
-    Rainbow, Rgb,
+    Radiosity, Rainbow, Rgb,
 };
+pub use crate::noise::mt19937;
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
 pub use build::MeshCache;
@@ -34,7 +35,7 @@ pub use media::Media;
 pub use normal::Normal;
 pub use pigment::{Pigment, lookup as colour_map_at, pigment_function};
 pub use probe::object_query;
-pub use query::{Queries, ShadowCrossing, ShadowHull, fades};
+pub use query::{Queries, Seer, ShadowCrossing, ShadowHull, fades};
 
 /// A material of the scene (an index into its distinct materials).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -94,6 +95,7 @@ pub struct Scene {
     noise_generator: u8,
     /// `irid_wavelength`: the wavelengths of thin-film interference (`irid`).
     irid_wavelength: Rgb,
+    radiosity: Option<Radiosity>,
     /// Working gamma (applied when the film is written).
     gamma: Gamma,
     /// Top-level BVH over the objects (`None` for small scenes).
@@ -225,6 +227,11 @@ impl Scene {
     #[inline]
     pub fn legacy_transparency(&self) -> bool {
         self.legacy_transparency
+    }
+
+    /// `radiosity { … }`, if on.
+    pub fn radiosity(&self) -> Option<&Radiosity> {
+        self.radiosity.as_ref()
     }
 
     /// The scene's noise generator (fog turbulence; patterns carry their own).
@@ -512,14 +519,13 @@ impl Object {
         }
     }
 
-    /// Whether a ray that was (`reflected`) or was not reflected on its way sees the object.
-    fn seen_by(&self, reflected: bool) -> bool {
+    /// Whether a ray of kind `seer` sees the object.
+    fn seen_by(&self, seer: Seer) -> bool {
         let sight = self.sight();
-        !(if reflected {
-            sight.no_reflection
-        } else {
-            sight.no_image
-        })
+        let image = !seer.reflected && !seer.sample;
+        !((image && sight.no_image)
+            || (seer.reflected && sight.no_reflection)
+            || (seer.radiosity && sight.no_radiosity))
     }
 
     fn admits(&self, ray: &Ray) -> bool {

@@ -41,7 +41,7 @@ impl Scene {
     }
 
     #[inline]
-    fn nearest(&self, ray: &Ray, reflected: Option<bool>) -> Option<Hit> {
+    fn nearest(&self, ray: &Ray, seer: Option<Seer>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
         // Two hits within rounding of each other (a glass box standing on the floor plane: the
@@ -51,7 +51,7 @@ impl Scene {
         // leaves room for a tie just beyond it.
         let mut test = |i: u32, ray: &Ray| -> Option<f64> {
             let object = &self.objects[i as usize];
-            if reflected.is_some_and(|r| !object.seen_by(r)) {
+            if seer.is_some_and(|s| !object.seen_by(s)) {
                 return None;
             }
             let (t, part) = Self::crossings(object, ray).first_part()?;
@@ -211,14 +211,46 @@ pub struct ShadowCrossing {
     pub part: u32,
 }
 
+/// The kind of a ray, as far as objects hide from it (POV-Ray's ray flags): a camera ray
+/// and the rays that go on through transparent surfaces are image rays, those reflected on
+/// their way are reflected rays, and the rays a radiosity sample shoots (and all they spawn)
+/// are radiosity rays; a sample's own ray is neither an image ray nor a reflected one.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Seer {
+    /// Reflected on its way (`no_reflection` hides from it; `no_image` does not).
+    pub reflected: bool,
+    /// Shot by a radiosity sample, or spawned by such a ray (`no_radiosity` hides from it).
+    pub radiosity: bool,
+    /// A radiosity sample's own ray (`no_image` does not hide from it).
+    pub sample: bool,
+}
+
+impl Seer {
+    /// The same kind of ray after a reflection.
+    pub fn reflected(self) -> Seer {
+        Seer {
+            reflected: true,
+            sample: false,
+            ..self
+        }
+    }
+
+    /// The same kind of ray after passing through a surface.
+    pub fn transmitted(self) -> Seer {
+        Seer {
+            sample: false,
+            ..self
+        }
+    }
+}
+
 /// What transport asks of the scene's geometry: the one interface through which light's
 /// paths meet the objects (design: the scene answers, transport decides what light does).
 /// Called with static dispatch only.
 pub trait Queries {
-    /// The nearest hit along a ray traced for the picture: one that was `reflected` on its
-    /// way, or not (a camera ray, or one through transparent objects only), which objects
-    /// with `no_reflection` or `no_image` hide from.
-    fn nearest_hit(&self, ray: &Ray, reflected: bool) -> Option<Hit>;
+    /// The nearest hit along a ray traced for the picture, of the objects that do not hide
+    /// from `seer`'s kind of ray (`no_image`, `no_reflection`, `no_radiosity`).
+    fn nearest_hit(&self, ray: &Ray, seer: Seer) -> Option<Hit>;
 
     /// Surface details at a hit.
     fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit;
@@ -271,8 +303,8 @@ pub trait Queries {
 
 impl Queries for Scene {
     #[inline]
-    fn nearest_hit(&self, ray: &Ray, reflected: bool) -> Option<Hit> {
-        self.nearest(ray, self.any_hidden.then_some(reflected))
+    fn nearest_hit(&self, ray: &Ray, seer: Seer) -> Option<Hit> {
+        self.nearest(ray, self.any_hidden.then_some(seer))
     }
 
     #[inline]

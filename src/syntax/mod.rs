@@ -186,6 +186,8 @@ pub enum NodeKind {
     Irid,
     Thickness,
     IridWavelength,
+    Radiosity,
+    RadiositySetting,
     Albedo,
     Reflection,
     Falloff,
@@ -940,6 +942,8 @@ impl<'u> Lower<'u> {
             Rule::irid => NodeKind::Irid,
             Rule::thickness => NodeKind::Thickness,
             Rule::irid_wavelength => NodeKind::IridWavelength,
+            Rule::radiosity => NodeKind::Radiosity,
+            Rule::radiosity_setting => NodeKind::RadiositySetting,
             Rule::albedo => NodeKind::Albedo,
             Rule::reflection => NodeKind::Reflection,
             Rule::falloff => NodeKind::Falloff,
@@ -1386,6 +1390,8 @@ fn is_word(rule: Rule) -> bool {
             | scattering_kw
             | light_media_kw
             | rainbow_kw
+            | radiosity_kw
+            | kw_radiosity
             | dispersion_kw
             | kw_rainbow
             | kw_media

@@ -86,6 +86,12 @@ pub enum View<'a> {
         value: &'a Expr,
         max: Option<&'a Expr>,
     },
+    /// A radiosity setting: its word is the node's; `second` only for `count` and
+    /// `nearest_count`.
+    RadiositySetting {
+        value: &'a Expr,
+        second: Option<&'a Expr>,
+    },
     /// A media setting: its word is the node's; `second` only for `samples Min, Max`.
     MediaSetting {
         value: &'a Expr,
@@ -497,6 +503,13 @@ impl Node {
                 [major, minor] => View::Torus { major, minor },
                 _ => View::Malformed,
             },
+            NodeKind::RadiositySetting => match args {
+                [value, rest @ ..] if rest.len() <= 1 => View::RadiositySetting {
+                    value,
+                    second: rest.first(),
+                },
+                _ => View::Malformed,
+            },
             NodeKind::MediaSetting => match args {
                 [value, rest @ ..] if rest.len() <= 1 => View::MediaSetting {
                     value,
@@ -874,6 +887,7 @@ impl Node {
             | NodeKind::Fog
             | NodeKind::Media
             | NodeKind::Rainbow
+            | NodeKind::Radiosity
             | NodeKind::GlobalSettings
             | NodeKind::Perspective
             | NodeKind::CameraType

@@ -17,6 +17,7 @@ mod lenient;
 mod media;
 mod parsing;
 mod povray_cli;
+mod radiosity;
 mod rainbow;
 mod watch;
 

@@ -31,6 +31,10 @@ pub(in crate::eval) struct Builder {
     /// `rainbow { … }` statements that can be seen.
     pub(in crate::eval) rainbows: Vec<ir::Rainbow>,
     pub(in crate::eval) settings: ir::Settings,
+    /// Whether `radiosity { … }` gave `minimum_reuse` and `maximum_reuse` (POV-Ray's rule
+    /// for the two, applied once the scene is read, moves only one it was not given), and
+    /// where the block stood.
+    pub(in crate::eval) reuse_given: (bool, bool, Option<crate::diag::Span>),
     pub(in crate::eval) camera: Option<CameraItems>,
     pub(in crate::eval) lights: Vec<ir::Light>,
     pub(in crate::eval) objects: Vec<ir::Object>,

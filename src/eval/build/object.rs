@@ -1166,8 +1166,10 @@ impl Evaluator<'_> {
                     .parts
                     .iter_mut()
                     .for_each(|p| p.sight.double_illuminate = true),
-                // Radiosity is outside trace's subset: nothing to exclude the object from.
-                "no_radiosity" => {}
+                "no_radiosity" => object
+                    .parts
+                    .iter_mut()
+                    .for_each(|p| p.sight.no_radiosity = true),
                 "global_lights" if owner.word == "light_group" => object.global_lights = true,
                 "global_lights" => {
                     return Err(Diagnostic::error(

@@ -347,6 +347,173 @@ impl Evaluator<'_> {
         Ok(())
     }
 
+    /// `radiosity { … }` in global_settings: turns radiosity on and sets what it gives, as
+    /// POV-Ray 3.7's parser reads it (each value checked by its rules).
+    pub(in crate::eval) fn radiosity(&mut self, node: &Node) -> Result<()> {
+        let mut r = self.scene.settings.radiosity.take().unwrap_or_default();
+        self.scene.reuse_given.2 = Some(node.word_span);
+        self.each_item(&node.children, &mut |ev, item| {
+            let View::RadiositySetting { value, second } = item.view() else {
+                return Err(ev.unknown_item(item, "radiosity"));
+            };
+            let word = item.word.as_str();
+            if second.is_some() && !matches!(word, "count" | "nearest_count") {
+                return Err(Diagnostic::error(
+                    format!("`{word}` takes one value"),
+                    item.span,
+                ));
+            }
+            if matches!(word, "load_file" | "save_file") {
+                ev.eval(value)?;
+                ev.warn(Diagnostic::warning(
+                    format!(
+                        "`{word}` is ignored here (POV-Ray 3.7 takes it from the command line only, and says so too)"
+                    ),
+                    item.word_span,
+                ));
+                return Ok(());
+            }
+            if word == "subsurface" {
+                return Err(Diagnostic::error(
+                    "unsupported: `subsurface` (subsurface scattering is outside trace's subset)",
+                    item.word_span,
+                ));
+            }
+            let v = ev.float(value)?;
+            let bad = |rule: &str| Err(Diagnostic::error(format!("radiosity {rule}"), value.span));
+            match word {
+                "adc_bailout" if v <= 0.0 => return bad("adc_bailout must be positive"),
+                "adc_bailout" => r.adc_bailout = v,
+                "always_sample" => r.always_sample = v as i64 != 0,
+                "brightness" if v <= 0.0 => return bad("brightness must be positive"),
+                "brightness" => r.brightness = v,
+                "count" => {
+                    if (v as i64) <= 0 {
+                        return bad("count must be positive");
+                    }
+                    r.count = (v as i64).min(i64::from(u32::MAX)) as u32;
+                    let pool = match second {
+                        Some(e) => ev.float(e)? as i64,
+                        None => i64::from(r.count.max(1600)),
+                    };
+                    if pool < i64::from(r.count) {
+                        return Err(Diagnostic::error(
+                            "radiosity count cannot be more than its directions (count's second value)",
+                            second.map_or(value.span, |e| e.span),
+                        ));
+                    }
+                    if pool > 1 << 24 {
+                        return Err(Diagnostic::error(
+                            "unsupported: more than 16777216 radiosity directions",
+                            second.map_or(value.span, |e| e.span),
+                        ));
+                    }
+                    r.directions = pool as u32;
+                }
+                "error_bound" if v <= 0.0 => return bad("error_bound must be positive"),
+                "error_bound" => r.error_bound = v,
+                "gray_threshold" if !(0.0..=1.0).contains(&v) => {
+                    return bad("gray_threshold must be from 0 to 1");
+                }
+                "gray_threshold" => r.gray_threshold = v,
+                "low_error_factor" if v <= 0.0 => return bad("low_error_factor must be positive"),
+                "low_error_factor" => r.low_error_factor = v,
+                "max_sample" => r.max_sample = v,
+                "maximum_reuse" if v <= 0.0 => return bad("maximum_reuse must be positive"),
+                "maximum_reuse" => {
+                    r.maximum_reuse = v;
+                    ev.scene.reuse_given.1 = true;
+                }
+                "minimum_reuse" if v < 0.0 => return bad("minimum_reuse cannot be negative"),
+                "minimum_reuse" => {
+                    r.minimum_reuse = v;
+                    ev.scene.reuse_given.0 = true;
+                }
+                "nearest_count" => {
+                    let n = v as i64;
+                    if !(1..=20).contains(&n) {
+                        return bad("nearest_count must be from 1 to 20");
+                    }
+                    r.nearest_count = n as u32;
+                    let adaptive = match second {
+                        Some(e) => ev.float(e)? as i64,
+                        None => 0,
+                    };
+                    if adaptive < 0 || adaptive >= n {
+                        return Err(Diagnostic::error(
+                            "radiosity nearest_count's second value (the adaptive pretrace's) must be at least 0 and less than the first",
+                            second.map_or(value.span, |e| e.span),
+                        ));
+                    }
+                    r.pretrace_count = adaptive as u32;
+                }
+                "recursion_limit" => {
+                    let n = v as i64;
+                    if !(1..=20).contains(&n) {
+                        return bad("recursion_limit must be from 1 to 20");
+                    }
+                    r.recursion_limit = n as u32;
+                }
+                "media" => r.media = v as i64 != 0,
+                "normal" => r.normal = v as i64 != 0,
+                "pretrace_start" if v <= 0.0 || v > 1.0 => {
+                    return bad("pretrace_start must be above 0 and at most 1");
+                }
+                "pretrace_start" => r.pretrace_start = v,
+                "pretrace_end" if v <= 0.0 || v > 1.0 => {
+                    return bad("pretrace_end must be above 0 and at most 1");
+                }
+                "pretrace_end" => r.pretrace_end = v,
+                _ => return Err(ev.unknown_item(item, "radiosity")),
+            }
+            Ok(())
+        })?;
+        self.scene.settings.radiosity = Some(r);
+        Ok(())
+    }
+
+    /// POV-Ray's checks of the radiosity settings once the whole scene is read: the
+    /// pretrace's passes in order, and a `minimum_reuse` not above half `maximum_reuse` (the
+    /// one not given moves, with a warning).
+    fn radiosity_checked(&mut self, version: f64) -> Result<()> {
+        let (min_given, max_given, span) = self.scene.reuse_given;
+        let span = span.unwrap_or_default();
+        let Some(r) = &mut self.scene.settings.radiosity else {
+            return Ok(());
+        };
+        r.keeps_ambient = version < 3.7 - 1e-9;
+        if r.pretrace_end > r.pretrace_start {
+            return Err(Diagnostic::error(
+                "radiosity pretrace_end must not be above pretrace_start",
+                span,
+            ));
+        }
+        if r.minimum_reuse > r.maximum_reuse * 0.5 {
+            let message = if !min_given {
+                r.minimum_reuse = r.maximum_reuse * 0.5;
+                format!(
+                    "radiosity maximum_reuse should be well above minimum_reuse: minimum_reuse lowered to {} from its default (as POV-Ray does)",
+                    r.minimum_reuse
+                )
+            } else if !max_given {
+                r.maximum_reuse = r.minimum_reuse * 2.0;
+                format!(
+                    "radiosity maximum_reuse should be well above minimum_reuse: maximum_reuse raised to {} from its default (as POV-Ray does)",
+                    r.maximum_reuse
+                )
+            } else if r.minimum_reuse >= r.maximum_reuse {
+                return Err(Diagnostic::error(
+                    "radiosity maximum_reuse must be above minimum_reuse",
+                    span,
+                ));
+            } else {
+                "radiosity maximum_reuse should be well above minimum_reuse".to_string()
+            };
+            self.warn(Diagnostic::warning(message, span));
+        }
+        Ok(())
+    }
+
     pub(in crate::eval) fn global_settings(&mut self, node: &Node) -> Result<()> {
         self.each_item(&node.children, &mut |ev, item| {
             match (item.kind, item.view()) {
@@ -375,6 +542,7 @@ impl Evaluator<'_> {
                         ev.lang.assumed_gamma = Some(g);
                     }
                 }
+                (NodeKind::Radiosity, _) => ev.radiosity(item)?,
                 (_, View::MaxTraceLevel(level)) => ev.max_trace_level(level)?,
                 (_, View::MaxIntersections(count)) => ev.max_intersections(item, count)?,
                 (_, View::AdcBailout(value)) => ev.scene.settings.adc_bailout = ev.float(value)?,
@@ -605,6 +773,7 @@ impl Evaluator<'_> {
             None => Gamma::Off,
         };
         self.scene.settings.legacy_transparency = version < 3.7 - 1e-9;
+        self.radiosity_checked(version)?;
         // (POV-Ray's default generator is 2 unless the scene declares a version before 3.5.)
         self.scene.settings.noise_generator = self.lang.noise_generator.unwrap_or(
             if self.lang.version.is_some_and(|v| v < 3.5 - 1e-9) {

@@ -26,6 +26,7 @@ const SUPPORTED: &[&str] = &[
     "all_intersections",
     "alpha",
     "altitude",
+    "always_sample",
     "ambient",
     "ambient_light",
     "angle",
@@ -63,6 +64,7 @@ const SUPPORTED: &[&str] = &[
     "break",
     "brick",
     "brick_size",
+    "brightness",
     "brilliance",
     "bump_map",
     "bump_size",
@@ -96,6 +98,7 @@ const SUPPORTED: &[&str] = &[
     "coords",
     "cos",
     "cosh",
+    "count",
     "crackle",
     "crand",
     "cube",
@@ -133,6 +136,7 @@ const SUPPORTED: &[&str] = &[
     "emission",
     "end",
     "error",
+    "error_bound",
     "eval_pigment",
     "exp",
     "exponent",
@@ -174,6 +178,7 @@ const SUPPORTED: &[&str] = &[
     "gradient",
     "granite",
     "gray",
+    "gray_threshold",
     "green",
     "hdr",
     "height_field",
@@ -213,11 +218,13 @@ const SUPPORTED: &[&str] = &[
     "linear_spline",
     "linear_sweep",
     "ln",
+    "load_file",
     "local",
     "location",
     "log",
     "look_at",
     "looks_like",
+    "low_error_factor",
     "macro",
     "magnet",
     "major_radius",
@@ -232,8 +239,10 @@ const SUPPORTED: &[&str] = &[
     "max_gradient",
     "max_intersections",
     "max_iteration",
+    "max_sample",
     "max_trace",
     "max_trace_level",
+    "maximum_reuse",
     "media",
     "media_attenuation",
     "media_interaction",
@@ -245,9 +254,11 @@ const SUPPORTED: &[&str] = &[
     "metric",
     "min",
     "min_extent",
+    "minimum_reuse",
     "mod",
     "mortar",
     "natural_spline",
+    "nearest_count",
     "no",
     "no_bump_scale",
     "no_image",
@@ -303,6 +314,8 @@ const SUPPORTED: &[&str] = &[
     "ppm",
     "precision",
     "precompute",
+    "pretrace_end",
+    "pretrace_start",
     "prism",
     "prod",
     "projected_through",
@@ -315,6 +328,7 @@ const SUPPORTED: &[&str] = &[
     "quilted",
     "radial",
     "radians",
+    "radiosity",
     "radius",
     "rainbow",
     "ramp_wave",
@@ -322,6 +336,7 @@ const SUPPORTED: &[&str] = &[
     "range",
     "ratio",
     "read",
+    "recursion_limit",
     "red",
     "reflection",
     "reflection_exponent",
@@ -337,6 +352,7 @@ const SUPPORTED: &[&str] = &[
     "rotate",
     "roughness",
     "samples",
+    "save_file",
     "scale",
     "scallop_wave",
     "scattering",
@@ -499,9 +515,7 @@ pub fn reason(word: &str) -> Option<&'static str> {
     Some(match word {
         "difference" | "intersection" | "merge" => "CSG is outside trace's subset",
         "polynomial" | "lemon" => "this shape is not supported by trace yet",
-        "photons" | "radiosity" | "subsurface" | "emission_media" | "mm_per_unit" => {
-            "outside trace's subset"
-        }
+        "photons" | "subsurface" | "emission_media" | "mm_per_unit" => "outside trace's subset",
         "albedo" => "this finish item is outside trace's subset",
         "iff" => "trace reads png, jpeg, gif, pot, tga, ppm, pgm, tiff, bmp, exr and hdr images",
         "clipped_by" | "split_union" | "cutaway_textures" => LATER,
@@ -509,13 +523,11 @@ pub fn reason(word: &str) -> Option<&'static str> {
             "this camera type or item is not supported by trace yet"
         }
         "noise_generator_gs" | "subsurface_gs" => "this global setting is outside trace's subset",
-        "always_sample" | "anisotropy" | "autostop" | "expand_thresholds" | "gather" | "global"
-        | "importance" | "load_file" | "max_sample" | "pass_through" | "pretrace_end"
-        | "pretrace_start" | "save_file" | "spacing" | "steps" | "target" | "brightness"
-        | "count" | "distance_maximum" | "error_bound" | "gray_threshold" | "low_error_factor"
-        | "maximum_reuse" | "minimum_reuse" | "nearest_count" | "recursion_limit" => {
-            "radiosity, photons and subsurface scattering are outside trace's subset"
+        "anisotropy" | "autostop" | "expand_thresholds" | "gather" | "global" | "pass_through"
+        | "spacing" | "steps" | "target" | "distance_maximum" => {
+            "photons and subsurface scattering are outside trace's subset"
         }
+        "importance" => "an object's radiosity importance is not supported by trace yet",
         "evaluate" | "pwr" | "reciprocal" => {
             "this shape or shape item is not supported by trace yet"
         }

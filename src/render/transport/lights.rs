@@ -135,13 +135,16 @@ impl Tracer<'_> {
         shadow.tmax = reach(light, &shadow, distance)?;
         if !light.shadowless {
             let visible = match &light.area {
-                Some(area) if area.size1 * area.size2 > 1 => match self.light_stream {
-                    Some((seed, n)) => {
-                        let start = ShadowStart::Surface(hit, from);
-                        self.area_sampled(light, index, area, start, (seed, n))
+                // (Radiosity's rays see an area light as a point light at its centre.)
+                Some(area) if area.size1 * area.size2 > 1 && !self.seer.radiosity => {
+                    match self.light_stream {
+                        Some((seed, n)) => {
+                            let start = ShadowStart::Surface(hit, from);
+                            self.area_sampled(light, index, area, start, (seed, n))
+                        }
+                        None => self.area_visibility(light, area, ShadowStart::Surface(hit, from)),
                     }
-                    None => self.area_visibility(light, area, ShadowStart::Surface(hit, from)),
-                },
+                }
                 _ => {
                     self.counts.shadow += 1;
                     self.shadow_seen(&shadow, light)
@@ -155,7 +158,8 @@ impl Tracer<'_> {
         Some(LightSample {
             direction,
             colour,
-            highlights: !light.shadowless,
+            // (Radiosity's rays see no highlights.)
+            highlights: !light.shadowless && !self.seer.radiosity,
         })
     }
 

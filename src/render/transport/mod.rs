@@ -7,13 +7,15 @@ mod fog;
 mod lights;
 mod media;
 mod medium;
+pub(super) mod radiosity;
 mod rainbow;
 mod shadow;
 mod spectrum;
 
 use crate::geometry::Ray;
 use crate::scene::{
-    Colour, Material, PatternSurface as Surface, Queries, Rgb, Scene, SurfaceHit, filter_colour,
+    Colour, Material, PatternSurface as Surface, Queries, Rgb, Scene, Seer, SurfaceHit,
+    filter_colour,
 };
 use fog::{MISS_DEPTH, fogged};
 use glam::{DMat3, DVec3};
@@ -70,9 +72,9 @@ pub struct Tracer<'a> {
     pub counts: RayCounts,
     /// Area-light visibility cache, reused between shading points.
     pub(super) area_cache: Vec<Option<Rgb>>,
-    /// Whether the ray being traced was reflected on its way (objects with `no_reflection`
-    /// hide from it, those with `no_image` from the others).
-    reflected: bool,
+    /// The kind of the ray being traced, as far as objects hide from it (`no_image`,
+    /// `no_reflection`, `no_radiosity`).
+    seer: Seer,
     /// How much of the last ray traced saw the transparent background straight through
     /// (0 to 1): one minus its alpha (POV-Ray's transmit of the traced colour, +UA).
     pub see_through: f64,
@@ -92,6 +94,28 @@ pub struct Tracer<'a> {
     /// has split it (POV-Ray's monochromatic rays): later dispersing surfaces bend it by its
     /// wavelength instead of splitting it again.
     band: Option<spectrum::Band>,
+    /// `max_trace_level` and `adc_bailout` for the rays being traced: the scene's, or a
+    /// radiosity sample's while it gathers.
+    max_level: u32,
+    bailout: f64,
+    /// How far the last ray traced went before it met a surface (infinite if it met none).
+    pub(super) distance: f64,
+    /// Radiosity, if the scene has it: the cache and this tracer's part of the work.
+    pub(super) gathering: Option<radiosity::Gathering<'a>>,
+    /// During the pretrace: surfaces seen by rays other than radiosity's are not lit by the
+    /// lights (their colour is not kept; only the light samples gather counts).
+    pub(super) pretrace: bool,
+}
+
+/// Radiosity's light at a hit, shared by its layers: the unperturbed normal facing the ray,
+/// the ray's weight, what the layers above the one being lit let through, and the light
+/// gathered so far for the front and back sides.
+struct Diffuse {
+    raw: DVec3,
+    weight: f64,
+    filter: Rgb,
+    front: Option<Rgb>,
+    back: Option<Rgb>,
 }
 
 /// The pigment colour of `material` at `point` (a pattern of materials: its entries' colours
@@ -134,7 +158,7 @@ impl<'a> Tracer<'a> {
             scene,
             counts: RayCounts::default(),
             area_cache: Vec::new(),
-            reflected: false,
+            seer: Seer::default(),
             see_through: 0.0,
             light_stream: None,
             lens_stream: None,
@@ -142,6 +166,11 @@ impl<'a> Tracer<'a> {
             shadow_start: MediumStack::default(),
             media_scratch: media::Scratch::default(),
             band: None,
+            max_level: scene.max_trace_level(),
+            bailout: scene.adc_bailout(),
+            distance: f64::INFINITY,
+            gathering: None,
+            pretrace: false,
         }
     }
 
@@ -149,14 +178,16 @@ impl<'a> Tracer<'a> {
     /// ray's trace level (a camera ray is 1) and `weight` its contribution to the pixel; rays
     /// past `max_trace_level` or below `adc_bailout` return black, as in POV-Ray.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f64, media: &MediumStack) -> Rgb {
-        if level > self.scene.max_trace_level() || weight < self.scene.adc_bailout() {
+        if level > self.max_level || weight < self.bailout {
             self.see_through = 0.0;
+            self.distance = f64::INFINITY;
             return Rgb::ZERO;
         }
         // POV-Ray ignores hits farther than MAX_DISTANCE (directions here are unit length).
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let (mut colour, depth, hit) = match self.scene.nearest_hit(&ray, self.reflected) {
+        let seer = self.seer;
+        let (mut colour, depth, hit) = match self.scene.nearest_hit(&ray, seer) {
             None => {
                 self.see_through = match self.scene.sky_sphere() {
                     None => 1.0 - self.scene.background_alpha(),
@@ -166,15 +197,22 @@ impl<'a> Tracer<'a> {
             }
             Some(hit) => {
                 let surface = self.scene.surface(&ray, &hit);
+                // (The rays this one spawns are not a radiosity sample's own.)
+                self.seer = seer.transmitted();
                 let colour = self.shade(&ray, hit.t, &surface, level, weight, media);
+                self.seer = seer;
                 (colour, hit.t, Some(hit.object))
             }
         };
+        self.distance = if hit.is_some() { depth } else { f64::INFINITY };
         let scene = self.scene;
         let any_media = !scene.atmosphere().is_empty() || (hit.is_some() && !media.is_empty());
         let rainbows = scene.rainbows();
+        // (Radiosity's rays see no media, fog or rainbow unless its `media` is on.)
+        let volume = !seer.radiosity || scene.radiosity().is_some_and(|r| r.media);
         if (scene.fogs().is_empty() && rainbows.is_empty() && !any_media)
             || !media.hollow_space(scene)
+            || !volume
         {
             return colour;
         }
@@ -237,7 +275,7 @@ impl<'a> Tracer<'a> {
     pub fn first_hit(&mut self, ray: &Ray) -> (f64, DVec3, Rgb, u32) {
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let Some(hit) = self.scene.nearest_hit(&ray, false) else {
+        let Some(hit) = self.scene.nearest_hit(&ray, Seer::default()) else {
             return (f64::INFINITY, DVec3::ZERO, Rgb::ZERO, 0);
         };
         let surface = self.scene.surface(&ray, &hit);
@@ -253,9 +291,10 @@ impl<'a> Tracer<'a> {
 
     /// [`Tracer::trace`] for a reflected ray.
     fn trace_reflected(&mut self, ray: &Ray, level: u32, weight: f64, media: &MediumStack) -> Rgb {
-        let was = std::mem::replace(&mut self.reflected, true);
+        let was = self.seer;
+        self.seer = was.reflected();
         let colour = self.trace(ray, level, weight, media);
-        self.reflected = was;
+        self.seer = was;
         colour
     }
 
@@ -407,14 +446,22 @@ impl<'a> Tracer<'a> {
         let top_colour = colour;
         // (What the lower layers saw, replayed for their reflections below.)
         let mut replay = *seen;
-        let mut result = self.layer_light(material, &colour, n, ray, hit);
+        // (Radiosity's light at the hit, gathered once for all layers, front and back.)
+        let mut diffuse = Diffuse {
+            raw,
+            weight,
+            filter: Rgb::ONE,
+            front: None,
+            back: None,
+        };
+        let mut result = self.layer_light(material, &colour, n, ray, hit, &mut diffuse);
         let mut filter = filter_colour(&colour);
         if material.finish.conserve_energy {
             filter *= (Rgb::ONE - top_reflec).min(Rgb::ONE);
         }
         let mut layers = 1;
         for layer in material.under.iter().rev() {
-            if grey(filter).abs().min(1.0) <= scene.adc_bailout() {
+            if grey(filter).abs().min(1.0) <= self.bailout {
                 break;
             }
             layers += 1;
@@ -426,7 +473,8 @@ impl<'a> Tracer<'a> {
                 refraction.fresnel_eta,
                 (&mut *seen, warp),
             );
-            result += self.layer_light(layer, &colour, n_l, ray, hit) * filter;
+            diffuse.filter = filter;
+            result += self.layer_light(layer, &colour, n_l, ray, hit, &mut diffuse) * filter;
             filter *= filter_colour(&colour);
             if layer.finish.conserve_energy {
                 filter *= (Rgb::ONE - reflec).min(Rgb::ONE);
@@ -440,12 +488,11 @@ impl<'a> Tracer<'a> {
         let mut total_internal_reflection = false;
         // (What of the background shows through, by the layers' filter.)
         let mut see_through = 0.0;
-        let wants_transmission =
-            filter != Rgb::ZERO && grey(filter).abs().min(1.0) > scene.adc_bailout();
-        if wants_transmission && level >= scene.max_trace_level() {
+        let wants_transmission = filter != Rgb::ZERO && grey(filter).abs().min(1.0) > self.bailout;
+        if wants_transmission && level >= self.max_level {
             self.counts.depth_limited += 1;
         }
-        if wants_transmission && level < scene.max_trace_level() {
+        if wants_transmission && level < self.max_level {
             let w = weight * filter.abs().max_element();
             let mut eta = refraction.refraction_eta;
             let disperses = (refraction.dispersion - 1.0).abs() >= SAME_IOR;
@@ -542,7 +589,8 @@ impl<'a> Tracer<'a> {
         result
     }
 
-    /// One layer's ambient, emission and direct light, for its colour and shading normal.
+    /// One layer's ambient (or radiosity's light), emission and direct light, for its colour
+    /// and shading normal.
     #[inline]
     fn layer_light(
         &mut self,
@@ -551,6 +599,7 @@ impl<'a> Tracer<'a> {
         n: DVec3,
         ray: &Ray,
         hit: &SurfaceHit,
+        diffuse: &mut Diffuse,
     ) -> Rgb {
         let scene = self.scene;
         let pigment = colour.rgb;
@@ -560,8 +609,20 @@ impl<'a> Tracer<'a> {
             1.0 - colour.filter - colour.transmit
         };
         let finish = &layer.finish;
-        let mut lit = pigment * finish.ambient * scene.ambient_light() * att
-            + pigment * finish.emission * att;
+        let mut lit = pigment * finish.emission * att;
+        match scene.radiosity() {
+            Some(r) => {
+                // POV-Ray 3.7 drops `ambient` once radiosity is on (not for older scenes).
+                if r.keeps_ambient {
+                    lit += pigment * finish.ambient * scene.ambient_light() * att;
+                }
+                lit += self.radiosity_light(pigment, finish, att, n, hit, diffuse);
+            }
+            None => lit += pigment * finish.ambient * scene.ambient_light() * att,
+        }
+        if self.pretrace && !self.seer.radiosity {
+            return lit;
+        }
         let object = scene.object(hit.object);
         let double = object.sight().double_illuminate;
         for index in 0..scene.lights().len() {
@@ -593,6 +654,44 @@ impl<'a> Tracer<'a> {
         lit
     }
 
+    /// Radiosity's light on one layer (POV-Ray's ComputeLightedTexture): the light other
+    /// surfaces send the hit, gathered at the first layer that could show enough of it (by
+    /// its diffuse, colour and what the layers above let through) and reused by the layers
+    /// under it; the back side's likewise for a `diffuse_back` finish. Nothing at the last
+    /// bounce.
+    fn radiosity_light(
+        &mut self,
+        pigment: Rgb,
+        finish: &crate::scene::Finish,
+        att: f64,
+        n: DVec3,
+        hit: &SurfaceHit,
+        d: &mut Diffuse,
+    ) -> Rgb {
+        let Some(g) = &self.gathering else {
+            return Rgb::ZERO;
+        };
+        let Some(r) = self.scene.radiosity() else {
+            return Rgb::ZERO;
+        };
+        if g.depth >= r.recursion_limit {
+            return Rgb::ZERO;
+        }
+        let most = grey(d.filter * pigment) * att;
+        if d.front.is_none() && most * finish.diffuse > self.bailout {
+            d.front = Some(self.ambient(hit, d.raw, n, d.weight * most * finish.diffuse));
+        }
+        let mut light = pigment * d.front.unwrap_or(Rgb::ZERO) * (att * finish.diffuse);
+        if finish.diffuse_back != 0.0 {
+            if d.back.is_none() && most * finish.diffuse_back > self.bailout {
+                let w = d.weight * most * finish.diffuse_back;
+                d.back = Some(self.ambient(hit, -d.raw, -n, w));
+            }
+            light += pigment * d.back.unwrap_or(Rgb::ZERO) * (att * finish.diffuse_back);
+        }
+        light
+    }
+
     /// The mirror reflection of one layer with shading normal `n` and reflectivity `reflec`,
     /// traced at `weight` (times POV-Ray's bound on the reflectivity).
     fn mirror(
@@ -607,7 +706,7 @@ impl<'a> Tracer<'a> {
             return Rgb::ZERO;
         }
         let scene = self.scene;
-        if level >= scene.max_trace_level() {
+        if level >= self.max_level {
             self.counts.depth_limited += 1;
             return Rgb::ZERO;
         }
