@@ -5,8 +5,8 @@ For each scene (tests/radiosity's three and POV-Ray's own radiosity/cornell.pov)
 the ground truth: `--radiosity-reference N` (every radiosity query answered afresh by one ray
 in a random cosine-weighted direction, N paths a pixel, averaged: the nested mean that
 POV-Ray's cached samples estimate). Then both renderers render the scene with its own
-radiosity settings and with a sweep of finer ones (more rays a sample, a smaller error bound,
-more samples reused, a finer pretrace), without anti-aliasing, each with two threads; every
+radiosity settings and with a sweep of others (more rays a sample, a smaller error bound,
+more samples reused, a finer pretrace: "count 100", "count 200", "count 500"), without anti-aliasing, each with two threads; every
 image is compared with the ground truth (mean FLIP), and its end-to-end wall time is measured
 in the same run. POV-Ray also renders with one thread, its only reproducible picture, which
 trace's picture is compared with too.
@@ -35,11 +35,12 @@ SCENES = {
     "legacy": os.path.join(ROOT, "tests/radiosity/legacy.pov"),
     "cornell": os.path.join(POV_SCENES, "radiosity/cornell.pov"),
 }
-# Finer settings, each replacing the scene's radiosity block: (label, block body).
+# Other settings, each added at the end of the scene's radiosity block (so they win, and the
+# rest of its model stays): (label, settings).
 SWEEP = [
-    ("finer", "count 100 error_bound 1.0 nearest_count 8 pretrace_end 0.02"),
-    ("fine", "count 200 error_bound 0.6 nearest_count 10 pretrace_end 0.01"),
-    ("finest", "count 500 error_bound 0.3 nearest_count 15 pretrace_end 0.005 minimum_reuse 0.005"),
+    ("count 100", "count 100 error_bound 1.0 nearest_count 8 pretrace_end 0.02"),
+    ("count 200", "count 200 error_bound 0.6 nearest_count 10 pretrace_end 0.01"),
+    ("count 500", "count 500 error_bound 0.3 nearest_count 15 pretrace_end 0.005 minimum_reuse 0.005"),
 ]
 
 
@@ -56,23 +57,17 @@ def flip(a, b):
 
 
 def with_settings(path, body, tmp, label):
-    """The scene with its radiosity block's settings replaced by `body` (keeping recursion_limit
-    and the other lighting settings: the model stays the same)."""
+    """The scene with `body` added at the end of its radiosity block: later settings win, so
+    the finer ones replace the scene's and the rest of its model (bounces, brightness, grey
+    threshold, normal, media, a rad_def.inc macro's settings) stays."""
     text = open(path).read()
     m = re.search(r"radiosity\s*\{", text)
     depth, i = 1, m.end()
     while depth:
         depth += {"{": 1, "}": -1}.get(text[i], 0)
         i += 1
-    old = text[m.end():i - 1]
-    keep = " ".join(re.findall(r"(?:recursion_limit|brightness|gray_threshold|normal|media|max_sample)\s+[^\s}]+", old))
-    # (rad_def.inc's macro call carries its own settings: only the model's are kept, its
-    # `normal` and `media` arguments.)
-    call = re.search(r"Rad_Settings\s*\(\s*[^,]+,\s*([^,]+),\s*([^)]+)\)", old)
-    if call:
-        keep += " normal %s media %s" % (call.group(1).strip(), call.group(2).strip())
-    new = text[:m.end()] + " " + body + " " + keep + " }" + text[i:]
-    out = os.path.join(tmp, "%s-%s.pov" % (os.path.splitext(os.path.basename(path))[0], label))
+    new = text[:i - 1] + " " + body + " " + text[i - 1:]
+    out = os.path.join(tmp, "%s-%s.pov" % (os.path.splitext(os.path.basename(path))[0], label.replace(" ", "")))
     open(out, "w").write(new)
     return out
 
@@ -92,8 +87,8 @@ def main():
             t1 = timed(["povray", "+I" + path, "+O" + pov1, "+FE", "+W%d" % WIDTH, "+H%d" % HEIGHT, "-A", "-D", "-GA", "+WT1"], cwd)
             variants = [("scene", path)] + [(label, with_settings(path, body, tmp, label)) for label, body in SWEEP]
             for label, scene in variants:
-                out_t = os.path.join(tmp, "%s-%s-trace.exr" % (name, label))
-                out_p = os.path.join(tmp, "%s-%s-pov.exr" % (name, label))
+                out_t = os.path.join(tmp, "%s-%s-trace.exr" % (name, label.replace(" ", "")))
+                out_p = os.path.join(tmp, "%s-%s-pov.exr" % (name, label.replace(" ", "")))
                 tt = timed([TRACE, scene, "-o", out_t, "--quiet", "--threads", "2", "--aa", "off"] + size, cwd)
                 tp = timed(["povray", "+I" + scene, "+O" + out_p, "+FE", "+W%d" % WIDTH, "+H%d" % HEIGHT, "-A", "-D", "-GA",
                             "+WT2"], cwd)

@@ -16,7 +16,7 @@ its repository's folder at 320x240 without anti-aliasing, by POV-Ray (`-A -J +FE
 most) and by trace (`--aa off`, 60 s), both with POV-Ray's standard include folder; an
 animation whose INI lies beside it at its first frame. Writes one CSV row per scene and
 docs/users-corpus.md: how many POV-Ray renders, how many of those use only what the mission
-covers (no CSG, radiosity or photons, found by reading the scene and its own include
+covers (no CSG or photons, found by reading the scene and its own include
 files), how many of those trace renders and how many match (mean FLIP <= 0.01), and what stops
 the rest.
 """
@@ -29,7 +29,6 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 INCLUDE = "/usr/share/povray-3.7/include"
 OUTSIDE = {
     "CSG": re.compile(r"\b(difference|intersection|merge|clipped_by)\s*\{"),
-    "radiosity": re.compile(r"\bradiosity\s*\{"),
     "photons": re.compile(r"\bphotons\s*\{"),
 }
 COMMENTS = re.compile(r"//[^\n]*|/\*.*?\*/", re.S)
@@ -152,7 +151,7 @@ def write_report(path, rows, note=""):
         "",
         f"- POV-Ray renders **{len(pov)}** of the {len(rows)} (the rest need files the repositories do not hold —",
         "  images, fonts, includes from the author's machine — or fail in POV-Ray 3.7 itself).",
-        f"- Of those, **{len(inside)}** use only what the mission covers: no CSG, radiosity or photons",
+        f"- Of those, **{len(inside)}** use only what the mission covers: no CSG or photons",
         f"  ({', '.join(f'{k} {v}' for k, v in outside.most_common())} scenes use those).",
         f"- trace renders **{len(rendered)}** of these {len(inside)} ({100 * len(rendered) / max(len(inside), 1):.0f} %), and **{len(matching)}** match POV-Ray",
         "  (mean FLIP ≤ 0.01).",

@@ -435,12 +435,6 @@ impl<'a> Evaluator<'a> {
                 node.word_span,
             );
         }
-        if node.word == "radiosity" && context != "global_settings" {
-            return Diagnostic::error(
-                "unsupported: an object's `radiosity { importance … }` (not supported by trace yet; radiosity itself goes in global_settings)",
-                node.word_span,
-            );
-        }
         if node.word == "pigment" && context == "pigment" {
             return Diagnostic::error(
                 "unsupported: a pigment inside a pigment (a checker, map or pattern of pigments is not supported by trace yet)",

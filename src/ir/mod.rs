@@ -581,6 +581,9 @@ pub struct ObjectExtras {
     pub sight: Sight,
     /// For an object in a `light_group`: which lights light it.
     pub light_group: Option<LightGroup>,
+    /// `radiosity { importance F }` (0 < F ≤ 1), if given: of a radiosity sample's rays
+    /// that meet the object, only the first F go on (the others count for their distance).
+    pub importance: Option<f64>,
 }
 
 /// Which rays see an object, and from which side lights reach it.
@@ -596,6 +599,13 @@ pub struct Sight {
     pub double_illuminate: bool,
     /// `no_radiosity`: unseen by the rays radiosity samples shoot (and the rays they spawn).
     pub no_radiosity: bool,
+}
+
+impl ObjectExtras {
+    /// `radiosity { importance F }` (default 1).
+    pub fn importance(&self) -> f64 {
+        self.importance.unwrap_or(1.0)
+    }
 }
 
 /// The lights of an object in a `light_group`.

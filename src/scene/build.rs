@@ -430,10 +430,12 @@ impl Scene {
                 });
                 let sight = o.sight();
                 let light_group = o.extras.as_ref().and_then(|e| e.light_group.clone());
+                let importance = o.extras.as_ref().map_or(1.0, |e| e.importance());
                 if back_material.is_some()
                     || bounds.is_some()
                     || sight != ir::Sight::default()
                     || light_group.is_some()
+                    || importance != 1.0
                 {
                     let (bounds, test_rays) = bounds.unwrap_or_default();
                     object.extra = Some(Box::new(ObjectExtra {
@@ -442,6 +444,7 @@ impl Scene {
                         test_rays,
                         sight,
                         light_group,
+                        importance,
                     }));
                 }
                 let bounds = object.world_bounds();

@@ -386,6 +386,8 @@ pub struct ObjectExtra {
     pub sight: crate::ir::Sight,
     /// For an object in a `light_group`: which lights light it.
     pub light_group: Option<crate::ir::LightGroup>,
+    /// `radiosity { importance F }` (1 when not given).
+    pub importance: f64,
     /// Whether a ray must also cross each bounding shape (or start inside it) to reach the
     /// object.
     pub test_rays: bool,
@@ -505,6 +507,11 @@ impl Object {
         self.extra
             .as_ref()
             .map_or_else(Default::default, |e| e.sight)
+    }
+
+    /// `radiosity { importance F }` (default 1).
+    pub fn importance(&self) -> f64 {
+        self.extra.as_ref().map_or(1.0, |e| e.importance)
     }
 
     /// Whether `light` lights the object (a group's lights light only its members, whom

@@ -188,6 +188,8 @@ pub enum NodeKind {
     IridWavelength,
     Radiosity,
     RadiositySetting,
+    ObjectRadiosity,
+    Importance,
     Albedo,
     Reflection,
     Falloff,
@@ -944,6 +946,8 @@ impl<'u> Lower<'u> {
             Rule::irid_wavelength => NodeKind::IridWavelength,
             Rule::radiosity => NodeKind::Radiosity,
             Rule::radiosity_setting => NodeKind::RadiositySetting,
+            Rule::object_radiosity => NodeKind::ObjectRadiosity,
+            Rule::importance => NodeKind::Importance,
             Rule::albedo => NodeKind::Albedo,
             Rule::reflection => NodeKind::Reflection,
             Rule::falloff => NodeKind::Falloff,
@@ -1392,6 +1396,7 @@ fn is_word(rule: Rule) -> bool {
             | rainbow_kw
             | radiosity_kw
             | kw_radiosity
+            | kw_importance
             | dispersion_kw
             | kw_rainbow
             | kw_media

@@ -92,6 +92,8 @@ pub enum View<'a> {
         value: &'a Expr,
         second: Option<&'a Expr>,
     },
+    /// `importance F` in an object's `radiosity { }`.
+    Importance(&'a Expr),
     /// A media setting: its word is the node's; `second` only for `samples Min, Max`.
     MediaSetting {
         value: &'a Expr,
@@ -510,6 +512,7 @@ impl Node {
                 },
                 _ => View::Malformed,
             },
+            NodeKind::Importance => one(args).map_or(View::Malformed, View::Importance),
             NodeKind::MediaSetting => match args {
                 [value, rest @ ..] if rest.len() <= 1 => View::MediaSetting {
                     value,
@@ -888,6 +891,7 @@ impl Node {
             | NodeKind::Media
             | NodeKind::Rainbow
             | NodeKind::Radiosity
+            | NodeKind::ObjectRadiosity
             | NodeKind::GlobalSettings
             | NodeKind::Perspective
             | NodeKind::CameraType

@@ -1,6 +1,7 @@
 // Radiosity through rad_def.inc's settings (a #switch inside the block), lit only by a glowing
 // panel (emission), with a mirror ball, a bumpy floor seen with `normal on`, a back-lit
-// screen (diffuse_back) and an object radiosity rays do not see (no_radiosity).
+// screen (diffuse_back), an object radiosity rays do not see (no_radiosity) and a box that
+// few of a sample's rays go on from (importance 0.4).
 // Needs POV-Ray's include files installed.
 #version 3.7;
 #include "rad_def.inc"
@@ -16,7 +17,8 @@ plane { x, 2 texture { Grey } }
 plane { z, -4 texture { Grey } }
 box { <-0.6, 2.55, -0.6>, <0.6, 2.6, 0.6> texture { pigment { rgb 1 } finish { emission 6 diffuse 0 } } }
 sphere { <0.7, 0.45, 0.3>, 0.45 texture { pigment { rgb 0.1 } finish { reflection 0.8 diffuse 0.2 } } }
-box { <-1.2, 0, 0.8>, <-0.3, 0.9, 1.2> texture { pigment { rgb <0.9, 0.6, 0.1> } finish { diffuse 0.8 } } }
+box { <-1.2, 0, 0.8>, <-0.3, 0.9, 1.2> texture { pigment { rgb <0.9, 0.6, 0.1> } finish { diffuse 0.8 } }
+      radiosity { importance 0.4 } }
 polygon { 4, <-0.2, 0.2>, <0.3, 0.2>, <0.3, 1.0>, <-0.2, 1.0> translate z*1.6
           texture { pigment { rgb 0.9 } finish { diffuse 0.5, 0.4 } } }
 sphere { <-1.4, 1.6, -1>, 0.3 no_radiosity texture { pigment { rgb <1, 0, 0> } finish { emission 4 } } }

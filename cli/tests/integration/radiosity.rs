@@ -223,3 +223,33 @@ fn the_radiosity_settings_are_read_as_povray_reads_them() {
     .expect("radiosity on");
     assert_eq!(r.minimum_reuse, 0.01);
 }
+
+#[test]
+fn an_objects_radiosity_importance_is_read_and_changes_what_samples_see() {
+    let text = |importance: &str| {
+        format!(
+            "#version 3.7;
+            global_settings {{ assumed_gamma 1 radiosity {{ count 40 }} }}
+            camera {{ location <0, 1, -2.5> look_at <0, 1, 0> angle 70 }}
+            light_source {{ <0, 1.8, -1> rgb 1 }}
+            box {{ <-1.5, 0, -3>, <1.5, 2, 1.5> hollow pigment {{ rgb 0.8 }} }}
+            box {{ <-1.4, 0.1, -2.95>, <1.4, 1.9, -2.9> pigment {{ rgb 1 }} finish {{ emission 3 }}
+                  {importance} }}"
+        )
+    };
+    let scene = load_text(&text("radiosity { importance 0.25 }"), 32, 24);
+    let panel = scene.objects.last().expect("the panel");
+    let extras = panel.extras.as_ref().expect("extras");
+    assert_eq!(extras.importance, Some(0.25));
+    // A quarter of a sample's rays go on from the glowing panel, each counting four times:
+    // the light it sends is about the same, not the same pixels.
+    let all = rendered(&text(""));
+    let quarter = rendered(&text("radiosity { importance 0.25 }"));
+    assert!(all.pixels != quarter.pixels);
+    assert!(
+        (mean(&all) - mean(&quarter)).abs() < 0.1 * mean(&all),
+        "{} {}",
+        mean(&all),
+        mean(&quarter)
+    );
+}

@@ -36,6 +36,8 @@ struct Part {
     sight: ir::Sight,
     /// For a part of a `light_group`: which lights light it.
     light_group: Option<ir::LightGroup>,
+    /// `radiosity { importance F }`, if given.
+    importance: Option<f64>,
     /// `hollow [on|off]` if given; a group's passes to members that have none (as POV-Ray).
     hollow: Option<bool>,
     /// The `bounded_by` shapes of the member it came from (a union's own are the object's).
@@ -157,6 +159,7 @@ impl ObjectValue {
                 no_shadow: false,
                 sight: ir::Sight::default(),
                 light_group: None,
+                importance: None,
                 hollow: None,
                 bounds: Vec::new(),
             }],
@@ -1130,6 +1133,22 @@ impl Evaluator<'_> {
                 let base = object.interior.take().unwrap_or_default();
                 object.interior = Some(self.interior(m, base)?);
             }
+            NodeKind::ObjectRadiosity => {
+                self.each_item(&m.children, &mut |ev, item| {
+                    let View::Importance(e) = item.view() else {
+                        return Err(ev.unknown_item(item, "an object's radiosity"));
+                    };
+                    let v = ev.float(e)?;
+                    if !(v > 0.0 && v <= 1.0) {
+                        return Err(Diagnostic::error(
+                            "radiosity importance must be above 0 and at most 1",
+                            e.span,
+                        ));
+                    }
+                    object.parts.iter_mut().for_each(|p| p.importance = Some(v));
+                    Ok(())
+                })?;
+            }
             NodeKind::Flag if m.word == "hollow" => {
                 // On one object the last `hollow` counts; a group's goes to the members that
                 // have none of their own.
@@ -1342,17 +1361,19 @@ impl Evaluator<'_> {
                     _ => false,
                 };
             let bounds = (!shapes.is_empty()).then(|| Arc::new(ir::Bounds { shapes, test_rays }));
-            let (sight, light_group) = (part.sight, part.light_group);
+            let (sight, light_group, importance) = (part.sight, part.light_group, part.importance);
             let extras = (interior_texture.is_some()
                 || bounds.is_some()
                 || sight != ir::Sight::default()
-                || light_group.is_some())
+                || light_group.is_some()
+                || importance.is_some())
             .then(|| {
                 Box::new(ir::ObjectExtras {
                     interior_texture,
                     bounds,
                     sight,
                     light_group,
+                    importance,
                 })
             });
             self.scene.objects.push(ir::Object {

@@ -192,6 +192,7 @@ const SUPPORTED: &[&str] = &[
     "ifndef",
     "image_map",
     "image_pattern",
+    "importance",
     "include",
     "inside",
     "inside_vector",
@@ -527,7 +528,6 @@ pub fn reason(word: &str) -> Option<&'static str> {
         | "spacing" | "steps" | "target" | "distance_maximum" => {
             "photons and subsurface scattering are outside trace's subset"
         }
-        "importance" => "an object's radiosity importance is not supported by trace yet",
         "evaluate" | "pwr" | "reciprocal" => {
             "this shape or shape item is not supported by trace yet"
         }

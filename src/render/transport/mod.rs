@@ -102,6 +102,11 @@ pub struct Tracer<'a> {
     pub(super) distance: f64,
     /// Radiosity, if the scene has it: the cache and this tracer's part of the work.
     pub(super) gathering: Option<radiosity::Gathering<'a>>,
+    /// A radiosity sample's ray's share of the sample (its index over the rays' count), while
+    /// it is traced (negative otherwise): if it meets an object of lower `importance`, it
+    /// goes no further. And the importance the last such ray found.
+    pub(super) importance_query: f64,
+    pub(super) importance_found: f64,
     /// During the pretrace: surfaces seen by rays other than radiosity's are not lit by the
     /// lights (their colour is not kept; only the light samples gather counts).
     pub(super) pretrace: bool,
@@ -170,6 +175,8 @@ impl<'a> Tracer<'a> {
             bailout: scene.adc_bailout(),
             distance: f64::INFINITY,
             gathering: None,
+            importance_query: -1.0,
+            importance_found: 1.0,
             pretrace: false,
         }
     }
@@ -187,7 +194,20 @@ impl<'a> Tracer<'a> {
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
         let seer = self.seer;
-        let (mut colour, depth, hit) = match self.scene.nearest_hit(&ray, seer) {
+        let hit = self.scene.nearest_hit(&ray, seer);
+        if self.importance_query >= 0.0 {
+            // (POV-Ray's check on a radiosity sample's ray: an object of lower importance
+            // than the ray's share stops it; only its distance counts.)
+            let share = std::mem::replace(&mut self.importance_query, -1.0);
+            let found = hit.map_or(1.0, |h| self.scene.object(h.object).importance());
+            self.importance_found = found;
+            if found < share {
+                self.see_through = 0.0;
+                self.distance = hit.map_or(f64::INFINITY, |h| h.t);
+                return Rgb::ZERO;
+            }
+        }
+        let (mut colour, depth, hit) = match hit {
             None => {
                 self.see_through = match self.scene.sky_sphere() {
                     None => 1.0 - self.scene.background_alpha(),

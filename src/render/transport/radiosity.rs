@@ -584,7 +584,7 @@ impl Tracer<'_> {
         let (mut sum, mut quality_sum) = (Rgb::ZERO, 0.0);
         let (mut inverse_sum, mut smallest, mut toward) = (0.0, 2e10, DVec3::ZERO);
         let (mut ok, mut ok_raw) = (0u32, 0u32);
-        for _ in 0..count {
+        for i in 0..count {
             let Some(g) = self.gathering.as_mut() else {
                 break;
             };
@@ -608,19 +608,31 @@ impl Tracer<'_> {
                 radiosity: true,
                 sample: true,
             };
+            // (The ray's share of the sample, against the importance of what it meets.)
+            let share = i as f64 / (count as f64 - 1.0).max(1.0);
+            self.importance_query = share;
+            self.importance_found = 1.0;
             let mut colour = self.trace(&ray, level, weight, &super::MediumStack::default());
-            let distance = self.distance;
+            self.importance_query = -1.0;
+            let (distance, found) = (self.distance, self.importance_found);
             let Some(g) = self.gathering.as_mut() else {
                 break;
             };
             g.depth -= 1;
-            let quality = g.quality;
-            let brightest = colour.max_element();
-            if s.max_sample > 0.0 && brightest > s.max_sample {
-                colour *= s.max_sample / brightest;
+            if found >= share {
+                let mut quality = g.quality;
+                if found < 1.0 {
+                    // (Fewer rays go on to such an object: each counts for more.)
+                    let last = (found * (count as f64 - 1.0)).floor();
+                    quality *= count as f64 / (last + 1.0);
+                }
+                let brightest = colour.max_element();
+                if s.max_sample > 0.0 && brightest > s.max_sample {
+                    colour *= s.max_sample / brightest;
+                }
+                quality_sum += quality;
+                sum += colour * quality;
             }
-            quality_sum += quality;
-            sum += colour * quality;
             if distance < smallest {
                 smallest = distance;
                 toward = dir;
