@@ -20,6 +20,8 @@ pub struct Job {
     pub sampled_blur: bool,
     /// Radiosity's ground truth with this many paths a pixel.
     pub radiosity_reference: Option<u32>,
+    /// Radiosity in POV-Ray's one-thread order.
+    pub radiosity_povray_order: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -56,6 +58,8 @@ pub struct Own {
     pub sampled_blur: bool,
     /// `--radiosity-reference N`.
     pub radiosity_reference: Option<u32>,
+    /// `--radiosity-povray-order`.
+    pub radiosity_povray_order: bool,
     pub threads: Option<u32>,
     pub include_paths: Vec<PathBuf>,
     pub declares: Vec<(String, f64)>,
@@ -240,6 +244,7 @@ pub fn resolve(own: Own, pov: PovSettings) -> Result<Job, String> {
         sampled_lights: own.sampled_lights,
         sampled_blur: own.sampled_blur,
         radiosity_reference: own.radiosity_reference,
+        radiosity_povray_order: own.radiosity_povray_order,
         threads: own.threads.or(pov.threads),
         include_paths,
         declares,

@@ -83,6 +83,11 @@ struct RenderArgs {
     /// measuring, not for pictures.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     radiosity_reference: Option<u32>,
+    /// Radiosity in the order of POV-Ray with one thread (`povray +WT1`): the pretrace and the
+    /// final render block after block on one thread, every sample seeing all taken before it.
+    /// For comparing with POV-Ray; the default schedule is parallel and as reproducible.
+    #[arg(long)]
+    radiosity_povray_order: bool,
     /// Render only this rectangle of the image, X0,Y0,X1,Y1 in pixels (ends exclusive): a
     /// part of the image, with the same pixels as the whole render, that `trace merge`
     /// assembles with the other parts (POV-Ray's +SC +EC +SR +ER map onto it).
@@ -435,6 +440,7 @@ fn render(args: &RenderArgs, pov: povray::PovSettings) -> Result<(), Failure> {
         sampled_lights: args.area_lights == Sampling::Sampled,
         sampled_blur: args.focal_blur == Sampling::Sampled,
         radiosity_reference: args.radiosity_reference,
+        radiosity_povray_order: args.radiosity_povray_order,
         threads: args.threads,
         include_paths: args.include_path.clone(),
         declares: args.declare.clone(),
@@ -563,6 +569,7 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         sampled_lights: job.sampled_lights,
         sampled_blur: job.sampled_blur,
         radiosity_reference: job.radiosity_reference,
+        radiosity_povray_order: job.radiosity_povray_order,
         threads: job.threads.map(|t| t as usize),
         region: Some(region),
         progress: Some(progress.clone()),

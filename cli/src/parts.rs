@@ -23,6 +23,11 @@ pub fn key(sources: u64, job: &Job, frame: &Frame) -> String {
         // (Added only when given, so that keys of other parts stay as they were.)
         job.radiosity_reference
             .map_or(String::new(), |n| format!(" reference {n}"))
+            + if job.radiosity_povray_order {
+                " povray order"
+            } else {
+                ""
+            }
     );
     let mut h = sources;
     for b in settings.bytes() {

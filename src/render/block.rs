@@ -8,12 +8,24 @@ use super::{Aov, BLOCK_SIZE, Px, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
 use crate::scene::{Rgb, Scene};
 
+/// What radiosity in POV-Ray's order carries from one block to the next: the final render's
+/// samples so far and the next directions of the pool.
+#[derive(Default)]
+pub(super) struct Carry {
+    samples: Option<(super::transport::radiosity::Cache, Vec<usize>)>,
+}
+
 /// Renders the block whose top-left pixel is (x0, y0), with the media camera rays start in
-/// (if the same for all) and radiosity's cache after the pretrace (if the scene has it).
+/// (if the same for all), radiosity's cache after the pretrace (if the scene has it) and, in
+/// POV-Ray's order, what earlier blocks left.
 pub(super) fn render_block(
     scene: &Scene,
     options: &RenderOptions,
-    (camera_media, radiosity): (Option<MediumStack>, Option<&Shared>),
+    (camera_media, radiosity, mut carry): (
+        Option<MediumStack>,
+        Option<&Shared>,
+        Option<&mut Carry>,
+    ),
     x0: u32,
     y0: u32,
 ) -> BlockResult {
@@ -24,11 +36,21 @@ pub(super) fn render_block(
     // (Radiosity: the block adds its own samples to the pretrace's, seen by it alone.)
     let serial = (y0 / BLOCK_SIZE) * w.div_ceil(BLOCK_SIZE) + x0 / BLOCK_SIZE;
     tracer.gathering = radiosity.map(|shared| {
-        Gathering::new(
-            shared,
-            Pass::Final,
-            super::pretrace::pool_start(serial, 255),
-        )
+        match carry.as_mut() {
+            // (POV-Ray's order: the directions start from the pool's first, and go on.)
+            Some(c) => {
+                let mut g = Gathering::new(shared, Pass::Final, 0);
+                if let Some((own, next)) = c.samples.take() {
+                    (g.own, g.next) = (own, next);
+                }
+                g
+            }
+            None => Gathering::new(
+                shared,
+                Pass::Final,
+                super::pretrace::pool_start(serial, 255),
+            ),
+        }
     });
     counters::take(); // (this block's counts start from zero)
     let block = Block {
@@ -46,6 +68,9 @@ pub(super) fn render_block(
         .gathering
         .as_ref()
         .map_or((0, 0, 0), |g| (g.taken, g.rays, g.reused));
+    if let (Some(c), Some(g)) = (carry, tracer.gathering.take()) {
+        c.samples = Some((g.own, g.next));
+    }
     BlockResult {
         radiosity,
         x0,

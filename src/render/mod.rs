@@ -70,6 +70,11 @@ pub struct RenderOptions {
     /// (the nested mean POV-Ray's samples estimate, converging as the count grows). Ignored
     /// for a scene without radiosity; anti-aliasing is not done.
     pub radiosity_reference: Option<u32>,
+    /// Radiosity in POV-Ray's order with one thread (`+WT1`) instead of the reproducible
+    /// schedule: every pass of the pretrace, then the final render, block after block on one
+    /// thread, each sample seeing all taken before it and drawing the next directions of the
+    /// pool. Slower (one thread); for comparing with `povray +WT1`.
+    pub radiosity_povray_order: bool,
     /// A picture of the render as it goes, each block copied in as it finishes (a live view,
     /// `trace watch`): the pixels are the output's, the order of blocks the threads'.
     pub preview: Option<std::sync::Arc<Preview>>,
@@ -194,6 +199,7 @@ impl Default for RenderOptions {
             sampled_blur: false,
             cancel: Cancel::new(),
             radiosity_reference: None,
+            radiosity_povray_order: false,
             preview: None,
         }
     }
@@ -305,6 +311,9 @@ pub struct Bands<'a> {
     band_block_rows: u32,
     /// Radiosity's cache after the pretrace, if the scene has radiosity.
     radiosity: Option<transport::radiosity::Shared>,
+    /// In POV-Ray's order: the samples the final render took so far and the next directions,
+    /// carried from block to block.
+    carry: Option<block::Carry>,
     /// Statistics of the bands rendered so far.
     pub stats: RenderStats,
 }
@@ -339,6 +348,8 @@ impl<'a> Bands<'a> {
             options,
             pool,
             camera_media,
+            carry: (radiosity.is_some() && options.radiosity_povray_order)
+                .then(block::Carry::default),
             radiosity,
             region,
             next_block_row: region.y0 / BLOCK_SIZE,
@@ -377,42 +388,48 @@ impl<'a> Bands<'a> {
         let radiosity = self.radiosity.as_ref();
         let columns = blocks_x.len() as u32;
         let progress = options.progress.as_deref();
-        let blocks: Vec<Option<block::BlockResult>> = self.pool.install(|| {
+        let one = |i: u32, carry: Option<&mut block::Carry>| {
+            if options.cancel.is_cancelled() {
+                return None;
+            }
+            let (bx, by) = (blocks_x.start + i % columns, i / columns);
+            let block = block::render_block(
+                scene,
+                options,
+                (media, radiosity, carry),
+                bx * BLOCK_SIZE,
+                by * BLOCK_SIZE,
+            );
+            if let Some(p) = progress {
+                use std::sync::atomic::Ordering::Relaxed;
+                let inside =
+                    |a: u32, n: u32, lo: u32, hi: u32| (a + n).min(hi).saturating_sub(a.max(lo));
+                let pixels = inside(block.x0, block.width, region.x0, region.x1)
+                    * inside(block.y0, block.height(), region.y0, region.y1);
+                p.pixels.fetch_add(u64::from(pixels), Relaxed);
+                p.rays.fetch_add(block.counts.total(), Relaxed);
+            }
+            if let Some(preview) = &options.preview {
+                preview.write(&block, region, scene.gamma());
+            }
+            Some(block)
+        };
+        let blocks: Vec<Option<block::BlockResult>> = match self.carry.as_mut() {
+            // (Radiosity in POV-Ray's order: the blocks one after another, on this thread.)
+            Some(carry) => (first * columns..last * columns)
+                .map(|i| one(i, Some(&mut *carry)))
+                .collect(),
             // (One block per task: costly blocks often sit together, around one object, and
             // rayon's default chunks of many blocks left a core idle; measured 133 % of 2 cores
             // on examples/parametric.rt before, see the commit.)
-            (first * columns..last * columns)
-                .into_par_iter()
-                .with_max_len(1)
-                .map(|i| {
-                    if options.cancel.is_cancelled() {
-                        return None;
-                    }
-                    let (bx, by) = (blocks_x.start + i % columns, i / columns);
-                    let block = block::render_block(
-                        scene,
-                        options,
-                        (media, radiosity),
-                        bx * BLOCK_SIZE,
-                        by * BLOCK_SIZE,
-                    );
-                    if let Some(p) = progress {
-                        use std::sync::atomic::Ordering::Relaxed;
-                        let inside = |a: u32, n: u32, lo: u32, hi: u32| {
-                            (a + n).min(hi).saturating_sub(a.max(lo))
-                        };
-                        let pixels = inside(block.x0, block.width, region.x0, region.x1)
-                            * inside(block.y0, block.height(), region.y0, region.y1);
-                        p.pixels.fetch_add(u64::from(pixels), Relaxed);
-                        p.rays.fetch_add(block.counts.total(), Relaxed);
-                    }
-                    if let Some(preview) = &options.preview {
-                        preview.write(&block, region, scene.gamma());
-                    }
-                    Some(block)
-                })
-                .collect()
-        });
+            None => self.pool.install(|| {
+                (first * columns..last * columns)
+                    .into_par_iter()
+                    .with_max_len(1)
+                    .map(|i| one(i, None))
+                    .collect()
+            }),
+        };
         let y0 = (first * BLOCK_SIZE).max(region.y0);
         let mut y1 = (last * BLOCK_SIZE).min(region.y1);
         if blocks.iter().any(Option::is_none) {

@@ -89,6 +89,7 @@ pub(super) fn pretrace(
         (bx * by) as usize
     ];
     let mut stats = PretraceStats::default();
+    let mut carried_next: Option<Vec<usize>> = None;
     for pass in 0..steps {
         if blocks.iter().all(Option::is_none) {
             break;
@@ -96,7 +97,13 @@ pub(super) fn pretrace(
         let size = (start * 0.5f64.powi(pass as i32)).max(end);
         let next_size = (start * 0.5f64.powi(pass as i32 + 1)).max(end);
         let last = pass + 1 == steps;
-        let groups = (1u32 << pass.min(20)).min(bx * by);
+        // (In POV-Ray's order: one group, drawing on in the pool from the last pass.)
+        let groups = if options.radiosity_povray_order {
+            1
+        } else {
+            (1u32 << pass.min(20)).min(bx * by)
+        };
+        let carried = carried_next.take();
         let shared_now = &shared;
         let blocks_now = &blocks;
         let done: Vec<_> = pool.install(|| {
@@ -106,11 +113,11 @@ pub(super) fn pretrace(
                 .map(|group| {
                     let mut tracer = Tracer::new(scene);
                     tracer.pretrace = true;
-                    tracer.gathering = Some(Gathering::new(
-                        shared_now,
-                        Pass::Pretrace,
-                        pool_start(group, pass),
-                    ));
+                    let mut g = Gathering::new(shared_now, Pass::Pretrace, pool_start(group, pass));
+                    if options.radiosity_povray_order {
+                        g.next = carried.clone().unwrap_or_else(|| vec![0; g.next.len()]);
+                    }
+                    tracer.gathering = Some(g);
                     let mut rand = Jitter {
                         table: &jitter,
                         index: 0,
@@ -141,7 +148,7 @@ pub(super) fn pretrace(
                         points += n;
                     }
                     let g = tracer.gathering?;
-                    Some((g.own, after, points, g.taken, g.rays))
+                    Some((g.own, after, points, (g.taken, g.rays), g.next))
                 })
                 .collect()
         });
@@ -149,7 +156,8 @@ pub(super) fn pretrace(
             return None;
         }
         stats.passes += 1;
-        for (cache, after, points, samples, rays) in done.into_iter().flatten() {
+        for (cache, after, points, (samples, rays), next) in done.into_iter().flatten() {
+            carried_next = Some(next);
             shared.cache.merge(&cache, &shared.bounces);
             for (serial, progress) in after {
                 blocks[serial as usize] = progress;

@@ -376,7 +376,7 @@ pub(in crate::render) struct Gathering<'a> {
     /// `error_bound`, times `low_error_factor` during the pretrace.
     error_bound: f64,
     /// The next direction of the pool, for each bounce.
-    next: Vec<usize>,
+    pub(in crate::render) next: Vec<usize>,
     /// The bounce being gathered (0 for the surfaces rays from the camera meet).
     pub(in crate::render) depth: u32,
     /// The quality of the light gathered along the path being traced (POV-Ray's ticket's
