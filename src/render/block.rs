@@ -95,27 +95,24 @@ fn reference_pixels<'a>(
 ) -> (Vec<super::Px>, u64) {
     let (w, h) = (block.options.width, block.options.height);
     let mut pixels = Vec::with_capacity(block.xs.len() * block.ys.len());
-    let mut taken = (0, 0);
+    // (One gathering for the block, its stream started again for each path; it counts the
+    // block's rays.)
+    tracer.gathering = Some(Gathering::reference(shared, 0));
     for y in block.ys.clone() {
         for x in block.xs.clone() {
             let mut sum = glam::DVec4::ZERO;
             for path in 0..paths.max(1) {
                 let seed = (u64::from(y) * u64::from(w) + u64::from(x)) << 24 | u64::from(path);
-                tracer.gathering = Some(Gathering::reference(shared, seed));
+                if let Some(g) = tracer.gathering.as_mut() {
+                    g.restart(seed);
+                }
                 let ray = camera::camera_ray(block.scene, w, h, f64::from(x), f64::from(y));
                 let c = camera::trace_primary(tracer, block.camera_media, ray);
                 sum += c.extend(tracer.see_through);
-                if let Some(g) = &tracer.gathering {
-                    taken = (taken.0 + g.taken, taken.1 + g.rays);
-                }
             }
             pixels.push(sum / f64::from(paths.max(1)));
         }
     }
-    // (The block's radiosity counts: rays shot.)
-    let mut g = Gathering::reference(shared, 0);
-    (g.taken, g.rays) = taken;
-    tracer.gathering = Some(g);
     let samples = pixels.len() as u64 * u64::from(paths.max(1));
     (pixels, samples)
 }

@@ -402,9 +402,10 @@ impl Evaluator<'_> {
                             second.map_or(value.span, |e| e.span),
                         ));
                     }
-                    if pool > 1 << 24 {
+                    // (The pool is built in memory, 24 bytes a direction: 24 MiB at most.)
+                    if pool > 1 << 20 {
                         return Err(Diagnostic::error(
-                            "unsupported: more than 16777216 radiosity directions",
+                            "unsupported: more than 1048576 radiosity directions",
                             second.map_or(value.span, |e| e.span),
                         ));
                     }

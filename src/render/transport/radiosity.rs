@@ -398,10 +398,14 @@ impl<'a> Gathering<'a> {
     /// Ground truth: every query answered afresh by one ray in a random cosine-weighted
     /// direction (from the stream `seed` starts), no cache.
     pub(in crate::render) fn reference(shared: &'a Shared, seed: u64) -> Self {
-        Gathering {
-            stream: Some(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0xD1B5_4A32_D192_ED03),
-            ..Gathering::new(shared, Pass::Final, 0)
-        }
+        let mut g = Gathering::new(shared, Pass::Final, 0);
+        g.restart(seed);
+        g
+    }
+
+    /// Starts ground truth's random stream again from `seed` (a new path), keeping the rest.
+    pub(in crate::render) fn restart(&mut self, seed: u64) {
+        self.stream = Some(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0xD1B5_4A32_D192_ED03);
     }
 
     /// The next number of the stream, uniform in [0, 1) (SplitMix64).
