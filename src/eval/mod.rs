@@ -336,6 +336,7 @@ impl<'a> Evaluator<'a> {
                 objects: Vec::new(),
                 next_medium: 0,
                 reuse_given: (false, false, None),
+                default_importance: None,
                 next_light_group: 0,
                 default_bump_size: material::DEFAULT_BUMP_SIZE,
                 background: Rgb::ZERO,
@@ -526,6 +527,14 @@ impl<'a> Evaluator<'a> {
                             let base = ev.scene.default_texture.normal.take();
                             ev.scene.default_texture.normal =
                                 Some(Box::new(ev.normal(child, base)?));
+                        }
+                        NodeKind::ObjectRadiosity => {
+                            for item in &child.children {
+                                let View::Importance(e) = item.view() else {
+                                    return Err(ev.unknown_item(item, "a default radiosity"));
+                                };
+                                ev.scene.default_importance = Some(ev.importance(e)?);
+                            }
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),
                     }

@@ -270,6 +270,9 @@ pub struct Radiosity {
     /// Whether `ambient` still lights surfaces (scenes before `#version 3.7`); from 3.7
     /// only `emission` does once radiosity is on.
     pub keeps_ambient: bool,
+    /// `#default { radiosity { importance F } }` (default 1): the importance of objects
+    /// that give none, and of the sky.
+    pub default_importance: f64,
 }
 
 impl Default for Radiosity {
@@ -294,6 +297,7 @@ impl Default for Radiosity {
             pretrace_start: 0.08,
             pretrace_end: 0.04,
             keeps_ambient: false,
+            default_importance: 1.0,
         }
     }
 }
@@ -599,13 +603,6 @@ pub struct Sight {
     pub double_illuminate: bool,
     /// `no_radiosity`: unseen by the rays radiosity samples shoot (and the rays they spawn).
     pub no_radiosity: bool,
-}
-
-impl ObjectExtras {
-    /// `radiosity { importance F }` (default 1).
-    pub fn importance(&self) -> f64 {
-        self.importance.unwrap_or(1.0)
-    }
 }
 
 /// The lights of an object in a `light_group`.

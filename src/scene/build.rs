@@ -394,6 +394,11 @@ impl Scene {
         if let (Some(cache), Some((_, used))) = (cache, kept) {
             *cache.meshes.lock().unwrap_or_else(|e| e.into_inner()) = used;
         }
+        let default_importance = ir
+            .settings
+            .radiosity
+            .as_ref()
+            .map_or(1.0, |r| r.default_importance);
         let (objects, bounds): (Vec<Object>, Vec<_>) = ir
             .objects
             .par_iter()
@@ -430,7 +435,11 @@ impl Scene {
                 });
                 let sight = o.sight();
                 let light_group = o.extras.as_ref().and_then(|e| e.light_group.clone());
-                let importance = o.extras.as_ref().map_or(1.0, |e| e.importance());
+                let importance = o
+                    .extras
+                    .as_ref()
+                    .and_then(|e| e.importance)
+                    .unwrap_or(default_importance);
                 if back_material.is_some()
                     || bounds.is_some()
                     || sight != ir::Sight::default()

@@ -35,6 +35,8 @@ pub(in crate::eval) struct Builder {
     /// for the two, applied once the scene is read, moves only one it was not given), and
     /// where the block stood.
     pub(in crate::eval) reuse_given: (bool, bool, Option<crate::diag::Span>),
+    /// `#default { radiosity { importance F } }`, the last given.
+    pub(in crate::eval) default_importance: Option<f64>,
     pub(in crate::eval) camera: Option<CameraItems>,
     pub(in crate::eval) lights: Vec<ir::Light>,
     pub(in crate::eval) objects: Vec<ir::Object>,

@@ -274,6 +274,18 @@ impl ObjectValue {
 }
 
 impl Evaluator<'_> {
+    /// A radiosity `importance`: above 0 and at most 1.
+    pub(in crate::eval) fn importance(&mut self, e: &Expr) -> Result<f64> {
+        let v = self.float(e)?;
+        if !(v > 0.0 && v <= 1.0) {
+            return Err(Diagnostic::error(
+                "radiosity importance must be above 0 and at most 1",
+                e.span,
+            ));
+        }
+        Ok(v)
+    }
+
     /// Evaluates an object statement with its modifiers.
     pub(in crate::eval) fn object(&mut self, node: &Node) -> Result<ObjectValue> {
         let mut modifiers = node.children.as_slice();
@@ -1138,13 +1150,7 @@ impl Evaluator<'_> {
                     let View::Importance(e) = item.view() else {
                         return Err(ev.unknown_item(item, "an object's radiosity"));
                     };
-                    let v = ev.float(e)?;
-                    if !(v > 0.0 && v <= 1.0) {
-                        return Err(Diagnostic::error(
-                            "radiosity importance must be above 0 and at most 1",
-                            e.span,
-                        ));
-                    }
+                    let v = ev.importance(e)?;
                     object.parts.iter_mut().for_each(|p| p.importance = Some(v));
                     Ok(())
                 })?;

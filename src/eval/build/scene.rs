@@ -483,6 +483,7 @@ impl Evaluator<'_> {
             return Ok(());
         };
         r.keeps_ambient = version < 3.7 - 1e-9;
+        r.default_importance = self.scene.default_importance.unwrap_or(1.0);
         if r.pretrace_end > r.pretrace_start {
             return Err(Diagnostic::error(
                 "radiosity pretrace_end must not be above pretrace_start",

@@ -8,6 +8,7 @@ mod lights;
 mod media;
 mod medium;
 pub(super) mod radiosity;
+mod radiosity_legacy;
 mod rainbow;
 mod shadow;
 mod spectrum;
@@ -195,11 +196,14 @@ impl<'a> Tracer<'a> {
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
         let seer = self.seer;
         let hit = self.scene.nearest_hit(&ray, seer);
-        if self.importance_query >= 0.0 {
+        let share = self.importance_query;
+        if share >= 0.0 {
             // (POV-Ray's check on a radiosity sample's ray: an object of lower importance
             // than the ray's share stops it; only its distance counts.)
-            let share = std::mem::replace(&mut self.importance_query, -1.0);
-            let found = hit.map_or(1.0, |h| self.scene.object(h.object).importance());
+            let found = match hit {
+                Some(h) => self.scene.object(h.object).importance(),
+                None => self.scene.radiosity().map_or(1.0, |r| r.default_importance),
+            };
             self.importance_found = found;
             if found < share {
                 self.see_through = 0.0;
@@ -207,6 +211,27 @@ impl<'a> Tracer<'a> {
                 return Rgb::ZERO;
             }
         }
+        // The rays this one spawns are not checked, and the share is put back after, as
+        // POV-Ray keeps it. (So, as in POV-Ray, once a sample has been gathered at a surface,
+        // the rays its shading traces next, such as a reflection, carry the sample's last
+        // share and stop at an object of lower importance.)
+        self.importance_query = -1.0;
+        let colour = self.traced(&ray, hit, level, weight, media);
+        self.importance_query = share;
+        colour
+    }
+
+    /// [`Tracer::trace`] past the checks: the colour of `ray`, which meets `hit` first.
+    fn traced(
+        &mut self,
+        ray: &Ray,
+        hit: Option<crate::scene::Hit>,
+        level: u32,
+        weight: f64,
+        media: &MediumStack,
+    ) -> Rgb {
+        let ray = *ray;
+        let seer = self.seer;
         let (mut colour, depth, hit) = match hit {
             None => {
                 self.see_through = match self.scene.sky_sphere() {

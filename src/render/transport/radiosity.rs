@@ -78,11 +78,19 @@ impl Bounce {
     }
 }
 
-/// The cosine-weighted directions samples draw their rays from, around +y: the first `n`
-/// points of the 2-D Halton sequence in bases 2 and 3 (POV-Ray's pool, whatever its size; it
-/// uses an older table of 1600 directions instead when `count`'s second value is below
-/// 1600).
+/// The cosine-weighted directions samples draw their rays from, around +y: POV-Ray's pool of
+/// `n` (`count`'s second value). Below 1600 it is the start of POV-Ray 3.6's table; otherwise
+/// the first `n` points of the 2-D Halton sequence in bases 2 and 3.
 pub(in crate::render) fn directions(n: u32) -> Vec<DVec3> {
+    if (n as usize) < super::radiosity_legacy::LEGACY.len() {
+        return super::radiosity_legacy::LEGACY[..n as usize]
+            .iter()
+            .map(|&[x, y, z]| {
+                let unpack = |b: u8| f64::from(b) * (1.0 / 255.0);
+                DVec3::new(unpack(x) * 2.0 - 1.0, unpack(y), unpack(z) * 2.0 - 1.0).normalize()
+            })
+            .collect();
+    }
     fn halton(base: u64, index: u64) -> f64 {
         let (mut i, mut h, mut q) = (index + 1, 0.0, 1.0 / base as f64);
         while i > 0 {
@@ -614,10 +622,9 @@ impl Tracer<'_> {
             };
             // (The ray's share of the sample, against the importance of what it meets.)
             let share = i as f64 / (count as f64 - 1.0).max(1.0);
+            // (The share stays set after the loop, as in POV-Ray: see `Tracer::trace`.)
             self.importance_query = share;
-            self.importance_found = 1.0;
             let mut colour = self.trace(&ray, level, weight, &super::MediumStack::default());
-            self.importance_query = -1.0;
             let (distance, found) = (self.distance, self.importance_found);
             let Some(g) = self.gathering.as_mut() else {
                 break;
@@ -801,6 +808,28 @@ mod tests {
         let r = 0.5f64.sqrt();
         let t = 2.0 * std::f64::consts::PI / 3.0;
         assert!(d[0].abs_diff_eq(DVec3::new(r * t.cos(), r, r * t.sin()), 1e-12));
+    }
+
+    #[test]
+    fn a_pool_below_1600_is_the_start_of_the_old_table() {
+        let d = directions(400);
+        assert_eq!(d.len(), 400);
+        assert!(
+            d.iter()
+                .all(|v| (v.length() - 1.0).abs() < 1e-12 && v.y >= 0.0)
+        );
+        // The table's first entry is (250, 71, 127).
+        let first = DVec3::new(
+            250.0 / 255.0 * 2.0 - 1.0,
+            71.0 / 255.0,
+            127.0 / 255.0 * 2.0 - 1.0,
+        );
+        assert!(d[0].abs_diff_eq(first.normalize(), 1e-12));
+        // It is cosine-weighted too, and not the Halton pool.
+        let whole = directions(1599);
+        let mean = whole.iter().map(|v| v.y).sum::<f64>() / 1599.0;
+        assert!((mean - 2.0 / 3.0).abs() < 0.02, "{mean}");
+        assert!(!d[0].abs_diff_eq(directions(1600)[0], 1e-3));
     }
 
     #[test]
