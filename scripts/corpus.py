@@ -6,7 +6,8 @@ Usage: scripts/corpus.py [--out docs/corpus.csv]   (also writes docs/corpus.md b
 Writes one CSV row per scene (scene, trace exit code, first message line, mean FLIP, RMSE,
 NaN pixels, trace seconds, POV-Ray seconds) and prints a summary: how many render, how many
 match (mean FLIP <= 0.01), and the messages that stop the rest, most frequent first. A scene
-with radiosity is compared with POV-Ray's one-thread render, its only reproducible picture.
+with radiosity is rendered in POV-Ray's one-thread order (--radiosity-povray-order) and compared
+with POV-Ray's one-thread render, its only reproducible picture.
 """
 import collections, csv, os, shutil, subprocess, sys, tempfile, time
 
@@ -32,10 +33,16 @@ def main():
         # An animation (its INI beside it names the frames): both renderers render its first
         # frame, with the INI's frame and clock range (POV-Ray's switches, read by both).
         switches, suffix = animation(os.path.join(folder, name[:-4] + ".ini"))
+        # (POV-Ray's radiosity reproduces only with one thread: that is its picture here, and
+        # trace renders such a scene in that order.)
+        text = open(os.path.join(folder, name), errors="replace").read()
+        radiosity = "radiosity" in text or "Rad_Settings" in text
         t0 = time.time()
         try:
+            order = ["--radiosity-povray-order"] if radiosity else []
             p = subprocess.run([trace, name, "-o", "t.exr", "--width", "320", "--height", "240", "--aa", "off", "-q",
-                                "-L", INCLUDE] + switches, cwd=folder, capture_output=True, text=True, timeout=60)
+                                "-L", INCLUDE] + switches + order, cwd=folder, capture_output=True, text=True,
+                               timeout=60)
             code, message = p.returncode, next((l for l in p.stderr.splitlines() if l.startswith("error")), "")
         except subprocess.TimeoutExpired:
             code, message = -1, "timeout"
@@ -44,9 +51,7 @@ def main():
                "trace_s": f"{trace_s:.2f}", "povray_s": ""}
         if code == 0:
             t0 = time.time()
-            # (POV-Ray's radiosity reproduces only with one thread: that is its picture here.)
-            text = open(os.path.join(folder, name), errors="replace").read()
-            threads = ["+WT1"] if "radiosity" in text or "Rad_Settings" in text else []
+            threads = ["+WT1"] if radiosity else []
             subprocess.run(["povray", "+I" + name, "+Op.exr", "+FE", "+W320", "+H240", "-D", "-GA", "-A", "-J",
                             "+L" + INCLUDE] + switches + threads, cwd=folder, capture_output=True, timeout=300)
             row["povray_s"] = f"{time.time() - t0:.2f}"

@@ -79,7 +79,7 @@ pub use film::Film;
 pub use geometry::counters::{KINDS as SHAPE_KINDS, Tests as ShapeTests};
 pub use render::{
     Antialias, Aov, Preview, Progress, RayCounts, RenderOptions, RenderStats, Rendered,
-    bytes_needed,
+    SamplesByDepth, bytes_needed,
 };
 pub use syntax::bulk::ListCache;
 pub use syntax::{MAX_NESTING, is_identifier};

@@ -790,15 +790,18 @@ fn stats_block(
             "Radiosity pretrace: {} passes, {} points, {} samples of {} rays in {:.3} s",
             p.passes,
             p.points,
-            p.samples,
+            p.total_samples(),
             p.rays,
             p.time.as_secs_f64()
         );
         let _ = writeln!(
             out,
             "Radiosity final:    {} samples of {} rays, {} reused",
-            r.radiosity_samples, r.radiosity_rays, r.radiosity_reused
+            r.radiosity_samples.iter().sum::<u64>(),
+            r.radiosity_rays,
+            r.radiosity_reused
         );
+        radiosity_table(&mut out, &p.samples, &r.radiosity_samples);
     }
     let _ = writeln!(out, "{line}");
     let _ = writeln!(
@@ -853,4 +856,62 @@ fn compare(
         trace::film::write_rgb8_png(path, a.width, a.height, c.flip_map).map_err(Error::from)?;
     }
     Ok(())
+}
+
+/// POV-Ray's table of radiosity samples (`+V` statistics): a row for each pretrace pass (the
+/// fifth and later together, `5+`) and the final render, a column for each depth that took
+/// any (`Depth 4+` for the deeper), and their totals.
+fn radiosity_table(
+    out: &mut String,
+    passes: &[trace::SamplesByDepth],
+    last: &trace::SamplesByDepth,
+) {
+    use std::fmt::Write;
+    let mut rows = [[0u64; 5]; 5];
+    for (pass, counts) in passes.iter().enumerate() {
+        for (depth, n) in counts.iter().enumerate() {
+            rows[pass.min(4)][depth] += n;
+        }
+    }
+    let mut by_depth = [0u64; 5];
+    for counts in rows.iter().chain([last]) {
+        for (depth, n) in counts.iter().enumerate() {
+            by_depth[depth] += n;
+        }
+    }
+    let used = |depth: usize| by_depth[depth] > 0;
+    let cells = |out: &mut String, counts: &[u64; 5]| {
+        for (depth, &n) in counts.iter().enumerate() {
+            if n > 0 {
+                let _ = write!(out, " {n:10}");
+            } else if used(depth) {
+                let _ = write!(out, "          -");
+            }
+        }
+        let _ = writeln!(out, " {:15}", counts.iter().sum::<u64>());
+    };
+    let _ = write!(out, "  Pass ");
+    for depth in (0..5).filter(|&d| used(d)) {
+        let _ = if depth < 4 {
+            write!(out, "    Depth {depth}")
+        } else {
+            write!(out, "   Depth 4+")
+        };
+    }
+    let _ = writeln!(out, "           Total");
+    for (pass, counts) in rows.iter().enumerate() {
+        if counts.iter().sum::<u64>() > 0 {
+            let _ = write!(out, "  {}{}   ", pass + 1, if pass < 4 { ' ' } else { '+' });
+            cells(out, counts);
+        }
+    }
+    if last.iter().sum::<u64>() > 0 {
+        let _ = write!(out, "  Final");
+        cells(out, last);
+    }
+    let _ = write!(out, "  Total");
+    for depth in (0..5).filter(|&d| used(d)) {
+        let _ = write!(out, " {:10}", by_depth[depth]);
+    }
+    let _ = writeln!(out, " {:15}", by_depth.iter().sum::<u64>());
 }

@@ -67,7 +67,7 @@ pub(super) fn render_block(
     let radiosity = tracer
         .gathering
         .as_ref()
-        .map_or((0, 0, 0), |g| (g.taken, g.rays, g.reused));
+        .map_or(([0; 5], 0, 0), |g| (g.taken, g.rays, g.reused));
     if let (Some(c), Some(g)) = (carry, tracer.gathering.take()) {
         c.samples = Some((g.own, g.next));
     }
@@ -166,8 +166,8 @@ pub(super) struct BlockResult {
     pub(super) counts: RayCounts,
     pub(super) tests: counters::Tests,
     pub(super) samples: u64,
-    /// Radiosity samples taken, their rays, and queries answered from the cache.
-    pub(super) radiosity: (u64, u64, u64),
+    /// Radiosity samples taken (by depth), their rays, and queries answered from the cache.
+    pub(super) radiosity: (super::SamplesByDepth, u64, u64),
 }
 
 impl BlockResult {

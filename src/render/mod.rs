@@ -14,6 +14,11 @@ mod transport;
 
 pub use antialias::Antialias;
 pub use pretrace::PretraceStats;
+
+/// Radiosity samples taken, by the depth of the bounce they serve (POV-Ray's recursion depth:
+/// 0 for a surface the camera sees; the last entry counts depth 4 and deeper), as POV-Ray
+/// counts them in its statistics.
+pub type SamplesByDepth = [u64; 5];
 pub use transport::RayCounts;
 /// The shadow test, for the stability suite's counts of light leaking through surfaces.
 #[cfg(feature = "internals")]
@@ -249,8 +254,8 @@ pub struct RenderStats {
     pub non_finite: u64,
     /// Radiosity's pretrace (zero without radiosity).
     pub pretrace: PretraceStats,
-    /// Radiosity samples the final render took.
-    pub radiosity_samples: u64,
+    /// Radiosity samples the final render took, by depth.
+    pub radiosity_samples: SamplesByDepth,
     /// The rays they shot.
     pub radiosity_rays: u64,
     /// Radiosity queries the final render answered from the cache.
@@ -474,7 +479,9 @@ impl<'a> Bands<'a> {
             self.stats.counts.add(&b.counts);
             self.stats.tests.add(&b.tests);
             self.stats.samples += b.samples;
-            self.stats.radiosity_samples += b.radiosity.0;
+            for (all, block) in self.stats.radiosity_samples.iter_mut().zip(b.radiosity.0) {
+                *all += block;
+            }
             self.stats.radiosity_rays += b.radiosity.1;
             self.stats.radiosity_reused += b.radiosity.2;
         }

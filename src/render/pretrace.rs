@@ -26,18 +26,25 @@ struct Progress {
 }
 
 /// What the pretrace did, for statistics.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct PretraceStats {
     /// Passes over the image.
     pub passes: u32,
     /// Points traced.
     pub points: u64,
-    /// Samples taken.
-    pub samples: u64,
+    /// Samples taken in each pass, by depth.
+    pub samples: Vec<super::SamplesByDepth>,
     /// The rays they shot.
     pub rays: u64,
     /// The time it took.
     pub time: std::time::Duration,
+}
+
+impl PretraceStats {
+    /// Samples taken in all passes.
+    pub fn total_samples(&self) -> u64 {
+        self.samples.iter().flatten().sum()
+    }
 }
 
 /// POV-Ray's table of jitter values: 2047 numbers from −1 to 1 (MT19937, default seed).
@@ -156,6 +163,7 @@ pub(super) fn pretrace(
             return None;
         }
         stats.passes += 1;
+        stats.samples.push([0; 5]);
         for (cache, after, points, (samples, rays), next) in done.into_iter().flatten() {
             carried_next = Some(next);
             shared.cache.merge(&cache, &shared.bounces);
@@ -163,7 +171,10 @@ pub(super) fn pretrace(
                 blocks[serial as usize] = progress;
             }
             stats.points += points;
-            stats.samples += samples;
+            let pass = stats.samples.last_mut().expect("this pass's counts");
+            for (all, group) in pass.iter_mut().zip(samples) {
+                *all += group;
+            }
             stats.rays += rays;
         }
     }

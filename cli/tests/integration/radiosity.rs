@@ -35,6 +35,16 @@ fn render_scene_in(
     region: Option<trace::film::Region>,
     povray_order: bool,
 ) -> Film {
+    rendered_scene(name, threads, region, povray_order).film
+}
+
+/// The render of tests/radiosity/NAME.pov, with its statistics.
+fn rendered_scene(
+    name: &str,
+    threads: usize,
+    region: Option<trace::film::Region>,
+    povray_order: bool,
+) -> trace::Rendered {
     let path = root().join("tests/radiosity").join(format!("{name}.pov"));
     let options = trace::LoadOptions {
         width: 160,
@@ -52,7 +62,34 @@ fn render_scene_in(
         radiosity_povray_order: povray_order,
         ..Default::default()
     };
-    trace::render(&scene, &render).expect("renders").film
+    trace::render(&scene, &render).expect("renders")
+}
+
+#[test]
+fn in_povray_order_radiosity_takes_povray_s_samples_pass_by_pass_and_depth_by_depth() {
+    // POV-Ray 3.7's statistics (`povray +WT1 +W160 +H120 -A`, its table of samples by pass
+    // and depth), and the same counts from trace.
+    type Counts = trace::SamplesByDepth;
+    let cases: [(&str, &[Counts], Counts); 2] = [
+        (
+            "room",
+            &[[125, 150, 0, 0, 0], [126, 26, 0, 0, 0]],
+            [1, 0, 0, 0, 0],
+        ),
+        (
+            "settings",
+            &[[133, 0, 0, 0, 0], [485, 0, 0, 0, 0], [1123, 0, 0, 0, 0]],
+            [795, 0, 0, 0, 0],
+        ),
+    ];
+    for (name, passes, last) in cases {
+        let stats = rendered_scene(name, 2, None, true).stats;
+        assert_eq!(
+            stats.pretrace.samples, passes,
+            "{name}: the pretrace's passes"
+        );
+        assert_eq!(stats.radiosity_samples, last, "{name}: the final render");
+    }
 }
 
 #[test]

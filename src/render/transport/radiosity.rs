@@ -394,7 +394,7 @@ pub(in crate::render) struct Gathering<'a> {
     pub(in crate::render) queries: u64,
     pub(in crate::render) found: f64,
     /// Samples taken, rays they shot, and queries answered from the cache.
-    pub(in crate::render) taken: u64,
+    pub(in crate::render) taken: super::super::SamplesByDepth,
     pub(in crate::render) rays: u64,
     pub(in crate::render) reused: u64,
     /// Ground truth instead of the cache: the state of the random stream that picks each
@@ -443,7 +443,7 @@ impl<'a> Gathering<'a> {
             quality: 1.0,
             queries: 0,
             found: 0.0,
-            taken: 0,
+            taken: [0; 5],
             rays: 0,
             reused: 0,
             stream: None,
@@ -654,7 +654,7 @@ impl Tracer<'_> {
         let Some(g) = self.gathering.as_mut() else {
             return (Rgb::ZERO, 0.0);
         };
-        g.taken += 1;
+        g.taken[(g.depth as usize).min(4)] += 1;
         g.rays += u64::from(ok);
         let light = if quality_sum == 0.0 {
             sum
@@ -705,7 +705,7 @@ impl Tracer<'_> {
                 break;
             }
         }
-        g.taken += 1;
+        g.taken[(g.depth as usize).min(4)] += 1;
         g.rays += 1;
         g.depth += 1;
         let (max_sample, bailout) = (s.max_sample, s.adc_bailout);
