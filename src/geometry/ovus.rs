@@ -147,8 +147,21 @@ impl Ovus {
             0.0,
             0.0,
         ];
-        let reach = self.horizontal + self.connecting;
-        for &s in roots_in(&c, 4, -reach - 1.0, reach + 1.0).as_slice() {
+        // The roots worth seeking: within the band's sphere (its points lie within
+        // `connecting` of its centre), between its heights, and ahead on the ray (with room
+        // for rounding: every root found is tested again below).
+        let room = 1e-9 * (self.connecting + self.horizontal + shift.abs());
+        let half = (small2 - p.length_squared()).max(0.0).sqrt();
+        let (mut lo, mut hi) = (-half - room, half + room);
+        if d.y != 0.0 {
+            let to = |y: f64| (y - centre.y - p.y) / d.y;
+            let (a, b) = (to(self.bottom_vertical), to(self.top_vertical));
+            lo = lo.max(a.min(b) - room);
+            hi = hi.min(a.max(b) + room);
+        }
+        lo = lo.max(ray.tmin * len - shift - room);
+        hi = hi.min(ray.tmax * len - shift + room);
+        for &s in roots_in(&c, 4, lo, hi).as_slice() {
             let q = p + s * d + centre;
             if q.y > self.bottom_vertical && q.y < self.top_vertical {
                 let h = (q.x * q.x + q.z * q.z).sqrt();

@@ -1,7 +1,8 @@
 //! Real roots of polynomials of degree ≤ 10 in an interval, by isolation: between consecutive
 //! roots of the derivative a polynomial is monotonic, so each such interval holds at most one
-//! root, found by safeguarded Newton iteration. No closed-form cancellation, so grazing rays
-//! and far origins keep their accuracy.
+//! root, found by safeguarded Newton iteration (a quadratic by its closed form in the way that
+//! cancels nothing). No cubic or quartic formula's cancellation, so grazing rays and far
+//! origins keep their accuracy.
 
 /// Coefficients, lowest degree first: `c[0] + c[1]·t + … + c[n]·tⁿ` (degree ≤ 6; [`roots_in`]
 /// takes any array length, up to degree [`MAX_DEGREE`]).
@@ -16,6 +17,20 @@ fn eval<const N: usize>(c: &[f64; N], degree: usize, t: f64) -> f64 {
         v = v * t + c[i];
     }
     v
+}
+
+/// The value of `c` at `t`, and the size of one rounding of its terms (ε times the sum of
+/// their sizes): a value within that of zero is as near a root as the arithmetic can tell
+/// (Horner's rule's worst case is 2·degree times that; a root refined until then moves by no
+/// more than the rounding of the value itself).
+fn eval_with_noise<const N: usize>(c: &[f64; N], degree: usize, t: f64) -> (f64, f64) {
+    let (mut v, mut size) = (0.0, 0.0);
+    let at = t.abs();
+    for i in (0..=degree).rev() {
+        v = v * t + c[i];
+        size = size * at + c[i].abs();
+    }
+    (v, size * f64::EPSILON)
 }
 
 fn derivative<const N: usize>(c: &[f64; N], degree: usize) -> [f64; N] {
@@ -68,6 +83,9 @@ pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -
     if c[degree] == 0.0 {
         return roots_in(c, degree - 1, lo, hi);
     }
+    if degree == 2 {
+        return quadratic_in(c[0], c[1], c[2], lo, hi);
+    }
     let d = derivative(c, degree);
     monotonic_pieces(c, &d, degree, (lo, hi), |piece| {
         match piece {
@@ -76,10 +94,50 @@ pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -
                     out.push(a);
                 }
             }
-            Piece::Bracket(a, b, fa) => out.push(refine(c, &d, degree, a, b, fa)),
+            Piece::Bracket(a, b, fa, fb) => {
+                out.push(refine(c, &d, degree, (a, b), (fa, fb)));
+            }
         }
         false
     });
+    out
+}
+
+/// Real roots of `c0 + c1·t + c2·t²` (c2 ≠ 0) in `[lo, hi]`, increasing: the closed form in
+/// the way that cancels nothing (the larger root from `-b ∓ √disc` of the same sign, the other
+/// from the product of the roots), each then polished by a Newton step.
+fn quadratic_in(c0: f64, c1: f64, c2: f64, lo: f64, hi: f64) -> Roots {
+    let mut out = Roots::default();
+    let disc = c1 * c1 - 4.0 * c2 * c0;
+    if disc < 0.0 {
+        return out;
+    }
+    let q = -0.5 * (c1 + disc.sqrt().copysign(c1));
+    let (mut r1, mut r2) = if q == 0.0 {
+        (0.0, 0.0)
+    } else {
+        (q / c2, c0 / q)
+    };
+    if r1 > r2 {
+        std::mem::swap(&mut r1, &mut r2);
+    }
+    let polish = |t: f64| {
+        let slope = 2.0 * c2 * t + c1;
+        if slope == 0.0 {
+            t
+        } else {
+            t - ((c2 * t + c1) * t + c0) / slope
+        }
+    };
+    for (i, t) in [r1, r2].into_iter().enumerate() {
+        if i == 1 && disc == 0.0 {
+            break;
+        }
+        let t = polish(t);
+        if (lo..=hi).contains(&t) && (out.len == 0 || out.t[out.len - 1] < t) {
+            out.push(t);
+        }
+    }
     out
 }
 
@@ -87,8 +145,8 @@ pub fn roots_in<const N: usize>(c: &[f64; N], degree: usize, lo: f64, hi: f64) -
 enum Piece {
     /// A root at the end of a piece.
     At(f64),
-    /// A piece `[a, b]` whose ends differ in sign (the value at `a` given).
-    Bracket(f64, f64, f64),
+    /// A piece `[a, b]` whose ends differ in sign (the values at `a` and `b` given).
+    Bracket(f64, f64, f64, f64),
 }
 
 /// `[lo, hi]` split at the critical points of `c` (degree ≥ 2, `d` its derivative) into
@@ -109,7 +167,7 @@ fn monotonic_pieces<const N: usize>(
         let stop = if fa == 0.0 {
             visit(Piece::At(a))
         } else {
-            fa.signum() != fb.signum() && fb != 0.0 && visit(Piece::Bracket(a, b, fa))
+            fa.signum() != fb.signum() && fb != 0.0 && visit(Piece::Bracket(a, b, fa, fb))
         };
         if stop {
             return true;
@@ -139,27 +197,35 @@ pub fn any_root_in<const N: usize>(
     let d = derivative(c, degree);
     monotonic_pieces(c, &d, degree, (lo, hi), |piece| match piece {
         Piece::At(a) => accept(a),
-        Piece::Bracket(a, b, fa) => {
-            (sure.0 < a && b < sure.1) || accept(refine(c, &d, degree, a, b, fa))
+        Piece::Bracket(a, b, fa, fb) => {
+            (sure.0 < a && b < sure.1) || accept(refine(c, &d, degree, (a, b), (fa, fb)))
         }
     })
 }
 
-/// The root in `[a, b]` where `c` changes sign (`fa` = c(a)): Newton steps, falling back to
-/// bisection whenever a step leaves the bracket.
+/// The root in `[a, b]` where `c` changes sign (`fa`, `fb` its values at the ends): Newton
+/// steps from where the chord crosses zero, falling back to bisection whenever a step leaves
+/// the bracket, until the step or the bracket is a few ulps or the value is within one
+/// rounding of its terms of zero (without that, a root near 0, whose ulps are tiny, or at an
+/// inflection, where Newton crawls, could take a hundred steps).
 fn refine<const N: usize>(
     c: &[f64; N],
     d: &[f64; N],
     degree: usize,
-    mut a: f64,
-    mut b: f64,
-    fa: f64,
+    (mut a, mut b): (f64, f64),
+    (fa, fb): (f64, f64),
 ) -> f64 {
     let rising = fa < 0.0;
-    let mut t = 0.5 * (a + b);
+    let chord = a - fa * (b - a) / (fb - fa);
+    let mut t = if chord > a && chord < b {
+        chord
+    } else {
+        0.5 * (a + b)
+    };
     for _ in 0..100 {
-        let f = eval(c, degree, t);
-        if f == 0.0 {
+        let (f, noise) = eval_with_noise(c, degree, t);
+        if f.abs() <= noise {
+            // (As near the root as the value can tell.)
             return t;
         }
         if (f < 0.0) == rising {
@@ -249,6 +315,55 @@ mod tests {
         let r = roots_in(&c, 4, 0.0, 2.0);
         assert_eq!(r.len, 2, "{:?}", r.as_slice());
         assert!((r.t[0] - a).abs() < 1e-9 && (r.t[1] - b).abs() < 1e-9);
+    }
+
+    #[test]
+    fn quadratics_by_the_closed_form() {
+        // Two roots, one far smaller than the other (no cancellation: 1e-9 to 1e-15).
+        let r = roots_in(
+            &[1e-9, -(1.0 + 1e-18), 1e-9, 0.0, 0.0, 0.0, 0.0],
+            2,
+            -1e12,
+            1e12,
+        );
+        assert_eq!(r.len, 2, "{:?}", r.as_slice());
+        assert!((r.t[0] - 1e-9).abs() < 1e-23 && (r.t[1] - 1e9).abs() < 1e-3);
+        // A double root, none, and the interval's filter.
+        assert_eq!(
+            roots_in(&[1.0, -2.0, 1.0, 0.0, 0.0, 0.0, 0.0], 2, 0.0, 2.0).as_slice(),
+            [1.0]
+        );
+        assert_eq!(
+            roots_in(&[1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0], 2, -9.0, 9.0).len,
+            0
+        );
+        assert_eq!(
+            roots_in(&[-4.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0], 2, 0.0, 9.0).as_slice(),
+            [2.0]
+        );
+    }
+
+    #[test]
+    fn a_root_where_newton_crawls_is_still_found() {
+        // (t − 1e-7)³ (t − 2): a triple root near 0, where the step criterion alone, relative
+        // to |t|, would not be met before the iteration limit.
+        let a = 1e-7;
+        let c = [
+            2.0 * a * a * a,
+            -(a * a * a + 6.0 * a * a),
+            6.0 * a + 3.0 * a * a,
+            -(3.0 * a + 2.0),
+            1.0,
+            0.0,
+            0.0,
+        ];
+        let r = roots_in(&c, 4, -1.0, 3.0);
+        assert_eq!(r.len, 2, "{:?}", r.as_slice());
+        assert!(
+            (r.t[0] - a).abs() < 1e-5 && (r.t[1] - 2.0).abs() < 1e-12,
+            "{:?}",
+            r.as_slice()
+        );
     }
 
     #[test]

@@ -168,18 +168,33 @@ fn product(a: &[f64; 11], da: usize, b: &[f64; 11], db: usize) -> [f64; 11] {
     p
 }
 
+/// Pascal's triangle to row 10: `BINOMIAL[n][k]` = C(n, k).
+const BINOMIAL: [[f64; 11]; 11] = {
+    let mut t = [[0.0; 11]; 11];
+    let mut n = 0;
+    while n < 11 {
+        t[n][0] = 1.0;
+        let mut k = 1;
+        while k <= n {
+            t[n][k] = t[n - 1][k - 1] + if k < n { t[n - 1][k] } else { 0.0 };
+            k += 1;
+        }
+        n += 1;
+    }
+    t
+};
+
 /// Whether the polynomial surely has no root in `(0, 1)`: its Bernstein coefficients on
 /// `[0, 1]` all have one sign (POV-Ray's shortcut before solving).
 fn no_root_inside(c: &[f64; 11], degree: usize) -> bool {
-    // b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · c_j.
-    let choose = |n: usize, k: usize| -> f64 {
-        (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
-    };
+    // b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · c_j, with the c_j / C(n, j) made once.
+    let mut scaled = [0.0; 11];
+    for j in 0..=degree {
+        scaled[j] = c[j] / BINOMIAL[degree][j];
+    }
     let (mut positive, mut negative) = (true, true);
-    for i in 0..=degree {
-        let b: f64 = (0..=i)
-            .map(|j| choose(i, j) / choose(degree, j) * c[j])
-            .sum();
+    for row in &BINOMIAL[..=degree] {
+        let b: f64 = row.iter().zip(&scaled).map(|(n, s)| n * s).sum();
         positive &= b >= 0.0;
         negative &= b <= 0.0;
         if !(positive || negative) {
