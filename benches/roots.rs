@@ -5,6 +5,7 @@
 
 use divan::{Bencher, black_box, counter::ItemsCount};
 use glam::DVec3;
+use trace::geometry::Torus;
 use trace::geometry::poly::{Poly, roots_in};
 
 fn main() {
@@ -12,23 +13,6 @@ fn main() {
 }
 
 const RAYS: usize = 10_000;
-
-/// The quartic of a unit-direction ray from `p` (relative to the centre) along `d` against a
-/// torus of radii `big` and `small` about y, in the ray's parameter.
-fn torus(p: DVec3, d: DVec3, big: f64, small: f64) -> Poly {
-    let (big2, small2) = (big * big, small * small);
-    let k1 = p.length_squared() - big2 - small2;
-    let k2 = p.dot(d);
-    [
-        k1 * k1 + 4.0 * big2 * (p.y * p.y - small2),
-        4.0 * (k2 * k1 + 2.0 * big2 * p.y * d.y),
-        2.0 * (k1 + 2.0 * (k2 * k2 + big2 * d.y * d.y)),
-        4.0 * k2,
-        1.0,
-        0.0,
-        0.0,
-    ]
-}
 
 /// Rays from a sphere of radius 4 towards random points near the torus, each moved to its
 /// point nearest the centre (as the shapes do before solving).
@@ -46,7 +30,11 @@ fn quartics() -> Vec<Poly> {
             let to = DVec3::new(next() * 1.4, next() * 0.4, next() * 1.4);
             let d = (to - from).normalize();
             let p = from + d * (-from.dot(d));
-            torus(p, d, 1.0, 0.3)
+            Torus {
+                major: 1.0,
+                minor: 0.3,
+            }
+            .quartic(p, d)
         })
         .collect()
 }

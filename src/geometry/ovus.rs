@@ -132,21 +132,12 @@ impl Ovus {
         let centre = DVec3::new(0.0, self.vertical, 0.0);
         let line = ray.about(centre);
         let (shift, p) = (line.shift, line.origin - centre);
-        let (big2, small2) = (
-            self.horizontal * self.horizontal,
-            self.connecting * self.connecting,
-        );
-        let k1 = p.length_squared() - big2 - small2;
-        let k2 = p.dot(d);
-        let c = [
-            k1 * k1 + 4.0 * big2 * (p.y * p.y - small2),
-            4.0 * (k2 * k1 + 2.0 * big2 * p.y * d.y),
-            2.0 * (k1 + 2.0 * (k2 * k2 + big2 * d.y * d.y)),
-            4.0 * k2,
-            1.0,
-            0.0,
-            0.0,
-        ];
+        let small2 = self.connecting * self.connecting;
+        let spindle = super::Torus {
+            major: self.horizontal,
+            minor: self.connecting,
+        };
+        let c = spindle.quartic(p, d);
         // The roots worth seeking: within the band's sphere (its points lie within
         // `connecting` of its centre), between its heights, and ahead on the ray (with room
         // for rounding: every root found is tested again below).
