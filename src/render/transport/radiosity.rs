@@ -793,16 +793,21 @@ impl Frame {
 mod tests {
     use super::*;
 
+    /// Whether every direction is a unit vector above the plane y = 0, and their mean
+    /// cosine about +y (2/3 for a cosine-weighted hemisphere).
+    fn upper_units(d: &[DVec3]) -> (bool, f64) {
+        let unit_up = d
+            .iter()
+            .all(|v| (v.length() - 1.0).abs() < 1e-12 && v.y >= 0.0);
+        (unit_up, d.iter().map(|v| v.y).sum::<f64>() / d.len() as f64)
+    }
+
     #[test]
     fn the_pool_is_cosine_weighted_around_y() {
         let d = directions(1600);
         assert_eq!(d.len(), 1600);
-        assert!(
-            d.iter()
-                .all(|v| (v.length() - 1.0).abs() < 1e-12 && v.y >= 0.0)
-        );
-        // E[cos θ] = 2/3 for a cosine-weighted hemisphere.
-        let mean = d.iter().map(|v| v.y).sum::<f64>() / 1600.0;
+        let (unit_up, mean) = upper_units(&d);
+        assert!(unit_up);
         assert!((mean - 2.0 / 3.0).abs() < 0.01, "{mean}");
         // The first point: Halton(2) = 1/2, Halton(3) = 1/3.
         let r = 0.5f64.sqrt();
@@ -814,10 +819,7 @@ mod tests {
     fn a_pool_below_1600_is_the_start_of_the_old_table() {
         let d = directions(400);
         assert_eq!(d.len(), 400);
-        assert!(
-            d.iter()
-                .all(|v| (v.length() - 1.0).abs() < 1e-12 && v.y >= 0.0)
-        );
+        assert!(upper_units(&d).0);
         // The table's first entry is (250, 71, 127).
         let first = DVec3::new(
             250.0 / 255.0 * 2.0 - 1.0,
@@ -826,8 +828,8 @@ mod tests {
         );
         assert!(d[0].abs_diff_eq(first.normalize(), 1e-12));
         // It is cosine-weighted too, and not the Halton pool.
-        let whole = directions(1599);
-        let mean = whole.iter().map(|v| v.y).sum::<f64>() / 1599.0;
+        let (unit_up, mean) = upper_units(&directions(1599));
+        assert!(unit_up);
         assert!((mean - 2.0 / 3.0).abs() < 0.02, "{mean}");
         assert!(!d[0].abs_diff_eq(directions(1600)[0], 1e-3));
     }
