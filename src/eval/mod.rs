@@ -529,11 +529,9 @@ impl<'a> Evaluator<'a> {
                                 Some(Box::new(ev.normal(child, base)?));
                         }
                         NodeKind::ObjectRadiosity => {
-                            for item in &child.children {
-                                let View::Importance(e) = item.view() else {
-                                    return Err(ev.unknown_item(item, "a default radiosity"));
-                                };
-                                ev.scene.default_importance = Some(ev.importance(e)?);
+                            let given = ev.radiosity_importance(child, "a default radiosity")?;
+                            if given.is_some() {
+                                ev.scene.default_importance = given;
                             }
                         }
                         _ => return Err(ev.unknown_item(child, "#default")),

@@ -19,6 +19,11 @@ pub use pretrace::PretraceStats;
 /// 0 for a surface the camera sees; the last entry counts depth 4 and deeper), as POV-Ray
 /// counts them in its statistics.
 pub type SamplesByDepth = [u64; 5];
+
+/// Adds the counts of `more` to `sum`, depth by depth.
+fn add_samples(sum: &mut SamplesByDepth, more: &SamplesByDepth) {
+    sum.iter_mut().zip(more).for_each(|(s, m)| *s += m);
+}
 pub use transport::RayCounts;
 /// The shadow test, for the stability suite's counts of light leaking through surfaces.
 #[cfg(feature = "internals")]
@@ -479,9 +484,7 @@ impl<'a> Bands<'a> {
             self.stats.counts.add(&b.counts);
             self.stats.tests.add(&b.tests);
             self.stats.samples += b.samples;
-            for (all, block) in self.stats.radiosity_samples.iter_mut().zip(b.radiosity.0) {
-                *all += block;
-            }
+            add_samples(&mut self.stats.radiosity_samples, &b.radiosity.0);
             self.stats.radiosity_rays += b.radiosity.1;
             self.stats.radiosity_reused += b.radiosity.2;
         }

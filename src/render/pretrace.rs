@@ -172,9 +172,7 @@ pub(super) fn pretrace(
             }
             stats.points += points;
             let pass = stats.samples.last_mut().expect("this pass's counts");
-            for (all, group) in pass.iter_mut().zip(samples) {
-                *all += group;
-            }
+            super::add_samples(pass, &samples);
             stats.rays += rays;
         }
     }

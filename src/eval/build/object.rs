@@ -274,16 +274,29 @@ impl ObjectValue {
 }
 
 impl Evaluator<'_> {
-    /// A radiosity `importance`: above 0 and at most 1.
-    pub(in crate::eval) fn importance(&mut self, e: &Expr) -> Result<f64> {
-        let v = self.float(e)?;
-        if !(v > 0.0 && v <= 1.0) {
-            return Err(Diagnostic::error(
-                "radiosity importance must be above 0 and at most 1",
-                e.span,
-            ));
-        }
-        Ok(v)
+    /// The `importance` an object's (or `#default`'s) `radiosity { … }` block gives, the last
+    /// if several (each above 0 and at most 1); `context` names the block in errors.
+    pub(in crate::eval) fn radiosity_importance(
+        &mut self,
+        block: &Node,
+        context: &str,
+    ) -> Result<Option<f64>> {
+        let mut importance = None;
+        self.each_item(&block.children, &mut |ev, item| {
+            let View::Importance(e) = item.view() else {
+                return Err(ev.unknown_item(item, context));
+            };
+            let v = ev.float(e)?;
+            if !(v > 0.0 && v <= 1.0) {
+                return Err(Diagnostic::error(
+                    "radiosity importance must be above 0 and at most 1",
+                    e.span,
+                ));
+            }
+            importance = Some(v);
+            Ok(())
+        })?;
+        Ok(importance)
     }
 
     /// Evaluates an object statement with its modifiers.
@@ -1146,14 +1159,9 @@ impl Evaluator<'_> {
                 object.interior = Some(self.interior(m, base)?);
             }
             NodeKind::ObjectRadiosity => {
-                self.each_item(&m.children, &mut |ev, item| {
-                    let View::Importance(e) = item.view() else {
-                        return Err(ev.unknown_item(item, "an object's radiosity"));
-                    };
-                    let v = ev.importance(e)?;
+                if let Some(v) = self.radiosity_importance(m, "an object's radiosity")? {
                     object.parts.iter_mut().for_each(|p| p.importance = Some(v));
-                    Ok(())
-                })?;
+                }
             }
             NodeKind::Flag if m.word == "hollow" => {
                 // On one object the last `hollow` counts; a group's goes to the members that
