@@ -150,7 +150,11 @@ impl Math2 {
 /// colour, a spline's point (`function { pattern { … } }`, `function { pigment { … } }`,
 /// `function { spline { … } }`). The layer that made it evaluates it; programs call it
 /// through this trait (one dynamic call, small beside evaluating a pattern or a pigment).
-pub trait Native: Send + Sync + std::fmt::Debug {
+///
+/// A native is data: two natives are the same function when they are of one kind and hold
+/// equal values ([`Native::same`]), so that a scene read twice from one text compares equal
+/// (`trace watch` keeps what did not change).
+pub trait Native: Send + Sync + std::fmt::Debug + std::any::Any {
     /// How many values it takes (x, y, z for a pattern or a pigment; 1 for a spline).
     fn params(&self) -> usize;
     /// How many values it gives (1 for a pattern, 5 for a colour, a spline's terms).
@@ -158,15 +162,29 @@ pub trait Native: Send + Sync + std::fmt::Debug {
     /// Its values for `args` (the first [`Native::size`] of them meaningful), noise from
     /// `generator` where it has no generator of its own.
     fn eval(&self, args: &[f64], generator: u8) -> [f64; 5];
+    /// Whether `other` is the same function: of this kind, with equal data (see
+    /// [`same_data`]).
+    fn same(&self, other: &dyn Native) -> bool;
 }
 
-/// A shared [`Native`], equal only to itself (patterns and programs compare by identity).
+/// [`Native::same`] for a native of type `T` compared by its `PartialEq`.
+pub fn same_data<T: Native + PartialEq>(a: &T, other: &dyn Native) -> bool {
+    let other: &dyn std::any::Any = other;
+    other.downcast_ref::<T>().is_some_and(|b| a == b)
+}
+
+/// Whether two shared natives are the same function (the same one, or equal data).
+fn same_native(a: &Arc<dyn Native>, b: &Arc<dyn Native>) -> bool {
+    std::ptr::addr_eq(Arc::as_ptr(a), Arc::as_ptr(b)) || a.same(&**b)
+}
+
+/// A shared [`Native`], in patterns; equal to the same function ([`Native::same`]).
 #[derive(Clone, Debug)]
 pub struct NativeRef(pub Arc<dyn Native>);
 
 impl PartialEq for NativeRef {
     fn eq(&self, other: &NativeRef) -> bool {
-        std::ptr::addr_eq(Arc::as_ptr(&self.0), Arc::as_ptr(&other.0))
+        same_native(&self.0, &other.0)
     }
 }
 
@@ -236,9 +254,59 @@ pub struct Function {
     nesting: usize,
 }
 
+/// Functions are equal when they run the same program: equal operations, the functions they
+/// call equal in turn, their natives the same ([`Native::same`]). Two reads of one text give
+/// equal functions.
 impl PartialEq for Function {
     fn eq(&self, other: &Function) -> bool {
-        std::ptr::eq(self, other)
+        self.same_as(other, &mut Vec::new())
+    }
+}
+
+impl Function {
+    /// Equality, with the pairs of called functions already found equal in `equal` (a
+    /// function called many times in a call graph is compared once, not once per path).
+    fn same_as(
+        &self,
+        other: &Function,
+        equal: &mut Vec<(*const Function, *const Function)>,
+    ) -> bool {
+        if std::ptr::eq(self, other) {
+            return true;
+        }
+        let vector = match (&self.vector, &other.vector) {
+            (None, None) => true,
+            (Some(a), Some(b)) => same_native(a, b),
+            _ => false,
+        };
+        if self.params != other.params || !vector || self.code.len() != other.code.len() {
+            return false;
+        }
+        let mut callee = |a: &Arc<Function>, b: &Arc<Function>| {
+            let pair = (Arc::as_ptr(a), Arc::as_ptr(b));
+            if Arc::ptr_eq(a, b) || equal.contains(&pair) {
+                return true;
+            }
+            let same = a.same_as(b, equal);
+            if same {
+                equal.push(pair);
+            }
+            same
+        };
+        self.code.iter().zip(&other.code).all(|pair| match pair {
+            (Op::Call(a), Op::Call(b)) => callee(a, b),
+            (Op::Loop(a, pa), Op::Loop(b, pb)) => pa == pb && callee(a, b),
+            (Op::Native(a, ma), Op::Native(b, mb)) => ma == mb && same_native(a, b),
+            (Op::Const(a), Op::Const(b)) => a.to_bits() == b.to_bits(),
+            (Op::Arg(a), Op::Arg(b)) | (Op::Min(a), Op::Min(b)) | (Op::Max(a), Op::Max(b)) => {
+                a == b
+            }
+            (Op::Math1(a), Op::Math1(b)) => a == b,
+            (Op::Math2(a), Op::Math2(b)) => a == b,
+            (Op::Internal(a, na), Op::Internal(b, nb)) => a == b && na == nb,
+            // (Operations with data of their own matched above: same kind, no data.)
+            (a, b) => std::mem::discriminant(a) == std::mem::discriminant(b),
+        })
     }
 }
 
@@ -450,6 +518,46 @@ impl Function {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// f_0(x) = x + k, f_i(x) = f_{i-1}(x) + f_{i-1}(x): each level calls the one below twice.
+    fn doubling(levels: usize, k: f64) -> Arc<Function> {
+        let mut f = Arc::new(Function::new(1, vec![Op::Arg(0), Op::Const(k), Op::Add]).unwrap());
+        for _ in 1..levels {
+            let code = vec![
+                Op::Arg(0),
+                Op::Call(f.clone()),
+                Op::Arg(0),
+                Op::Call(f.clone()),
+                Op::Add,
+            ];
+            f = Arc::new(Function::new(1, code).unwrap());
+        }
+        f
+    }
+
+    #[test]
+    fn functions_compare_as_programs() {
+        // Built twice, apart: equal, and compared in time linear in the call graph (a
+        // comparison along every path would take 2^60 steps).
+        let (a, b) = (doubling(60, 1.0), doubling(60, 1.0));
+        assert!(!Arc::ptr_eq(&a, &b));
+        assert!(a == b);
+        // A constant deep below differs.
+        assert!(a != doubling(60, 2.0));
+        assert!(doubling(3, 1.0) != doubling(4, 1.0));
+        // Natives: equal data of one kind are the same; another kind or other data are not.
+        let spline = |y: f64| {
+            let mut s = spline::Spline::new(spline::SplineKind::Linear);
+            s.insert(0.0, [0.0; 5], 1);
+            s.insert(1.0, [y, 0.0, 0.0, 0.0, 0.0], 1);
+            Function::native(Arc::new(s))
+        };
+        assert!(spline(1.0) == spline(1.0));
+        assert!(spline(1.0) != spline(2.0));
+        let empty = |kind| NativeRef(Arc::new(spline::Spline::new(kind)));
+        assert!(empty(spline::SplineKind::Linear) == empty(spline::SplineKind::Linear));
+        assert!(empty(spline::SplineKind::Linear) != empty(spline::SplineKind::Cubic));
+    }
 
     #[test]
     fn arithmetic_and_calls() {

@@ -244,6 +244,10 @@ impl Native for Spline {
     fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
         self.at(args[0])
     }
+
+    fn same(&self, other: &dyn Native) -> bool {
+        super::same_data(self, other)
+    }
 }
 
 #[cfg(test)]

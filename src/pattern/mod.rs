@@ -652,7 +652,7 @@ impl Pattern {
 
 /// `function { pattern { … } }`: a pattern's value as a function of x, y, z (the point
 /// taken into the pattern's space first).
-#[derive(Debug)]
+#[derive(Debug, PartialEq)]
 pub struct PatternFunction {
     /// The pattern, with the scene's defaults filled in.
     pub pattern: Pattern,
@@ -673,6 +673,10 @@ impl crate::func::Native for PatternFunction {
         let p = DVec3::new(args[0], args[1], args[2]);
         let q = self.from_world.map_or(p, |m| m.transform_point3(p));
         [self.pattern.value(q), 0.0, 0.0, 0.0, 0.0]
+    }
+
+    fn same(&self, other: &dyn crate::func::Native) -> bool {
+        crate::func::same_data(self, other)
     }
 }
 

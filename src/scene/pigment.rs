@@ -157,7 +157,7 @@ impl Pigment {
 
 /// `function { pigment { … } }`: the pigment's colour at a point, as a function of x, y, z
 /// giving red, green, blue, filter and transmit (POV-Ray's pigment functions).
-#[derive(Debug)]
+#[derive(Debug, PartialEq)]
 struct PigmentFunction(Pigment);
 
 impl crate::func::Native for PigmentFunction {
@@ -172,6 +172,10 @@ impl crate::func::Native for PigmentFunction {
     fn eval(&self, args: &[f64], _generator: u8) -> [f64; 5] {
         let c = self.0.colour_at(DVec3::new(args[0], args[1], args[2]));
         [c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit]
+    }
+
+    fn same(&self, other: &dyn crate::func::Native) -> bool {
+        crate::func::same_data(self, other)
     }
 }
 

@@ -17,6 +17,15 @@ fn snapshot_ir(path: &Path) {
     };
     let loaded = trace::load(path, &options).unwrap_or_else(|e| panic!("{e}"));
     insta::assert_debug_snapshot!(loaded.scene);
+    // The IR is data: the same text read again gives an equal scene (functions, patterns of
+    // functions, pigment functions and object patterns included), which is what lets
+    // `trace watch` keep what a save did not change.
+    let again = trace::load(path, &options).unwrap_or_else(|e| panic!("{e}"));
+    assert!(
+        loaded.scene == again.scene,
+        "{}: two reads of one text differ",
+        path.display()
+    );
     if !loaded.debug_output.is_empty() {
         // What `#debug` printed (string functions are checked against POV-Ray's output).
         insta::assert_snapshot!("debug_output", loaded.debug_output);

@@ -142,8 +142,18 @@ impl Evaluator<'_> {
     }
 }
 
-/// The `object` pattern's test: 1 inside the object, 0 outside.
-struct InsideTest(Box<dyn ir::ObjectQuery>);
+/// The `object` pattern's test: 1 inside the object, 0 outside. It is its object's parts
+/// (what it equals by) and the query built of them.
+struct InsideTest {
+    parts: Vec<ir::Object>,
+    query: Box<dyn ir::ObjectQuery>,
+}
+
+impl PartialEq for InsideTest {
+    fn eq(&self, other: &InsideTest) -> bool {
+        self.parts == other.parts
+    }
+}
 
 impl std::fmt::Debug for InsideTest {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -164,8 +174,12 @@ impl crate::func::Native for InsideTest {
         let &[x, y, z, ..] = args else {
             return [0.0; 5];
         };
-        let inside = self.0.inside(glam::DVec3::new(x, y, z));
+        let inside = self.query.inside(glam::DVec3::new(x, y, z));
         [f64::from(u8::from(inside)), 0.0, 0.0, 0.0, 0.0]
+    }
+
+    fn same(&self, other: &dyn crate::func::Native) -> bool {
+        crate::func::same_data(self, other)
     }
 }
 
@@ -866,8 +880,8 @@ impl Evaluator<'_> {
                 _ => self.object(first)?,
             };
             let parts = self.placed_parts(&object, first.span)?;
-            let query = (self.scene.object_query)(parts);
-            let inside = crate::func::NativeRef(Arc::new(InsideTest(query)));
+            let query = (self.scene.object_query)(parts.clone());
+            let inside = crate::func::NativeRef(Arc::new(InsideTest { parts, query }));
             return Ok((PatternKind::Object(inside), colours));
         }
         // `pigment_pattern { … }`: a pigment's grey.

@@ -499,7 +499,7 @@ fn member_index(member: &str, size: usize) -> Option<crate::func::Member> {
 }
 
 /// `function { transform { … } }`: f(x, y, z) is the point (x, y, z) transformed (a vector).
-#[derive(Debug)]
+#[derive(Debug, PartialEq)]
 struct TransformFunction(glam::DMat4);
 
 impl crate::func::Native for TransformFunction {
@@ -517,5 +517,9 @@ impl crate::func::Native for TransformFunction {
         };
         let p = self.0.transform_point3(glam::DVec3::new(x, y, z));
         [p.x, p.y, p.z, 0.0, 0.0]
+    }
+
+    fn same(&self, other: &dyn crate::func::Native) -> bool {
+        crate::func::same_data(self, other)
     }
 }
