@@ -81,6 +81,7 @@ pub use render::{
     Antialias, Aov, Preview, Progress, RayCounts, RenderOptions, RenderStats, Rendered,
     SamplesByDepth, bytes_needed,
 };
+pub use scene::Reuse;
 pub use syntax::bulk::ListCache;
 pub use syntax::{MAX_NESTING, is_identifier};
 
@@ -281,6 +282,28 @@ impl Prepared {
     /// but for its camera ([`ir::Scene::same_but_camera`]): a camera edit builds nothing else.
     pub fn set_camera(&mut self, scene: &ir::Scene) {
         self.built.set_camera(scene);
+    }
+
+    /// Builds `scene` for rendering in place of this preparation, which was made from
+    /// `previous`: objects of unchanged geometry keep their built shapes and, where no
+    /// object's bounds moved, the top-level tree stays ([`scene::Scene::rebuild`]; a light or
+    /// material edit builds no geometry). The result renders as [`prepare`]'s does.
+    pub fn rebuild(
+        self,
+        scene: &ir::Scene,
+        previous: &ir::Scene,
+        cache: &BuildCache,
+    ) -> (Prepared, Reuse) {
+        let start = std::time::Instant::now();
+        let Prepared { built, pool, .. } = self;
+        let (built, reuse) =
+            pool.install(|| scene::Scene::rebuild(scene, previous, built, &cache.0));
+        let prepared = Prepared {
+            built,
+            pool,
+            build_time: start.elapsed(),
+        };
+        (prepared, reuse)
     }
 
     /// Renders into a film held in memory, on the prepared threads (`options.threads` is not

@@ -273,6 +273,25 @@ fn mesh_print(mesh: &ir::Mesh) -> u128 {
     u128::from(m.0) << 64 | u128::from(m.1)
 }
 
+/// Built objects a build may take ([`Scene::rebuild`]): the IR objects of the last build
+/// and, in the same order, each one's built shape and transformation.
+#[derive(Default)]
+struct Kept<'a> {
+    ir: &'a [ir::Object],
+    built: Vec<Option<(Shape, Option<Box<ObjectTransform>>)>>,
+}
+
+/// What [`Scene::rebuild`] took from the scene before.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Reuse {
+    /// Objects whose built shape was kept.
+    pub shapes: usize,
+    /// Objects in the scene.
+    pub objects: usize,
+    /// Whether the top-level tree was kept (no object's bounds changed).
+    pub tree: bool,
+}
+
 /// The camera's part of the render-ready scene: all a camera edit changes.
 struct View {
     camera: Camera,
@@ -319,29 +338,75 @@ impl Scene {
 
     /// Builds the render-ready scene from the IR (in parallel, on the current rayon pool).
     pub fn build(ir: &ir::Scene) -> Scene {
-        let (scene, bounds) = Scene::build_objects(ir, None);
+        let (scene, bounds, _) = Scene::build_objects(ir, None, Kept::default());
         scene.with_index(bounds)
     }
 
     /// Like [`Scene::build`], with meshes from `cache` where it has them.
     pub fn build_cached(ir: &ir::Scene, cache: &MeshCache) -> Scene {
-        let (scene, bounds) = Scene::build_objects(ir, Some(cache));
+        let (scene, bounds, _) = Scene::build_objects(ir, Some(cache), Kept::default());
         scene.with_index(bounds)
+    }
+
+    /// Like [`Scene::build_cached`], taking what it can from `old`, the scene built from
+    /// `old_ir`: an object whose shape and transformation are unchanged keeps its built
+    /// shape (in its place in the scene order), and the top-level tree stays when every
+    /// object's world bounds are unchanged. Materials, lights and the rest are built anew
+    /// (they cost little), so a light or material edit builds no geometry. The result is
+    /// the scene [`Scene::build`] makes of `ir`.
+    pub fn rebuild(
+        ir: &ir::Scene,
+        old_ir: &ir::Scene,
+        old: Scene,
+        cache: &MeshCache,
+    ) -> (Scene, Reuse) {
+        let old_bounds: Vec<_> = old.objects.iter().map(Object::world_bounds).collect();
+        // (A shape's build reads only its IR shape, its transformation and the noise
+        // generator; a mesh is rebuilt from the mesh cache, which compares its data once.)
+        let kept = if ir.settings.noise_generator == old_ir.settings.noise_generator {
+            Kept {
+                ir: &old_ir.objects,
+                built: (old.objects.into_iter())
+                    .map(|o| Some((o.shape, o.transform)))
+                    .collect(),
+            }
+        } else {
+            Kept::default()
+        };
+        let (mut scene, bounds, shapes) = Scene::build_objects(ir, Some(cache), kept);
+        let tree = bounds == old_bounds;
+        let scene = if tree {
+            match old.index {
+                Some(index) => scene.index = Some(index),
+                None => scene.scan_bounds = bounds,
+            }
+            scene
+        } else {
+            scene.with_index(bounds)
+        };
+        let reuse = Reuse {
+            shapes,
+            objects: ir.objects.len(),
+            tree,
+        };
+        (scene, reuse)
     }
 
     /// Like [`Scene::build`], but frees the IR's objects before building the acceleration
     /// structure, which needs the most memory; meshes come from `cache` where it has them.
     pub fn build_owned(ir: ir::Scene, cache: Option<&MeshCache>) -> Scene {
-        let (scene, bounds) = Scene::build_objects(&ir, cache);
+        let (scene, bounds, _) = Scene::build_objects(&ir, cache, Kept::default());
         drop(ir);
         scene.with_index(bounds)
     }
 
-    /// Everything but the acceleration structure, and the world bounds of each object.
+    /// Everything but the acceleration structure, the world bounds of each object, and how
+    /// many objects' built shapes were taken from `previous`.
     fn build_objects(
         ir: &ir::Scene,
         cache: Option<&MeshCache>,
-    ) -> (Scene, Vec<Option<(DVec3, DVec3)>>) {
+        previous: Kept,
+    ) -> (Scene, Vec<Option<(DVec3, DVec3)>>, usize) {
         let (mut ids, textures) = material_ids(ir);
         let generator = ir.settings.noise_generator;
         let (interior_ids, interiors) = shared_ids(
@@ -399,22 +464,43 @@ impl Scene {
             .radiosity
             .as_ref()
             .map_or(1.0, |r| r.default_importance);
+        let Kept {
+            ir: old_objects,
+            built: mut old_shapes,
+        } = previous;
+        old_shapes.resize_with(ir.objects.len(), || None);
+        let taken = std::sync::atomic::AtomicUsize::new(0);
         let (objects, bounds): (Vec<Object>, Vec<_>) = ir
             .objects
             .par_iter()
             .zip(ids)
             .zip(interior_ids)
-            .map(|((o, (material, back_material)), interior)| {
-                let (shape, transform) = build_shape(
-                    &o.shape,
-                    o.transform.as_ref().map(|t| t.matrix),
-                    &meshes,
-                    generator,
-                );
+            .zip(old_shapes)
+            .enumerate()
+            .map(|(i, (((o, (material, back_material)), interior), old))| {
+                let old = old.filter(|_| {
+                    old_objects.get(i).is_some_and(|was| {
+                        !matches!(o.shape, ir::Shape::Mesh(_))
+                            && o.shape == was.shape
+                            && o.transform == was.transform
+                    })
+                });
+                if old.is_some() {
+                    taken.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                }
+                let (shape, transform) = old.unwrap_or_else(|| {
+                    let (shape, transform) = build_shape(
+                        &o.shape,
+                        o.transform.as_ref().map(|t| t.matrix),
+                        &meshes,
+                        generator,
+                    );
+                    (shape, transform.map(|m| Box::new(ObjectTransform::new(m))))
+                });
                 let mut object = Object {
                     shape,
                     bounded: false,
-                    transform: transform.map(|m| Box::new(ObjectTransform::new(m))),
+                    transform,
                     material,
                     no_shadow: o.no_shadow,
                     inverse: o.inverse,
@@ -580,7 +666,7 @@ impl Scene {
         scene.shadow_fades = scene.objects.iter().any(|o| {
             !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
         });
-        (scene, bounds)
+        (scene, bounds, taken.into_inner())
     }
 
     /// The scene with its top-level index over objects of the given world bounds (or, for

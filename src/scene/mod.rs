@@ -29,7 +29,7 @@ pub use crate::ir::{
 pub use crate::noise::mt19937;
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
-pub use build::MeshCache;
+pub use build::{MeshCache, Reuse};
 pub use material::{Material, filter_colour};
 pub use media::Media;
 pub use normal::Normal;

@@ -142,6 +142,8 @@ struct Status {
     timings: Vec<(&'static str, f64)>,
     /// Whether the render-ready scene was built anew (not the last one with another camera).
     built: bool,
+    /// What a build took from the last one (shapes, the top-level tree), if it had one.
+    kept: Option<trace::Reuse>,
     files: Vec<PathBuf>,
     settings: Settings,
     /// Bumped at every change, so the event stream knows when to speak.
@@ -209,6 +211,7 @@ impl Session {
                 debug: String::new(),
                 timings: Vec::new(),
                 built: false,
+                kept: None,
                 files: vec![scene.clone()],
                 settings: settings.clone(),
                 seq: 0,
@@ -366,6 +369,7 @@ impl Session {
         let reused = last
             .as_ref()
             .is_some_and(|(old, _)| old.same_but_camera(&scene));
+        let mut kept = None;
         if reused {
             let (old, prepared) = last.as_mut().expect("the last scene");
             if old.camera != scene.camera {
@@ -373,9 +377,21 @@ impl Session {
             }
             *old = scene;
         } else {
-            *last = None;
-            match trace::prepare(&scene, o.threads.map(|t| t as usize), &self.cache) {
-                Ok(p) => *last = Some((scene, p)),
+            // Built again, taking from the last build what the edit left (shapes of unchanged
+            // geometry, the top-level tree where no bounds moved).
+            let rebuilt = match last.take() {
+                Some((old, prepared)) => {
+                    let (p, reuse) = prepared.rebuild(&scene, &old, &self.cache);
+                    Ok((p, Some(reuse)))
+                }
+                None => trace::prepare(&scene, o.threads.map(|t| t as usize), &self.cache)
+                    .map(|p| (p, None)),
+            };
+            match rebuilt {
+                Ok((p, reuse)) => {
+                    *last = Some((scene, p));
+                    kept = reuse;
+                }
                 Err(e) => {
                     let message = error_message(&e);
                     self.update(|s| {
@@ -390,6 +406,7 @@ impl Session {
         let step = if reused { "camera" } else { "build" };
         self.update(|s| {
             s.built = !reused;
+            s.kept = kept;
             s.timings.push((step, at.elapsed().as_secs_f64()));
         });
         let (w, h) = (settings.width, settings.height);
@@ -551,7 +568,7 @@ impl Session {
             .collect();
         let st = &s.settings;
         format!(
-            "{{\"id\":{},\"state\":\"{}\",\"pass\":\"{}\",\"progress\":{progress:.4},\"picture\":{},\"picture_id\":{},\"width\":{},\"height\":{},\"settings\":{{\"width\":{},\"height\":{},\"aa\":{},\"depth\":{},\"clock\":{}}},\"errors\":{},\"warnings\":{},\"debug\":{},\"timings\":{{{}}},\"built\":{},\"files\":[{}],\"scene\":{}}}",
+            "{{\"id\":{},\"state\":\"{}\",\"pass\":\"{}\",\"progress\":{progress:.4},\"picture\":{},\"picture_id\":{},\"width\":{},\"height\":{},\"settings\":{{\"width\":{},\"height\":{},\"aa\":{},\"depth\":{},\"clock\":{}}},\"errors\":{},\"warnings\":{},\"debug\":{},\"timings\":{{{}}},\"built\":{},\"kept\":{},\"files\":[{}],\"scene\":{}}}",
             s.id,
             s.phase.name(),
             s.pass,
@@ -575,6 +592,13 @@ impl Session {
             json_string(&s.debug),
             timings.join(","),
             s.built,
+            match s.kept {
+                Some(k) => format!(
+                    "{{\"shapes\":{},\"objects\":{},\"tree\":{}}}",
+                    k.shapes, k.objects, k.tree
+                ),
+                None => "null".into(),
+            },
             files.join(","),
             json_string(&self.options.scene.display().to_string()),
         )

@@ -19,6 +19,7 @@ mod parsing;
 mod povray_cli;
 mod radiosity;
 mod rainbow;
+mod rebuild;
 mod watch;
 
 use std::path::{Path, PathBuf};

@@ -249,7 +249,7 @@ fn the_page_s_picture_is_the_render_and_follows_saves_and_errors() {
 }
 
 #[test]
-fn a_camera_move_builds_nothing_else_and_gives_the_render_of_the_moved_camera() {
+fn a_camera_move_builds_nothing_else_and_a_light_edit_no_shape() {
     let dir = scratch("camera");
     let path = dir.join("scene.rt");
     let text = |camera: &str| {
@@ -269,7 +269,8 @@ fn a_camera_move_builds_nothing_else_and_gives_the_render_of_the_moved_camera() 
         watch.picture(&dir).pixels,
         rendered(&dir, "moved.png", (48, 36)).pixels
     );
-    // Anything else (a light) builds anew.
+    // Anything else (a light) builds again, keeping the shapes whose geometry is unchanged
+    // (all of them here) and the top-level tree.
     save(
         &path,
         &(text("location <1, 2, -5> look_at 0") + "light_source { <-3, 3, -3>, rgb 0.5 }\n"),
@@ -278,6 +279,8 @@ fn a_camera_move_builds_nothing_else_and_gives_the_render_of_the_moved_camera() 
         state(s) == "done" && s["id"].as_u64() > moved["id"].as_u64()
     });
     assert_eq!(lit["built"], true);
+    assert_eq!(lit["kept"]["shapes"], 2, "{lit}");
+    assert_eq!(lit["kept"]["objects"], 2, "{lit}");
     let _ = std::fs::remove_dir_all(dir);
 }
 
