@@ -278,7 +278,45 @@ fn mesh_print(mesh: &ir::Mesh) -> u128 {
 #[derive(Default)]
 struct Kept<'a> {
     ir: &'a [ir::Object],
-    built: Vec<Option<(Shape, Option<Box<ObjectTransform>>)>>,
+    built: Vec<Option<Built>>,
+}
+
+/// A built object's shape and transformation.
+type Built = (Shape, Option<Box<ObjectTransform>>);
+
+impl Kept<'_> {
+    /// The kept shape for each of `objects`, where one of the last build's objects had the
+    /// same shape and transformation: the object in the same place, or the one as far from
+    /// the end (objects added or removed in one place shift the rest). Each kept shape
+    /// serves once. (Meshes are not compared here: the mesh cache finds their built meshes
+    /// by their data's print, once for all their instances.)
+    fn matched(self, objects: &[ir::Object]) -> Vec<Option<Built>> {
+        let Kept { ir: old, mut built } = self;
+        let (n, m) = (objects.len(), old.len().min(built.len()));
+        let same = |o: &ir::Object, j: usize| {
+            !matches!(o.shape, ir::Shape::Mesh(_))
+                && o.shape == old[j].shape
+                && o.transform == old[j].transform
+        };
+        // For each object, the places it may take its shape from: the same index, then the
+        // same distance from the end.
+        let candidates: Vec<[Option<u32>; 2]> = (objects.par_iter().enumerate())
+            .map(|(i, o)| {
+                let here = (i < m && same(o, i)).then_some(i as u32);
+                let from_end = (i + m).checked_sub(n).filter(|&j| j != i && j < m);
+                [here, from_end.filter(|&j| same(o, j)).map(|j| j as u32)]
+            })
+            .collect();
+        let mut kept: Vec<Option<Built>> = Vec::with_capacity(n);
+        for pair in candidates {
+            let shape = pair
+                .into_iter()
+                .flatten()
+                .find_map(|j| built[j as usize].take());
+            kept.push(shape);
+        }
+        kept
+    }
 }
 
 /// What [`Scene::rebuild`] took from the scene before.
@@ -464,30 +502,15 @@ impl Scene {
             .radiosity
             .as_ref()
             .map_or(1.0, |r| r.default_importance);
-        let Kept {
-            ir: old_objects,
-            built: mut old_shapes,
-        } = previous;
-        old_shapes.resize_with(ir.objects.len(), || None);
-        let taken = std::sync::atomic::AtomicUsize::new(0);
+        let old_shapes = previous.matched(&ir.objects);
+        let taken = old_shapes.iter().filter(|s| s.is_some()).count();
         let (objects, bounds): (Vec<Object>, Vec<_>) = ir
             .objects
             .par_iter()
             .zip(ids)
             .zip(interior_ids)
             .zip(old_shapes)
-            .enumerate()
-            .map(|(i, (((o, (material, back_material)), interior), old))| {
-                let old = old.filter(|_| {
-                    old_objects.get(i).is_some_and(|was| {
-                        !matches!(o.shape, ir::Shape::Mesh(_))
-                            && o.shape == was.shape
-                            && o.transform == was.transform
-                    })
-                });
-                if old.is_some() {
-                    taken.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                }
+            .map(|(((o, (material, back_material)), interior), old)| {
                 let (shape, transform) = old.unwrap_or_else(|| {
                     let (shape, transform) = build_shape(
                         &o.shape,
@@ -666,7 +689,7 @@ impl Scene {
         scene.shadow_fades = scene.objects.iter().any(|o| {
             !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
         });
-        (scene, bounds, taken.into_inner())
+        (scene, bounds, taken)
     }
 
     /// The scene with its top-level index over objects of the given world bounds (or, for

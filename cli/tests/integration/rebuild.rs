@@ -3,8 +3,8 @@
 
 use std::path::Path;
 
-/// A scene of `count` spheres in a row (enough for a top-level tree), a torus and an
-/// isosurface of a user function, each edit made by replacing one piece of text.
+/// A scene of twenty small spheres in a row (enough for a top-level tree), a sphere, a
+/// torus and an isosurface of a user function, with one piece of its text replaced.
 fn scene(edit: (&str, &str)) -> trace::ir::Scene {
     let text = "
         #declare F = function(x, y, z) { x*x + y*y + z*z - 0.25 }
@@ -19,12 +19,9 @@ fn scene(edit: (&str, &str)) -> trace::ir::Scene {
         isosurface { function { F(x, y, z) } contained_by { box { -1, 1 } }
             translate <-2, 1, 0> pigment { bozo } }
         #declare Moved = 0;
-    "
-    .replacen(edit.0, edit.1, 1);
-    assert!(
-        edit.0.is_empty() || text.contains(edit.1),
-        "the edit applies"
-    );
+    ";
+    assert!(text.contains(edit.0), "the edit applies: {edit:?}");
+    let text = text.replacen(edit.0, edit.1, 1);
     let options = trace::LoadOptions {
         width: 64,
         height: 48,
@@ -69,6 +66,25 @@ fn a_rebuild_keeps_what_the_edit_left_and_renders_as_a_fresh_build() {
             ),
             0,
             true,
+        ),
+        // A sphere more at the start: the others keep their shapes, found as far from the end
+        // as before.
+        (
+            (
+                "plane {",
+                "sphere { <0, 3, 0>, 0.2 pigment { rgb 1 } } plane {",
+            ),
+            objects,
+            false,
+        ),
+        // One removed in the middle: the others keep theirs.
+        (
+            (
+                "sphere { <0, 1, 0>, 0.5 pigment { rgb <0, 0.5, 1> } finish { phong 0.5 } }",
+                "",
+            ),
+            objects - 1,
+            false,
         ),
         // A sphere more (the last one): those before are kept.
         (
