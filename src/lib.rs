@@ -191,7 +191,6 @@ fn load_on_this_thread(path: &Path, text: String, options: &LoadOptions) -> Resu
     let mut sources = SourceMap::default();
     let file = sources.add(path, text);
     let services = eval::Services {
-        pigment_function: scene::pigment_function,
         object_query: scene::object_query,
     };
     let mut seen = eval::FilesSeen::default();

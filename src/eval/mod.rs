@@ -161,12 +161,6 @@ pub struct Evaluated {
     pub warnings: Vec<Diagnostic>,
 }
 
-/// Makes a pigment's function (`function { pigment { … } }`: its colour at a point). The
-/// scene layer evaluates pigments and evaluation may not use it, so the library hands
-/// evaluation this maker (`scene::pigment_function`).
-pub type PigmentFunctionMaker =
-    fn(&ir::Pigment, crate::pattern::SceneDefaults) -> std::sync::Arc<dyn crate::func::Native>;
-
 /// Builds an object made of placed parts for `trace()`, `inside()`, `min_extent` and
 /// `max_extent` (the scene layer's, handed to evaluation by the library).
 pub type ObjectQueryMaker = fn(Vec<ir::Object>) -> Box<dyn ir::ObjectQuery>;
@@ -174,8 +168,6 @@ pub type ObjectQueryMaker = fn(Vec<ir::Object>) -> Box<dyn ir::ObjectQuery>;
 /// What evaluation needs from the layers after it, handed in by the library.
 #[derive(Clone, Copy)]
 pub struct Services {
-    /// Makes pigment functions.
-    pub pigment_function: PigmentFunctionMaker,
     /// Makes objects that answer trace() and its kin.
     pub object_query: ObjectQueryMaker,
 }
@@ -350,7 +342,6 @@ impl<'a> Evaluator<'a> {
                 mesh_files: HashMap::new(),
                 fonts: HashMap::new(),
                 charset: crate::font::Charset::Ascii,
-                pigment_function: services.pigment_function,
                 object_query: services.object_query,
                 next_object_id: 0,
                 queries: HashMap::new(),

@@ -7,7 +7,7 @@
 use glam::{DMat4, DVec3, Vec3};
 use std::sync::Arc;
 
-pub use crate::pattern::{Pattern, PatternKind, Warp, Wave, WaveShape};
+pub use crate::pattern::{Colour, Pattern, PatternKind, Rgb, Warp, Wave, WaveShape};
 
 mod outline;
 pub use outline::{
@@ -15,22 +15,6 @@ pub use outline::{
     JuliaFractal, Lathe, Parametric, Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep,
     SweepSpline, Text,
 };
-
-/// An RGB colour (linear working space, unclamped).
-pub type Rgb = DVec3;
-
-/// A POV-Ray colour with its five channels: red, green, blue, filter, transmit.
-///
-/// `.rt`: `color rgbft <r, g, b, f, t>`, `rgb <r, g, b>`, `rgbf`, `rgbt`.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct Colour {
-    /// Red, green, blue.
-    pub rgb: Rgb,
-    /// Light passing through, tinted by `rgb`.
-    pub filter: f64,
-    /// Light passing through untinted.
-    pub transmit: f64,
-}
 
 /// What evaluation asks of an object it has made (`trace()`, `inside()`, `min_extent`,
 /// `max_extent`). The scene layer answers (it builds the object as a scene of its own);
@@ -973,6 +957,30 @@ impl Pigment {
         Pigment {
             kind: PigmentKind::Solid(c),
             transform: None,
+        }
+    }
+
+    /// The pigment placed for evaluation (the render's, and a pigment function's), its
+    /// patterns using the scene's noise generator and waves unless they name their own.
+    pub fn placed(&self, scene: crate::pattern::SceneDefaults) -> crate::pattern::PlacedPigment {
+        use crate::pattern::PlacedPigment;
+        let from_world = self.transform.as_ref().map(|t| t.matrix.inverse());
+        match &self.kind {
+            PigmentKind::Solid(c) => PlacedPigment::solid(*c, from_world),
+            PigmentKind::Pattern(pp) => {
+                let pattern = pp.pattern.with_scene(scene);
+                match &pp.map {
+                    PigmentMap::Colours(m) => {
+                        PlacedPigment::colour_mapped(pattern, m.entries.clone().into(), from_world)
+                    }
+                    PigmentMap::Pigments(ps) => PlacedPigment::pigment_mapped(
+                        pattern,
+                        ps.iter().map(|(v, p)| (*v, p.placed(scene))).collect(),
+                        from_world,
+                    ),
+                }
+            }
+            PigmentKind::ImageMap(image) => PlacedPigment::image(Arc::clone(image), from_world),
         }
     }
 }

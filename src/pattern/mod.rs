@@ -16,12 +16,15 @@ pub mod density;
 pub mod fractal;
 pub mod image;
 pub mod pavement;
+pub mod pigment;
 pub mod tiling;
 
 use crate::noise::{self, Turbulence, dnoise, noise, trunc_i32};
 use glam::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::OnceLock;
+
+pub use pigment::{Colour, PigmentFunction, PlacedPigment, Rgb, lookup};
 
 /// POV-Ray's `EPSILON`.
 const EPSILON: f64 = 1.0e-10;

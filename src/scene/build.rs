@@ -632,7 +632,7 @@ impl Scene {
                 pigments: s
                     .pigments
                     .iter()
-                    .map(|p| Pigment::new(p, pattern_defaults(ir)))
+                    .map(|p| p.placed(pattern_defaults(ir)))
                     .collect(),
                 emission: s.emission,
             }),

@@ -7,7 +7,7 @@ use super::*;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     /// Pigment.
-    pub pigment: Pigment,
+    pub pigment: PlacedPigment,
     /// Normal perturbation, if any.
     pub normal: Option<Box<Normal>>,
     /// Layered textures: the layers beneath, bottom first (each with none of its own).
@@ -31,7 +31,7 @@ impl Material {
     /// `generator` unless they name their own.
     pub fn new(t: &ir::Texture, scene: crate::pattern::SceneDefaults) -> Material {
         let mut m = Material {
-            pigment: Pigment::new(&t.pigment, scene),
+            pigment: t.pigment.placed(scene),
             normal: t.normal.as_deref().map(|n| Box::new(Normal::new(n, scene))),
             under: t.under.iter().map(|l| Material::new(l, scene)).collect(),
             map: t.map.as_deref().map(|m| {
@@ -286,7 +286,7 @@ impl MaterialMap {
             .pattern
             .wave
             .apply(self.pattern.raw_on(warped, surface));
-        let (prev, cur, t) = pigment::search(&self.entries, v);
+        let (prev, cur, t) = crate::pattern::pigment::search(&self.entries, v);
         let c = f(&self.entries[cur].1, at);
         if prev == cur {
             return c;

@@ -3,7 +3,7 @@
 //! scene is read (`Media::PostProcess`): the extinction, which effects are used, the
 //! thresholds methods 1 and 2 take more samples by.
 
-use super::{Pigment, Rgb};
+use super::{PlacedPigment, Rgb};
 use crate::ir;
 use glam::DVec3;
 
@@ -63,7 +63,7 @@ pub struct Media {
     /// The phase function.
     pub phase: Phase,
     /// The densities, multiplied (the last written first).
-    pub densities: Vec<Pigment>,
+    pub densities: Vec<PlacedPigment>,
     /// Whether the medium dims light at all (absorption or scattering given, even with
     /// `extinction 0`: POV-Ray's test).
     pub dims: bool,
@@ -109,7 +109,7 @@ impl Media {
             scattering: m.scattering,
             extinction: m.absorption + m.scattering * m.extinction,
             phase,
-            densities: m.densities.iter().map(|d| Pigment::new(d, scene)).collect(),
+            densities: m.densities.iter().map(|d| d.placed(scene)).collect(),
             dims: m.absorption != Rgb::ZERO || m.scattering != Rgb::ZERO,
             scatters: m.scattering != Rgb::ZERO,
             thresholds,
@@ -134,7 +134,7 @@ impl Media {
     /// Whether the medium has no density or its last-written density is a plain colour
     /// (POV-Ray then takes a shadow ray's optical depth from one sample per interval).
     pub fn plain_head(&self) -> bool {
-        self.densities.first().is_none_or(Pigment::is_solid)
+        self.densities.first().is_none_or(PlacedPigment::is_solid)
     }
 
     /// Whether the density is the same everywhere (no `density` block).

@@ -18,7 +18,6 @@ mod material;
 mod media;
 pub mod meshcam;
 mod normal;
-mod pigment;
 mod probe;
 mod query;
 
@@ -29,11 +28,11 @@ pub use crate::ir::{
 pub use crate::noise::mt19937;
 /// What patterns may see of the surface at a hit (the renderer passes it on).
 pub use crate::pattern::Surface as PatternSurface;
+pub use crate::pattern::{PlacedPigment, lookup as colour_map_at};
 pub use build::{MeshCache, Reuse};
 pub use material::{Material, filter_colour};
 pub use media::Media;
 pub use normal::Normal;
-pub use pigment::{Pigment, lookup as colour_map_at, pigment_function};
 pub use probe::object_query;
 pub use query::{Queries, Seer, ShadowCrossing, ShadowHull, fades};
 
@@ -318,7 +317,7 @@ pub struct Light {
 #[derive(Clone, Debug, PartialEq)]
 pub struct SkySphere {
     /// Bottom layer first.
-    pub pigments: Vec<Pigment>,
+    pub pigments: Vec<PlacedPigment>,
     /// Multiplies the pigments' colours.
     pub emission: Rgb,
 }

@@ -118,7 +118,7 @@ impl Normal {
                     / total
             } else {
                 let v = pattern.wave.apply(pattern.raw_on(tp, surface));
-                let (prev, cur, t) = super::pigment::search(map, v);
+                let (prev, cur, t) = crate::pattern::pigment::search(map, v);
                 let c = map[cur].1.perturb_on(tp, n, surface);
                 if prev == cur {
                     c
@@ -189,7 +189,7 @@ impl Normal {
 /// POV-Ray's slope map: the height at `v`, a cubic between the entries around it through
 /// their heights with their slopes.
 fn slope(map: &[SlopeEntry], v: f64) -> f64 {
-    let (prev, cur, t) = super::pigment::search(map, v);
+    let (prev, cur, t) = crate::pattern::pigment::search(map, v);
     let [p2, s2] = map[cur].1;
     if prev == cur {
         return p2;

@@ -891,8 +891,11 @@ impl Evaluator<'_> {
             .find(|c| c.kind == NodeKind::PigmentPattern)
         {
             let pigment = self.pigment(p, Pigment::solid(Colour::default()))?;
-            let native = (self.scene.pigment_function)(&pigment, self.scene_defaults());
-            return Ok((PatternKind::Pigment(crate::func::NativeRef(native)), args));
+            let native = crate::pattern::PigmentFunction(pigment.placed(self.scene_defaults()));
+            return Ok((
+                PatternKind::Pigment(crate::func::NativeRef(Arc::new(native))),
+                args,
+            ));
         }
         // The patterns that take an argument: a number (spiral arms) or a direction; `rest`,
         // the values after it.
@@ -2146,10 +2149,8 @@ impl Evaluator<'_> {
     ) -> Result<Arc<dyn crate::func::Native>> {
         let pigment = self.pigment(body, ir::Pigment::solid(ir::Colour::default()))?;
         if body.kind == NodeKind::Pigment {
-            return Ok((self.scene.pigment_function)(
-                &pigment,
-                self.scene_defaults(),
-            ));
+            let placed = pigment.placed(self.scene_defaults());
+            return Ok(Arc::new(crate::pattern::PigmentFunction(placed)));
         }
         let ir::PigmentKind::Pattern(p) = pigment.kind else {
             return Err(Diagnostic::error(

@@ -14,8 +14,8 @@ pub(super) mod scene;
 pub(super) mod shapes;
 pub(super) mod transform;
 
+use crate::eval::ObjectQueryMaker;
 use crate::eval::build::camera::CameraItems;
-use crate::eval::{ObjectQueryMaker, PigmentFunctionMaker};
 use crate::ir::{self, Rgb, Texture};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -67,8 +67,6 @@ pub(in crate::eval) struct Builder {
     pub(in crate::eval) charset: crate::font::Charset,
     /// Font files read, by path (`text`).
     pub(in crate::eval) fonts: HashMap<std::path::PathBuf, std::sync::Arc<Vec<u8>>>,
-    /// Makes pigment functions.
-    pub(in crate::eval) pigment_function: PigmentFunctionMaker,
     /// Makes objects that answer trace() and its kin.
     pub(in crate::eval) object_query: ObjectQueryMaker,
     /// The id of the last object made (see `ObjectValue::id`).

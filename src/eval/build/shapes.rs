@@ -804,18 +804,17 @@ impl<'a> Evaluator<'a> {
         if let Some(p) = f.children.iter().find(|c| c.kind == NodeKind::Pigment) {
             let pigment =
                 self.pigment(p, crate::ir::Pigment::solid(crate::ir::Colour::default()))?;
-            let colour = (self.scene.pigment_function)(&pigment, self.scene_defaults());
-            let generator = self.noise_generator();
+            let pigment = pigment.placed(self.scene_defaults());
             let mut heights = Vec::with_capacity((width * depth) as usize);
             for z in 0..depth {
                 for x in 0..width {
                     let q = point(x, z);
-                    let c = colour.eval(&[q.x, q.y, q.z], generator);
+                    let c = pigment.colour_at(q).rgb;
                     let channel = crate::eval::build::heightfield::channel16;
                     heights.push(crate::eval::build::heightfield::grey16([
-                        channel(c[0]),
-                        channel(c[1]),
-                        channel(c[2]),
+                        channel(c.x),
+                        channel(c.y),
+                        channel(c.z),
                     ]));
                 }
             }

@@ -1,14 +1,31 @@
-//! Pigment evaluation: the colour of a pattern at a point (POV-Ray §12.2).
+//! PlacedPigment evaluation: the colour of a pattern at a point (POV-Ray §12.2). It lives beside
+//! the patterns so that a pigment function (`function { pigment { … } }`) is made while the
+//! scene is read, as data, and the render-ready materials use the same evaluation.
 
-use super::{Colour, Rgb};
-use crate::ir::{self, ImageMap};
-use crate::pattern::{Pattern, PatternKind, Surface};
+use super::image::ImageMap;
+use super::{Pattern, PatternKind, Surface};
 use glam::{DMat4, DVec3};
 use std::sync::Arc;
 
-/// A pigment placed in the world.
+/// An RGB colour (linear working space, unclamped).
+pub type Rgb = DVec3;
+
+/// A POV-Ray colour with its five channels: red, green, blue, filter, transmit.
+///
+/// `.rt`: `color rgbft <r, g, b, f, t>`, `rgb <r, g, b>`, `rgbf`, `rgbt`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Colour {
+    /// Red, green, blue.
+    pub rgb: Rgb,
+    /// Light passing through, tinted by `rgb`.
+    pub filter: f64,
+    /// Light passing through untinted.
+    pub transmit: f64,
+}
+
+/// A pigment placed in the world (made from the IR's pigment by `ir::PlacedPigment::placed`).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Pigment {
+pub struct PlacedPigment {
     kind: Kind,
     /// Pattern space from world space; `None` is the identity.
     pattern_from_world: Option<Box<DMat4>>,
@@ -34,31 +51,52 @@ struct Mapped {
 enum Map {
     Colours(Box<[(f64, Colour)]>),
     /// Pigments placed in the pattern's space.
-    Pigments(Box<[(f64, Pigment)]>),
+    Pigments(Box<[(f64, PlacedPigment)]>),
 }
 
-impl Pigment {
-    /// The pigment as placed by the IR, its patterns using noise generator `generator` unless
-    /// they name their own.
-    pub fn new(p: &ir::Pigment, scene: crate::pattern::SceneDefaults) -> Pigment {
-        let kind = match &p.kind {
-            ir::PigmentKind::Solid(c) => Kind::Solid(*c),
-            ir::PigmentKind::Pattern(pp) => Kind::Pattern(Box::new(Mapped {
-                pattern: pp.pattern.with_scene(scene),
-                map: match &pp.map {
-                    ir::PigmentMap::Colours(m) => Map::Colours(m.entries.clone().into()),
-                    ir::PigmentMap::Pigments(ps) => Map::Pigments(
-                        ps.iter()
-                            .map(|(v, p)| (*v, Pigment::new(p, scene)))
-                            .collect(),
-                    ),
-                },
-            })),
-            ir::PigmentKind::ImageMap(image) => Kind::Image(Arc::clone(image)),
-        };
-        Pigment {
+impl PlacedPigment {
+    /// One colour everywhere (`pattern_from_world` is kept, as POV-Ray keeps a solid
+    /// pigment's transformation, but not used).
+    pub fn solid(colour: Colour, pattern_from_world: Option<DMat4>) -> PlacedPigment {
+        PlacedPigment::placed(Kind::Solid(colour), pattern_from_world)
+    }
+
+    /// A pattern's value looked up in a colour map.
+    pub fn colour_mapped(
+        pattern: Pattern,
+        entries: Box<[(f64, Colour)]>,
+        pattern_from_world: Option<DMat4>,
+    ) -> PlacedPigment {
+        let map = Map::Colours(entries);
+        PlacedPigment::placed(
+            Kind::Pattern(Box::new(Mapped { pattern, map })),
+            pattern_from_world,
+        )
+    }
+
+    /// A pattern's value looked up in a pigment map (its pigments placed in the pattern's
+    /// space).
+    pub fn pigment_mapped(
+        pattern: Pattern,
+        entries: Box<[(f64, PlacedPigment)]>,
+        pattern_from_world: Option<DMat4>,
+    ) -> PlacedPigment {
+        let map = Map::Pigments(entries);
+        PlacedPigment::placed(
+            Kind::Pattern(Box::new(Mapped { pattern, map })),
+            pattern_from_world,
+        )
+    }
+
+    /// An image map.
+    pub fn image(image: Arc<ImageMap>, pattern_from_world: Option<DMat4>) -> PlacedPigment {
+        PlacedPigment::placed(Kind::Image(image), pattern_from_world)
+    }
+
+    fn placed(kind: Kind, pattern_from_world: Option<DMat4>) -> PlacedPigment {
+        PlacedPigment {
             kind,
-            pattern_from_world: p.transform.as_ref().map(|t| Box::new(t.matrix.inverse())),
+            pattern_from_world: pattern_from_world.map(Box::new),
         }
     }
 
@@ -158,7 +196,7 @@ impl Pigment {
 /// `function { pigment { … } }`: the pigment's colour at a point, as a function of x, y, z
 /// giving red, green, blue, filter and transmit (POV-Ray's pigment functions).
 #[derive(Debug, PartialEq)]
-struct PigmentFunction(Pigment);
+pub struct PigmentFunction(pub PlacedPigment);
 
 impl crate::func::Native for PigmentFunction {
     fn params(&self) -> usize {
@@ -179,15 +217,6 @@ impl crate::func::Native for PigmentFunction {
     }
 }
 
-/// The function of pigment `p` (evaluation makes pigment functions through this: it may not
-/// use the scene layer itself).
-pub fn pigment_function(
-    p: &ir::Pigment,
-    scene: crate::pattern::SceneDefaults,
-) -> Arc<dyn crate::func::Native> {
-    Arc::new(PigmentFunction(Pigment::new(p, scene)))
-}
-
 /// The colour map at `v`: the first colour below the first entry, the last at or above the
 /// last, otherwise linear interpolation of all five channels toward the first entry whose
 /// value is ≥ v (so of two entries with the same value, the earlier wins exactly there).
@@ -201,7 +230,7 @@ pub fn lookup(entries: &[(f64, Colour)], v: f64) -> Colour {
 }
 
 /// The mean of colours weighted by their weights (POV-Ray's `average`).
-pub(super) fn average(weighted: impl Iterator<Item = (f64, Colour)>) -> Colour {
+fn average(weighted: impl Iterator<Item = (f64, Colour)>) -> Colour {
     let (mut sum, mut total) = (Colour::default(), 0.0);
     for (w, c) in weighted {
         sum.rgb += c.rgb * w;
@@ -227,7 +256,7 @@ fn blend(a: Colour, b: Colour, t: f64) -> Colour {
 
 /// POV-Ray's `Search_Blend_Map`: the entries around `v` and the fraction of the way from the
 /// first to the second (`prev == cur`: that entry alone).
-pub(super) fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
+pub fn search<T>(entries: &[(f64, T)], v: f64) -> (usize, usize, f64) {
     // It also defines maps whose keys decrease: at or above the last key, the last entry;
     // otherwise scan from the first entry to the first key not below `v` and blend with the
     // entry scanned before it.
@@ -270,7 +299,6 @@ fn image_colour(image: &ImageMap, q: DVec3) -> Colour {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ir::ColourMap;
 
     fn c(v: f64) -> Colour {
         Colour {
@@ -282,20 +310,10 @@ mod tests {
 
     #[test]
     fn checker_picks_its_two_colours_by_unit_cube() {
-        let p = Pigment::new(
-            &ir::Pigment {
-                kind: ir::PigmentKind::Pattern(Box::new(ir::PatternPigment {
-                    pattern: Pattern::new(crate::pattern::PatternKind::Checker),
-                    map: ir::PigmentMap::Colours(ColourMap {
-                        entries: vec![(0.0, c(0.2)), (1.0, c(0.7))],
-                    }),
-                })),
-                transform: None,
-            },
-            crate::pattern::SceneDefaults {
-                generator: 2,
-                waves: 10,
-            },
+        let p = PlacedPigment::colour_mapped(
+            Pattern::new(PatternKind::Checker),
+            [(0.0, c(0.2)), (1.0, c(0.7))].into(),
+            None,
         );
         assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.2));
         assert_eq!(p.colour_at(DVec3::new(1.5, 0.5, 0.5)), c(0.7));
@@ -304,36 +322,28 @@ mod tests {
 
     #[test]
     fn colour_map_interpolates_and_clamps() {
-        let map = ColourMap {
-            entries: vec![(0.2, c(0.0)), (0.6, c(1.0))],
-        };
-        assert_eq!(lookup(&map.entries, 0.0), c(0.0));
-        assert!((lookup(&map.entries, 0.4).rgb.x - 0.5).abs() < 1e-12);
-        assert_eq!(lookup(&map.entries, 0.9), c(1.0));
+        let map = [(0.2, c(0.0)), (0.6, c(1.0))];
+        assert_eq!(lookup(&map, 0.0), c(0.0));
+        assert!((lookup(&map, 0.4).rgb.x - 0.5).abs() < 1e-12);
+        assert_eq!(lookup(&map, 0.9), c(1.0));
         // Two entries at the same value: the earlier one wins exactly at that value.
-        let map = ColourMap {
-            entries: vec![(0.0, c(0.0)), (0.5, c(0.2)), (0.5, c(0.8)), (1.0, c(1.0))],
-        };
-        assert_eq!(lookup(&map.entries, 0.5), c(0.2));
-        assert!(lookup(&map.entries, 0.5000001).rgb.x > 0.79);
+        let map = [(0.0, c(0.0)), (0.5, c(0.2)), (0.5, c(0.8)), (1.0, c(1.0))];
+        assert_eq!(lookup(&map, 0.5), c(0.2));
+        assert!(lookup(&map, 0.5000001).rgb.x > 0.79);
     }
 
     #[test]
     fn colour_map_with_decreasing_keys_reads_as_povray() {
         // [0 c0] [0.6 c0.6] [0.3 c0.3] [1 c1]: POV-Ray blends 0 → 0.6 below 0.6, then 0.3 → 1
         // (measured: at 0.61 it shows 44% of the way from the 0.3 colour to the 1 colour).
-        let map = ColourMap {
-            entries: vec![(0.0, c(0.0)), (0.6, c(0.6)), (0.3, c(0.3)), (1.0, c(1.0))],
-        };
-        assert!((lookup(&map.entries, 0.3).rgb.x - 0.3).abs() < 1e-12);
-        assert!((lookup(&map.entries, 0.59).rgb.x - 0.59).abs() < 1e-12);
-        let at = lookup(&map.entries, 0.61).rgb.x;
+        let map = [(0.0, c(0.0)), (0.6, c(0.6)), (0.3, c(0.3)), (1.0, c(1.0))];
+        assert!((lookup(&map, 0.3).rgb.x - 0.3).abs() < 1e-12);
+        assert!((lookup(&map, 0.59).rgb.x - 0.59).abs() < 1e-12);
+        let at = lookup(&map, 0.61).rgb.x;
         assert!((at - (0.3 + 0.7 * (0.31 / 0.7))).abs() < 1e-12, "{at}");
         // Keys 0.8 then 0.2: below 0.2 the first colour, from 0.2 on the last.
-        let map = ColourMap {
-            entries: vec![(0.8, c(0.0)), (0.2, c(1.0))],
-        };
-        assert_eq!(lookup(&map.entries, 0.1), c(0.0));
-        assert_eq!(lookup(&map.entries, 0.5), c(1.0));
+        let map = [(0.8, c(0.0)), (0.2, c(1.0))];
+        assert_eq!(lookup(&map, 0.1), c(0.0));
+        assert_eq!(lookup(&map, 0.5), c(1.0));
     }
 }
