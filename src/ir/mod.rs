@@ -9,7 +9,9 @@ use std::sync::Arc;
 
 pub use crate::pattern::{Colour, Pattern, PatternKind, Rgb, Warp, Wave, WaveShape};
 
+mod dedup;
 mod outline;
+pub use dedup::Shared;
 pub use outline::{
     BicubicPatch, Blob, BlobComponent, BlobReach, Container, Curve, Glyph, HeightField, Isosurface,
     JuliaFractal, Lathe, Parametric, Prism, Segment, Sor, SorSegment, SphereSweep, Spline, Sweep,

@@ -10,136 +10,6 @@ use crate::geometry::{
 use rayon::prelude::*;
 use std::collections::HashMap;
 
-/// A cheap hash of the parts of a texture that most often differ (pattern kind, colour, main
-/// finish amounts); textures with equal fingerprints are then compared in full.
-fn fingerprint(t: &ir::Texture) -> u64 {
-    let (kind, colour) = match &t.pigment.kind {
-        ir::PigmentKind::Solid(c) => (0, Some(c)),
-        ir::PigmentKind::Pattern(_) => (1, None),
-        ir::PigmentKind::ImageMap(_) => (2, None),
-    };
-    let f = &t.finish;
-    // (A placed pattern, or a placed normal, tells textures apart: a hundred thousand boxes
-    // with one pattern, each moved, would otherwise all be compared with one another.)
-    let placed = |m: &Option<Box<ir::Transform>>| {
-        m.as_ref().map_or(0u64, |m| {
-            m.matrix
-                .to_cols_array()
-                .iter()
-                .fold(0u64, |h, v| (h ^ v.to_bits()).rotate_left(7))
-        })
-    };
-    let mut moved = t.normal.as_ref().map_or(0, |n| placed(&n.transform));
-    if colour.is_none() {
-        moved ^= placed(&t.pigment.transform).rotate_left(1);
-    }
-    let mut words = [kind, 0, 0, 0, 0, 0, 0, 0, 0, moved];
-    for (w, v) in words[1..]
-        .iter_mut()
-        .zip([f.ambient.x, f.diffuse, f.phong, f.specular])
-    {
-        *w = v.to_bits();
-    }
-    if let Some(c) = colour {
-        for (w, v) in words[5..9]
-            .iter_mut()
-            .zip([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit])
-        {
-            *w = v.to_bits();
-        }
-    }
-    // A multiply–rotate mix (the keys are not adversarial; SipHash was a third of the
-    // per-object build time).
-    words.iter().fold(0u64, |h, &w| {
-        (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29)
-    })
-}
-
-/// Ids for `values`, equal values sharing one (hash-consing), numbered in order of first
-/// appearance, and the value of each id. `fingerprint` must give equal values equal keys;
-/// values with equal keys are compared in full. (Sorting by key on all cores, rather than a
-/// hash table filled in order: with a million distinct values most lookups missed the cache.)
-fn shared_ids<'a, T: Sync>(
-    values: &[&'a T],
-    fingerprint: impl Fn(&T) -> u64 + Sync,
-    same: impl Fn(&T, &T) -> bool,
-) -> (Vec<u32>, Vec<&'a T>) {
-    // Positions sorted by key, then position: equal values lie together, the first one first.
-    let mut order: Vec<(u64, u32)> = values
-        .par_iter()
-        .enumerate()
-        .map(|(i, v)| (fingerprint(v), i as u32))
-        .collect();
-    order.par_sort_unstable();
-    // For each position, the first position holding an equal value.
-    let mut first = vec![0u32; values.len()];
-    let mut distinct_in_group: Vec<u32> = Vec::new();
-    for group in order.chunk_by(|a, b| a.0 == b.0) {
-        distinct_in_group.clear();
-        for &(_, i) in group {
-            let same = distinct_in_group
-                .iter()
-                .copied()
-                .find(|&d| same(values[d as usize], values[i as usize]));
-            first[i as usize] = same.unwrap_or_else(|| {
-                distinct_in_group.push(i);
-                i
-            });
-        }
-    }
-    // Ids in order of first appearance.
-    let mut ids: Vec<u32> = Vec::with_capacity(values.len());
-    let mut distinct = Vec::new();
-    for (i, &f) in first.iter().enumerate() {
-        let id = if f as usize == i {
-            distinct.push(values[i]);
-            distinct.len() as u32 - 1
-        } else {
-            ids[f as usize]
-        };
-        ids.push(id);
-    }
-    (ids, distinct)
-}
-
-/// Whether two textures render alike: equal, or equal but for where their solid pigments
-/// were moved (a solid colour is the same wherever it is placed).
-fn same_material(a: &ir::Texture, b: &ir::Texture) -> bool {
-    match (&a.pigment.kind, &b.pigment.kind) {
-        (ir::PigmentKind::Solid(ca), ir::PigmentKind::Solid(cb)) => {
-            ca == cb
-                && a.finish == b.finish
-                && a.normal == b.normal
-                && a.under == b.under
-                && a.map == b.map
-        }
-        _ => a == b,
-    }
-}
-
-/// Material ids for the objects of `ir` (outside, inside), equal textures sharing one, and
-/// the texture of each id. Without an interior texture both sides have the same id.
-#[allow(clippy::type_complexity)]
-fn material_ids(ir: &ir::Scene) -> (Vec<(MaterialId, MaterialId)>, Vec<&ir::Texture>) {
-    let mut textures: Vec<&ir::Texture> = ir.objects.iter().map(|o| &o.texture).collect();
-    textures.extend(ir.objects.iter().filter_map(|o| o.interior_texture()));
-    let (ids, textures) = shared_ids(&textures, fingerprint, same_material);
-    let mut inside = ids[ir.objects.len()..].iter();
-    let sides = ir
-        .objects
-        .iter()
-        .zip(&ids)
-        .map(|(o, &id)| {
-            let back = match o.interior_texture() {
-                Some(_) => *inside.next().expect("one id per interior texture"),
-                None => id,
-            };
-            (MaterialId(id), MaterialId(back))
-        })
-        .collect();
-    (sides, textures)
-}
-
 /// The material of a mesh whose triangles have textures of their own: entry 0 is the
 /// object's texture, entry 1 + i the mesh's texture i placed in the world by the object's
 /// transformation; each triangle's corners pick theirs.
@@ -445,14 +315,13 @@ impl Scene {
         cache: Option<&MeshCache>,
         previous: Kept,
     ) -> (Scene, Vec<Option<(DVec3, DVec3)>>, usize) {
-        let (mut ids, textures) = material_ids(ir);
+        let shared = ir.shared();
+        let mut ids: Vec<(MaterialId, MaterialId)> = (shared.sides.iter())
+            .map(|&(front, back)| (MaterialId(front), MaterialId(back)))
+            .collect();
+        let (textures, interior_ids) = (shared.textures, shared.interior_ids);
         let generator = ir.settings.noise_generator;
-        let (interior_ids, interiors) = shared_ids(
-            &ir.objects.iter().map(|o| &*o.interior).collect::<Vec<_>>(),
-            |i| i.key(),
-            |a, b| a == b,
-        );
-        let interiors: Vec<Interior> = interiors.into_iter().cloned().collect();
+        let interiors: Vec<Interior> = shared.interiors.into_iter().cloned().collect();
         let mut materials: Vec<Material> = textures
             .into_iter()
             .map(|t| Material::new(t, pattern_defaults(ir)))
@@ -1055,66 +924,6 @@ fn bound_shape(shape: &ir::Shape, transform: Option<&ir::Transform>, generator: 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn shared_ids_number_equal_values_once_in_order_of_first_appearance() {
-        let v = [5.0, 7.0, 5.0, 9.0, 7.0, 1.0];
-        let refs: Vec<&f64> = v.iter().collect();
-        // A fingerprint that gives every value the same key: all compared in full.
-        let (ids, distinct) = shared_ids(&refs, |_| 42, |a, b| a == b);
-        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
-        assert_eq!(distinct, [&5.0, &7.0, &9.0, &1.0]);
-        // And one that tells them apart.
-        let (ids, _) = shared_ids(&refs, |x| x.to_bits(), |a, b| a == b);
-        assert_eq!(ids, [0, 1, 0, 2, 1, 3]);
-    }
-
-    /// Objects with one solid colour, each moved (the texture moving with it), share one
-    /// material; moved patterns are told apart by their fingerprints, not compared all with
-    /// all (a Menger sponge of 160 000 such boxes took 110 s to build).
-    #[test]
-    fn moved_solid_textures_share_a_material_and_moved_patterns_do_not() {
-        let text = "#declare B = box { 0, 1 pigment { rgb <1, 0, 0> } }
-                    #declare P = box { 0, 1 pigment { checker } }
-                    #for (i, 0, 999) object { B translate i*x } #end
-                    #for (i, 0, 2) object { P translate i*y } #end
-                    object { P translate 2*y }";
-        let loaded = crate::load_str(
-            std::path::Path::new("t.rt"),
-            text.to_string(),
-            &Default::default(),
-        )
-        .unwrap_or_else(|e| panic!("{e}"));
-        let (ids, textures) = material_ids(&loaded.scene);
-        assert!(
-            ids[..1000].iter().all(|&(a, b)| a == ids[0].0 && b == a),
-            "one material for the red boxes"
-        );
-        assert_eq!(
-            textures.len(),
-            1 + 3,
-            "the checkers moved three ways are three materials"
-        );
-        assert_eq!(ids[1003], ids[1002], "equally moved checkers share one");
-        let t = std::time::Instant::now();
-        let many: Vec<ir::Texture> = (0..20_000)
-            .map(|i| {
-                let mut t = loaded.scene.objects[1000].texture.clone();
-                t.transform(ir::Transform {
-                    matrix: DMat4::from_translation(DVec3::splat(f64::from(i))),
-                });
-                t
-            })
-            .collect();
-        let refs: Vec<&ir::Texture> = many.iter().collect();
-        let (_, distinct) = shared_ids(&refs, fingerprint, same_material);
-        assert_eq!(distinct.len(), 20_000);
-        assert!(
-            t.elapsed().as_secs_f64() < 5.0,
-            "not compared all with all: {:?}",
-            t.elapsed()
-        );
-    }
 
     /// An object of `shape` with the defaults, placed by `transform`.
     fn ir_object(shape: ir::Shape, transform: Option<DMat4>) -> ir::Object {
