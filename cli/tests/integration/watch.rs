@@ -1,8 +1,9 @@
 //! `trace watch`: its HTTP interface (the picture, the status, the event stream, settings,
 //! who may ask), saves of the scene and of what it includes, a flood of saves, a scene that
-//! never finishes loading; and the page itself in a real browser (Chromium, headless, driven
-//! through its DevTools protocol), which runs where Chromium is installed and is required
-//! when TRACE_REQUIRE_BROWSER=1 (CI installs it and sets it).
+//! never finishes loading; and the page itself in real browsers, headless: Chromium driven
+//! through its DevTools protocol and Firefox through WebDriver BiDi. Each runs where its
+//! browser is installed and is required when TRACE_REQUIRE_BROWSER names it (CI installs
+//! both and names both).
 
 use serde_json::Value;
 use std::io::{BufRead, BufReader, Read, Write};
@@ -474,20 +475,44 @@ fn the_server_answers_this_machine_and_outlives_its_clients() {
 }
 
 /// The browser: Chromium headless, or `None` (where it is not installed).
-fn chromium() -> Option<PathBuf> {
-    let named = std::env::var_os("TRACE_CHROMIUM").map(PathBuf::from);
-    named
-        .into_iter()
-        .chain(["/usr/bin/chromium", "/usr/bin/chromium-browser"].map(PathBuf::from))
-        .find(|p| p.is_file())
+/// The browsers the page is tested in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Kind {
+    /// Driven through its DevTools protocol.
+    Chromium,
+    /// Driven through WebDriver BiDi (Firefox's remote protocol).
+    Firefox,
 }
 
-/// A WebSocket client, enough for Chromium's DevTools protocol: text frames, masked as a
-/// client's must be.
+impl Kind {
+    /// The browser's program: `TRACE_CHROMIUM` or `TRACE_FIREFOX` if set, else Debian's.
+    fn program(self) -> Option<PathBuf> {
+        let (variable, installed) = match self {
+            Kind::Chromium => (
+                "TRACE_CHROMIUM",
+                ["/usr/bin/chromium", "/usr/bin/chromium-browser"],
+            ),
+            Kind::Firefox => (
+                "TRACE_FIREFOX",
+                ["/usr/bin/firefox-esr", "/usr/bin/firefox"],
+            ),
+        };
+        let named = std::env::var_os(variable).map(PathBuf::from);
+        named
+            .into_iter()
+            .chain(installed.map(PathBuf::from))
+            .find(|p| p.is_file())
+    }
+}
+
+/// A WebSocket client, enough for Chromium's DevTools protocol and Firefox's WebDriver BiDi
+/// (JSON commands with ids, answered by id): text frames, masked as a client's must be.
 struct DevTools {
     reader: BufReader<TcpStream>,
     writer: TcpStream,
     next: u64,
+    /// Under WebDriver BiDi, the browsing context (tab) scripts run in.
+    context: Option<String>,
 }
 
 impl DevTools {
@@ -520,6 +545,7 @@ impl DevTools {
             reader,
             writer,
             next: 1,
+            context: None,
         }
     }
 
@@ -573,7 +599,7 @@ impl DevTools {
         }
     }
 
-    /// Calls a DevTools method and returns its result.
+    /// Calls a method of the protocol and returns its result.
     fn call(&mut self, method: &str, params: Value) -> Value {
         let id = self.next;
         self.next += 1;
@@ -608,10 +634,21 @@ impl DevTools {
                 centre,
             });
         })()";
-        let r = self.call(
-            "Runtime.evaluate",
-            serde_json::json!({ "expression": LOOK, "returnByValue": true }),
-        );
+        let r = match self.context.clone() {
+            None => self.call(
+                "Runtime.evaluate",
+                serde_json::json!({ "expression": LOOK, "returnByValue": true }),
+            ),
+            Some(context) => self.call(
+                "script.evaluate",
+                serde_json::json!({
+                    "expression": LOOK,
+                    "target": { "context": context },
+                    "awaitPromise": false,
+                }),
+            ),
+        };
+        // (Both protocols answer with the value at result.value.)
         serde_json::from_str(r["result"]["value"].as_str().unwrap_or("{}")).unwrap()
     }
 
@@ -619,9 +656,95 @@ impl DevTools {
     fn wait(&mut self, what: &str, done: impl Fn(&Value) -> bool) -> Value {
         poll(&format!("the page to show {what}"), || self.page(), done)
     }
+
+    /// Opens `url` in a headless `kind` (its profile in `dir`): the browser and a client of
+    /// its protocol driving the page.
+    fn open(kind: Kind, program: &Path, dir: &Path, url: &str) -> (Browser, DevTools) {
+        let profile = dir.join(format!("{kind:?}-profile"));
+        std::fs::create_dir_all(&profile).unwrap();
+        let mut command = Command::new(program);
+        match kind {
+            Kind::Chromium => command.args([
+                "--headless=new".to_string(),
+                "--no-sandbox".into(),
+                "--disable-gpu".into(),
+                "--no-first-run".into(),
+                "--remote-debugging-port=0".into(),
+                format!("--user-data-dir={}", profile.display()),
+                "about:blank".into(),
+            ]),
+            Kind::Firefox => command
+                .args([
+                    "--headless",
+                    "--no-remote",
+                    "--remote-debugging-port=0",
+                    "--profile",
+                ])
+                .arg(&profile)
+                .arg("about:blank"),
+        };
+        let mut child = command
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap_or_else(|e| panic!("{kind:?} starts: {e}"));
+        let stderr = child.stderr.take().unwrap();
+        let browser = Browser(child);
+        let mut lines = BufReader::new(stderr).lines();
+        let said = match kind {
+            Kind::Chromium => "DevTools listening on ",
+            Kind::Firefox => "WebDriver BiDi listening on ",
+        };
+        let endpoint = lines
+            .by_ref()
+            .map_while(Result::ok)
+            .find_map(|l| l.split(said).nth(1).map(|s| s.trim().to_string()))
+            .unwrap_or_else(|| panic!("{kind:?} says where its protocol listens"));
+        std::thread::spawn(move || for _ in lines {});
+        let port: u16 = endpoint
+            .trim_start_matches("ws://127.0.0.1:")
+            .split('/')
+            .next()
+            .and_then(|p| p.parse().ok())
+            .expect("a local port");
+        let mut devtools = match kind {
+            Kind::Chromium => {
+                // The page target's own socket, from the browser's list of targets.
+                let (_, list) = http(port, "GET", "/json/list", &format!("127.0.0.1:{port}"));
+                let targets: Value = serde_json::from_slice(&list).unwrap();
+                let page_socket = targets
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .find(|t| t["type"] == "page")
+                    .and_then(|t| t["webSocketDebuggerUrl"].as_str())
+                    .expect("a page target")
+                    .to_string();
+                let mut devtools = DevTools::connect(&page_socket);
+                devtools.call("Page.navigate", serde_json::json!({ "url": url }));
+                devtools
+            }
+            Kind::Firefox => {
+                let mut bidi = DevTools::connect(&format!("ws://127.0.0.1:{port}/session"));
+                bidi.call("session.new", serde_json::json!({ "capabilities": {} }));
+                let tree = bidi.call("browsingContext.getTree", serde_json::json!({}));
+                let context = tree["contexts"][0]["context"]
+                    .as_str()
+                    .expect("a browsing context")
+                    .to_string();
+                bidi.call(
+                    "browsingContext.navigate",
+                    serde_json::json!({ "context": context, "url": url, "wait": "complete" }),
+                );
+                bidi.context = Some(context);
+                bidi
+            }
+        };
+        (browser, devtools)
+    }
 }
 
-/// A headless Chromium, killed when dropped.
+/// A headless browser, killed when dropped.
 struct Browser(Child);
 
 impl Drop for Browser {
@@ -632,72 +755,39 @@ impl Drop for Browser {
 }
 
 #[test]
-fn the_page_in_a_browser_shows_the_picture_the_error_and_the_fix() {
-    let required = std::env::var_os("TRACE_REQUIRE_BROWSER").is_some_and(|v| v == "1");
-    let Some(program) = chromium() else {
+fn the_page_in_chromium_shows_the_picture_the_error_and_the_fix() {
+    the_page_shows_the_picture_the_error_and_the_fix(Kind::Chromium);
+}
+
+#[test]
+fn the_page_in_firefox_shows_the_picture_the_error_and_the_fix() {
+    the_page_shows_the_picture_the_error_and_the_fix(Kind::Firefox);
+}
+
+/// The page in a real browser: the picture, a broken save's located error over the last
+/// picture, the fix. Where the browser is missing the test is skipped, unless
+/// `TRACE_REQUIRE_BROWSER` names it (`chromium firefox`, as CI sets it) or is `1`.
+fn the_page_shows_the_picture_the_error_and_the_fix(kind: Kind) {
+    // (`1` requires every browser; otherwise the names of those required.)
+    let required = std::env::var("TRACE_REQUIRE_BROWSER").is_ok_and(|v| {
+        v == "1" || (v.split_whitespace()).any(|b| b.eq_ignore_ascii_case(&format!("{kind:?}")))
+    });
+    let Some(program) = kind.program() else {
         assert!(
             !required,
-            "TRACE_REQUIRE_BROWSER=1 but Chromium is not installed"
+            "TRACE_REQUIRE_BROWSER requires {kind:?}, which is not installed"
         );
-        eprintln!("the browser test is skipped: install Debian's chromium to run it");
+        eprintln!(
+            "the {kind:?} test is skipped: install Debian's chromium and firefox-esr to run it"
+        );
         return;
     };
-    let dir = scratch("browser");
+    let dir = scratch(&format!("browser-{kind:?}"));
     let path = dir.join("scene.rt");
     save(&path, &scene("pigment", "<1, 0, 0>"));
     let watch = Watch::start(&dir, &["scene.rt", "--width", "96", "--height", "72"]);
-    let mut child = Command::new(program)
-        .args([
-            "--headless=new",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--no-first-run",
-            "--remote-debugging-port=0",
-            &format!("--user-data-dir={}", dir.join("profile").display()),
-            "about:blank",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("chromium starts");
-    let stderr = child.stderr.take().unwrap();
-    let browser = Browser(child);
-    let mut lines = BufReader::new(stderr).lines();
-    let endpoint = lines
-        .by_ref()
-        .map_while(Result::ok)
-        .find_map(|l| {
-            l.split("DevTools listening on ")
-                .nth(1)
-                .map(|s| s.trim().to_string())
-        })
-        .expect("chromium says where its DevTools listen");
-    std::thread::spawn(move || for _ in lines {});
-    // The page target's own socket, from the browser's list of targets.
-    let devtools_port: u16 = endpoint
-        .trim_start_matches("ws://127.0.0.1:")
-        .split('/')
-        .next()
-        .and_then(|p| p.parse().ok())
-        .expect("a local DevTools port");
-    let (_, list) = http(
-        devtools_port,
-        "GET",
-        "/json/list",
-        &format!("127.0.0.1:{devtools_port}"),
-    );
-    let targets: Value = serde_json::from_slice(&list).unwrap();
-    let page_socket = targets
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|t| t["type"] == "page")
-        .and_then(|t| t["webSocketDebuggerUrl"].as_str())
-        .expect("a page target")
-        .to_string();
-    let mut devtools = DevTools::connect(&page_socket);
     let url = format!("http://127.0.0.1:{}/", watch.port);
-    devtools.call("Page.navigate", serde_json::json!({ "url": url }));
+    let (browser, mut devtools) = DevTools::open(kind, &program, &dir, &url);
 
     // The picture.
     devtools.wait("the red sphere", |p| {
