@@ -793,7 +793,7 @@ impl Polynomial {
 
 /// A triangle mesh (`mesh`, `mesh2`, or a single `triangle`/`smooth_triangle`). Vertices and
 /// normals are stored as 32-bit floats, as in POV-Ray.
-#[derive(Clone, PartialEq, Default)]
+#[derive(Clone, Default)]
 pub struct Mesh {
     /// Vertex positions.
     pub vertices: Vec<Vec3>,
@@ -825,6 +825,40 @@ pub struct Mesh {
     /// The numbers (in the order written, increasing) of a `mesh2`'s faces of no area: trace
     /// does not keep them, POV-Ray does, and a mesh camera numbers faces as POV-Ray does.
     pub dropped_faces: Vec<u32>,
+}
+
+/// Meshes are equal when their data are; a mesh is equal to itself at once (a mesh shared
+/// by two reads of one text, as `trace watch` shares a big mesh2 whose lists did not
+/// change, is not compared triangle by triangle).
+impl PartialEq for Mesh {
+    fn eq(&self, other: &Mesh) -> bool {
+        // (Every field named, so that a new one is not forgotten here.)
+        let Mesh {
+            vertices,
+            normals,
+            triangles,
+            normal_indices,
+            inside_vector,
+            uvs,
+            uv_indices,
+            world_uv,
+            textures,
+            face_textures,
+            dropped_faces,
+        } = self;
+        std::ptr::eq(self, other)
+            || (*vertices == other.vertices
+                && *normals == other.normals
+                && *triangles == other.triangles
+                && *normal_indices == other.normal_indices
+                && *inside_vector == other.inside_vector
+                && *uvs == other.uvs
+                && *uv_indices == other.uv_indices
+                && *world_uv == other.world_uv
+                && *textures == other.textures
+                && *face_textures == other.face_textures
+                && *dropped_faces == other.dropped_faces)
+    }
 }
 
 /// In [`Mesh::face_textures`]: the corner takes the object's texture.

@@ -85,13 +85,21 @@ fn pattern_defaults(ir: &ir::Scene) -> crate::pattern::SceneDefaults {
 /// Each build keeps only the meshes it used.
 #[derive(Default)]
 pub struct MeshCache {
-    meshes: std::sync::Mutex<HashMap<u128, Arc<TriangleMesh>>>,
+    meshes: std::sync::Mutex<KeptMeshes>,
 }
+
+/// The built meshes by their data's print, and the IR meshes they were built from with
+/// their prints (an IR mesh shared by the next scene is not printed again).
+type KeptMeshes = (HashMap<u128, Arc<TriangleMesh>>, Vec<(Arc<ir::Mesh>, u128)>);
 
 impl MeshCache {
     /// Meshes kept now.
     pub fn count(&self) -> usize {
-        self.meshes.lock().unwrap_or_else(|e| e.into_inner()).len()
+        self.meshes
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .0
+            .len()
     }
 }
 
@@ -342,15 +350,18 @@ impl Scene {
         let mut meshes: HashMap<usize, Arc<TriangleMesh>> = HashMap::new();
         let mut kept = cache.map(|c| {
             let mut old = c.meshes.lock().unwrap_or_else(|e| e.into_inner());
-            (std::mem::take(&mut *old), HashMap::new())
+            (std::mem::take(&mut *old), KeptMeshes::default())
         });
         for o in &ir.objects {
             if let ir::Shape::Mesh(mesh) = &o.shape {
                 meshes
                     .entry(Arc::as_ptr(mesh) as usize)
                     .or_insert_with(|| match &mut kept {
-                        Some((old, used)) => {
-                            let print = mesh_print(mesh);
+                        Some(((old, old_prints), (used, prints))) => {
+                            let print = (old_prints.iter())
+                                .find(|(m, _)| Arc::ptr_eq(m, mesh))
+                                .map_or_else(|| mesh_print(mesh), |&(_, print)| print);
+                            prints.push((Arc::clone(mesh), print));
                             let built = used
                                 .get(&print)
                                 .or_else(|| old.get(&print))

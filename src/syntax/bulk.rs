@@ -99,6 +99,30 @@ struct Lists {
     kept: Vec<Kept>,
     /// The lists the load in progress used or read.
     used: Vec<Kept>,
+    /// Values made from lists, kept as the lists are.
+    derived: Vec<Derived>,
+    /// Those the load in progress used or made.
+    derived_used: Vec<Derived>,
+}
+
+/// A value made from lists (by their values' identity) and a few words of other data.
+#[derive(Clone)]
+struct Derived {
+    lists: Vec<Option<Arc<Vec<[f64; 3]>>>>,
+    words: Vec<u64>,
+    value: Arc<dyn std::any::Any + Send + Sync>,
+}
+
+impl Derived {
+    fn is(&self, lists: &[Option<&BulkList>], words: &[u64]) -> bool {
+        self.words == words
+            && self.lists.len() == lists.len()
+            && (self.lists.iter().zip(lists)).all(|(a, b)| match (a, b) {
+                (Some(a), Some(b)) => Arc::ptr_eq(a, &b.values),
+                (None, None) => true,
+                _ => false,
+            })
+    }
 }
 
 /// A list and the text it was read from (kept alive to compare against).
@@ -128,7 +152,7 @@ impl ListCache {
         let first_close = pos + text.get(pos..end)?.find('}')?;
         let body = &text.as_bytes()[pos..first_close];
         let mut lists = self.0.lock().unwrap_or_else(|e| e.into_inner());
-        let Lists { kept, used } = &mut *lists;
+        let Lists { kept, used, .. } = &mut *lists;
         let same = |k: &&Kept| {
             k.body.len() == body.len()
                 && (Arc::ptr_eq(&k.text, text) && k.body.start == pos
@@ -174,9 +198,12 @@ impl ListCache {
     pub fn finish_load(&self, complete: bool) {
         let mut lists = self.0.lock().unwrap_or_else(|e| e.into_inner());
         let used = std::mem::take(&mut lists.used);
+        let derived = std::mem::take(&mut lists.derived_used);
         if complete {
             lists.kept = used;
+            lists.derived = derived;
         } else {
+            lists.derived.extend(derived);
             for u in used {
                 let known =
                     (lists.kept.iter()).any(|k| Arc::ptr_eq(&k.text, &u.text) && k.body == u.body);
@@ -185,6 +212,45 @@ impl ListCache {
                 }
             }
         }
+    }
+
+    /// The value made before from these very lists (taken from this cache, so the same
+    /// values) and `words` of other data, if one is kept: what the lists make (a mesh from
+    /// its mesh2 lists) is then not made again. [`ListCache::keep_derived`] keeps one.
+    pub fn derived<T: std::any::Any + Send + Sync>(
+        &self,
+        lists: &[Option<&BulkList>],
+        words: &[u64],
+    ) -> Option<Arc<T>> {
+        let mut cache = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let found = (cache.derived_used.iter())
+            .chain(&cache.derived)
+            .find(|d| d.is(lists, words))?
+            .clone();
+        if !cache.derived_used.iter().any(|d| d.is(lists, words)) {
+            cache.derived_used.push(found.clone());
+        }
+        Arc::downcast(found.value).ok()
+    }
+
+    /// Keeps `value`, made from `lists` and `words` alone, for [`ListCache::derived`] (while
+    /// loads use it).
+    pub fn keep_derived<T: std::any::Any + Send + Sync>(
+        &self,
+        lists: &[Option<&BulkList>],
+        words: &[u64],
+        value: Arc<T>,
+    ) {
+        let derived = Derived {
+            lists: lists
+                .iter()
+                .map(|l| l.map(|l| Arc::clone(&l.values)))
+                .collect(),
+            words: words.to_vec(),
+            value,
+        };
+        let mut cache = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        cache.derived_used.push(derived);
     }
 
     /// Lists kept now.

@@ -117,3 +117,66 @@ fn a_rebuild_keeps_what_the_edit_left_and_renders_as_a_fresh_build() {
         assert!(before.film.pixels != fresh.film.pixels, "{edit:?} shows");
     }
 }
+
+/// A mesh2 whose lists the fast lane reads is made once while its lists' text is unchanged:
+/// a second load with the same list cache gets the very same mesh (and its warnings again);
+/// any change to the lists or the inside vector makes it anew, equal to a fresh load's.
+#[test]
+fn a_mesh2_of_unchanged_lists_is_made_once() {
+    let text = |vertex: &str, inside: &str| {
+        let n = 40;
+        let mut vertices: Vec<String> = (0..=n)
+            .flat_map(|j| (0..=n).map(move |i| format!("<{i}, {}, {j}>", (i * j) % 3)))
+            .collect();
+        vertices[5] = vertex.to_string();
+        let mut faces: Vec<String> = Vec::new();
+        for j in 0..n {
+            for i in 0..n {
+                let a = j * (n + 1) + i;
+                faces.push(format!("<{a}, {}, {}>", a + 1, a + n + 1));
+                faces.push(format!("<{}, {}, {}>", a + 1, a + n + 2, a + n + 1));
+            }
+        }
+        // One zero-area triangle: a warning at every load.
+        faces.push("<0, 0, 1>".into());
+        format!(
+            "camera {{ location <20, 30, -30> look_at <20, 0, 20> }}\n\
+             mesh2 {{ vertex_vectors {{ {}, {} }} face_indices {{ {}, {} }} {inside} pigment {{ rgb 1 }} }}\n",
+            vertices.len(),
+            vertices.join(", "),
+            faces.len(),
+            faces.join(", "),
+        )
+    };
+    let lists = trace::ListCache::default();
+    let options = trace::LoadOptions {
+        lists: lists.clone(),
+        ..Default::default()
+    };
+    let load = |text: String, options: &trace::LoadOptions| {
+        let loaded =
+            trace::load_str(Path::new("mesh.rt"), text, options).unwrap_or_else(|e| panic!("{e}"));
+        let trace::ir::Shape::Mesh(mesh) = &loaded.scene.objects[0].shape else {
+            panic!("a mesh");
+        };
+        (mesh.clone(), loaded.warnings)
+    };
+    let (first, warned) = load(text("<5, 0, 0>", ""), &options);
+    assert_eq!(warned.len(), 1, "{warned:?}");
+    let (again, warned_again) = load(text("<5, 0, 0>", ""), &options);
+    assert!(std::sync::Arc::ptr_eq(&first, &again), "the same mesh");
+    assert_eq!(warned_again, warned, "its warning again");
+    for (vertex, inside) in [("<5, 0.5, 0>", ""), ("<5, 0, 0>", "inside_vector y")] {
+        let (changed, _) = load(text(vertex, inside), &options);
+        assert!(
+            !std::sync::Arc::ptr_eq(&first, &changed),
+            "{vertex} {inside}"
+        );
+        let (fresh, _) = load(text(vertex, inside), &trace::LoadOptions::default());
+        assert!(
+            *changed == *fresh,
+            "{vertex} {inside}: as a fresh load makes it"
+        );
+        assert!(*changed != *first);
+    }
+}

@@ -503,7 +503,7 @@ impl Evaluator<'_> {
             (NodeKind::Mesh2, _) => {
                 let (mesh, rest) = self.mesh2(node)?;
                 modifiers = rest;
-                ObjectValue::single(Shape::Mesh(Arc::new(mesh)))
+                ObjectValue::single(Shape::Mesh(mesh))
             }
             (_, View::MeshFile(file)) => {
                 modifiers = &node.children;
@@ -1528,7 +1528,68 @@ impl Evaluator<'_> {
     }
 
     /// `mesh2 { vertex_vectors normal_vectors face_indices normal_indices inside_vector }`.
-    fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Mesh, &'n [Node])> {
+    /// A mesh of big lists read by the fast lane is made once while those lists are the
+    /// same ones (`trace watch`: a save that leaves a 1M-triangle mesh's text alone does not
+    /// make its mesh again).
+    fn mesh2<'n>(&mut self, node: &'n Node) -> Result<(Arc<Mesh>, &'n [Node])> {
+        let View::Mesh2(parts) = node.view() else {
+            return Err(crate::eval::malformed(node, "a mesh2"));
+        };
+        // The mesh is a function of its lists alone (and its inside vector) when they all
+        // came from the fast lane and it has no textures or uv vectors.
+        let mut inside = Mesh::default();
+        let rest = self.inside_vector(&mut inside, parts.rest)?;
+        fn bulk(n: Option<&Node>) -> Option<Option<&crate::syntax::bulk::BulkList>> {
+            match n.map(list_view).transpose() {
+                Ok(Some(List::Bulk(list))) => Some(Some(list)),
+                Ok(None) => Some(None),
+                _ => None,
+            }
+        }
+        let lists: Option<Vec<Option<&crate::syntax::bulk::BulkList>>> = [
+            Some(parts.vertices),
+            parts.normals,
+            Some(parts.faces),
+            parts.normal_indices,
+            parts.uv_indices,
+        ]
+        .into_iter()
+        .map(bulk)
+        .collect();
+        let lists = lists.filter(|_| parts.textures.is_none() && parts.uvs.is_none());
+        let words: Vec<u64> = match inside.inside_vector {
+            Some(v) => [v.x, v.y, v.z].map(|c| u64::from(c.to_bits())).to_vec(),
+            None => Vec::new(),
+        };
+        if let Some(lists) = &lists {
+            if let Some(made) = (self.options.lists).derived::<(Arc<Mesh>, usize)>(lists, &words) {
+                self.degenerate_warning(made.1, node);
+                return Ok((Arc::clone(&made.0), rest));
+            }
+        }
+        let (mut mesh, degenerate) = self.mesh2_made(node)?;
+        mesh.inside_vector = inside.inside_vector;
+        self.degenerate_warning(degenerate, node);
+        let mesh = Arc::new(mesh);
+        if let Some(lists) = &lists {
+            let made = Arc::new((Arc::clone(&mesh), degenerate));
+            self.options.lists.keep_derived(lists, &words, made);
+        }
+        Ok((mesh, rest))
+    }
+
+    fn degenerate_warning(&mut self, degenerate: usize, node: &Node) {
+        if degenerate > 0 {
+            self.warn(Diagnostic::warning(
+                format!("mesh2: {degenerate} zero-area triangles are not rendered (as in POV-Ray)"),
+                node.word_span,
+            ));
+        }
+    }
+
+    /// A mesh2's mesh (without its inside vector) and how many zero-area triangles it
+    /// dropped.
+    fn mesh2_made(&mut self, node: &Node) -> Result<(Mesh, usize)> {
         let View::Mesh2(parts) = node.view() else {
             return Err(crate::eval::malformed(node, "a mesh2"));
         };
@@ -1627,20 +1688,13 @@ impl Evaluator<'_> {
         } else {
             mesh.face_textures.clear();
         }
-        if degenerate > 0 {
-            self.warn(Diagnostic::warning(
-                format!("mesh2: {degenerate} zero-area triangles are not rendered (as in POV-Ray)"),
-                node.word_span,
-            ));
-        }
         if mesh.triangles.is_empty() {
             return Err(Diagnostic::error(
                 "mesh2 has no renderable triangle",
                 node.word_span,
             ));
         }
-        let rest = self.inside_vector(&mut mesh, parts.rest)?;
-        Ok((mesh, rest))
+        Ok((mesh, degenerate))
     }
 
     /// `mesh_file { "name.obj" }`: the file's mesh, read once however often it is used.
@@ -1706,16 +1760,17 @@ impl Evaluator<'_> {
             for (k, v) in list.values.iter().enumerate() {
                 let mut face = [0u32; 3];
                 for (slot, &c) in face.iter_mut().zip(v) {
-                    let i = c.trunc();
-                    if !(i >= 0.0 && (i as usize) < limit) {
+                    // (Truncated toward zero: in range exactly when -1 < c < limit; the cast
+                    // truncates, without a call to trunc for each of millions of indices.)
+                    if !(c > -1.0 && c < limit as f64) {
                         let (start, end) = list.span(k);
                         let span = Span::new(node.span.file, start as usize, end as usize);
                         return Err(Diagnostic::error(
-                            format!("index {i} is out of range (0..{limit})"),
+                            format!("index {} is out of range (0..{limit})", c.trunc()),
                             span,
                         ));
                     }
-                    *slot = i as u32;
+                    *slot = c as u32;
                 }
                 out.push(face);
             }
