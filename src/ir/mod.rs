@@ -999,22 +999,18 @@ impl Pigment {
     /// The pigment placed for evaluation (the render's, and a pigment function's), its
     /// patterns using the scene's noise generator and waves unless they name their own.
     pub fn placed(&self, scene: crate::pattern::SceneDefaults) -> crate::pattern::PlacedPigment {
-        use crate::pattern::PlacedPigment;
+        use crate::pattern::{PlacedPigment, pigment::Map};
         let from_world = self.transform.as_ref().map(|t| t.matrix.inverse());
         match &self.kind {
             PigmentKind::Solid(c) => PlacedPigment::solid(*c, from_world),
             PigmentKind::Pattern(pp) => {
-                let pattern = pp.pattern.with_scene(scene);
-                match &pp.map {
-                    PigmentMap::Colours(m) => {
-                        PlacedPigment::colour_mapped(pattern, m.entries.clone().into(), from_world)
+                let map = match &pp.map {
+                    PigmentMap::Colours(m) => Map::Colours(m.entries.clone().into()),
+                    PigmentMap::Pigments(ps) => {
+                        Map::Pigments(ps.iter().map(|(v, p)| (*v, p.placed(scene))).collect())
                     }
-                    PigmentMap::Pigments(ps) => PlacedPigment::pigment_mapped(
-                        pattern,
-                        ps.iter().map(|(v, p)| (*v, p.placed(scene))).collect(),
-                        from_world,
-                    ),
-                }
+                };
+                PlacedPigment::mapped(pp.pattern.with_scene(scene), map, from_world)
             }
             PigmentKind::ImageMap(image) => PlacedPigment::image(Arc::clone(image), from_world),
         }

@@ -46,11 +46,12 @@ struct Mapped {
     map: Map,
 }
 
-/// (value, colour) or (value, pigment) entries.
+/// A pattern's map: (value, colour) or (value, pigment) entries.
 #[derive(Clone, Debug, PartialEq)]
-enum Map {
+pub enum Map {
+    /// `color_map`.
     Colours(Box<[(f64, Colour)]>),
-    /// Pigments placed in the pattern's space.
+    /// `pigment_map`: pigments placed in the pattern's space.
     Pigments(Box<[(f64, PlacedPigment)]>),
 }
 
@@ -61,31 +62,10 @@ impl PlacedPigment {
         PlacedPigment::placed(Kind::Solid(colour), pattern_from_world)
     }
 
-    /// A pattern's value looked up in a colour map.
-    pub fn colour_mapped(
-        pattern: Pattern,
-        entries: Box<[(f64, Colour)]>,
-        pattern_from_world: Option<DMat4>,
-    ) -> PlacedPigment {
-        let map = Map::Colours(entries);
-        PlacedPigment::placed(
-            Kind::Pattern(Box::new(Mapped { pattern, map })),
-            pattern_from_world,
-        )
-    }
-
-    /// A pattern's value looked up in a pigment map (its pigments placed in the pattern's
-    /// space).
-    pub fn pigment_mapped(
-        pattern: Pattern,
-        entries: Box<[(f64, PlacedPigment)]>,
-        pattern_from_world: Option<DMat4>,
-    ) -> PlacedPigment {
-        let map = Map::Pigments(entries);
-        PlacedPigment::placed(
-            Kind::Pattern(Box::new(Mapped { pattern, map })),
-            pattern_from_world,
-        )
+    /// A pattern's value looked up in its map.
+    pub fn mapped(pattern: Pattern, map: Map, pattern_from_world: Option<DMat4>) -> PlacedPigment {
+        let kind = Kind::Pattern(Box::new(Mapped { pattern, map }));
+        PlacedPigment::placed(kind, pattern_from_world)
     }
 
     /// An image map.
@@ -310,9 +290,9 @@ mod tests {
 
     #[test]
     fn checker_picks_its_two_colours_by_unit_cube() {
-        let p = PlacedPigment::colour_mapped(
+        let p = PlacedPigment::mapped(
             Pattern::new(PatternKind::Checker),
-            [(0.0, c(0.2)), (1.0, c(0.7))].into(),
+            Map::Colours([(0.0, c(0.2)), (1.0, c(0.7))].into()),
             None,
         );
         assert_eq!(p.colour_at(DVec3::new(0.5, 0.5, 0.5)), c(0.2));
