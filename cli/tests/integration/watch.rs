@@ -707,7 +707,7 @@ impl DevTools {
             .next()
             .and_then(|p| p.parse().ok())
             .expect("a local port");
-        let mut devtools = match kind {
+        let devtools = match kind {
             Kind::Chromium => {
                 // The page target's own socket, from the browser's list of targets.
                 let (_, list) = http(port, "GET", "/json/list", &format!("127.0.0.1:{port}"));

@@ -1558,7 +1558,7 @@ impl Evaluator<'_> {
         .collect();
         let lists = lists.filter(|_| parts.textures.is_none() && parts.uvs.is_none());
         let words: Vec<u64> = match inside.inside_vector {
-            Some(v) => [v.x, v.y, v.z].map(|c| u64::from(c.to_bits())).to_vec(),
+            Some(v) => [v.x, v.y, v.z].map(|c| c.to_bits()).to_vec(),
             None => Vec::new(),
         };
         if let Some(lists) = &lists {
