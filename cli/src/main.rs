@@ -340,7 +340,9 @@ fn with_huge_pages() {
             return;
         };
         let mut args = std::env::args_os();
-        let name = args.next().unwrap_or_else(|| program.clone().into_os_string());
+        let name = args
+            .next()
+            .unwrap_or_else(|| program.clone().into_os_string());
         // (`exec` returns only if it failed.)
         let _ = std::process::Command::new(&program)
             .arg0(name)
