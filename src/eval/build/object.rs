@@ -1567,7 +1567,7 @@ impl Evaluator<'_> {
                 return Ok((Arc::clone(&made.0), rest));
             }
         }
-        let (mut mesh, degenerate) = self.mesh2_made(node)?;
+        let (mut mesh, degenerate) = self.mesh2_made(node, &parts)?;
         mesh.inside_vector = inside.inside_vector;
         self.degenerate_warning(degenerate, node);
         let mesh = Arc::new(mesh);
@@ -1589,10 +1589,11 @@ impl Evaluator<'_> {
 
     /// A mesh2's mesh (without its inside vector) and how many zero-area triangles it
     /// dropped.
-    fn mesh2_made(&mut self, node: &Node) -> Result<(Mesh, usize)> {
-        let View::Mesh2(parts) = node.view() else {
-            return Err(crate::eval::malformed(node, "a mesh2"));
-        };
+    fn mesh2_made(
+        &mut self,
+        node: &Node,
+        parts: &crate::syntax::view::Mesh2Parts,
+    ) -> Result<(Mesh, usize)> {
         let (vertex_node, normal_node, uv_node) = (parts.vertices, parts.normals, parts.uvs);
         let (texture_node, face_node) = (parts.textures, parts.faces);
         let (normal_index_node, uv_index_node) = (parts.normal_indices, parts.uv_indices);
