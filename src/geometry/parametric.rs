@@ -22,6 +22,9 @@ const STACK: usize = 64;
 /// the nearest hit found so far.
 const MAX_PIECES: u32 = 1 << 16;
 
+/// A function's values at a piece's four corners (see `Parametric::corners`).
+type Corners = [f64; 4];
+
 /// Bounds of the functions' values over the pieces of a fixed split (`precompute`).
 #[derive(Clone, Debug, PartialEq)]
 struct Precomputed {
@@ -100,13 +103,22 @@ impl Parametric {
         f.eval(&args[..f.params.clamp(2, 3)], self.generator)
     }
 
-    /// POV-Ray's bound of one function over a (u, v) piece: from its corners (less the
-    /// accuracy, as POV-Ray passes it as a threshold), widened by what `max_gradient` allows.
-    fn interval(&self, axis: usize, low: DVec2, high: DVec2) -> (f64, f64) {
-        let acc = self.accuracy;
-        let f = |u: f64, v: f64| self.value(axis, DVec2::new(u, v)) - acc;
-        let (f00, f01) = (f(low.x, low.y), f(low.x, high.y));
-        let (f10, f11) = (f(high.x, low.y), f(high.x, high.y));
+    /// One function's values, less the accuracy (POV-Ray passes it as a threshold), at a
+    /// (u, v) piece's corners: `(low.x, low.y)`, `(low.x, high.y)`, `(high.x, low.y)`,
+    /// `(high.x, high.y)`.
+    fn corners(&self, axis: usize, low: DVec2, high: DVec2) -> Corners {
+        let f = |u: f64, v: f64| self.value(axis, DVec2::new(u, v)) - self.accuracy;
+        [
+            f(low.x, low.y),
+            f(low.x, high.y),
+            f(high.x, low.y),
+            f(high.x, high.y),
+        ]
+    }
+
+    /// POV-Ray's bound of one function over a (u, v) piece: from its corners' values, widened
+    /// by what `max_gradient` allows.
+    fn bound(&self, [f00, f01, f10, f11]: Corners, low: DVec2, high: DVec2) -> (f64, f64) {
         let g = self.max_gradient;
         let widen = |dx: f64, a: f64, b: f64| {
             let ofs = (g * (dx - (a - b).abs() / g) / 2.0).max(0.0);
@@ -119,12 +131,34 @@ impl Parametric {
         (widen(du, min0, min1).0, widen(du, max0, max1).1)
     }
 
+    /// The two halves' corners of a piece split at `mid` along `split` (0: u, 1: v), from the
+    /// piece's corners and the function's values at the two new corners: (lower half, upper
+    /// half).
+    fn halves(
+        &self,
+        axis: usize,
+        c: Corners,
+        split: usize,
+        lo: DVec2,
+        hi: DVec2,
+        mid: f64,
+    ) -> (Corners, Corners) {
+        let f = |u: f64, v: f64| self.value(axis, DVec2::new(u, v)) - self.accuracy;
+        if split == 0 {
+            let (m0, m1) = (f(mid, lo.y), f(mid, hi.y));
+            ([c[0], c[1], m0, m1], [m0, m1, c[2], c[3]])
+        } else {
+            let (m0, m1) = (f(lo.x, mid), f(hi.x, mid));
+            ([c[0], m0, c[2], m1], [m0, c[1], m1, c[3]])
+        }
+    }
+
     fn precompute(&self, table: &mut Precomputed, sector: u32, last: u32, low: DVec2, high: DVec2) {
         let s = sector as usize;
         if sector >= last {
             for axis in 0..3 {
                 if table.axes[axis] {
-                    let (lo, hi) = self.interval(axis, low, high);
+                    let (lo, hi) = self.bound(self.corners(axis, low, high), low, high);
                     table.low[axis][s] = lo;
                     table.high[axis][s] = hi;
                 }
@@ -162,6 +196,10 @@ impl Parametric {
         let mut low = [DVec2::ZERO; STACK];
         let mut high = [DVec2::ZERO; STACK];
         let mut sector = [0u32; STACK];
+        // Each piece's corner values, per function, where bit `axis` of `known` is set: a
+        // half shares two corners with its piece, so a split evaluates two new ones.
+        let mut corners = [[[0.0; 4]; 3]; STACK];
+        let mut known = [0u8; STACK];
         low[0] = self.uv_min;
         high[0] = self.uv_max;
         sector[0] = 1;
@@ -188,7 +226,13 @@ impl Parametric {
                 let use_table = s < max_pre[axis] && (axis < 2 || s > 0);
                 let (a, b) = match table {
                     Some(t) if use_table => (t.low[axis][s as usize], t.high[axis][s as usize]),
-                    _ => self.interval(axis, lo, hi),
+                    _ => {
+                        if known[k] & (1 << axis) == 0 {
+                            corners[k][axis] = self.corners(axis, lo, hi);
+                            known[k] |= 1 << axis;
+                        }
+                        self.bound(corners[k][axis], lo, hi)
+                    }
                 };
                 if d[axis].abs() < EPSILON {
                     if b < p[axis] || a > p[axis] {
@@ -236,6 +280,15 @@ impl Parametric {
                 let mid = (hi[split] + lo[split]) / 2.0;
                 high[k + 1][split] = mid;
                 low[k][split] = mid;
+                known[k + 1] = known[k];
+                for axis in 0..3 {
+                    if known[k] & (1 << axis) != 0 {
+                        let (lower, upper) =
+                            self.halves(axis, corners[k][axis], split, lo, hi, mid);
+                        corners[k + 1][axis] = lower;
+                        corners[k][axis] = upper;
+                    }
+                }
                 i += 1;
             }
         }
@@ -339,5 +392,65 @@ mod tests {
             p.intersect(&Ray::new(DVec3::new(1.3, 0.6, -5.0), DVec3::Z))
                 .is_empty()
         );
+    }
+
+    /// A split's halves carry their corners' values: the two kept from the piece and the two
+    /// evaluated at the split equal the values evaluated afresh at the halves' corners, for
+    /// both directions of split (the search reads only carried values).
+    #[test]
+    fn halves_carry_their_corners() {
+        use crate::func::Math1;
+        let f = |code: Vec<Op>| Arc::new(Function::new(3, code).unwrap());
+        // x = sin(3u) + v², y = u·v, z = cos(u − 2v)
+        let p = Parametric::new(
+            [
+                f(vec![
+                    Op::Arg(0),
+                    Op::Const(3.0),
+                    Op::Mul,
+                    Op::Math1(Math1::Sin),
+                    Op::Arg(1),
+                    Op::Arg(1),
+                    Op::Mul,
+                    Op::Add,
+                ]),
+                f(vec![Op::Arg(0), Op::Arg(1), Op::Mul]),
+                f(vec![
+                    Op::Arg(0),
+                    Op::Arg(1),
+                    Op::Const(2.0),
+                    Op::Mul,
+                    Op::Sub,
+                    Op::Math1(Math1::Cos),
+                ]),
+            ],
+            2,
+            Container::Box(DVec3::splat(-2.0), DVec3::splat(2.0)),
+            DVec2::ZERO,
+            DVec2::ONE,
+            0.01,
+            3.0,
+            None,
+        );
+        let pieces = [
+            (DVec2::new(0.0, 0.0), DVec2::new(1.0, 1.0)),
+            (DVec2::new(0.25, 0.5), DVec2::new(0.375, 0.5625)),
+            (DVec2::new(-1.5, 0.1), DVec2::new(0.7, 2.3)),
+        ];
+        for (lo, hi) in pieces {
+            for axis in 0..3 {
+                let c = p.corners(axis, lo, hi);
+                for split in 0..2 {
+                    let mid = (lo[split] + hi[split]) / 2.0;
+                    let (lower, upper) = p.halves(axis, c, split, lo, hi, mid);
+                    let mut lower_hi = hi;
+                    lower_hi[split] = mid;
+                    let mut upper_lo = lo;
+                    upper_lo[split] = mid;
+                    assert_eq!(lower, p.corners(axis, lo, lower_hi), "{axis} {split}");
+                    assert_eq!(upper, p.corners(axis, upper_lo, hi), "{axis} {split}");
+                }
+            }
+        }
     }
 }
