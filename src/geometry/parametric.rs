@@ -281,12 +281,10 @@ impl Parametric {
                 high[k + 1][split] = mid;
                 low[k][split] = mid;
                 known[k + 1] = known[k];
-                for axis in 0..3 {
+                let (piece, rest) = corners[k..].split_at_mut(1);
+                for (axis, (upper, lower)) in piece[0].iter_mut().zip(&mut rest[0]).enumerate() {
                     if known[k] & (1 << axis) != 0 {
-                        let (lower, upper) =
-                            self.halves(axis, corners[k][axis], split, lo, hi, mid);
-                        corners[k + 1][axis] = lower;
-                        corners[k][axis] = upper;
+                        (*lower, *upper) = self.halves(axis, *upper, split, lo, hi, mid);
                     }
                 }
                 i += 1;
