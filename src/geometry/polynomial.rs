@@ -37,26 +37,42 @@ impl Polynomial {
 
     /// The coefficients in s of the polynomial along `o + s·d`.
     fn along(&self, o: DVec3, d: DVec3) -> Poly {
-        // Powers of each coordinate's linear polynomial a + b·s, up to the sixth.
+        // (Made for each degree, so that the powers' loops unroll.)
+        match self.degree {
+            0..=2 => self.along_to::<2>(o, d),
+            3 => self.along_to::<3>(o, d),
+            4 => self.along_to::<4>(o, d),
+            5 => self.along_to::<5>(o, d),
+            _ => self.along_to::<6>(o, d),
+        }
+    }
+
+    /// `along` for a polynomial of degree at most `D`.
+    fn along_to<const D: usize>(&self, o: DVec3, d: DVec3) -> Poly {
+        // Powers n ≤ D of each coordinate's linear polynomial a + b·s: row n holds the
+        // coefficients of s⁰ … sⁿ (those above are 0).
         let powers = |a: f64, b: f64| {
             let mut p = [[0.0; 7]; 7];
             p[0][0] = 1.0;
-            for n in 1..7 {
-                for m in 0..7 {
-                    let lower = if m > 0 { p[n - 1][m - 1] * b } else { 0.0 };
-                    p[n][m] = p[n - 1][m] * a + lower;
+            for n in 1..=D {
+                p[n][n] = p[n - 1][n - 1] * b;
+                for m in (1..n).rev() {
+                    p[n][m] = p[n - 1][m] * a + p[n - 1][m - 1] * b;
                 }
+                p[n][0] = p[n - 1][0] * a;
             }
             p
         };
         let (px, py, pz) = (powers(o.x, d.x), powers(o.y, d.y), powers(o.z, d.z));
         let mut out = [0.0; 7];
-        for (c, [i, j, k]) in self.terms.iter() {
-            let (a, b, e) = (&px[*i as usize], &py[*j as usize], &pz[*k as usize]);
-            for (u, au) in a.iter().enumerate().filter(|(_, v)| **v != 0.0) {
-                for (v, bv) in b.iter().enumerate().take(7 - u).filter(|(_, v)| **v != 0.0) {
-                    for (w, ew) in e.iter().enumerate().take(7 - u - v) {
-                        out[u + v + w] += c * au * bv * ew;
+        for &(c, [i, j, k]) in self.terms.iter() {
+            let (i, j, k) = (i as usize, j as usize, k as usize);
+            let (a, b, e) = (&px[i][..=i], &py[j][..=j], &pz[k][..=k]);
+            for (u, &au) in a.iter().enumerate().filter(|(_, v)| **v != 0.0) {
+                for (v, &bv) in b.iter().enumerate().filter(|(_, v)| **v != 0.0) {
+                    let cab = c * au * bv;
+                    for (w, &ew) in e.iter().enumerate() {
+                        out[u + v + w] += cab * ew;
                     }
                 }
             }
@@ -171,6 +187,38 @@ mod tests {
         assert_eq!(c.as_slice().len(), 4);
         for (a, b) in c.as_slice().iter().zip(expected) {
             assert!((a - b).abs() < 1e-9, "{a} vs {b}");
+        }
+    }
+
+    /// The polynomial along a ray, for every degree: its value at s is the surface
+    /// polynomial's at o + s·d (every term of each degree, with coefficients that differ).
+    #[test]
+    fn along_a_ray_is_the_polynomial_at_each_point() {
+        for degree in 2..=6u8 {
+            let mut terms = Vec::new();
+            for i in 0..=degree {
+                for j in 0..=degree - i {
+                    for k in 0..=degree - i - j {
+                        let c =
+                            1.0 + f64::from(i) * 0.37 - f64::from(j) * 0.21 + f64::from(k) * 0.13;
+                        terms.push((c, [i, j, k]));
+                    }
+                }
+            }
+            let p = Polynomial {
+                degree,
+                terms: terms.into(),
+            };
+            let (o, d) = (DVec3::new(0.3, -0.7, 1.1), DVec3::new(-0.4, 0.5, 0.9));
+            let c = p.along(o, d);
+            for s in [-1.3, -0.2, 0.0, 0.6, 1.7] {
+                let along = c.iter().rev().fold(0.0, |acc, &ci| acc * s + ci);
+                let direct = p.value(o + s * d);
+                assert!(
+                    (along - direct).abs() <= 1e-9 * direct.abs().max(1.0),
+                    "degree {degree}, s {s}: {along} against {direct}"
+                );
+            }
         }
     }
 }
