@@ -270,7 +270,7 @@ impl TriangleMesh {
         let mut best: Option<(f64, u32)> = None;
         let mut tmax = ray.tmax;
         self.tree
-            .walk::<true>(ray, prune_value(ray.tmax), |first, lanes| {
+            .walk::<true>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
                 let mut hit = false;
                 for i in lanes_of(first, lanes) {
                     let crossing = self.exact(&sheared, i, ray.tmin, tmax);
@@ -297,7 +297,7 @@ impl TriangleMesh {
     pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         self.tree
-            .walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+            .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
                 for i in lanes_of(first, lanes) {
                     let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
                     if let Some(t) = crossing {
@@ -320,7 +320,7 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut found = false;
         self.tree
-            .walk::<false>(ray, prune_value(ray.tmax), |first, lanes| {
+            .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
                 for i in lanes_of(first, lanes) {
                     let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
                     if crossing.is_some() {

@@ -36,6 +36,16 @@ impl ShearedRay {
         }
     }
 
+    /// The axes the ray is sheared along: x, y, and z (the direction's largest component).
+    pub fn axes(&self) -> (usize, usize, usize) {
+        (self.kx, self.ky, self.kz)
+    }
+
+    /// The shear factors: the direction's x and y components over its z component.
+    pub fn factors(&self) -> (f64, f64) {
+        (self.sx, self.sy)
+    }
+
     /// Distance `t` to the triangle (v0, v1, v2), if the ray meets it (either side) at a `t` in
     /// `(tmin, tmax)`.
     pub fn intersect(&self, v0: DVec3, v1: DVec3, v2: DVec3, tmin: f64, tmax: f64) -> Option<f64> {

@@ -10,6 +10,7 @@
 //! the crossings are those of the exact test alone.
 
 use super::Ray;
+use super::triangle::ShearedRay;
 use glam::{DVec3, Vec4};
 use obvhs::bvh2::Bvh2;
 use rayon::prelude::*;
@@ -65,6 +66,21 @@ fn up(x: f64) -> f32 {
 fn down(x: f64) -> f32 {
     let y = x as f32;
     if (y as f64) > x { y.next_down() } else { y }
+}
+
+/// An f32 at or below `x` and one at or above it, within three units of the last place of
+/// it: `(down(x), up(x))` widened by up to one unit, without their data-dependent branches
+/// (a ray's origin rounds either way at random, and those branches were most of the cost of
+/// setting up a ray for the tree).
+fn bracket(x: f64) -> (f32, f32) {
+    let y = x as f32;
+    if !y.is_finite() {
+        return (down(x), up(x));
+    }
+    // |y|·ε is at least one unit in the last place of y, and MIN_POSITIVE more than one of
+    // a subnormal's; y is within half a unit of x.
+    let step = y.abs() * f32::EPSILON + f32::MIN_POSITIVE;
+    (y - step, y + step)
 }
 
 impl WideBvh {
@@ -222,13 +238,14 @@ impl WideBvh {
     pub fn walk<const ORDERED: bool>(
         &self,
         ray: &Ray,
+        sheared: &ShearedRay,
         mut limit: f32,
         mut visit: impl FnMut(u32, u32) -> f32,
     ) {
         if self.root == EMPTY {
             return;
         }
-        let r = FilterRay::new(ray, self.centre, self.extent);
+        let r = FilterRay::new(ray, sheared, self.centre, self.extent);
         let mut stack = Stack::new();
         stack.push(self.root, 0.0);
         while let Some((mut entry, near)) = stack.pop() {
@@ -324,11 +341,11 @@ struct FilterRay {
 }
 
 impl FilterRay {
-    fn new(ray: &Ray, centre: DVec3, extent: f32) -> FilterRay {
+    fn new(ray: &Ray, sheared: &ShearedRay, centre: DVec3, extent: f32) -> FilterRay {
         let o = ray.origin - centre;
         let d = ray.direction;
-        // The same axes and factors as the exact test (ShearedRay).
-        let (kx, ky, kz) = super::triangle::shear_axes(d);
+        // The same axes and factors as the exact test's.
+        let ((kx, ky, kz), (sx, sy)) = (sheared.axes(), sheared.factors());
         // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the corner's
         // and origin's roundings (one unit of each magnitude), the subtraction, the factor's
         // rounding, the product and the difference: under 9 units of the largest magnitude;
@@ -340,17 +357,18 @@ impl FilterRay {
             f32::INFINITY
         };
         let (ox, oy, oz) = (o.x, o.y, o.z);
+        let (bx, by, bz) = (bracket(ox), bracket(oy), bracket(oz));
         let (dx, dy, dz) = (d.x as f32, d.y as f32, d.z as f32);
         FilterRay {
-            below: [down(ox), down(oy), down(oz)].map(Vec4::splat),
-            above: [up(ox), up(oy), up(oz)].map(Vec4::splat),
+            below: [bx.0, by.0, bz.0].map(Vec4::splat),
+            above: [bx.1, by.1, bz.1].map(Vec4::splat),
             inverse: [dx.recip(), dy.recip(), dz.recip()].map(Vec4::splat),
             origin: [ox as f32, oy as f32, oz as f32].map(Vec4::splat),
             kx,
             ky,
             kz,
-            sx: Vec4::splat((d[kx] / d[kz]) as f32),
-            sy: Vec4::splat((d[ky] / d[kz]) as f32),
+            sx: Vec4::splat(sx as f32),
+            sy: Vec4::splat(sy as f32),
             error,
         }
     }
@@ -459,7 +477,6 @@ impl Stack {
 #[cfg(test)]
 mod tests {
     use super::super::mesh::TriangleMesh;
-    use super::super::triangle::ShearedRay;
     use super::*;
 
     /// A small deterministic generator (xorshift), uniform in [0, 1).
@@ -488,6 +505,34 @@ mod tests {
             !ts.is_empty(),
             ts.len(),
         )
+    }
+
+    /// A ray origin's bracket holds it, within three units of the last place, over the
+    /// whole range of f32 and beyond it (where it falls back to the exact rounding).
+    #[test]
+    fn brackets_hold_the_value_closely() {
+        let mut values = vec![
+            0.0, -0.0, 1e-45, -1e-45, 1e-40, 1.0, -1.0, 3.0e38, -3.0e38, 1e300,
+        ];
+        let mut r = Rng(7);
+        for _ in 0..100_000 {
+            let exponent = (r.next() * 80.0 - 40.0) as i32;
+            values.push((r.next() - 0.5) * 10f64.powi(exponent));
+        }
+        for x in values {
+            let (lo, hi) = bracket(x);
+            assert!(f64::from(lo) <= x && x <= f64::from(hi), "{x}: {lo} {hi}");
+            let ulp = |v: f32| (v.abs().next_up() - v.abs()).max(f32::from_bits(1));
+            let y = x as f32;
+            if y.is_finite() {
+                assert!(
+                    hi - lo <= 6.0 * ulp(y) + 2.0 * f32::MIN_POSITIVE,
+                    "{x}: {lo} {hi}"
+                );
+            } else {
+                assert_eq!((lo, hi), (down(x), up(x)));
+            }
+        }
     }
 
     #[test]
