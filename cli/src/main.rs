@@ -541,6 +541,10 @@ fn render_frame(args: &RenderArgs, job: &job::Job, frame: &job::Frame) -> Result
         lists: Default::default(),
     };
     let loaded = trace::load(&job.scene, &load_options)?;
+    // (The options hold the cache of big mesh2 lists and the meshes made from them, for a
+    // next load of the same text, which a render never makes: let go now, so that the scene
+    // build can free a mesh's lists before it makes the mesh's tree.)
+    drop(load_options);
     if !args.quiet {
         eprint!("{}", loaded.debug_output);
     }
