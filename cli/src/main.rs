@@ -323,37 +323,7 @@ static RENDERING: AtomicBool = AtomicBool::new(false);
 /// process's, so the token is too; the library keeps no global).
 static CANCEL: std::sync::LazyLock<trace::Cancel> = std::sync::LazyLock::new(trace::Cancel::new);
 
-/// glibc's allocator backs its heaps with the kernel's 2 MiB pages when its `hugetlb` tunable
-/// asks (the kernel's default is to do so only where asked): a big scene's memory then costs
-/// a page fault every 2 MiB instead of every 4 KiB, which was a fifth of a big file's parse
-/// (`scripts/scale.py --realistic`). The tunable is read when a process starts, so trace
-/// starts itself again once with it set: only where `GLIBC_TUNABLES` is unset (set it, even
-/// empty, to keep glibc's defaults) and the program can find itself; otherwise it goes on.
-fn with_huge_pages() {
-    #[cfg(all(target_os = "linux", target_env = "gnu"))]
-    {
-        use std::os::unix::process::CommandExt;
-        if std::env::var_os("GLIBC_TUNABLES").is_some() {
-            return;
-        }
-        let Ok(program) = std::env::current_exe() else {
-            return;
-        };
-        let mut args = std::env::args_os();
-        let name = args
-            .next()
-            .unwrap_or_else(|| program.clone().into_os_string());
-        // (`exec` returns only if it failed.)
-        let _ = std::process::Command::new(&program)
-            .arg0(name)
-            .args(args)
-            .env("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1")
-            .exec();
-    }
-}
-
 fn main() -> ExitCode {
-    with_huge_pages();
     // A first Ctrl-C during a render stops it and writes the rows finished (a part that
     // `--continue` completes); another, or one at any other time, ends at once, leaving no
     // temporary file behind.

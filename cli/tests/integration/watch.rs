@@ -50,14 +50,7 @@ struct Watch {
 
 impl Watch {
     fn start(dir: &Path, args: &[&str]) -> Watch {
-        Watch::start_with(dir, args, |_| {})
-    }
-
-    /// Started with what `setup` adds to its command (its environment).
-    fn start_with(dir: &Path, args: &[&str], setup: impl FnOnce(&mut Command)) -> Watch {
-        let mut command = Command::new(env!("CARGO_BIN_EXE_trace"));
-        setup(&mut command);
-        let mut child = command
+        let mut child = Command::new(env!("CARGO_BIN_EXE_trace"))
             .arg("watch")
             .args(args)
             .current_dir(dir)
@@ -289,37 +282,6 @@ fn a_camera_move_builds_nothing_else_and_a_light_edit_no_shape() {
     assert_eq!(lit["built"], true);
     assert_eq!(lit["kept"]["shapes"], 2, "{lit}");
     assert_eq!(lit["kept"]["objects"], 2, "{lit}");
-    let _ = std::fs::remove_dir_all(dir);
-}
-
-/// trace starts itself again with glibc's huge-page tunable set (a big scene's memory then
-/// costs a fifth of the page faults), unless `GLIBC_TUNABLES` was set, even empty. (The
-/// running process's environment shows it: `exec` keeps the process.)
-#[cfg(all(target_os = "linux", target_env = "gnu"))]
-#[test]
-fn trace_runs_with_huge_pages_unless_told_otherwise() {
-    let dir = scratch("huge-pages");
-    save(&dir.join("scene.rt"), &scene("pigment", "<1, 0, 0>"));
-    let environment = |tunables: Option<&str>| {
-        let watch = Watch::start_with(&dir, &["scene.rt", "--width", "8", "--height", "6"], |c| {
-            match tunables {
-                Some(t) => c.env("GLIBC_TUNABLES", t),
-                None => c.env_remove("GLIBC_TUNABLES"),
-            };
-        });
-        let environ = std::fs::read(format!("/proc/{}/environ", watch.child.id())).unwrap();
-        let entries: Vec<String> = (environ.split(|&b| b == 0))
-            .map(|e| String::from_utf8_lossy(e).into_owned())
-            .filter(|e| e.starts_with("GLIBC_TUNABLES="))
-            .collect();
-        entries
-    };
-    assert_eq!(environment(None), ["GLIBC_TUNABLES=glibc.malloc.hugetlb=1"]);
-    assert_eq!(environment(Some("")), ["GLIBC_TUNABLES="]);
-    assert_eq!(
-        environment(Some("glibc.malloc.arena_max=2")),
-        ["GLIBC_TUNABLES=glibc.malloc.arena_max=2"]
-    );
     let _ = std::fs::remove_dir_all(dir);
 }
 
