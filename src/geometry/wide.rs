@@ -639,4 +639,55 @@ mod tests {
             }
         }
     }
+
+    /// Small meshes (up to 16 triangles test every triangle for whether any lies on a ray
+    /// and for every crossing, one triangle also for the nearest) answer as every triangle
+    /// tested exactly does, on both sides of that size, with rays through corners and edges.
+    #[test]
+    fn small_meshes_answer_as_every_triangle_tested_exactly() {
+        let mut rng = Rng(11);
+        for n in [1, 2, 5, 16, 17, 24] {
+            for _ in 0..20 {
+                let mut vertices = Vec::new();
+                let mut faces = Vec::new();
+                for k in 0..n as u32 {
+                    let p = rng.point(DVec3::ZERO, 4.0);
+                    for _ in 0..3 {
+                        vertices.push(p + rng.point(DVec3::ZERO, 2.0));
+                    }
+                    faces.push([3 * k, 3 * k + 1, 3 * k + 2]);
+                }
+                let soup: Vec<[DVec3; 3]> = faces
+                    .iter()
+                    .map(|f| f.map(|i| vertices[i as usize]))
+                    .collect();
+                let mesh =
+                    TriangleMesh::new(vertices.clone(), faces, vec![], vec![], vec![], vec![]);
+                for k in 0..200 {
+                    let origin = rng.point(DVec3::ZERO, 12.0);
+                    let target = match k % 3 {
+                        0 => rng.point(DVec3::ZERO, 4.0),
+                        1 => vertices[(rng.next() * vertices.len() as f64) as usize],
+                        _ => {
+                            let f = soup[(rng.next() * soup.len() as f64) as usize];
+                            f[0] + (f[1] - f[0]) * rng.next()
+                        }
+                    };
+                    let mut ray = Ray::new(origin, target - origin);
+                    if k % 2 == 0 {
+                        ray.tmin = 1e-9;
+                        ray.tmax = 1.0;
+                    }
+                    let (nearest, any, count) = brute(&soup, &ray);
+                    assert_eq!(
+                        mesh.intersect(&ray).first(),
+                        nearest,
+                        "{n} triangles, ray {k}"
+                    );
+                    assert_eq!(mesh.occluded(&ray), any, "{n} triangles, ray {k}");
+                    assert_eq!(mesh.count_crossings(&ray), count, "{n} triangles, ray {k}");
+                }
+            }
+        }
+    }
 }
