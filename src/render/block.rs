@@ -4,7 +4,7 @@
 use super::antialias::{self, Block};
 use super::transport::radiosity::{Gathering, Pass, Shared};
 use super::transport::{MediumStack, Tracer};
-use super::{Aov, BLOCK_SIZE, Px, RayCounts, RenderOptions, aov_values, camera};
+use super::{Aov, BLOCK_SIZE, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
 use crate::scene::{Rgb, Scene};
 
@@ -71,6 +71,13 @@ pub(super) fn render_block(
     if let (Some(c), Some(g)) = (carry, tracer.gathering.take()) {
         c.samples = Some((g.own, g.next));
     }
+    let gamma = scene.gamma();
+    let pixels = (pixels.iter())
+        .map(|p| {
+            let [r, g, b] = super::output_value(p.truncate(), gamma);
+            [r, g, b, (1.0 - p.w).clamp(0.0, 1.0) as f32]
+        })
+        .collect();
     BlockResult {
         radiosity,
         x0,
@@ -160,7 +167,9 @@ pub(super) struct BlockResult {
     pub(super) x0: u32,
     pub(super) y0: u32,
     pub(super) width: u32,
-    pub(super) pixels: Vec<Px>,
+    /// Each pixel's output value (red, green, blue as written, non-finite where the render
+    /// went wrong) and its alpha, worked out here, in parallel, from the linear colour.
+    pub(super) pixels: Vec<[f32; 4]>,
     /// The AOV values of each pixel, in order.
     pub(super) aov: Vec<f32>,
     pub(super) counts: RayCounts,

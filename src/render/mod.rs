@@ -128,7 +128,7 @@ impl Preview {
 
     /// Writes a finished block's pixels (those inside `region`, whose corner is the
     /// picture's).
-    fn write(&self, block: &block::BlockResult, region: Region, gamma: Gamma) {
+    fn write(&self, block: &block::BlockResult, region: Region) {
         let mut film = self.film.lock().unwrap_or_else(|e| e.into_inner());
         for (k, value) in block.pixels.iter().enumerate() {
             let (x, y) = (
@@ -138,13 +138,11 @@ impl Preview {
             if x < region.x0 || x >= region.x1 || y < region.y0 || y >= region.y1 {
                 continue;
             }
-            let v = output_value(value.truncate(), gamma);
-            let v = if v.iter().all(|c| c.is_finite()) {
-                v
-            } else {
-                [0.0; 3]
-            };
-            film.set(x - region.x0, y - region.y0, v);
+            film.set(
+                x - region.x0,
+                y - region.y0,
+                finite(value).unwrap_or([0.0; 3]),
+            );
         }
         drop(film);
         self.blocks
@@ -280,8 +278,8 @@ pub fn thread_pool(
 }
 
 /// Pixels rendered at a time at most, unless one row of blocks holds more: with the
-/// writer's buffers, the memory a render holds whatever the image size (about 36 bytes a
-/// pixel: 24 while traced, 12 as output values).
+/// writer's buffers, the memory a render holds whatever the image size (about 28 bytes a
+/// pixel: 16 as a block's output values and alpha, 12 as the band's output values).
 const BAND_PIXELS: usize = 1 << 19;
 
 /// Rows of blocks rendered together: as many as fit in `band_pixels`, at least one.
@@ -295,7 +293,7 @@ fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
 /// output values: EXR's blocks of 16 scanlines queued for compression).
 pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
-    let per_pixel = std::mem::size_of::<Rgb>() + std::mem::size_of::<[f32; 3]>();
+    let per_pixel = std::mem::size_of::<[f32; 4]>() + std::mem::size_of::<[f32; 3]>();
     let band = (width as usize * band_rows).saturating_mul(per_pixel);
     let writer =
         (width as usize * 64.min(height as usize)).saturating_mul(std::mem::size_of::<[f32; 3]>());
@@ -420,7 +418,7 @@ impl<'a> Bands<'a> {
                 p.rays.fetch_add(block.counts.total(), Relaxed);
             }
             if let Some(preview) = &options.preview {
-                preview.write(&block, region, scene.gamma());
+                preview.write(&block, region);
             }
             Some(block)
         };
@@ -465,15 +463,14 @@ impl<'a> Bands<'a> {
                 if x < region.x0 || x >= region.x1 || y < y0 || y >= y1 {
                     continue;
                 }
-                let mut v = output_value(value.truncate(), scene.gamma());
-                if v.iter().any(|c| !c.is_finite()) {
+                let v = finite(value).unwrap_or_else(|| {
                     self.stats.non_finite += 1;
-                    v = [0.0; 3];
-                }
+                    [0.0; 3]
+                });
                 let at = stride * ((y - y0) as usize * w + (x - region.x0) as usize);
                 values[at..at + 3].copy_from_slice(&v);
                 if options.alpha {
-                    values[at + 3] = (1.0 - value.w).clamp(0.0, 1.0) as f32;
+                    values[at + 3] = value[3];
                 }
                 if extra > 0 {
                     let from = k * extra;
@@ -513,6 +510,13 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
         film,
         stats: bands.stats,
     }
+}
+
+/// A block's output colour, unless the render went wrong there (then written black and
+/// counted).
+fn finite(value: &[f32; 4]) -> Option<[f32; 3]> {
+    let v = [value[0], value[1], value[2]];
+    v.iter().all(|c| c.is_finite()).then_some(v)
 }
 
 /// A working-space colour as the linear value written to the film (POV-Ray §2).

@@ -297,7 +297,7 @@ fn work_and_memory_are_bounded() {
     );
     // An image whose band of rows does not fit the memory limit is refused before any
     // work (the image itself is written band by band: 65536 pixels a row need one band of
-    // 32 rows at about 36 bytes a pixel and the writer's 64 rows, 126 MB).
+    // 32 rows at about 28 bytes a pixel and the writer's 64 rows, 109 MB).
     std::fs::write(dir.join("small.rt"), CAMERA).unwrap();
     let out = trace()
         .arg(dir.join("small.rt"))
