@@ -535,6 +535,47 @@ mod tests {
         }
     }
 
+    /// Test ray `k` around a mesh at `centre` of `size`: from a random point toward a random
+    /// point, a corner, a point on an edge, or along the plane y = centre.y (grazing); every
+    /// third a shadow ray ending at its target.
+    fn test_ray(
+        rng: &mut Rng,
+        k: usize,
+        (centre, size): (DVec3, f64),
+        vertices: &[DVec3],
+        soup: &[[DVec3; 3]],
+    ) -> Ray {
+        let origin = rng.point(centre, size * 3.0);
+        let target = match k % 4 {
+            0 => rng.point(centre, size),
+            1 => vertices[(rng.next() * vertices.len() as f64) as usize],
+            2 => {
+                let f = soup[(rng.next() * soup.len() as f64) as usize];
+                let s = rng.next();
+                f[0] + (f[1] - f[0]) * s
+            }
+            _ => {
+                let p = rng.point(centre, size);
+                DVec3::new(p.x, centre.y, p.z)
+            }
+        };
+        let mut ray = Ray::new(origin, target - origin);
+        if k % 3 == 0 {
+            ray.tmin = 1e-9;
+            ray.tmax = 1.0;
+        }
+        ray
+    }
+
+    /// The mesh's nearest crossing, whether any, and how many, as every triangle tested
+    /// exactly finds them.
+    fn agree_with_every_triangle(mesh: &TriangleMesh, soup: &[[DVec3; 3]], ray: &Ray, what: &str) {
+        let (nearest, any, count) = brute(soup, ray);
+        assert_eq!(mesh.intersect(ray).first(), nearest, "{what}");
+        assert_eq!(mesh.occluded(ray), any, "{what}");
+        assert_eq!(mesh.count_crossings(ray), count, "{what}");
+    }
+
     #[test]
     fn stack_spills_and_pops_in_order() {
         let mut stack = Stack::new();
@@ -601,41 +642,8 @@ mod tests {
                 vec![],
             );
             for k in 0..3000 {
-                let origin = rng.point(centre, size * 3.0);
-                let target = match k % 4 {
-                    0 => rng.point(centre, size),
-                    // A corner of a triangle.
-                    1 => vertices[(rng.next() * vertices.len() as f64) as usize],
-                    // A point on an edge.
-                    2 => {
-                        let f = soup[(rng.next() * soup.len() as f64) as usize];
-                        let s = rng.next();
-                        f[0] + (f[1] - f[0]) * s
-                    }
-                    // Grazing: along the grid's plane.
-                    _ => {
-                        let p = rng.point(centre, size);
-                        DVec3::new(p.x, centre.y, p.z)
-                    }
-                };
-                let mut ray = Ray::new(origin, target - origin);
-                if k % 3 == 0 {
-                    // A shadow ray ending at the target.
-                    ray.tmin = 1e-9;
-                    ray.tmax = 1.0;
-                }
-                let (nearest, any, count) = brute(&soup, &ray);
-                assert_eq!(
-                    mesh.intersect(&ray).first(),
-                    nearest,
-                    "offset {offset}, ray {k}"
-                );
-                assert_eq!(mesh.occluded(&ray), any, "offset {offset}, ray {k}");
-                assert_eq!(
-                    mesh.count_crossings(&ray),
-                    count,
-                    "offset {offset}, ray {k}"
-                );
+                let ray = test_ray(&mut rng, k, (centre, size), &vertices, &soup);
+                agree_with_every_triangle(&mesh, &soup, &ray, &format!("offset {offset}, ray {k}"));
             }
         }
     }
@@ -664,28 +672,13 @@ mod tests {
                 let mesh =
                     TriangleMesh::new(vertices.clone(), faces, vec![], vec![], vec![], vec![]);
                 for k in 0..200 {
-                    let origin = rng.point(DVec3::ZERO, 12.0);
-                    let target = match k % 3 {
-                        0 => rng.point(DVec3::ZERO, 4.0),
-                        1 => vertices[(rng.next() * vertices.len() as f64) as usize],
-                        _ => {
-                            let f = soup[(rng.next() * soup.len() as f64) as usize];
-                            f[0] + (f[1] - f[0]) * rng.next()
-                        }
-                    };
-                    let mut ray = Ray::new(origin, target - origin);
-                    if k % 2 == 0 {
-                        ray.tmin = 1e-9;
-                        ray.tmax = 1.0;
-                    }
-                    let (nearest, any, count) = brute(&soup, &ray);
-                    assert_eq!(
-                        mesh.intersect(&ray).first(),
-                        nearest,
-                        "{n} triangles, ray {k}"
+                    let ray = test_ray(&mut rng, k, (DVec3::ZERO, 4.0), &vertices, &soup);
+                    agree_with_every_triangle(
+                        &mesh,
+                        &soup,
+                        &ray,
+                        &format!("{n} triangles, ray {k}"),
                     );
-                    assert_eq!(mesh.occluded(&ray), any, "{n} triangles, ray {k}");
-                    assert_eq!(mesh.count_crossings(&ray), count, "{n} triangles, ray {k}");
                 }
             }
         }
