@@ -90,12 +90,6 @@ fn prune_value(t: f64) -> f32 {
     }
 }
 
-/// Meshes of at most this many triangles answer the queries whose answer does not depend on
-/// the order triangles are met in (whether any lies on a ray, every crossing) by testing
-/// every triangle exactly: cheaper than setting up a ray for the tree (measured on POV-Ray's
-/// radiosity/cornell.pov, whose walls and blocks are unions of 2 to 10 triangles).
-const SMALL: usize = 16;
-
 /// The triangles of a block's lanes mask: `first + i` for each set bit `i`.
 fn lanes_of(first: u32, mut lanes: u32) -> impl Iterator<Item = usize> {
     std::iter::from_fn(move || {
@@ -273,14 +267,6 @@ impl TriangleMesh {
     /// The nearest crossing (part = triangle index).
     pub fn intersect(&self, ray: &Ray) -> Crossings {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        if self.triangles.len() == 1 {
-            // (One triangle: the tree would find the same, with nothing to order.)
-            let mut out = Crossings::NONE;
-            if let Some(t) = self.exact(&sheared, 0, ray.tmin, ray.tmax) {
-                out.push(t, 0);
-            }
-            return out;
-        }
         let mut best: Option<(f64, u32)> = None;
         let mut tmax = ray.tmax;
         self.tree
@@ -310,14 +296,6 @@ impl TriangleMesh {
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).
     pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        if self.triangles.len() <= SMALL {
-            for i in 0..self.triangles.len() {
-                if let Some(t) = self.exact(&sheared, i, ray.tmin, ray.tmax) {
-                    f(t, i as u32);
-                }
-            }
-            return;
-        }
         self.tree
             .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
                 for i in lanes_of(first, lanes) {
@@ -340,10 +318,6 @@ impl TriangleMesh {
     /// Whether any triangle lies on the ray.
     pub fn occluded(&self, ray: &Ray) -> bool {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        if self.triangles.len() <= SMALL {
-            return (0..self.triangles.len())
-                .any(|i| self.exact(&sheared, i, ray.tmin, ray.tmax).is_some());
-        }
         let mut found = false;
         self.tree
             .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
