@@ -107,13 +107,18 @@ impl Parametric {
     /// (u, v) piece's corners: `(low.x, low.y)`, `(low.x, high.y)`, `(high.x, low.y)`,
     /// `(high.x, high.y)`.
     fn corners(&self, axis: usize, low: DVec2, high: DVec2) -> Corners {
-        let f = |u: f64, v: f64| self.value(axis, DVec2::new(u, v)) - self.accuracy;
+        let f = |u, v| self.corner(axis, u, v);
         [
             f(low.x, low.y),
             f(low.x, high.y),
             f(high.x, low.y),
             f(high.x, high.y),
         ]
+    }
+
+    /// One function's value at a corner (u, v), less the accuracy.
+    fn corner(&self, axis: usize, u: f64, v: f64) -> f64 {
+        self.value(axis, DVec2::new(u, v)) - self.accuracy
     }
 
     /// POV-Ray's bound of one function over a (u, v) piece: from its corners' values, widened
@@ -143,7 +148,7 @@ impl Parametric {
         hi: DVec2,
         mid: f64,
     ) -> (Corners, Corners) {
-        let f = |u: f64, v: f64| self.value(axis, DVec2::new(u, v)) - self.accuracy;
+        let f = |u, v| self.corner(axis, u, v);
         if split == 0 {
             let (m0, m1) = (f(mid, lo.y), f(mid, hi.y));
             ([c[0], c[1], m0, m1], [m0, m1, c[2], c[3]])
