@@ -86,21 +86,30 @@ pub struct SourceMap {
 }
 
 impl SourceMap {
-    /// A key of the texts read (each file's text eight bytes at a time, then its length, in
-    /// the order read, mixed by multiply and rotate): equal sources give equal keys wherever
-    /// they lie on the disk. (Byte by byte, FNV-1a, it took 0.15 s of a 120 MB scene's load.)
+    /// A key of the texts read (each file's text in four interleaved lanes of eight bytes,
+    /// mixed by multiply and rotate, then the lanes and the length, in the order read): equal
+    /// sources give equal keys wherever they lie on the disk. (Byte by byte, FNV-1a, it took
+    /// 0.15 s of a 120 MB scene's load; one lane of eight bytes, 42 ms: each step waited for
+    /// the one before.)
     pub fn key(&self) -> u64 {
         let mix = |h: u64, w: u64| (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(29);
+        let word = |b: &[u8]| u64::from_le_bytes(b.try_into().expect("eight bytes"));
         let mut h: u64 = 0xcbf2_9ce4_8422_2325;
         for f in &self.files {
             let bytes = f.text.as_bytes();
-            let mut words = bytes.chunks_exact(8);
-            for w in &mut words {
-                h = mix(h, u64::from_le_bytes(w.try_into().expect("eight bytes")));
+            let mut lanes = [h, h ^ 1, h ^ 2, h ^ 3];
+            let mut blocks = bytes.chunks_exact(32);
+            for b in &mut blocks {
+                for (i, lane) in lanes.iter_mut().enumerate() {
+                    *lane = mix(*lane, word(&b[8 * i..8 * i + 8]));
+                }
             }
-            let mut last = [0u8; 8];
-            last[..words.remainder().len()].copy_from_slice(words.remainder());
-            h = mix(mix(h, u64::from_le_bytes(last)), bytes.len() as u64);
+            let mut last = [0u8; 32];
+            last[..blocks.remainder().len()].copy_from_slice(blocks.remainder());
+            for (i, lane) in lanes.iter_mut().enumerate() {
+                *lane = mix(*lane, word(&last[8 * i..8 * i + 8]));
+            }
+            h = lanes.into_iter().fold(bytes.len() as u64, mix);
         }
         h
     }

@@ -4,6 +4,7 @@
 //! uniform: every construct is a [`Node`] (a keyword with its expressions and child nodes), and
 //! every expression an [`Expr`]. What the constructs *mean* is decided in `eval`.
 
+pub mod ahead;
 pub mod bulk;
 mod incremental;
 pub mod keywords;

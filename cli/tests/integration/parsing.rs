@@ -78,10 +78,18 @@ pub(crate) fn load_with_threads(text: &str, threads: usize) -> String {
 
 #[test]
 fn a_big_file_read_by_several_threads_is_the_scene_one_thread_reads() {
-    // Over the size where helpers start, with statements a guessed start may fall inside.
+    // Over the size where a helper reads plain statements ahead (1 MB), with statements
+    // the helper cannot read between them, a loop going back over plain ones, and
+    // comments that look like statements.
     let mut text = String::from("#declare N = 0;\n#macro Ball(P) sphere { P, 0.1 } #end\n");
     let mut i = 0;
-    while text.len() < 400_000 {
+    while text.len() < 1_100_000 {
+        if i % 1000 == 999 {
+            text.push_str(
+                "#declare J = 0; #while (J < 3) sphere { <J, 1, 2>, 0.5 } \
+                 sphere { <J, 2, 2>, 0.5 } #declare J = J + 1; #end\n",
+            );
+        }
         let (x, y) = ((i % 97) as f64 * 0.1, (i / 97) as f64 * 0.1);
         text.push_str(&match i % 5 {
             0 => format!("sphere {{ <{x},{y},1>, 0.05 pigment {{ rgb <{x},0.5,{y}> }} }}\n"),

@@ -24,6 +24,7 @@
 use crate::diag::{Diagnostic, FileId, Span};
 use crate::eval::lang::flow::{Frame, MAX_INCLUDE_DEPTH, MAX_MACRO_DEPTH, Macro};
 use crate::eval::{Evaluator, Result, Value};
+use crate::syntax::ahead::Ahead;
 use crate::syntax::lexer::{Lexer, Token, TokenKind};
 use crate::syntax::{self, Head, Node, NodeKind, Piece, Unit, View};
 use std::any::Any;
@@ -189,7 +190,13 @@ pub(in crate::eval) struct Reader {
     parses: HashMap<(Parse, u64), CachedParse>,
     /// Plain directives' readings, by where their text starts (see `quick`).
     quick: HashMap<(FileId, usize), Rc<quick::Quick>>,
+    /// The plain statements of the big file being read, read ahead (see `syntax::ahead`).
+    ahead: Option<Ahead>,
 }
+
+/// Files from this size on have their plain statements read ahead on a second thread (a
+/// smaller file is read before the thread would have started).
+const AHEAD_FROM: usize = 1 << 20;
 
 /// A top-level statement read: a unit for the grammar, or a plain statement the fast lane
 /// read (with the bindings of its names).
@@ -447,7 +454,14 @@ impl<'a> Evaluator<'a> {
     /// Parses and evaluates one statement unit.
     fn run_statement(&mut self, statement: Statement) -> Result<()> {
         match statement {
-            Statement::Plain(node, bindings) => self.run_tree(&node, bindings, None),
+            Statement::Plain(node, bindings) => {
+                let result = self.run_tree(&node, bindings, None);
+                match &mut self.lang.reader.ahead {
+                    Some(ahead) if ahead.file() == node.span.file => ahead.free(node),
+                    _ => drop(node),
+                }
+                result
+            }
             Statement::Kept(node, bindings) => self.run_tree(&node, bindings, None),
             Statement::Unit(mut em) => {
                 let node = self.parsed(&em, Parse::Statement, syntax::parse_statement)?;
@@ -841,15 +855,29 @@ impl<'a> Evaluator<'a> {
     /// A plain statement where one starts (literal values only, as `syntax::plain` reads
     /// them), read in one pass with its names bound; `None` to read it the usual way.
     fn plain_statement(&mut self) -> Option<Statement> {
-        let r = &self.lang.reader;
+        let r = &mut self.lang.reader;
         let input = r.inputs.last()?;
         if !input.pushback.is_empty() || r.hold || r.raw_words || !r.functions.open.is_empty() {
             return None;
         }
-        let (mut node, end) = syntax::plain::statement(&input.text, input.pos, input.file)?;
-        if end > input.end {
-            return None;
-        }
+        let (mut node, end) = if input.kind != InputKind::Macro && input.text.len() >= AHEAD_FROM {
+            if !r
+                .ahead
+                .as_ref()
+                .is_some_and(|a| a.reads(&input.text, input.end))
+            {
+                let threads = self
+                    .options
+                    .threads
+                    .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+                let text = Arc::clone(&input.text);
+                r.ahead = Some(Ahead::new(text, input.file, input.end, threads > 1));
+            }
+            r.ahead.as_mut()?.statement(input.pos)?
+        } else {
+            syntax::plain::statement(&input.text, input.pos, input.file)
+                .filter(|(_, end)| *end <= input.end)?
+        };
         let mut bindings = Vec::new();
         if !self.bind_names(&mut node, &mut bindings) {
             return None;
