@@ -16,7 +16,8 @@
 //! once (256 trees freed together overflow the allocator's per-thread cache, and the
 //! helper then spent a third of its time in `free`).
 
-use super::{Node, plain};
+use super::Node;
+use super::plain::{self, Plain};
 use crate::diag::FileId;
 use std::collections::VecDeque;
 use std::sync::Arc;
@@ -45,7 +46,7 @@ enum Command {
 struct Batch {
     epoch: u64,
     from: usize,
-    statements: Vec<(Node, usize)>,
+    statements: Vec<Plain>,
     /// The chain stops after these statements (the next is not plain, or is past the end).
     last: bool,
 }
@@ -71,7 +72,7 @@ struct Helper {
     /// batch).
     next: usize,
     /// Statements of the chain received and not yet taken.
-    ready: VecDeque<(Node, usize)>,
+    ready: VecDeque<Plain>,
     /// The chain's last batch has been received.
     ended: bool,
     /// Trees taken and evaluated, to go back to the helper.
@@ -108,26 +109,26 @@ impl Ahead {
     /// The plain statement starting after the blanks at byte `pos`, as
     /// [`plain::statement`] reads it, if it ends by the file's end: its tree and the byte
     /// after it.
-    pub fn statement(&mut self, pos: usize) -> Option<(Node, usize)> {
+    pub fn statement(&mut self, pos: usize) -> Option<Plain> {
         let Some(h) = &mut self.helper else {
-            return read(&self.text, pos, self.file, self.end);
+            return plain::read(&self.text, pos, self.file, self.end);
         };
         if h.following && h.next == pos {
             if h.ready.is_empty() && !h.ended {
                 h.receive();
             }
-            if let Some((node, end)) = h.ready.pop_front() {
-                h.next = end;
-                return Some((node, end));
+            if let Some(plain) = h.ready.pop_front() {
+                h.next = plain.end;
+                return Some(plain);
             }
             // The chain ended here: the statement is not plain.
             h.following = false;
             return None;
         }
         // Somewhere else: read it here, and the helper goes on after it.
-        let read = read(&self.text, pos, self.file, self.end);
-        if let Some((_, end)) = &read {
-            h.restart(*end);
+        let read = plain::read(&self.text, pos, self.file, self.end);
+        if let Some(plain) = &read {
+            h.restart(plain.end);
         }
         read
     }
@@ -143,11 +144,6 @@ impl Ahead {
             }
         }
     }
-}
-
-/// The lane's statement at `pos` if it ends by `end`.
-fn read(text: &str, pos: usize, file: FileId, end: usize) -> Option<(Node, usize)> {
-    plain::statement(text, pos, file).filter(|(_, e)| *e <= end)
 }
 
 impl Helper {
@@ -173,8 +169,7 @@ impl Helper {
 
     /// Starts a new chain at `from`: what is ready of the old one goes back to be freed.
     fn restart(&mut self, from: usize) {
-        self.freed
-            .extend(self.ready.drain(..).map(|(node, _)| node));
+        self.freed.extend(self.ready.drain(..).map(|p| p.node));
         self.epoch += 1;
         self.following = true;
         self.next = from;
@@ -198,7 +193,7 @@ impl Helper {
             };
             if batch.epoch != self.epoch {
                 self.freed
-                    .extend(batch.statements.into_iter().map(|(node, _)| node));
+                    .extend(batch.statements.into_iter().map(|p| p.node));
                 continue;
             }
             debug_assert_eq!(batch.from, self.next, "batches follow their chain");
@@ -273,10 +268,10 @@ fn help(
         let mut last = false;
         while statements.len() < size {
             drop(dead.pop_front());
-            match read(text, at, file, end) {
-                Some((node, next)) => {
-                    statements.push((node, next));
-                    at = next;
+            match plain::read(text, at, file, end) {
+                Some(plain) => {
+                    at = plain.end;
+                    statements.push(plain);
                 }
                 None => {
                     last = true;
@@ -301,8 +296,8 @@ fn help(
 mod tests {
     use super::*;
 
-    fn lane(text: &str, pos: usize) -> Option<(Node, usize)> {
-        read(text, pos, FileId(0), text.len())
+    fn lane(text: &str, pos: usize) -> Option<Plain> {
+        plain::read(text, pos, FileId(0), text.len())
     }
 
     /// A file of `n` plain statements with a directive every `every`.
@@ -331,7 +326,7 @@ mod tests {
         while pos < text.len() {
             starts.push(pos);
             pos = match lane(&text, pos) {
-                Some((_, end)) => end,
+                Some(plain) => plain.end,
                 // A directive: skip its line, as the reader runs it.
                 None => text[pos..].find('\n').map_or(text.len(), |i| pos + i + 1),
             };
@@ -349,8 +344,8 @@ mod tests {
                     format!("{want:?}"),
                     "at byte {pos} (helper: {helper})"
                 );
-                if let Some((node, _)) = got {
-                    ahead.free(node);
+                if let Some(plain) = got {
+                    ahead.free(plain.node);
                 }
             }
         }
@@ -365,7 +360,7 @@ mod tests {
         let mut ahead = Ahead::new(arc, FileId(0), cut, true);
         let mut pos = 0;
         let mut read = 0;
-        while let Some((node, end)) = ahead.statement(pos) {
+        while let Some(Plain { node, end, .. }) = ahead.statement(pos) {
             assert!(end <= cut);
             pos = end;
             read += 1;

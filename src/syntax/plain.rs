@@ -32,6 +32,90 @@ pub fn statement(source: &str, pos: usize, file: FileId) -> Option<(Node, usize)
     Some((node, s.at))
 }
 
+/// A plain statement read, its declared names given their slots.
+#[derive(Debug)]
+pub struct Plain {
+    /// Its tree, each name's slot the name's place in `names`.
+    pub node: Node,
+    /// The byte just after its closing `}`.
+    pub end: usize,
+    /// Where its declared names are written, in the order of their slots.
+    pub names: Names,
+}
+
+/// Most declared names a statement of the lane holds (one with more goes to the grammar).
+const MOST_NAMES: usize = 6;
+
+/// The declared names of a plain statement: where each is written.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Names {
+    spans: [Span; MOST_NAMES],
+    len: usize,
+}
+
+impl Names {
+    /// Where each name is written, in the order of their slots.
+    pub fn spans(&self) -> &[Span] {
+        &self.spans[..self.len]
+    }
+
+    /// Gives the name at `span` the next slot.
+    fn add(&mut self, span: Span) -> Option<super::Slot> {
+        let slot = self.spans.get_mut(self.len)?;
+        *slot = span;
+        self.len += 1;
+        Some(super::Slot(self.len as u32 - 1))
+    }
+
+    /// Gives every name of `node` its slot.
+    fn of_node(&mut self, node: &mut Node) -> Option<()> {
+        if node.kind == NodeKind::IdentRef {
+            node.slot = self.add(node.word_span)?;
+        }
+        for e in &mut node.args {
+            self.of_expr(e)?;
+        }
+        for c in &mut node.children {
+            self.of_node(c)?;
+        }
+        Some(())
+    }
+
+    fn of_expr(&mut self, e: &mut Expr) -> Option<()> {
+        match &mut e.kind {
+            ExprKind::Ident(_, slot) => *slot = self.add(e.span)?,
+            ExprKind::Binary(_, a, b) => {
+                self.of_expr(a)?;
+                self.of_expr(b)?;
+            }
+            ExprKind::Unary(_, a) => self.of_expr(a)?,
+            ExprKind::Vector(items) => {
+                for item in items {
+                    self.of_expr(item)?;
+                }
+            }
+            _ => {}
+        }
+        Some(())
+    }
+}
+
+/// The plain statement starting after the blanks at byte `pos` of `source` if it ends by
+/// byte `end`, its names given their slots (as [`statement`] reads it).
+pub fn read(source: &str, pos: usize, file: FileId, end: usize) -> Option<Plain> {
+    let (mut node, after) = statement(source, pos, file)?;
+    if after > end {
+        return None;
+    }
+    let mut names = Names::default();
+    names.of_node(&mut node)?;
+    Some(Plain {
+        node,
+        end: after,
+        names,
+    })
+}
+
 /// Shapes the lane reads: keyword, node kind, number of arguments.
 const SHAPES: [(&str, NodeKind, usize); 8] = [
     ("sphere", NodeKind::Sphere, 2),
@@ -748,6 +832,36 @@ mod tests {
         assert!(
             taken > cases / 20,
             "only {taken} of {cases} variants were taken"
+        );
+    }
+
+    /// The declared names of a statement get slots in the order they are listed, and a
+    /// statement with more names than the lane keeps is left to the grammar.
+    #[test]
+    fn names_get_their_slots_in_the_order_listed() {
+        let text = "sphere { <1,2,3>, R*2 pigment { rgb <1,0,0> } \
+                    finish { phong G*1 specular S } }";
+        let plain = read(text, 0, FileId(0), text.len()).expect("a plain statement");
+        let names: Vec<&str> = plain
+            .names
+            .spans()
+            .iter()
+            .map(|s| &text[s.start as usize..s.end as usize])
+            .collect();
+        assert_eq!(names, ["R", "G", "S"]);
+        let tree = format!("{:?}", plain.node);
+        for (i, name) in names.iter().enumerate() {
+            assert!(tree.contains(&format!("Ident(\"{name}\", #{i})")), "{tree}");
+        }
+        let object = "object { Thing translate <1, 0, 0> }";
+        let plain = read(object, 0, FileId(0), object.len()).expect("a plain statement");
+        assert_eq!(plain.names.spans().len(), 1);
+        let many = "sphere { <1,2,3>, A+B+C+D+E+F+G }";
+        assert!(statement(many, 0, FileId(0)).is_some());
+        assert!(read(many, 0, FileId(0), many.len()).is_none());
+        assert!(
+            read(text, 0, FileId(0), text.len() - 1).is_none(),
+            "past the end"
         );
     }
 }

@@ -198,6 +198,16 @@ pub(in crate::eval) struct Reader {
 /// smaller file is read before the thread would have started).
 const AHEAD_FROM: usize = 1 << 20;
 
+impl Reader {
+    /// Frees a plain statement's tree, on the thread that read it ahead if one did.
+    fn free(&mut self, node: Node) {
+        match &mut self.ahead {
+            Some(ahead) if ahead.file() == node.span.file => ahead.free(node),
+            _ => drop(node),
+        }
+    }
+}
+
 /// A top-level statement read: a unit for the grammar, or a plain statement the fast lane
 /// read (with the bindings of its names).
 pub(in crate::eval) enum Statement {
@@ -456,10 +466,7 @@ impl<'a> Evaluator<'a> {
         match statement {
             Statement::Plain(node, bindings) => {
                 let result = self.run_tree(&node, bindings, None);
-                match &mut self.lang.reader.ahead {
-                    Some(ahead) if ahead.file() == node.span.file => ahead.free(node),
-                    _ => drop(node),
-                }
+                self.lang.reader.free(node);
                 result
             }
             Statement::Kept(node, bindings) => self.run_tree(&node, bindings, None),
@@ -860,7 +867,7 @@ impl<'a> Evaluator<'a> {
         if !input.pushback.is_empty() || r.hold || r.raw_words || !r.functions.open.is_empty() {
             return None;
         }
-        let (mut node, end) = if input.kind != InputKind::Macro && input.text.len() >= AHEAD_FROM {
+        let plain = if input.kind != InputKind::Macro && input.text.len() >= AHEAD_FROM {
             if !r
                 .ahead
                 .as_ref()
@@ -875,17 +882,23 @@ impl<'a> Evaluator<'a> {
             }
             r.ahead.as_mut()?.statement(input.pos)?
         } else {
-            syntax::plain::statement(&input.text, input.pos, input.file)
-                .filter(|(_, end)| *end <= input.end)?
+            syntax::plain::read(&input.text, input.pos, input.file, input.end)?
         };
-        let mut bindings = Vec::new();
-        if !self.bind_names(&mut node, &mut bindings) {
-            return None;
+        // The names' bindings, in the order of their slots; a name of a macro sends the
+        // statement to the usual reading, which calls it.
+        let mut bindings = Vec::with_capacity(plain.names.spans().len());
+        for span in plain.names.spans() {
+            let name = &input.text[span.start as usize..span.end as usize];
+            if self.lang.macros.contains_key(name) {
+                r.free(plain.node);
+                return None;
+            }
+            bindings.push(self.lang.env.get(name).cloned());
         }
-        let input = self.lang.reader.inputs.last_mut()?;
-        input.pos = end;
-        self.lang.reader.run += 1;
-        Some(Statement::Plain(node, bindings))
+        let input = r.inputs.last_mut()?;
+        input.pos = plain.end;
+        r.run += 1;
+        Some(Statement::Plain(plain.node, bindings))
     }
 
     /// Runs the directives before the next statement (a loop's `#end` that goes back to its
@@ -910,48 +923,6 @@ impl<'a> Evaluator<'a> {
             self.lang.reader.inputs[index].pos = raw.end as usize;
             let tok = self.tok(raw, index);
             self.run_directive(&tok)?;
-        }
-    }
-
-    /// Binds the declared names of a tree the fast lane read; `false` if one names a macro
-    /// (the statement is then read the usual way, calling it).
-    fn bind_names(&self, node: &mut Node, bindings: &mut Vec<Option<Arc<Value>>>) -> bool {
-        if node.kind == NodeKind::IdentRef {
-            if self.lang.macros.contains_key(node.word.as_str()) {
-                return false;
-            }
-            node.slot = syntax::Slot(bindings.len() as u32);
-            bindings.push(self.lang.env.get(node.word.as_str()).cloned());
-        }
-        node.args
-            .iter_mut()
-            .all(|e| self.bind_expr_names(e, bindings))
-            && node
-                .children
-                .iter_mut()
-                .all(|c| self.bind_names(c, bindings))
-    }
-
-    /// Binds the names of an expression the fast lane read (its small expressions: names
-    /// and numbers joined by operators); `false` if one names a macro.
-    fn bind_expr_names(
-        &self,
-        e: &mut syntax::Expr,
-        bindings: &mut Vec<Option<Arc<Value>>>,
-    ) -> bool {
-        match &mut e.kind {
-            syntax::ExprKind::Ident(name, slot) => {
-                if self.lang.macros.contains_key(name.as_str()) {
-                    return false;
-                }
-                *slot = syntax::Slot(bindings.len() as u32);
-                bindings.push(self.lang.env.get(name.as_str()).cloned());
-                true
-            }
-            syntax::ExprKind::Binary(_, a, b) => {
-                self.bind_expr_names(a, bindings) && self.bind_expr_names(b, bindings)
-            }
-            _ => true,
         }
     }
 
