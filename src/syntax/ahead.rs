@@ -106,9 +106,8 @@ impl Ahead {
         Arc::ptr_eq(&self.text, text) && self.end == end
     }
 
-    /// The plain statement starting after the blanks at byte `pos`, as
-    /// [`plain::statement`] reads it, if it ends by the file's end: its tree and the byte
-    /// after it.
+    /// The plain statement starting after the blanks at byte `pos`, as [`plain::read`]
+    /// reads it (ending by the file's end, its names given their slots).
     pub fn statement(&mut self, pos: usize) -> Option<Plain> {
         let Some(h) = &mut self.helper else {
             return plain::read(&self.text, pos, self.file, self.end);
