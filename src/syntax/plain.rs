@@ -151,12 +151,11 @@ const FLAGS: [&str; 6] = [
     "open",
 ];
 
-/// The words that name a value (the grammar's `value_kw`): left to the grammar.
-const VALUE_WORDS: [&str; 26] = [
+/// The words that name a value (the grammar's `value_kw`) but the axes: left to the grammar.
+/// (`x`, `y` and `z` are names the lane reads as the grammar does, as values evaluation
+/// knows: `plane { y, -1 }`, `rotate 45*y`.)
+const VALUE_WORDS: [&str; 23] = [
     "pi",
-    "x",
-    "y",
-    "z",
     "t",
     "u",
     "v",
@@ -690,6 +689,11 @@ mod tests {
         "sphere { <0,0,0>, 1 interior { ior N fade_distance 2 fade_power 1001 } translate D*3 }",
         "cylinder { <0,0,0>, <0,1,0>, R/2/2 open }",
         "sphere { <0,0,0>, R // c\n *2 }",
+        // The axes.
+        "plane { y, -1 }",
+        "plane { z 5 pigment { rgb 1 } }",
+        "sphere { <0,0,0>, 1 translate x rotate 45*y scale z*2 + 1 }",
+        "object { Tree translate x*3 + z*Step }",
         // A dangling exponent counts for nothing (POV-Ray reads `1E` as 1).
         "sphere { <0,0,0> 1E }",
     ];
@@ -716,7 +720,7 @@ mod tests {
         "sphere { <0,0,0>, 1 finish { diffuse 0.6, 0.3 } }",
         "sphere { <0,0,0>, 1 finish { phong albedo 0.6 } }",
         "sphere { <0,0,0>, 1 hollow on }",
-        "sphere { <0,0,0>, 1 rotate 45*y }",
+        "sphere { <0,0,0>, 1 rotate 45*t }",
         "sphere { <0,0,0>, 1 #if (1) #end }",
         "sphere { <0,0,0>, 1 bogus 3 }",
         "object { Tree(1) }",
