@@ -295,6 +295,12 @@ impl<'a> Scanner<'a> {
     /// A declared name in `object { … }` (not a keyword, not a macro call or array element).
     fn item_ref(&mut self) -> Option<Node> {
         let (name, start) = self.word()?;
+        self.named(name, start)
+    }
+
+    /// The declared name `name` (read, starting at `start`) standing for a whole item, as
+    /// `object { Name … }`, `texture { Name … }` and `finish { Name … }` begin.
+    fn named(&mut self, name: &str, start: usize) -> Option<Node> {
         if super::is_keyword(name) {
             return None;
         }
@@ -405,17 +411,25 @@ impl<'a> Scanner<'a> {
         })
     }
 
-    /// `finish { item literal … }`.
+    /// `finish { [Name] item literal … }`.
     fn finish(&mut self, start: usize) -> Option<Node> {
-        self.block(NodeKind::Finish, "finish", start, |s, word, item_start| {
-            if word == "conserve_energy" {
-                return Some(s.node(NodeKind::ConserveEnergy, "conserve_energy", item_start));
-            }
-            let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
-            let item = s.with_literal(kind, word, item_start)?;
-            // (`diffuse A, B` is the grammar's.)
-            (s.peek() != Some(b',')).then_some(item)
-        })
+        self.block(
+            NodeKind::Finish,
+            "finish",
+            start,
+            |s, word, item_start, first| {
+                if first && !super::is_keyword(word) {
+                    return s.named(word, item_start);
+                }
+                if word == "conserve_energy" {
+                    return Some(s.node(NodeKind::ConserveEnergy, "conserve_energy", item_start));
+                }
+                let &(word, kind) = FINISH_ITEMS.iter().find(|f| f.0 == word)?;
+                let item = s.with_literal(kind, word, item_start)?;
+                // (`diffuse A, B` is the grammar's.)
+                (s.peek() != Some(b',')).then_some(item)
+            },
+        )
     }
 
     /// `interior { ior/fade_distance/fade_power value … }`.
@@ -424,7 +438,7 @@ impl<'a> Scanner<'a> {
             NodeKind::Interior,
             "interior",
             start,
-            |s, word, item_start| {
+            |s, word, item_start, _| {
                 let (kind, word) = match word {
                     "ior" => (NodeKind::Ior, "ior"),
                     "fade_distance" => (NodeKind::FadeDistance, "fade_distance"),
@@ -436,13 +450,14 @@ impl<'a> Scanner<'a> {
         )
     }
 
-    /// `texture { pigment/finish/transforms }`.
+    /// `texture { [Name] pigment/finish/transforms }`.
     fn texture(&mut self, start: usize) -> Option<Node> {
         self.block(
             NodeKind::Texture,
             "texture",
             start,
-            |s, word, item_start| match word {
+            |s, word, item_start, first| match word {
+                _ if first && !super::is_keyword(word) => s.named(word, item_start),
                 "pigment" => s.pigment(item_start),
                 "finish" => s.finish(item_start),
                 _ => s.transform(word, item_start)?,
@@ -450,14 +465,14 @@ impl<'a> Scanner<'a> {
         )
     }
 
-    /// `word { item … }`, each item starting with a word that `item` reads (from the word and
-    /// where it starts).
+    /// `word { item … }`, each item starting with a word that `item` reads (from the word,
+    /// where it starts, and whether it is the first item).
     fn block(
         &mut self,
         kind: NodeKind,
         word: &'static str,
         start: usize,
-        mut item: impl FnMut(&mut Self, &'a str, usize) -> Option<Node>,
+        mut item: impl FnMut(&mut Self, &'a str, usize, bool) -> Option<Node>,
     ) -> Option<Node> {
         let mut node = self.node(kind, word, start);
         self.skip_blanks();
@@ -468,7 +483,8 @@ impl<'a> Scanner<'a> {
                 break;
             }
             let (word, item_start) = self.word()?;
-            node.children.push(item(self, word, item_start)?);
+            let first = node.children.is_empty();
+            node.children.push(item(self, word, item_start, first)?);
         }
         node.span = self.span(start, self.at);
         Some(node)
@@ -694,6 +710,11 @@ mod tests {
         "plane { z 5 pigment { rgb 1 } }",
         "sphere { <0,0,0>, 1 translate x rotate 45*y scale z*2 + 1 }",
         "object { Tree translate x*3 + z*Step }",
+        // Declared textures and finishes.
+        "sphere { <0,0,0>, 1 texture { T } }",
+        "sphere { <0,0,0>, 1 texture { Bark scale 2 } finish { F } }",
+        "sphere { <0,0,0>, 1 texture { T finish { Shiny phong 0.5 } } }",
+        "object { Tree texture { _wood translate <1,0,0> } }",
         // A dangling exponent counts for nothing (POV-Ray reads `1E` as 1).
         "sphere { <0,0,0> 1E }",
     ];
@@ -716,6 +737,11 @@ mod tests {
         "sphere { <0,0,0>, 1 finish { phong R*<1,1,1> } }",
         "sphere { <0,0,0>, 1 pigment { rgb <1,0,0> filter 0.5 } }",
         "sphere { <0,0,0>, 1 pigment { Red } }",
+        "sphere { <0,0,0>, 1 texture { pigment { rgb 1 } T } }",
+        "sphere { <0,0,0>, 1 finish { phong 1 F } }",
+        "sphere { <0,0,0>, 1 texture { T U } }",
+        "sphere { <0,0,0>, 1 texture { T[1] } }",
+        "sphere { <0,0,0>, 1 texture { M() } }",
         "sphere { <0,0,0>, 1 pigment { color <1,0,0> } }",
         "sphere { <0,0,0>, 1 finish { diffuse 0.6, 0.3 } }",
         "sphere { <0,0,0>, 1 finish { phong albedo 0.6 } }",
