@@ -384,7 +384,14 @@ impl<'a> Scanner<'a> {
         self.skip_blanks();
         self.eat(b'{')?;
         self.skip_blanks();
-        node.args.push(self.colour()?);
+        // A declared pigment or colour by name (`pigment { Red }`), or one typed colour.
+        let value = match self.peek()? {
+            b'A'..=b'Z' | b'_' => self
+                .operand()
+                .filter(|e| matches!(e.kind, ExprKind::Ident(..)))?,
+            _ => self.colour()?,
+        };
+        node.args.push(value);
         self.eat(b'}')?;
         node.span = self.span(start, self.at);
         Some(node)
@@ -710,7 +717,9 @@ mod tests {
         "plane { z 5 pigment { rgb 1 } }",
         "sphere { <0,0,0>, 1 translate x rotate 45*y scale z*2 + 1 }",
         "object { Tree translate x*3 + z*Step }",
-        // Declared textures and finishes.
+        // Declared pigments, textures and finishes.
+        "sphere { <0,0,0>, 1 pigment { Red } }",
+        "sphere { <0,0,0>, 1 texture { pigment { P_1 } finish { F } } }",
         "sphere { <0,0,0>, 1 texture { T } }",
         "sphere { <0,0,0>, 1 texture { Bark scale 2 } finish { F } }",
         "sphere { <0,0,0>, 1 texture { T finish { Shiny phong 0.5 } } }",
@@ -736,10 +745,14 @@ mod tests {
         "sphere { <0,0,0>, 1 interior { ior 1.5 caustics 1 } }",
         "sphere { <0,0,0>, 1 finish { phong R*<1,1,1> } }",
         "sphere { <0,0,0>, 1 pigment { rgb <1,0,0> filter 0.5 } }",
-        "sphere { <0,0,0>, 1 pigment { Red } }",
         "sphere { <0,0,0>, 1 texture { pigment { rgb 1 } T } }",
         "sphere { <0,0,0>, 1 finish { phong 1 F } }",
         "sphere { <0,0,0>, 1 texture { T U } }",
+        "sphere { <0,0,0>, 1 pigment { Red*0.5 } }",
+        "sphere { <0,0,0>, 1 pigment { Red filter 0.5 } }",
+        "sphere { <0,0,0>, 1 pigment { Red scale 2 } }",
+        "sphere { <0,0,0>, 1 pigment { P[2] } }",
+        "sphere { <0,0,0>, 1 pigment { red } }",
         "sphere { <0,0,0>, 1 texture { T[1] } }",
         "sphere { <0,0,0>, 1 texture { M() } }",
         "sphere { <0,0,0>, 1 pigment { color <1,0,0> } }",
