@@ -73,6 +73,8 @@ pub struct Tracer<'a> {
     pub counts: RayCounts,
     /// Area-light visibility cache, reused between shading points.
     pub(super) area_cache: Vec<Option<Rgb>>,
+    /// The grid points an area light traces at every shading point, with their cells.
+    pub(super) area_rays: Vec<(u32, Ray)>,
     /// The kind of the ray being traced, as far as objects hide from it (`no_image`,
     /// `no_reflection`, `no_radiosity`).
     seer: Seer,
@@ -164,6 +166,7 @@ impl<'a> Tracer<'a> {
             scene,
             counts: RayCounts::default(),
             area_cache: Vec::new(),
+            area_rays: Vec::new(),
             seer: Seer::default(),
             see_through: 0.0,
             light_stream: None,
