@@ -124,6 +124,26 @@ impl Scene {
         }
     }
 
+    /// A shadow ray's pass through object `i`: its crossings go to `out` if it can let
+    /// light through; whether it blocks the ray outright.
+    fn shadow_visit(&self, i: u32, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool {
+        let object = &self.objects[i as usize];
+        if object.no_shadow || !object.admits(ray) {
+            return false;
+        }
+        let local = Self::local_ray(object, ray);
+        if self.filters_shadows(i) {
+            object.shape.for_each_crossing(&local, |t, part| {
+                out.push(ShadowCrossing {
+                    t,
+                    object: ObjectId(i),
+                    part,
+                })
+            });
+        }
+        !self.material(object.material).may_be_transparent() && object.shape.occludes(&local)
+    }
+
     /// Whether object `i` can let light through to a shadow ray.
     fn filters_shadows(&self, i: u32) -> bool {
         let object = &self.objects[i as usize];
@@ -299,6 +319,15 @@ pub trait Queries {
     /// filters shadows ([`Queries::any_filters_shadows`]) and every object the ray can meet is
     /// a candidate, the ray's transmittance is 0 if so and 1 if not.
     fn blocked_among(&self, ray: &Ray, candidates: &[u32]) -> bool;
+
+    /// [`Queries::shadow_pass`] over `candidates` only: the same answer when every object
+    /// the ray can meet is a candidate ([`Queries::shadow_candidates`]).
+    fn shadow_pass_among(
+        &self,
+        ray: &Ray,
+        candidates: &[u32],
+        out: &mut Vec<ShadowCrossing>,
+    ) -> bool;
 }
 
 impl Queries for Scene {
@@ -378,23 +407,7 @@ impl Queries for Scene {
     }
 
     fn shadow_pass(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool {
-        let mut visit = |i: u32| {
-            let object = &self.objects[i as usize];
-            if object.no_shadow || !object.admits(ray) {
-                return false;
-            }
-            let local = Self::local_ray(object, ray);
-            if self.filters_shadows(i) {
-                object.shape.for_each_crossing(&local, |t, part| {
-                    out.push(ShadowCrossing {
-                        t,
-                        object: ObjectId(i),
-                        part,
-                    })
-                });
-            }
-            !self.material(object.material).may_be_transparent() && object.shape.occludes(&local)
-        };
+        let mut visit = |i: u32| self.shadow_visit(i, ray, out);
         match &self.index {
             Some(index) => index.unbounded.iter().any(|&i| visit(i)) || index.any(ray, visit),
             None => {
@@ -403,6 +416,20 @@ impl Queries for Scene {
                     .any(|(i, b)| may_hit(*b, ray, inv) && visit(i as u32))
             }
         }
+    }
+
+    fn shadow_pass_among(
+        &self,
+        ray: &Ray,
+        candidates: &[u32],
+        out: &mut Vec<ShadowCrossing>,
+    ) -> bool {
+        let inv = ray.direction.recip();
+        candidates.iter().any(|&i| {
+            // (A scene with a top-level index keeps no boxes per object: the shape decides.)
+            let bounds = self.scan_bounds.get(i as usize).copied().flatten();
+            may_hit(bounds, ray, inv) && self.shadow_visit(i, ray, out)
+        })
     }
 
     fn crossing_filter(&self, ray: &Ray, c: &ShadowCrossing) -> Rgb {

@@ -43,6 +43,8 @@ enum Blockers {
     None,
     /// Only opaque objects, listed in `Tracer::blockers`.
     Opaque,
+    /// Objects listed in `Tracer::blockers`, some of which let light through.
+    Filtering,
     /// Not known, or transparent objects among them: each ray asks the whole scene.
     Unknown,
 }
@@ -200,7 +202,7 @@ impl Tracer<'_> {
         let kind = if list.is_empty() {
             Blockers::None
         } else if self.scene.any_filters_shadows(&list) {
-            Blockers::Unknown
+            Blockers::Filtering
         } else {
             Blockers::Opaque
         };
@@ -274,6 +276,9 @@ impl Tracer<'_> {
                 Rgb::ZERO
             }
             Blockers::Opaque => Rgb::ONE,
+            Blockers::Filtering => {
+                super::shadow::transmittance_among(self.scene, shadow, &self.blockers)
+            }
             Blockers::Unknown => super::transmittance(self.scene, shadow),
         }
     }

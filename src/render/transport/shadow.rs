@@ -34,6 +34,12 @@ pub fn transmittance(scene: &Scene, ray: &Ray) -> Rgb {
     transmittance_and(scene, ray, |_| Rgb::ONE)
 }
 
+/// [`transmittance`] where only the objects `candidates` can meet the ray (an area light's
+/// possible blockers, [`Queries::shadow_candidates`]): the same answer, from fewer tests.
+pub(super) fn transmittance_among(scene: &Scene, ray: &Ray, candidates: &[u32]) -> Rgb {
+    pass(scene, ray, Some(candidates), |_| Rgb::ONE)
+}
+
 /// [`transmittance`] times what `along` makes of the crossings, in order along the ray
 /// (one per point; none without transparent objects), unless no light gets through them:
 /// where media dim the ray between its crossings.
@@ -42,11 +48,25 @@ pub(super) fn transmittance_and(
     ray: &Ray,
     along: impl FnOnce(&[ShadowCrossing]) -> Rgb,
 ) -> Rgb {
+    pass(scene, ray, None, along)
+}
+
+/// [`transmittance_and`] over the objects `among` (all if `None`).
+fn pass(
+    scene: &Scene,
+    ray: &Ray,
+    among: Option<&[u32]>,
+    along: impl FnOnce(&[ShadowCrossing]) -> Rgb,
+) -> Rgb {
     // Without transparent objects, any opaque blocker (the search stops at the first);
     // else the crossings of the transparent ones too, in the same pass.
     let ray = &blocking_part(ray);
     if !scene.any_transparent() {
-        if scene.occluded(ray) {
+        let blocked = match among {
+            None => scene.occluded(ray),
+            Some(candidates) => scene.blocked_among(ray, candidates),
+        };
+        if blocked {
             return Rgb::ZERO;
         }
         return along(&[]);
@@ -59,7 +79,11 @@ pub(super) fn transmittance_and(
     SCRATCH.with_borrow_mut(|(crossings, media)| {
         crossings.clear();
         media.clear();
-        if scene.shadow_pass(ray, crossings) {
+        let blocked = match among {
+            None => scene.shadow_pass(ray, crossings),
+            Some(candidates) => scene.shadow_pass_among(ray, candidates, crossings),
+        };
+        if blocked {
             return Rgb::ZERO;
         }
         distinct(ray, crossings);
