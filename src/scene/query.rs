@@ -556,6 +556,8 @@ pub struct ShadowHull {
     planes: [(DVec3, f64); 5],
     /// Slack for the rays' origins (moved off the surface) and rounding.
     margin: f64,
+    /// How far it is grown on every side ([`ShadowHull::grown`]).
+    grow: f64,
     /// The apex and the base's corners.
     vertices: [DVec3; 5],
 }
@@ -593,8 +595,18 @@ impl ShadowHull {
         Some(ShadowHull {
             planes,
             margin,
+            grow: 0.0,
             vertices,
         })
+    }
+
+    /// The hull grown by `distance` on every side: it then holds the hulls of every apex
+    /// within `distance` of its own (and every base within `distance` of its own).
+    pub fn grown(self, distance: f64) -> ShadowHull {
+        ShadowHull {
+            grow: self.grow + distance,
+            ..self
+        }
     }
 
     /// Whether the unbounded `object` cannot meet a ray inside the hull: a plane with every
@@ -611,7 +623,17 @@ impl ShadowHull {
         let scale = local
             .iter()
             .fold(plane.distance.abs(), |m, v| m.max(v.abs().max_element()));
-        let margin = 1e-7 * (1.0 + scale);
+        // (Growing it by g moves a plane's distance to it by at most g times the longest
+        // stretch of the object's transformation, bounded by its matrix's Frobenius norm.)
+        let stretch = match &object.transform {
+            None => 1.0,
+            Some(t) => {
+                let m = &t.object_from_world;
+                let axis = |a: glam::DVec4| a.truncate().length_squared();
+                (axis(m.x_axis) + axis(m.y_axis) + axis(m.z_axis)).sqrt()
+            }
+        };
+        let margin = 1e-7 * (1.0 + scale) + self.grow * stretch;
         let side = local.map(|v| plane.normal.dot(v) - plane.distance);
         side.iter().all(|&s| s > margin) || side.iter().all(|&s| s < -margin)
     }
@@ -622,7 +644,7 @@ impl ShadowHull {
         self.planes.iter().any(|&(n, d)| {
             // The box corner farthest along the inward normal.
             let far = DVec3::select(n.cmpge(DVec3::ZERO), hi, lo);
-            n.dot(far) + d < -self.margin
+            n.dot(far) + d < -(self.margin + self.grow)
         })
     }
 }
@@ -669,6 +691,71 @@ mod hull_tests {
         assert!(b([0.8, 1.0, -0.1], [1.0, 1.2, 0.1]));
         assert!(b([-0.1, -1.0, -0.1], [0.1, -0.5, 0.1]));
         assert!(b([-0.1, 4.5, -0.1], [0.1, 5.0, 0.1]));
+    }
+
+    /// A pyramid grown by g keeps every object that the pyramid of any apex within g of its
+    /// own keeps: boxes of spheres, and planes turned and stretched by their transformation
+    /// (random apexes, moves and objects, a fixed seed).
+    #[test]
+    fn a_grown_hull_keeps_what_the_hulls_of_nearby_apexes_keep() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut random = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut text = String::from(
+            "plane { y, -0.5 scale <1, 3, 1> rotate x * 20 }\n\
+             plane { -z, -3 scale 0.5 }\nplane { x, 4.4 scale 0.25 }\n",
+        );
+        for _ in 0..40 {
+            let (x, y, z, r) = (random(), random(), random(), random());
+            text += &format!(
+                "sphere {{ <{}, {}, {}>, {} }}\n",
+                6.0 * x - 3.0,
+                6.0 * y - 1.0,
+                6.0 * z - 3.0,
+                0.05 + 0.3 * r
+            );
+        }
+        let loaded = crate::load_str(
+            std::path::Path::new("hulls.rt"),
+            text,
+            &crate::LoadOptions::default(),
+        )
+        .expect("loads");
+        let scene = Scene::build(&loaded.scene);
+        let c = |x: f64, z: f64| DVec3::new(x, 4.0, z);
+        let corners = [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)];
+        let (mut near, mut far) = (Vec::new(), Vec::new());
+        let mut differed = 0;
+        for _ in 0..3000 {
+            let apex = DVec3::new(
+                4.0 * random() - 2.0,
+                3.0 * random() - 1.0,
+                4.0 * random() - 2.0,
+            );
+            let grow = 0.2 * random();
+            let turn = DVec3::new(random() - 0.5, random() - 0.5, random() - 0.5);
+            let moved = apex + turn.normalize() * grow * random().sqrt();
+            let (Some(grown), Some(exact)) = (
+                ShadowHull::new(apex, corners).map(|h| h.grown(grow)),
+                ShadowHull::new(moved, corners),
+            ) else {
+                continue;
+            };
+            (near.clear(), far.clear());
+            scene.shadow_candidates(&grown, None, &mut far);
+            scene.shadow_candidates(&exact, None, &mut near);
+            assert!(
+                near.iter().all(|i| far.contains(i)),
+                "{apex} {moved} {grow}"
+            );
+            differed += usize::from(near.len() != far.len());
+        }
+        // (The growth is not vacuous: the grown pyramids often keep more.)
+        assert!(differed > 100, "{differed}");
     }
 
     #[test]

@@ -54,6 +54,73 @@ enum Blockers {
 const AREA_FIRST_POINTS: u32 = 4;
 const AREA_FIRST_POINTS_MOST: u32 = 16;
 
+/// An area light's possible blockers found for one point serve the points within this
+/// fraction of its distance to the light.
+const HULL_REUSE: f64 = 1.0 / 64.0;
+
+/// Pyramids kept per area light, and the most candidates one keeps.
+const HULLS_PER_LIGHT: usize = 4;
+const HULL_MOST_CANDIDATES: usize = 8;
+
+/// An area light's pyramids found lately, with the possible blockers each holds.
+#[derive(Clone, Copy, Default)]
+pub(super) struct Hulls {
+    kept: [Option<KeptHull>; HULLS_PER_LIGHT],
+    /// The slot the next pyramid goes to.
+    next: usize,
+}
+
+#[derive(Clone, Copy)]
+struct KeptHull {
+    apex: DVec3,
+    /// The squared distance from the apex within which it serves.
+    reach2: f64,
+    from: Option<ObjectId>,
+    kind: Blockers,
+    count: usize,
+    candidates: [u32; HULL_MOST_CANDIDATES],
+}
+
+impl Hulls {
+    /// The kind of blockers of a pyramid that serves `apex` on `from`, its candidates put
+    /// in `out`.
+    fn find(&self, apex: DVec3, from: Option<ObjectId>, out: &mut Vec<u32>) -> Option<Blockers> {
+        let kept = self
+            .kept
+            .iter()
+            .flatten()
+            .find(|k| k.from == from && (apex - k.apex).length_squared() <= k.reach2)?;
+        out.clear();
+        out.extend_from_slice(&kept.candidates[..kept.count]);
+        Some(kept.kind)
+    }
+
+    /// Keeps a pyramid (unless it holds too many candidates).
+    fn keep(
+        &mut self,
+        apex: DVec3,
+        reach2: f64,
+        from: Option<ObjectId>,
+        kind: Blockers,
+        list: &[u32],
+    ) {
+        if list.len() > HULL_MOST_CANDIDATES {
+            return;
+        }
+        let mut candidates = [0; HULL_MOST_CANDIDATES];
+        candidates[..list.len()].copy_from_slice(list);
+        self.kept[self.next] = Some(KeptHull {
+            apex,
+            reach2,
+            from,
+            kind,
+            count: list.len(),
+            candidates,
+        });
+        self.next = (self.next + 1) % HULLS_PER_LIGHT;
+    }
+}
+
 /// A hash of a point and two grid indices to [−½, ½)², for deterministic area-light jitter:
 /// the same point always gets the same offsets, whatever thread shades it.
 fn jitter(p: DVec3, u: u32, v: u32) -> (f64, f64) {
@@ -144,7 +211,11 @@ impl Tracer<'_> {
                             let start = ShadowStart::Surface(hit, from);
                             self.area_sampled(light, index, area, start, (seed, n))
                         }
-                        None => self.area_visibility(light, area, ShadowStart::Surface(hit, from)),
+                        None => self.area_visibility(
+                            (light, index),
+                            area,
+                            ShadowStart::Surface(hit, from),
+                        ),
                     }
                 }
                 _ => {
@@ -165,40 +236,47 @@ impl Tracer<'_> {
         })
     }
 
-    /// What may block the shadow rays from `hit` to an area light spanning ±`half.0` and
-    /// ±`half.1` around its position: the candidates go to `self.blockers`.
+    /// What may block the shadow rays from `start` to the area light `index` spanning
+    /// ±`half.0` and ±`half.1` around its position: the candidates go to `self.blockers`.
+    ///
+    /// A point near one seen before takes that point's candidates: each light keeps a few
+    /// pyramids grown by a margin (objects outside them cannot meet a ray from any point
+    /// within the margin of their apex), so that most shading points of a surface find
+    /// their candidates without building a pyramid or testing every object's box against
+    /// it. A grown pyramid holds every object the exact one holds, so the rays' answers are
+    /// the same; only points it finds blockers for where the exact one finds none trace
+    /// rays that all reach the light.
     fn area_blockers(
         &mut self,
-        light: &Light,
+        (light, index): (&Light, usize),
+        area: &AreaLight,
         half: (DVec3, DVec3),
         start: ShadowStart,
     ) -> Blockers {
         if !self.scene.cull_shadow_rays() {
             return Blockers::Unknown;
         }
-        let (h1, h2) = half;
-        let c = light.position;
-        // A line light (one axis of size 1) gets a sliver of width, so that the hull is solid.
-        let (h1, h2) = match (h1 == DVec3::ZERO, h2 == DVec3::ZERO) {
-            (true, true) => return Blockers::Unknown,
-            (true, false) => (
-                h2.any_orthogonal_vector().normalize() * (1e-6 * h2.length()),
-                h2,
-            ),
-            (false, true) => (
-                h1,
-                h1.any_orthogonal_vector().normalize() * (1e-6 * h1.length()),
-            ),
-            (false, false) => (h1, h2),
-        };
-        let corners = [c - h1 - h2, c + h1 - h2, c + h1 + h2, c - h1 + h2];
-        let Some(hull) = ShadowHull::new(start.point(), corners) else {
+        let apex = start.point();
+        let from = start.object();
+        if self.hulls.len() <= index {
+            self.hulls.resize(index + 1, Default::default());
+        }
+        if let Some(kind) = self.hulls[index].find(apex, from, &mut self.blockers) {
+            return kind;
+        }
+        let distance = (light.position - apex).length();
+        let Some(hull) = pyramid(
+            light.position,
+            half,
+            apex,
+            area.orient,
+            distance * HULL_REUSE,
+        ) else {
             return Blockers::Unknown;
         };
         let mut list = std::mem::take(&mut self.blockers);
         list.clear();
-        self.scene
-            .shadow_candidates(&hull, start.object(), &mut list);
+        self.scene.shadow_candidates(&hull, from, &mut list);
         let kind = if list.is_empty() {
             Blockers::None
         } else if self.scene.any_filters_shadows(&list) {
@@ -206,6 +284,8 @@ impl Tracer<'_> {
         } else {
             Blockers::Opaque
         };
+        let reach = distance * HULL_REUSE;
+        self.hulls[index].keep(apex, reach * reach, from, kind, &list);
         self.blockers = list;
         kind
     }
@@ -299,7 +379,8 @@ impl Tracer<'_> {
         // square_to_disc's bias moves points up to 0.001 beyond the square.
         let half = |size: u32| if size == 1 { 0.0 } else { 0.502 };
         let blockers = self.area_blockers(
-            light,
+            (light, index),
+            area,
             (a1 * half(area.size1), a2 * half(area.size2)),
             origin,
         );
@@ -349,7 +430,7 @@ impl Tracer<'_> {
     /// recursive subdivision: grid points get equal weight only for sizes 1, 2, 4, 8, …
     pub(super) fn area_visibility(
         &mut self,
-        light: &Light,
+        (light, index): (&Light, usize),
         area: &AreaLight,
         start: ShadowStart,
     ) -> Rgb {
@@ -373,7 +454,7 @@ impl Tracer<'_> {
         // radiosity, whose corners mostly agree).
         let forced = |size: u32| size.min((1 << area.adaptive.min(30)) + 1);
         let mut blockers = if forced(area.size1) * forced(area.size2) > 4 {
-            let found = self.area_blockers(light, half, start);
+            let found = self.area_blockers((light, index), area, half, start);
             if found == Blockers::None {
                 return Rgb::ONE;
             }
@@ -392,7 +473,7 @@ impl Tracer<'_> {
             let blockers = match blockers {
                 Some(b) => b,
                 None if traced <= 4 => Blockers::Unknown,
-                None => *blockers.insert(tracer.area_blockers(light, half, start)),
+                None => *blockers.insert(tracer.area_blockers((light, index), area, half, start)),
             };
             let shadow = tracer.grid_ray(light, area, (a1, a2), start, (u, v));
             tracer.counts.shadow += 1;
@@ -442,6 +523,43 @@ impl Tracer<'_> {
         }
         self.area_rays = rays;
     }
+}
+
+/// The pyramid from `apex` to the area light at `c` spanning ±`half.0` and ±`half.1`,
+/// grown to hold the pyramids of every apex within `grow` of `apex` (`None` if flat). An
+/// `orient`ed light turns its grid to face each point: its points lie within `r` of its
+/// centre in the plane facing the point; for points within `grow` that plane turns by at
+/// most asin(grow / distance) ≤ 1.6 grow / distance, which moves them at most that times
+/// `r` off the plane facing `apex`, where they project into the square of half-side `r`.
+fn pyramid(
+    c: DVec3,
+    (h1, h2): (DVec3, DVec3),
+    apex: DVec3,
+    orient: bool,
+    grow: f64,
+) -> Option<ShadowHull> {
+    // A line light (one axis of size 1) gets a sliver of width, so that the hull is solid.
+    let (h1, h2) = match (h1 == DVec3::ZERO, h2 == DVec3::ZERO) {
+        (true, true) => return None,
+        (true, false) => (
+            h2.any_orthogonal_vector().normalize() * (1e-6 * h2.length()),
+            h2,
+        ),
+        (false, true) => (
+            h1,
+            h1.any_orthogonal_vector().normalize() * (1e-6 * h1.length()),
+        ),
+        (false, false) => (h1, h2),
+    };
+    let (h1, h2, grow) = if orient && grow > 0.0 {
+        let r = std::f64::consts::SQRT_2 * h1.length().max(h2.length());
+        let turned = r * 1.6 * grow / (c - apex).length();
+        (h1.normalize() * r, h2.normalize() * r, grow + turned)
+    } else {
+        (h1, h2, grow)
+    };
+    let corners = [c - h1 - h2, c + h1 - h2, c + h1 + h2, c - h1 + h2];
+    Some(ShadowHull::new(apex, corners)?.grown(grow))
 }
 
 /// The grid indices along an axis of `size` points that POV-Ray's subdivision reaches
@@ -791,6 +909,75 @@ mod tests {
             }
         }
         assert_eq!(forced_steps(65, 3), None);
+    }
+
+    /// The pyramid kept for a point under an oriented light (its grid turned to face each
+    /// point) keeps every object that the exact pyramid of any point within its reach
+    /// keeps (random points, moves and spheres, a fixed seed); without the turn's margin
+    /// it does not.
+    #[test]
+    fn an_oriented_light_s_kept_pyramid_holds_those_of_points_near_it() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut random = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut text = String::from(
+            "light_source { <0, 4, 0>, rgb 1 area_light <6, 0, 0>, <0, 6, 0>, 4, 4 \
+             circular orient }\n",
+        );
+        for _ in 0..60 {
+            let (x, y, z, r) = (random(), random(), random(), random());
+            let (x, y, z) = (6.0 * x - 3.0, 5.0 * y - 1.0, 6.0 * z - 3.0);
+            text += &format!("sphere {{ <{x}, {y}, {z}>, {} }}\n", 0.02 + 0.1 * r);
+        }
+        let loaded = crate::load_str(
+            std::path::Path::new("orient.rt"),
+            text,
+            &crate::LoadOptions::default(),
+        )
+        .expect("loads");
+        let scene = Scene::build(&loaded.scene);
+        let light = &scene.lights()[0];
+        let area = light.area.as_ref().expect("an area light");
+        let half = |p: DVec3| {
+            let (a1, a2) = grid_axes(light, area, p);
+            (a1 * 0.502, a2 * 0.502)
+        };
+        let (mut near, mut far) = (Vec::new(), Vec::new());
+        let mut missed_unturned = 0;
+        for _ in 0..4000 {
+            let apex = DVec3::new(
+                6.0 * random() - 3.0,
+                4.0 * random() - 1.0,
+                6.0 * random() - 3.0,
+            );
+            let grow = (light.position - apex).length() * HULL_REUSE * 8.0 * random();
+            let turn = DVec3::new(random() - 0.5, random() - 0.5, random() - 0.5);
+            let moved = apex + turn.normalize() * grow * random().sqrt();
+            let c = light.position;
+            let (Some(kept), Some(unturned), Some(exact)) = (
+                pyramid(c, half(apex), apex, true, grow),
+                pyramid(c, half(apex), apex, false, grow),
+                pyramid(c, half(moved), moved, false, 0.0),
+            ) else {
+                continue;
+            };
+            near.clear();
+            scene.shadow_candidates(&exact, None, &mut near);
+            far.clear();
+            scene.shadow_candidates(&kept, None, &mut far);
+            assert!(
+                near.iter().all(|i| far.contains(i)),
+                "{apex} {moved} {grow}"
+            );
+            far.clear();
+            scene.shadow_candidates(&unturned, None, &mut far);
+            missed_unturned += usize::from(!near.iter().all(|i| far.contains(i)));
+        }
+        assert!(missed_unturned > 0);
     }
 
     #[test]

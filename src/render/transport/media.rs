@@ -585,7 +585,7 @@ impl<'a> Tracer<'a> {
                 let start = ShadowStart::Medium(p);
                 let seen = match self.light_stream {
                     Some(stream) => self.area_sampled(light, index, area, start, stream),
-                    None => self.area_visibility(light, area, start),
+                    None => self.area_visibility((light, index), area, start),
                 };
                 self.shadow_start = was;
                 seen

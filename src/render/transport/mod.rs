@@ -88,6 +88,8 @@ pub struct Tracer<'a> {
     pub(super) lens_stream: Option<(u32, u32)>,
     /// The objects that may block the shadow rays to the area light being sampled.
     pub(super) blockers: Vec<u32>,
+    /// Each area light's pyramids found lately, with their possible blockers.
+    hulls: Vec<lights::Hulls>,
     /// The media the ray being shaded is in: where its shadow rays start (POV-Ray's shadow
     /// rays copy the viewing ray's interior list).
     shadow_start: MediumStack,
@@ -172,6 +174,7 @@ impl<'a> Tracer<'a> {
             light_stream: None,
             lens_stream: None,
             blockers: Vec::new(),
+            hulls: Vec::new(),
             shadow_start: MediumStack::default(),
             media_scratch: media::Scratch::default(),
             band: None,
