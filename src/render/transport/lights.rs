@@ -237,7 +237,8 @@ impl Tracer<'_> {
     }
 
     /// What may block the shadow rays from `start` to the area light `index` spanning
-    /// ±`half.0` and ±`half.1` around its position: the candidates go to `self.blockers`.
+    /// ±`half().0` and ±`half().1` around its position (asked only if no pyramid kept
+    /// serves the point): the candidates go to `self.blockers`.
     ///
     /// A point near one seen before takes that point's candidates: each light keeps a few
     /// pyramids grown by a margin (objects outside them cannot meet a ray from any point
@@ -250,7 +251,7 @@ impl Tracer<'_> {
         &mut self,
         (light, index): (&Light, usize),
         area: &AreaLight,
-        half: (DVec3, DVec3),
+        half: impl FnOnce() -> (DVec3, DVec3),
         start: ShadowStart,
     ) -> Blockers {
         if !self.scene.cull_shadow_rays() {
@@ -267,7 +268,7 @@ impl Tracer<'_> {
         let distance = (light.position - apex).length();
         let Some(hull) = pyramid(
             light.position,
-            half,
+            half(),
             apex,
             area.orient,
             distance * HULL_REUSE,
@@ -375,18 +376,21 @@ impl Tracer<'_> {
         origin: ShadowStart,
         (seed, n): (u32, u32),
     ) -> Rgb {
-        let (a1, a2) = grid_axes(light, area, origin.point());
         // square_to_disc's bias moves points up to 0.001 beyond the square.
         let half = |size: u32| if size == 1 { 0.0 } else { 0.502 };
         let blockers = self.area_blockers(
             (light, index),
             area,
-            (a1 * half(area.size1), a2 * half(area.size2)),
+            || {
+                let (a1, a2) = grid_axes(light, area, origin.point());
+                (a1 * half(area.size1), a2 * half(area.size2))
+            },
             origin,
         );
         if blockers == Blockers::None {
             return Rgb::ONE;
         }
+        let (a1, a2) = grid_axes(light, area, origin.point());
         let light_seed = crate::render::sampler::stream_seed(seed, index as u32 + 1);
         // The pixel's centre sample (the only one most pixels take) looks at 4 points of the
         // light, and at 16 if they disagree; sample n ≥ 1 at one more point, point 16 + n − 1
@@ -434,10 +438,6 @@ impl Tracer<'_> {
         area: &AreaLight,
         start: ShadowStart,
     ) -> Rgb {
-        let cells = (area.size1 * area.size2) as usize;
-        self.area_cache.clear();
-        self.area_cache.resize(cells, None);
-        let (a1, a2) = grid_axes(light, area, start.point());
         // Jitter moves grid points up to half a cell beyond the grid's edge, square_to_disc's
         // bias up to 0.001.
         let reach = |size: u32| match (area.jitter, size) {
@@ -445,7 +445,12 @@ impl Tracer<'_> {
             (true, n) => 0.502 + 0.5 / f64::from(n - 1),
             (false, _) => 0.502,
         };
-        let half = (a1 * reach(area.size1), a2 * reach(area.size2));
+        // (The grid's axes, turned toward the point if `orient`ed, are worked out only where
+        // rays are traced or a pyramid is built.)
+        let half = || {
+            let (a1, a2) = grid_axes(light, area, start.point());
+            (a1 * reach(area.size1), a2 * reach(area.size2))
+        };
         // The possible blockers are found first where the subdivision will trace more than
         // the grid's four corners whatever they see (`adaptive` forces more); otherwise the
         // corners are traced as any shadow ray, and the blockers are found only if the
@@ -458,11 +463,17 @@ impl Tracer<'_> {
             if found == Blockers::None {
                 return Rgb::ONE;
             }
-            self.trace_forced(light, area, (a1, a2), start, found);
             Some(found)
         } else {
             None
         };
+        let cells = (area.size1 * area.size2) as usize;
+        self.area_cache.clear();
+        self.area_cache.resize(cells, None);
+        let (a1, a2) = grid_axes(light, area, start.point());
+        if let Some(found) = blockers {
+            self.trace_forced(light, area, (a1, a2), start, found);
+        }
         let mut traced = 0;
         let mut visibility = |tracer: &mut Tracer, u: u32, v: u32| -> Rgb {
             let k = (v * area.size1 + u) as usize;
