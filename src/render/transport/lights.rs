@@ -350,17 +350,21 @@ impl Tracer<'_> {
         }
         match blockers {
             Blockers::None => Rgb::ONE,
-            Blockers::Opaque
-                if (self.scene)
-                    .blocked_among(&super::shadow::blocking_part(shadow), &self.blockers) =>
-            {
-                Rgb::ZERO
-            }
-            Blockers::Opaque => Rgb::ONE,
+            Blockers::Opaque => self.past_opaque(&super::shadow::blocking_part(shadow)),
             Blockers::Filtering => {
                 super::shadow::transmittance_among(self.scene, shadow, &self.blockers)
             }
             Blockers::Unknown => super::transmittance(self.scene, shadow),
+        }
+    }
+
+    /// What passes the opaque blockers `self.blockers` along `part`, a shadow ray's
+    /// blocking part ([`super::shadow::blocking_part`]): all or nothing.
+    fn past_opaque(&self, part: &Ray) -> Rgb {
+        if self.scene.blocked_among(part, &self.blockers) {
+            Rgb::ZERO
+        } else {
+            Rgb::ONE
         }
     }
 
@@ -520,17 +524,29 @@ impl Tracer<'_> {
         ) else {
             return;
         };
+        // (Behind opaque blockers alone, the rays are cut short of the light here too, and
+        // tested straight away.)
+        let opaque = blockers == Blockers::Opaque && !self.media_dims_shadows(light);
         let mut rays = std::mem::take(&mut self.area_rays);
         rays.clear();
         for v in bits(vs) {
             for u in bits(us) {
                 let ray = self.grid_ray(light, area, axes, start, (u, v));
+                let ray = if opaque {
+                    super::shadow::blocking_part(&ray)
+                } else {
+                    ray
+                };
                 rays.push((v * area.size1 + u, ray));
             }
         }
+        self.counts.shadow += rays.len() as u64;
         for (k, ray) in &rays {
-            self.counts.shadow += 1;
-            self.area_cache[*k as usize] = Some(self.shadow_through(ray, light, blockers));
+            self.area_cache[*k as usize] = Some(if opaque {
+                self.past_opaque(ray)
+            } else {
+                self.shadow_through(ray, light, blockers)
+            });
         }
         self.area_rays = rays;
     }
