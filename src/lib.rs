@@ -69,6 +69,8 @@ mod scene;
 pub mod syntax;
 #[cfg(not(feature = "internals"))]
 mod syntax;
+#[cfg(test)]
+mod testing;
 
 use diag::{Diagnostic, SourceMap};
 use std::path::Path;

@@ -698,13 +698,8 @@ mod hull_tests {
     /// (random apexes, moves and objects, a fixed seed).
     #[test]
     fn a_grown_hull_keeps_what_the_hulls_of_nearby_apexes_keep() {
-        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-        let mut random = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut stream = crate::testing::Xorshift(0x2545_f491_4f6c_dd1d);
+        let mut random = move || stream.unit();
         let mut text = String::from(
             "plane { y, -0.5 scale <1, 3, 1> rotate x * 20 }\n\
              plane { -z, -3 scale 0.5 }\nplane { x, 4.4 scale 0.25 }\n",
@@ -719,13 +714,7 @@ mod hull_tests {
                 0.05 + 0.3 * r
             );
         }
-        let loaded = crate::load_str(
-            std::path::Path::new("hulls.rt"),
-            text,
-            &crate::LoadOptions::default(),
-        )
-        .expect("loads");
-        let scene = Scene::build(&loaded.scene);
+        let scene = crate::testing::scene(text);
         let c = |x: f64, z: f64| DVec3::new(x, 4.0, z);
         let corners = [c(-1.0, -1.0), c(1.0, -1.0), c(1.0, 1.0), c(-1.0, 1.0)];
         let (mut near, mut far) = (Vec::new(), Vec::new());
@@ -745,7 +734,8 @@ mod hull_tests {
             ) else {
                 continue;
             };
-            (near.clear(), far.clear());
+            near.clear();
+            far.clear();
             scene.shadow_candidates(&grown, None, &mut far);
             scene.shadow_candidates(&exact, None, &mut near);
             assert!(

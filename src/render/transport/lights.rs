@@ -944,13 +944,8 @@ mod tests {
     /// it does not.
     #[test]
     fn an_oriented_light_s_kept_pyramid_holds_those_of_points_near_it() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut random = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut stream = crate::testing::Xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut random = move || stream.unit();
         let mut text = String::from(
             "light_source { <0, 4, 0>, rgb 1 area_light <6, 0, 0>, <0, 6, 0>, 4, 4 \
              circular orient }\n",
@@ -960,13 +955,7 @@ mod tests {
             let (x, y, z) = (6.0 * x - 3.0, 5.0 * y - 1.0, 6.0 * z - 3.0);
             text += &format!("sphere {{ <{x}, {y}, {z}>, {} }}\n", 0.02 + 0.1 * r);
         }
-        let loaded = crate::load_str(
-            std::path::Path::new("orient.rt"),
-            text,
-            &crate::LoadOptions::default(),
-        )
-        .expect("loads");
-        let scene = Scene::build(&loaded.scene);
+        let scene = crate::testing::scene(text);
         let light = &scene.lights()[0];
         let area = light.area.as_ref().expect("an area light");
         let half = |p: DVec3| {
