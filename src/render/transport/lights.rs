@@ -45,7 +45,7 @@ enum Blockers {
     Opaque,
     /// Objects listed in `Tracer::blockers`, some of which let light through.
     Filtering,
-    /// Not known, or transparent objects among them: each ray asks the whole scene.
+    /// Not known (culling is off, or the pyramid is flat): each ray asks the whole scene.
     Unknown,
 }
 
@@ -449,10 +449,11 @@ impl Tracer<'_> {
             (true, n) => 0.502 + 0.5 / f64::from(n - 1),
             (false, _) => 0.502,
         };
-        // (The grid's axes, turned toward the point if `orient`ed, are worked out only where
-        // rays are traced or a pyramid is built.)
-        let half = || {
-            let (a1, a2) = grid_axes(light, area, start.point());
+        // (The grid's axes, turned toward the point if `orient`ed, are worked out once, and
+        // only where rays are traced or a pyramid is built.)
+        let mut axes = None;
+        let mut half = || {
+            let (a1, a2) = *axes.get_or_insert_with(|| grid_axes(light, area, start.point()));
             (a1 * reach(area.size1), a2 * reach(area.size2))
         };
         // The possible blockers are found first where the subdivision will trace more than
@@ -463,7 +464,7 @@ impl Tracer<'_> {
         // radiosity, whose corners mostly agree).
         let forced = |size: u32| size.min((1 << area.adaptive.min(30)) + 1);
         let mut blockers = if forced(area.size1) * forced(area.size2) > 4 {
-            let found = self.area_blockers((light, index), area, half, start);
+            let found = self.area_blockers((light, index), area, &mut half, start);
             if found == Blockers::None {
                 return Rgb::ONE;
             }
@@ -474,7 +475,7 @@ impl Tracer<'_> {
         let cells = (area.size1 * area.size2) as usize;
         self.area_cache.clear();
         self.area_cache.resize(cells, None);
-        let (a1, a2) = grid_axes(light, area, start.point());
+        let (a1, a2) = *axes.get_or_insert_with(|| grid_axes(light, area, start.point()));
         if let Some(found) = blockers {
             self.trace_forced(light, area, (a1, a2), start, found);
         }
@@ -488,7 +489,10 @@ impl Tracer<'_> {
             let blockers = match blockers {
                 Some(b) => b,
                 None if traced <= 4 => Blockers::Unknown,
-                None => *blockers.insert(tracer.area_blockers((light, index), area, half, start)),
+                None => {
+                    let half = || (a1 * reach(area.size1), a2 * reach(area.size2));
+                    *blockers.insert(tracer.area_blockers((light, index), area, half, start))
+                }
             };
             let shadow = tracer.grid_ray(light, area, (a1, a2), start, (u, v));
             tracer.counts.shadow += 1;

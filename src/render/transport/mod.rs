@@ -74,7 +74,7 @@ pub struct Tracer<'a> {
     /// Area-light visibility cache, reused between shading points.
     pub(super) area_cache: Vec<Option<Rgb>>,
     /// The grid points an area light traces at every shading point, with their cells.
-    pub(super) area_rays: Vec<(u32, Ray)>,
+    area_rays: Vec<(u32, Ray)>,
     /// The kind of the ray being traced, as far as objects hide from it (`no_image`,
     /// `no_reflection`, `no_radiosity`).
     seer: Seer,
