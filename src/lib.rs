@@ -338,7 +338,7 @@ pub fn render_to_file(
         region.height(),
         layout,
         options.threads,
-        || bands.next_band(),
+        |spare| bands.next_band(spare),
     )?;
     let mut stats = bands.stats;
     stats.build_time = build_time;

@@ -153,7 +153,7 @@ impl Film {
             values: Cow::Borrowed(self.pixels.as_flattened()),
         });
         let layout = Layout::default();
-        write_streamed(path, self.width, self.height, &layout, threads, || {
+        write_streamed(path, self.width, self.height, &layout, threads, |_| {
             whole.take()
         })
     }
@@ -301,7 +301,7 @@ mod tests {
             let (whole, banded) = (dir.join(format!("whole-{name}")), dir.join(name));
             film.write(&whole).unwrap();
             let mut y0 = 0;
-            write_streamed(&banded, w, h, &Layout::default(), Some(1), || {
+            write_streamed(&banded, w, h, &Layout::default(), Some(1), |_| {
                 (y0 < h).then(|| {
                     let rows = 5.min(h - y0);
                     let start = (y0 * w) as usize;

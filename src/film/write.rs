@@ -93,7 +93,7 @@ pub(super) struct RowFeed<'a, F> {
     band: Rows<'a>,
 }
 
-impl<'a, F: FnMut() -> Option<Rows<'a>>> RowFeed<'a, F> {
+impl<'a, F: FnMut(Vec<f32>) -> Option<Rows<'a>>> RowFeed<'a, F> {
     pub(super) fn new(row_len: usize, next_band: F) -> Self {
         RowFeed {
             row_len,
@@ -110,7 +110,12 @@ impl<'a, F: FnMut() -> Option<Rows<'a>>> RowFeed<'a, F> {
     pub(super) fn row(&mut self, y: u32) -> &[f32] {
         let rows_in = |band: &Rows| (band.values.len() / self.row_len.max(1)) as u32;
         while y >= self.band.y0 + rows_in(&self.band) {
-            match (self.next_band)() {
+            // (The band done with is handed back, for the next one's values if it owns them.)
+            let spare = match std::mem::take(&mut self.band.values) {
+                Cow::Owned(values) => values,
+                Cow::Borrowed(_) => Vec::new(),
+            };
+            match (self.next_band)(spare) {
                 Some(band) => self.band = band,
                 None => {
                     self.band = Rows {
@@ -126,7 +131,8 @@ impl<'a, F: FnMut() -> Option<Rows<'a>>> RowFeed<'a, F> {
 }
 
 /// Writes a `width` × `height` image whose rows come from `next_band`, in bands of any height,
-/// top first; the extension of `path` picks the format. Only the current band and the
+/// top first; the extension of `path` picks the format. `next_band` is handed the values of
+/// the band before (empty at first, or if borrowed), for its own. Only the current band and the
 /// encoder's buffers are held. EXR blocks are compressed on all cores unless `threads` is
 /// `Some(1)` (the file is the same).
 pub fn write_streamed<'a>(
@@ -135,7 +141,7 @@ pub fn write_streamed<'a>(
     height: u32,
     layout: &Layout,
     threads: Option<usize>,
-    next_band: impl FnMut() -> Option<Rows<'a>>,
+    next_band: impl FnMut(Vec<f32>) -> Option<Rows<'a>>,
 ) -> Result<(), ImageError> {
     let format = Format::of(path).ok_or_else(|| ImageError::UnknownFormat(path.to_path_buf()))?;
     let tmp = crate::output::TempFile::new(path);

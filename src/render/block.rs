@@ -6,7 +6,7 @@ use super::transport::radiosity::{Gathering, Pass, Shared};
 use super::transport::{MediumStack, Tracer};
 use super::{Aov, BLOCK_SIZE, RayCounts, RenderOptions, aov_values, camera};
 use crate::geometry::counters;
-use crate::scene::{Rgb, Scene};
+use crate::scene::{Gamma, Rgb, Scene};
 
 /// What radiosity in POV-Ray's order carries from one block to the next: the final render's
 /// samples so far and the next directions of the pool.
@@ -71,13 +71,6 @@ pub(super) fn render_block(
     if let (Some(c), Some(g)) = (carry, tracer.gathering.take()) {
         c.samples = Some((g.own, g.next));
     }
-    let gamma = scene.gamma();
-    let pixels = (pixels.iter())
-        .map(|p| {
-            let [r, g, b] = super::output_value(p.truncate(), gamma);
-            [r, g, b, (1.0 - p.w).clamp(0.0, 1.0) as f32]
-        })
-        .collect();
     BlockResult {
         radiosity,
         x0,
@@ -89,6 +82,7 @@ pub(super) fn render_block(
         counts: tracer.counts,
         tests: counters::take(),
         samples,
+        non_finite: 0,
     }
 }
 
@@ -167,14 +161,15 @@ pub(super) struct BlockResult {
     pub(super) x0: u32,
     pub(super) y0: u32,
     pub(super) width: u32,
-    /// Each pixel's output value (red, green, blue as written, non-finite where the render
-    /// went wrong) and its alpha, worked out here, in parallel, from the linear colour.
-    pub(super) pixels: Vec<[f32; 4]>,
+    /// Each pixel's linear colour and how much of it is the background seen through.
+    pub(super) pixels: Vec<super::Px>,
     /// The AOV values of each pixel, in order.
     pub(super) aov: Vec<f32>,
     pub(super) counts: RayCounts,
     pub(super) tests: counters::Tests,
     pub(super) samples: u64,
+    /// Pixels whose colour came out not finite (written black).
+    pub(super) non_finite: u64,
     /// Radiosity samples taken (by depth), their rays, and queries answered from the cache.
     pub(super) radiosity: (super::SamplesByDepth, u64, u64),
 }
@@ -183,4 +178,47 @@ impl BlockResult {
     pub(super) fn height(&self) -> u32 {
         self.pixels.len() as u32 / self.width.max(1)
     }
+
+    /// Writes the block's output values into its place in the band: each pixel's red, green
+    /// and blue as written (black where the render went wrong, which is counted), then its
+    /// alpha if `alpha`, then its AOV values. Returns the count of pixels that went wrong.
+    pub(super) fn put(&self, tile: &mut Tile, gamma: Gamma, alpha: bool) -> u64 {
+        let extra = if self.pixels.is_empty() {
+            0
+        } else {
+            self.aov.len() / self.pixels.len()
+        };
+        let stride = 3 + usize::from(alpha) + extra;
+        let (dx, dy) = (tile.x0 - self.x0, tile.y0 - self.y0);
+        let mut wrong = 0;
+        for (j, row) in tile.rows.iter_mut().enumerate() {
+            let first = (dy as usize + j) * self.width as usize + dx as usize;
+            for (i, out) in row.chunks_exact_mut(stride).enumerate() {
+                let k = first + i;
+                let p = self.pixels[k];
+                let v = super::output_value(p.truncate(), gamma);
+                if v.iter().all(|c| c.is_finite()) {
+                    out[..3].copy_from_slice(&v);
+                } else {
+                    out[..3].fill(0.0);
+                    wrong += 1;
+                }
+                if alpha {
+                    out[3] = (1.0 - p.w).clamp(0.0, 1.0) as f32;
+                }
+                if extra > 0 {
+                    out[stride - extra..].copy_from_slice(&self.aov[k * extra..(k + 1) * extra]);
+                }
+            }
+        }
+        wrong
+    }
+}
+
+/// A block's place in a band: for each of the block's rows inside the band, the values of
+/// its pixels inside the region; `(x0, y0)` is the image pixel of the first value.
+pub(super) struct Tile<'b> {
+    pub(super) x0: u32,
+    pub(super) y0: u32,
+    pub(super) rows: Vec<&'b mut [f32]>,
 }

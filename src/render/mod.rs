@@ -33,6 +33,7 @@ use crate::cancel::Cancel;
 use crate::film::{Film, Region, Rows};
 use crate::geometry::counters;
 use crate::scene::{Gamma, Rgb, Scene};
+use block::Tile;
 
 /// A sample: its colour (x, y, z) and how much of it is the transparent background seen
 /// straight through (w: one minus its alpha).
@@ -126,23 +127,15 @@ impl Preview {
         self.blocks.load(std::sync::atomic::Ordering::Relaxed)
     }
 
-    /// Writes a finished block's pixels (those inside `region`, whose corner is the
-    /// picture's).
-    fn write(&self, block: &block::BlockResult, region: Region) {
+    /// Writes a finished block's output values (a tile of a band of `region` whose pixels
+    /// hold `stride` values, the colour first).
+    fn write(&self, tile: &block::Tile, region: Region, stride: usize) {
         let mut film = self.film.lock().unwrap_or_else(|e| e.into_inner());
-        for (k, value) in block.pixels.iter().enumerate() {
-            let (x, y) = (
-                block.x0 + k as u32 % block.width,
-                block.y0 + k as u32 / block.width,
-            );
-            if x < region.x0 || x >= region.x1 || y < region.y0 || y >= region.y1 {
-                continue;
+        for (j, row) in tile.rows.iter().enumerate() {
+            for (i, v) in row.chunks_exact(stride).enumerate() {
+                let (x, y) = (tile.x0 + i as u32, tile.y0 + j as u32);
+                film.set(x - region.x0, y - region.y0, [v[0], v[1], v[2]]);
             }
-            film.set(
-                x - region.x0,
-                y - region.y0,
-                finite(value).unwrap_or([0.0; 3]),
-            );
         }
         drop(film);
         self.blocks
@@ -278,8 +271,8 @@ pub fn thread_pool(
 }
 
 /// Pixels rendered at a time at most, unless one row of blocks holds more: with the
-/// writer's buffers, the memory a render holds whatever the image size (about 28 bytes a
-/// pixel: 16 as a block's output values and alpha, 12 as the band's output values).
+/// writer's buffers, the memory a render holds whatever the image size (12 bytes a pixel,
+/// the band's output values, which each block writes as it finishes).
 const BAND_PIXELS: usize = 1 << 19;
 
 /// Rows of blocks rendered together: as many as fit in `band_pixels`, at least one.
@@ -293,7 +286,7 @@ fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
 /// output values: EXR's blocks of 16 scanlines queued for compression).
 pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
-    let per_pixel = std::mem::size_of::<[f32; 4]>() + std::mem::size_of::<[f32; 3]>();
+    let per_pixel = std::mem::size_of::<[f32; 3]>();
     let band = (width as usize * band_rows).saturating_mul(per_pixel);
     let writer =
         (width as usize * 64.min(height as usize)).saturating_mul(std::mem::size_of::<[f32; 3]>());
@@ -378,7 +371,7 @@ impl<'a> Bands<'a> {
     /// Renders the next band: its rows' output values (of the region), or `None` after the
     /// last row or once the render is stopped ([`RenderOptions::cancel`]: the band being
     /// rendered is dropped, and `stats.stopped` says how many rows were finished).
-    pub fn next_band(&mut self) -> Option<Rows<'static>> {
+    pub fn next_band(&mut self, reuse: Vec<f32>) -> Option<Rows<'static>> {
         if self.next_block_row >= self.block_rows || self.stats.stopped.is_some() {
             return None;
         }
@@ -387,27 +380,65 @@ impl<'a> Bands<'a> {
         let first = self.next_block_row;
         let last = (first + self.band_block_rows).min(self.block_rows);
         self.next_block_row = last;
+        let y0 = (first * BLOCK_SIZE).max(region.y0);
+        let mut y1 = (last * BLOCK_SIZE).min(region.y1);
         let (scene, options, media, blocks_x) = (
             self.scene,
             self.options,
             self.camera_media,
             self.blocks_x.clone(),
         );
-        let radiosity = self.radiosity.as_ref();
+        let w = region.width() as usize;
+        let stride = 3 + usize::from(options.alpha) + aov_values(&options.aovs);
+        let row_len = stride * w;
+        // The band's values, written by each block into its own tiles. (A buffer handed back
+        // is reused: its pages are already the process's. A new one is left to the blocks to
+        // touch, in parallel.)
+        let len = row_len * (y1 - y0) as usize;
+        let mut values = if reuse.capacity() >= len {
+            let mut v = reuse;
+            v.resize(len, 0.0);
+            v.truncate(len);
+            v
+        } else {
+            vec![0.0_f32; len]
+        };
         let columns = blocks_x.len() as u32;
+        let mut tiles: Vec<Tile> = (first..last)
+            .flat_map(|by| {
+                blocks_x.clone().map(move |bx| Tile {
+                    x0: (bx * BLOCK_SIZE).max(region.x0),
+                    y0: (by * BLOCK_SIZE).max(y0),
+                    rows: Vec::new(),
+                })
+            })
+            .collect();
+        for (j, mut row) in values.chunks_exact_mut(row_len.max(1)).enumerate() {
+            let by = (y0 + j as u32) / BLOCK_SIZE - first;
+            for tile in &mut tiles[(by * columns) as usize..][..columns as usize] {
+                let x1 = (tile.x0 / BLOCK_SIZE + 1) * BLOCK_SIZE;
+                let n = (x1.min(region.x1) - tile.x0) as usize * stride;
+                let (mine, rest) = row.split_at_mut(n);
+                tile.rows.push(mine);
+                row = rest;
+            }
+        }
+        let radiosity = self.radiosity.as_ref();
         let progress = options.progress.as_deref();
-        let one = |i: u32, carry: Option<&mut block::Carry>| {
+        let gamma = scene.gamma();
+        let one = |i: u32, mut tile: Tile, carry: Option<&mut block::Carry>| {
             if options.cancel.is_cancelled() {
                 return None;
             }
-            let (bx, by) = (blocks_x.start + i % columns, i / columns);
-            let block = block::render_block(
+            let (bx, by) = (blocks_x.start + i % columns, first + i / columns);
+            let mut block = block::render_block(
                 scene,
                 options,
                 (media, radiosity, carry),
                 bx * BLOCK_SIZE,
                 by * BLOCK_SIZE,
             );
+            block.non_finite = block.put(&mut tile, gamma, options.alpha);
             if let Some(p) = progress {
                 use std::sync::atomic::Ordering::Relaxed;
                 let inside =
@@ -418,28 +449,28 @@ impl<'a> Bands<'a> {
                 p.rays.fetch_add(block.counts.total(), Relaxed);
             }
             if let Some(preview) = &options.preview {
-                preview.write(&block, region);
+                preview.write(&tile, region, stride);
             }
+            // (The block's pixels are freed here, on its thread, for its next block.)
+            block.pixels = Vec::new();
+            block.aov = Vec::new();
             Some(block)
         };
         let blocks: Vec<Option<block::BlockResult>> = match self.carry.as_mut() {
             // (Radiosity in POV-Ray's order: the blocks one after another, on this thread.)
-            Some(carry) => (first * columns..last * columns)
-                .map(|i| one(i, Some(&mut *carry)))
+            Some(carry) => (tiles.into_iter().enumerate())
+                .map(|(i, tile)| one(i as u32, tile, Some(&mut *carry)))
                 .collect(),
             // (One block per task: costly blocks often sit together, around one object, and
             // rayon's default chunks of many blocks left a core idle; measured 133 % of 2 cores
             // on examples/parametric.rt before, see the commit.)
             None => self.pool.install(|| {
-                (first * columns..last * columns)
-                    .into_par_iter()
+                (tiles.into_par_iter().enumerate())
                     .with_max_len(1)
-                    .map(|i| one(i, None))
+                    .map(|(i, tile)| one(i as u32, tile, None))
                     .collect()
             }),
         };
-        let y0 = (first * BLOCK_SIZE).max(region.y0);
-        let mut y1 = (last * BLOCK_SIZE).min(region.y1);
         if blocks.iter().any(Option::is_none) {
             // Stopped: the band keeps its leading rows of blocks that were all finished.
             let whole_rows = blocks
@@ -452,32 +483,10 @@ impl<'a> Bands<'a> {
                 self.stats.trace_time += start.elapsed();
                 return None;
             }
+            values.truncate(row_len * (y1 - y0) as usize);
         }
-        let w = region.width() as usize;
-        let extra = aov_values(&options.aovs);
-        let stride = 3 + usize::from(options.alpha) + extra;
-        let mut values = vec![0.0_f32; stride * w * (y1 - y0) as usize];
         for b in blocks.iter().flatten().filter(|b| b.y0 < y1) {
-            for (k, value) in b.pixels.iter().enumerate() {
-                let (x, y) = (b.x0 + k as u32 % b.width, b.y0 + k as u32 / b.width);
-                if x < region.x0 || x >= region.x1 || y < y0 || y >= y1 {
-                    continue;
-                }
-                let v = finite(value).unwrap_or_else(|| {
-                    self.stats.non_finite += 1;
-                    [0.0; 3]
-                });
-                let at = stride * ((y - y0) as usize * w + (x - region.x0) as usize);
-                values[at..at + 3].copy_from_slice(&v);
-                if options.alpha {
-                    values[at + 3] = value[3];
-                }
-                if extra > 0 {
-                    let from = k * extra;
-                    values[at + stride - extra..at + stride]
-                        .copy_from_slice(&b.aov[from..from + extra]);
-                }
-            }
+            self.stats.non_finite += b.non_finite;
             self.stats.counts.add(&b.counts);
             self.stats.tests.add(&b.tests);
             self.stats.samples += b.samples;
@@ -498,25 +507,20 @@ pub fn render(scene: &Scene, options: &RenderOptions, pool: &rayon::ThreadPool) 
     let region = options.region();
     let mut film = Film::new(region.width(), region.height());
     let mut bands = Bands::new(scene, options, pool);
-    while let Some(band) = bands.next_band() {
+    let mut spare = Vec::new();
+    while let Some(band) = bands.next_band(spare) {
         let start = band.y0 as usize * region.width() as usize;
         let stride = 3 + usize::from(options.alpha) + aov_values(&options.aovs);
         let pixels = band.values.chunks_exact(stride).map(|v| [v[0], v[1], v[2]]);
         for (dst, v) in film.pixels[start..].iter_mut().zip(pixels) {
             *dst = v;
         }
+        spare = band.values.into_owned();
     }
     Rendered {
         film,
         stats: bands.stats,
     }
-}
-
-/// A block's output colour, unless the render went wrong there (then written black and
-/// counted).
-fn finite(value: &[f32; 4]) -> Option<[f32; 3]> {
-    let v = [value[0], value[1], value[2]];
-    v.iter().all(|c| c.is_finite()).then_some(v)
 }
 
 /// A working-space colour as the linear value written to the film (POV-Ray §2).
@@ -588,6 +592,49 @@ mod tests {
         assert_eq!(r.stats.samples, 40 * 30);
     }
 
+    /// The blocks write every value of their band themselves: a band handed a used buffer
+    /// (here full of NaN) gives the values of one handed nothing, for a region that starts
+    /// and ends inside blocks, with alpha and AOV layers after the colour.
+    #[test]
+    fn every_value_of_a_band_is_its_blocks_own() {
+        let (w, h) = (75, 70);
+        let scene = built(w, h);
+        let pool = thread_pool(Some(2)).expect("a pool");
+        let options = RenderOptions {
+            width: w,
+            height: h,
+            antialias: Antialias::Off,
+            region: Some(Region {
+                x0: 5,
+                y0: 17,
+                x1: 71,
+                y1: 66,
+            }),
+            alpha: true,
+            aovs: vec![Aov::Depth, Aov::Normal],
+            ..RenderOptions::default()
+        };
+        let bands = |used: bool| {
+            let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(1);
+            let mut all = Vec::new();
+            while let Some(band) = bands.next_band(if used {
+                vec![f32::NAN; 1 << 16]
+            } else {
+                Vec::new()
+            }) {
+                all.extend_from_slice(&band.values);
+            }
+            all
+        };
+        let (fresh, used) = (bands(false), bands(true));
+        assert_eq!(fresh.len(), (66 - 17) * (71 - 5) * (3 + 1 + 1 + 3));
+        assert!(used.iter().all(|v| !v.is_nan()), "a value left unwritten");
+        assert_eq!(
+            fresh.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+            used.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+        );
+    }
+
     #[test]
     fn the_preview_ends_as_the_film_whatever_it_held() {
         let (w, h) = (70, 45);
@@ -645,7 +692,7 @@ mod tests {
                 let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
                 let mut pixels = Vec::new();
                 let mut count = 0;
-                while let Some(band) = bands.next_band() {
+                while let Some(band) = bands.next_band(Vec::new()) {
                     assert_eq!(
                         band.y0 as usize,
                         pixels.len() / w as usize,
@@ -839,8 +886,8 @@ mod tests {
         assert_eq!(band_block_rows(7680, BAND_PIXELS), 2);
         assert_eq!(band_block_rows(32768, BAND_PIXELS), 1);
         // The memory asked for is the band's and the writer's, not the image's: an 8K image
-        // needs about 24 MB, a 32k × 32k one about 63 MB (it would hold 12 GB as a film).
-        assert!(bytes_needed(7680, 4320) < 25 << 20);
-        assert!(bytes_needed(32768, 32768) < 64 << 20);
+        // needs about 12 MB, a 32k × 32k one about 38 MB (it would hold 12 GB as a film).
+        assert!(bytes_needed(7680, 4320) < 12 << 20);
+        assert!(bytes_needed(32768, 32768) < 38 << 20);
     }
 }
