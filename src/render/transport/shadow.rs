@@ -21,8 +21,20 @@ pub(super) const SHADOW_TOLERANCE: f64 = 1e-3;
 /// all but the last [`SHADOW_TOLERANCE`] before the light.
 pub(super) fn blocking_part(ray: &Ray) -> Ray {
     let mut part = *ray;
-    part.tmax -= SHADOW_TOLERANCE / ray.direction.length();
+    part.tmax -= SHADOW_TOLERANCE * inverse_length(ray.direction);
     part
+}
+
+/// 1 / |d|. Shadow rays' directions are unit vectors but for rounding: for those, one
+/// Newton step from 1 (1.5 − |d|²/2, off by under 4·10⁻¹⁹ of the value within 10⁻⁹ of
+/// unit length) instead of a square root and a division on each ray's way.
+fn inverse_length(d: glam::DVec3) -> f64 {
+    let squared = d.length_squared();
+    if (squared - 1.0).abs() < 1e-9 {
+        1.5 - 0.5 * squared
+    } else {
+        1.0 / squared.sqrt()
+    }
 }
 
 /// What reaches the end of a shadow ray: 1 when nothing blocks it, 0 behind an opaque
@@ -153,4 +165,28 @@ fn walk(scene: &Scene, ray: &Ray, crossings: &[ShadowCrossing], media: &mut Vec<
         last_t = c.t;
     }
     through
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// The inverse length of a normalised direction (the shadow rays') is the division's to
+    /// within a few units of rounding (parts in 10¹⁶), and that of any other vector is the
+    /// division's.
+    #[test]
+    fn inverse_lengths_of_unit_and_other_directions() {
+        let mut random = crate::testing::Xorshift(0x5eed_1e57);
+        for _ in 0..100_000 {
+            let v = DVec3::new(random.unit(), random.unit(), random.unit()) * 2.0 - 1.0;
+            if v.length() < 1e-3 {
+                continue;
+            }
+            let unit = v / v.length();
+            let exact = 1.0 / unit.length();
+            assert!((inverse_length(unit) - exact).abs() <= 4.0 * f64::EPSILON * exact);
+            assert_eq!(inverse_length(v * 3.0), 1.0 / (v * 3.0).length());
+        }
+    }
 }
