@@ -170,10 +170,11 @@ macro_rules! shapes {
             /// Every crossing of the ray (counted).
             #[inline]
             pub fn intersect(&self, ray: &Ray) -> Crossings {
-                let crossings = match self {
-                    $(Shape::$variant(s) => s.intersect(ray),)*
+                // (The kind from the arm itself: a constant, not a second match.)
+                let (crossings, kind) = match self {
+                    $(Shape::$variant(s) => (s.intersect(ray), Kind::$variant as usize),)*
                 };
-                counters::record(self.kind(), !crossings.is_empty());
+                counters::record(kind, !crossings.is_empty());
                 crossings
             }
 
@@ -222,10 +223,10 @@ macro_rules! shapes {
 
             /// Whether anything of the shape lies on the ray (counted).
             pub fn occludes(&self, ray: &Ray) -> bool {
-                let blocked = match self {
-                    $(Shape::$variant(s) => s.occludes(ray),)*
+                let (blocked, kind) = match self {
+                    $(Shape::$variant(s) => (s.occludes(ray), Kind::$variant as usize),)*
                 };
-                counters::record(self.kind(), blocked);
+                counters::record(kind, blocked);
                 blocked
             }
         }
