@@ -168,7 +168,7 @@ pub(super) struct BlockResult {
     pub(super) counts: RayCounts,
     pub(super) tests: counters::Tests,
     pub(super) samples: u64,
-    /// Pixels whose colour came out not finite (written black).
+    /// Pixels whose colour came out not finite (written black by [`BlockResult::put`]).
     pub(super) non_finite: u64,
     /// Radiosity samples taken (by depth), their rays, and queries answered from the cache.
     pub(super) radiosity: (super::SamplesByDepth, u64, u64),
@@ -180,9 +180,9 @@ impl BlockResult {
     }
 
     /// Writes the block's output values into its place in the band: each pixel's red, green
-    /// and blue as written (black where the render went wrong, which is counted), then its
-    /// alpha if `alpha`, then its AOV values. Returns the count of pixels that went wrong.
-    pub(super) fn put(&self, tile: &mut Tile, gamma: Gamma, alpha: bool) -> u64 {
+    /// and blue as written (black where the render went wrong, counted in `non_finite`),
+    /// then its alpha if `alpha`, then its AOV values.
+    pub(super) fn put(&mut self, tile: &mut Tile, gamma: Gamma, alpha: bool) {
         let extra = if self.pixels.is_empty() {
             0
         } else {
@@ -211,7 +211,7 @@ impl BlockResult {
                 }
             }
         }
-        wrong
+        self.non_finite += wrong;
     }
 }
 

@@ -398,7 +398,6 @@ impl<'a> Bands<'a> {
         let mut values = if reuse.capacity() >= len {
             let mut v = reuse;
             v.resize(len, 0.0);
-            v.truncate(len);
             v
         } else {
             vec![0.0_f32; len]
@@ -438,7 +437,7 @@ impl<'a> Bands<'a> {
                 bx * BLOCK_SIZE,
                 by * BLOCK_SIZE,
             );
-            block.non_finite = block.put(&mut tile, gamma, options.alpha);
+            block.put(&mut tile, gamma, options.alpha);
             if let Some(p) = progress {
                 use std::sync::atomic::Ordering::Relaxed;
                 let inside =
