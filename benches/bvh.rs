@@ -1,12 +1,12 @@
 //! Mesh BVH benchmarks: build time, and rays per second for coherent camera rays, incoherent
 //! random rays, and shadow (any-hit) rays, on height-field meshes of 10k to 1M triangles
-//! (10M with `TRACE_BENCH_10M=1`; it needs about 3 GB).
+//! (10M with `TRACE_BENCH_10M=1`; it needs about 3 GB; `TRACE_BENCH_SIZES=10000` runs one).
 //!
 //! Run: `cargo bench --bench bvh`. Divan prints the time per iteration and, for the ray
 //! benchmarks, the throughput (rays per second, "item/s").
 
 use divan::{Bencher, black_box, counter::ItemsCount};
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 use std::sync::OnceLock;
 use trace::geometry::Ray;
 use trace::geometry::mesh::TriangleMesh;
@@ -18,8 +18,16 @@ fn main() {
 const SIZES: &[usize] = &[10_000, 100_000, 1_000_000];
 const RAYS: usize = 20_000;
 
-/// Triangle counts to run: the standard sizes, plus 10M on request.
+/// Triangle counts to run: the standard sizes, plus 10M on request, or those listed in
+/// `TRACE_BENCH_SIZES` (e.g. `10000,1000000`; for profiling one size).
 fn sizes() -> Vec<usize> {
+    if let Some(list) = std::env::var_os("TRACE_BENCH_SIZES") {
+        return list
+            .to_string_lossy()
+            .split(',')
+            .filter_map(|n| n.trim().parse().ok())
+            .collect();
+    }
     let mut s = SIZES.to_vec();
     if std::env::var_os("TRACE_BENCH_10M").is_some() {
         s.push(10_000_000);
@@ -28,7 +36,7 @@ fn sizes() -> Vec<usize> {
 }
 
 /// A height field of about `triangles` triangles over [-10, 10]².
-fn terrain(triangles: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+fn terrain(triangles: usize) -> (Vec<Vec3>, Vec<[u32; 3]>) {
     let side = ((triangles as f64 / 2.0).sqrt().round() as usize + 1).max(2);
     let mut vertices = Vec::with_capacity(side * side);
     for j in 0..side {
@@ -36,7 +44,7 @@ fn terrain(triangles: usize) -> (Vec<DVec3>, Vec<[u32; 3]>) {
             let x = 20.0 * (i as f64 / (side - 1) as f64 - 0.5);
             let z = 20.0 * (j as f64 / (side - 1) as f64 - 0.5);
             let y = 0.8 * (0.9 * x).sin() * (0.7 * z).cos() + 0.3 * (2.3 * x + 1.7 * z).sin();
-            vertices.push(DVec3::new(x, y, z));
+            vertices.push(DVec3::new(x, y, z).as_vec3());
         }
     }
     let mut faces = Vec::with_capacity(2 * (side - 1) * (side - 1));

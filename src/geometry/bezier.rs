@@ -165,10 +165,11 @@ pub fn patch_mesh(
     }
     let n = pieces.vertices.len() as u32 / 3;
     let triangles: Vec<[u32; 3]> = (0..n).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
+    // (In single precision, as a mesh's: the patch moves by under 1e-7 of its size.)
     TriangleMesh::new(
-        pieces.vertices,
+        pieces.vertices.iter().map(|v| v.as_vec3()).collect(),
         triangles.clone(),
-        pieces.normals,
+        pieces.normals.iter().map(|n| n.as_vec3()).collect(),
         triangles.clone(),
         pieces.uvs,
         triangles,

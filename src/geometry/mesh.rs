@@ -3,8 +3,9 @@
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
+use super::wide::{Corners, triangle};
 use super::{Crossings, Ray, counters};
-use glam::{DVec3, Vec3A};
+use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::ray::Ray as BvhRay;
@@ -15,10 +16,11 @@ const FLAT: [u32; 3] = [u32::MAX; 3];
 
 /// A mesh ready for intersection.
 pub struct TriangleMesh {
-    vertices: Vec<DVec3>,
+    /// Single precision, as POV-Ray keeps a mesh's vertices and normals.
+    vertices: Vec<Vec3>,
     /// Triangles in BVH primitive order.
     triangles: Vec<[u32; 3]>,
-    normals: Vec<DVec3>,
+    normals: Vec<Vec3>,
     /// Per triangle (BVH order), indices into `normals`, or [`FLAT`]; empty if all flat.
     normal_indices: Vec<[u32; 3]>,
     /// The 4-wide tree over the triangles.
@@ -90,13 +92,13 @@ fn prune_value(t: f64) -> f32 {
     }
 }
 
-/// The triangles of a block's lanes mask: `first + i` for each set bit `i`.
-fn lanes_of(first: u32, mut lanes: u32) -> impl Iterator<Item = usize> {
+/// The lanes of a block's lanes mask: `i` for each set bit `i`.
+fn lanes_of(mut lanes: u32) -> impl Iterator<Item = usize> {
     std::iter::from_fn(move || {
         (lanes != 0).then(|| {
             let i = lanes.trailing_zeros();
             lanes &= lanes - 1;
-            (first + i) as usize
+            i as usize
         })
     })
 }
@@ -121,9 +123,9 @@ fn morton(p: DVec3) -> u32 {
 impl TriangleMesh {
     /// Builds the BVH over the triangles. `normal_indices` is empty or parallel to `triangles`.
     pub fn new(
-        vertices: Vec<DVec3>,
+        vertices: Vec<Vec3>,
         triangles: Vec<[u32; 3]>,
-        normals: Vec<DVec3>,
+        normals: Vec<Vec3>,
         normal_indices: Vec<[u32; 3]>,
         uvs: Vec<glam::DVec2>,
         uv_indices: Vec<[u32; 3]>,
@@ -142,9 +144,9 @@ impl TriangleMesh {
     /// [`TriangleMesh::new`] with, per triangle, the material entries its corners take
     /// (empty, or parallel to `triangles`).
     pub fn with_corner_entries(
-        vertices: Vec<DVec3>,
+        vertices: Vec<Vec3>,
         triangles: Vec<[u32; 3]>,
-        normals: Vec<DVec3>,
+        normals: Vec<Vec3>,
         normal_indices: Vec<[u32; 3]>,
         uvs: Vec<glam::DVec2>,
         uv_indices: Vec<[u32; 3]>,
@@ -152,10 +154,10 @@ impl TriangleMesh {
     ) -> TriangleMesh {
         let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
         for v in &vertices {
-            lo = lo.min(*v);
-            hi = hi.max(*v);
+            lo = lo.min(v.as_dvec3());
+            hi = hi.max(v.as_dvec3());
         }
-        let corners = |t: &[u32; 3]| t.map(|i| vertices[i as usize]);
+        let corners = |t: &[u32; 3]| t.map(|i| vertices[i as usize].as_dvec3());
         // Triangles in Morton order of their centroids, cut into groups of GROUP.
         let scale = (hi - lo).max(DVec3::splat(f64::MIN_POSITIVE)).recip();
         let mut order: Vec<(u32, u32)> = triangles
@@ -252,13 +254,19 @@ impl TriangleMesh {
     }
 
     fn corners_of(&self, triangle: usize) -> [DVec3; 3] {
-        self.triangles[triangle].map(|i| self.vertices[i as usize])
+        self.triangles[triangle].map(|i| self.vertices[i as usize].as_dvec3())
     }
 
-    /// The exact (double-precision, watertight) test of one triangle the tree's filter kept,
-    /// counted for `--stats`.
-    fn exact(&self, sheared: &ShearedRay, triangle: usize, tmin: f64, tmax: f64) -> Option<f64> {
-        let [a, b, c] = self.corners_of(triangle);
+    /// The exact (double-precision, watertight) test of lane `lane` of a block the tree's
+    /// filter kept, counted for `--stats`.
+    fn exact(
+        sheared: &ShearedRay,
+        corners: &Corners,
+        lane: usize,
+        tmin: f64,
+        tmax: f64,
+    ) -> Option<f64> {
+        let [a, b, c] = triangle(corners, lane);
         let crossing = sheared.intersect(a, b, c, tmin, tmax);
         counters::record(super::shape::TRIANGLE, crossing.is_some());
         crossing
@@ -269,14 +277,17 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut best: Option<(f64, u32)> = None;
         let mut tmax = ray.tmax;
-        self.tree
-            .walk::<true>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
+        self.tree.walk::<true>(
+            ray,
+            &sheared,
+            prune_value(ray.tmax),
+            |first, lanes, corners| {
                 let mut hit = false;
-                for i in lanes_of(first, lanes) {
-                    let crossing = self.exact(&sheared, i, ray.tmin, tmax);
+                for i in lanes_of(lanes) {
+                    let crossing = Self::exact(&sheared, corners, i, ray.tmin, tmax);
                     if let Some(t) = crossing {
                         tmax = t;
-                        best = Some((t, i as u32));
+                        best = Some((t, first + i as u32));
                         hit = true;
                     }
                 }
@@ -285,7 +296,8 @@ impl TriangleMesh {
                 } else {
                     f32::INFINITY
                 }
-            });
+            },
+        );
         let mut out = Crossings::NONE;
         if let Some((t, i)) = best {
             out.push(t, i);
@@ -296,16 +308,20 @@ impl TriangleMesh {
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).
     pub fn for_each_crossing(&self, ray: &Ray, mut f: impl FnMut(f64, u32)) {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
-        self.tree
-            .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
-                for i in lanes_of(first, lanes) {
-                    let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
+        self.tree.walk::<false>(
+            ray,
+            &sheared,
+            prune_value(ray.tmax),
+            |first, lanes, corners| {
+                for i in lanes_of(lanes) {
+                    let crossing = Self::exact(&sheared, corners, i, ray.tmin, ray.tmax);
                     if let Some(t) = crossing {
-                        f(t, i as u32);
+                        f(t, first + i as u32);
                     }
                 }
                 f32::INFINITY
-            });
+            },
+        );
     }
 
     /// The number of crossings along the ray.
@@ -320,9 +336,9 @@ impl TriangleMesh {
         let sheared = ShearedRay::new(ray.origin, ray.direction);
         let mut found = false;
         self.tree
-            .walk::<false>(ray, &sheared, prune_value(ray.tmax), |first, lanes| {
-                for i in lanes_of(first, lanes) {
-                    let crossing = self.exact(&sheared, i, ray.tmin, ray.tmax);
+            .walk::<false>(ray, &sheared, prune_value(ray.tmax), |_, lanes, corners| {
+                for i in lanes_of(lanes) {
+                    let crossing = Self::exact(&sheared, corners, i, ray.tmin, ray.tmax);
                     if crossing.is_some() {
                         found = true;
                         return -1.0;
@@ -350,7 +366,7 @@ impl TriangleMesh {
             Some(ni) if *ni != FLAT => {
                 let [a, b, c] = self.corners_of(triangle as usize);
                 let w = barycentric(p, a, b, c);
-                let n = ni.map(|i| self.normals[i as usize]);
+                let n = ni.map(|i| self.normals[i as usize].as_dvec3());
                 let smooth = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
                 // Normals on both sides of the face (POV-Ray keeps such triangles) can cancel.
                 if smooth.length_squared() > 1e-20 {
@@ -471,6 +487,7 @@ mod tests {
             t.push([q[0], q[1], q[2]]);
             t.push([q[0], q[2], q[3]]);
         }
+        let v = v.iter().map(|p| p.as_vec3()).collect();
         TriangleMesh::new(v, t, Vec::new(), Vec::new(), Vec::new(), Vec::new())
     }
 

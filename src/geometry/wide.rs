@@ -3,7 +3,9 @@
 //! obvhs builds a binary tree (`Bvh2`) over groups of up to four triangles; here it is
 //! collapsed into a tree of four children a node, whose nodes hold the four children's boxes
 //! side by side (one SIMD slab test for four boxes) and whose leaves hold their triangles'
-//! corners side by side in f32 (one SIMD test for four triangles). Both tests are conservative:
+//! corners side by side (one SIMD test for four triangles). A mesh's vertices are single
+//! precision, as POV-Ray stores them, so a leaf holds its corners exactly and the exact test
+//! reads them there, not through the mesh's vertex indices. Both SIMD tests are conservative:
 //! the box test pads for every rounding of the ray's f32 copy, and the triangle test is a
 //! filter that passes every triangle the exact test might hit, by a bound on its own rounding
 //! errors. The mesh's double-precision watertight test decides each triangle that passes, so
@@ -11,7 +13,7 @@
 
 use super::Ray;
 use super::triangle::ShearedRay;
-use glam::{DVec3, Vec4};
+use glam::{DVec3, Vec3, Vec4};
 use obvhs::bvh2::Bvh2;
 use rayon::prelude::*;
 
@@ -32,11 +34,20 @@ struct Node {
     child: [u32; 4],
 }
 
-/// Up to four consecutive triangles' corners (relative to the mesh's centre), lane by lane;
-/// the lanes past `count` hold NaN, which no test passes.
+/// Up to four consecutive triangles' corners, lane by lane: corner `k`'s coordinate `axis`
+/// of lane `i` is `corner[k][axis][i]`, the mesh's vertex exactly.
+pub type Corners = [[Vec4; 3]; 3];
+
+/// A lane's triangle, in double precision (exactly its corners).
+#[inline(always)]
+pub fn triangle(corners: &Corners, lane: usize) -> [DVec3; 3] {
+    corners.map(|c| DVec3::new(c[0][lane] as f64, c[1][lane] as f64, c[2][lane] as f64))
+}
+
+/// Up to four consecutive triangles; the lanes past `count` hold NaN, which no test passes.
 #[derive(Clone, Copy, Debug)]
 struct Block {
-    corner: [[Vec4; 3]; 3],
+    corner: Corners,
     /// The first triangle (in the mesh's order); lane `i` is triangle `first + i`.
     first: u32,
     /// The triangles in the block (1 to 4), plus `MORE` when the next block belongs to the
@@ -65,9 +76,9 @@ pub struct WideBvh {
     blocks: Vec<Block>,
     /// The root entry (as a node's child), `EMPTY` for a mesh with no triangles.
     root: u32,
-    /// Coordinates are stored relative to this point.
+    /// Nodes' boxes are stored relative to this point.
     centre: DVec3,
-    /// The largest magnitude of a stored corner coordinate.
+    /// The largest magnitude of a corner coordinate.
     extent: f32,
 }
 
@@ -103,7 +114,7 @@ impl WideBvh {
     pub fn new(
         bvh: Bvh2,
         group_start: &[u32],
-        corners: impl Fn(usize) -> [DVec3; 3] + Sync + Send,
+        corners: impl Fn(usize) -> [Vec3; 3] + Sync + Send,
         (lo, hi): (DVec3, DVec3),
     ) -> WideBvh {
         let centre = if lo.cmple(hi).all() {
@@ -111,14 +122,8 @@ impl WideBvh {
         } else {
             DVec3::ZERO
         };
-        // Every stored coordinate is within half the box's largest side of the centre, give
-        // or take its rounding to f32.
-        let half = ((hi - lo) * 0.5).max_element();
-        let extent = if half.is_finite() {
-            up(half) * (1.0 + 4.0 * UNIT)
-        } else {
-            0.0
-        };
+        let extent = lo.abs().max(hi.abs()).max_element();
+        let extent = if extent.is_finite() { up(extent) } else { 0.0 };
         let mut tree = WideBvh {
             nodes: Vec::with_capacity(bvh.nodes.len() / 3 + 1),
             blocks: Vec::new(),
@@ -211,7 +216,7 @@ impl WideBvh {
             for lane in 0..(block.count & 7) as usize {
                 for (k, p) in corners(block.first as usize + lane).into_iter().enumerate() {
                     for axis in 0..3 {
-                        block.corner[k][axis][lane] = (p[axis] - centre[axis]) as f32;
+                        block.corner[k][axis][lane] = p[axis];
                     }
                 }
             }
@@ -245,15 +250,15 @@ impl WideBvh {
     }
 
     /// Visits, nearest box first when `ORDERED`, the leaves whose boxes the ray enters before
-    /// `limit`; `visit(first, lanes)` is called for each block with a mask of the triangles
-    /// that may cross the ray (lane `i` is triangle `first + i`) and returns a new limit (it
-    /// only ever lowers it; a negative limit ends the walk).
+    /// `limit`; `visit(first, lanes, corners)` is called for each block with a mask of the
+    /// triangles that may cross the ray (lane `i` is triangle `first + i`) and their corners,
+    /// and returns a new limit (it only ever lowers it; a negative limit ends the walk).
     pub fn walk<const ORDERED: bool>(
         &self,
         ray: &Ray,
         sheared: &ShearedRay,
         mut limit: f32,
-        mut visit: impl FnMut(u32, u32) -> f32,
+        mut visit: impl FnMut(u32, u32, &Corners) -> f32,
     ) {
         if self.root == EMPTY {
             return;
@@ -262,7 +267,7 @@ impl WideBvh {
         // a leaf (it holds them all), so an ordered walk takes this only then.
         if self.blocks.len() <= SMALL && (!ORDERED || self.root & LEAF != 0) {
             for block in &self.blocks {
-                limit = limit.min(visit(block.first, block.all_lanes()));
+                limit = limit.min(visit(block.first, block.all_lanes(), &block.corner));
                 if limit < 0.0 {
                     return;
                 }
@@ -330,7 +335,7 @@ impl WideBvh {
                 let block = &self.blocks[b];
                 let lanes = r.triangles(block);
                 if lanes != 0 {
-                    limit = limit.min(visit(block.first, lanes));
+                    limit = limit.min(visit(block.first, lanes, &block.corner));
                     if limit < 0.0 {
                         return;
                     }
@@ -344,14 +349,15 @@ impl WideBvh {
     }
 }
 
-/// A ray's f32 copies for the two tests, in the tree's frame.
+/// A ray's f32 copies for the two tests.
 struct FilterRay {
-    /// The origin rounded down and up, axis by axis (the box test brackets the exact one).
+    /// The origin relative to the boxes' centre, rounded down and up, axis by axis (the box
+    /// test brackets the exact one).
     below: [Vec4; 3],
     above: [Vec4; 3],
     /// The reciprocal of the direction's f32 copy (infinite along an axis it does not move in).
     inverse: [Vec4; 3],
-    /// The origin rounded to nearest.
+    /// The origin rounded to nearest (not relative to the centre: the corners are not).
     origin: [Vec4; 3],
     /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
     kx: usize,
@@ -368,13 +374,14 @@ impl FilterRay {
     fn new(ray: &Ray, sheared: &ShearedRay, centre: DVec3, extent: f32) -> FilterRay {
         let o = ray.origin - centre;
         let d = ray.direction;
+        let origin = ray.origin;
         // The same axes and factors as the exact test's.
         let ((kx, ky, kz), (sx, sy)) = (sheared.axes(), sheared.factors());
-        // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the corner's
-        // and origin's roundings (one unit of each magnitude), the subtraction, the factor's
+        // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the origin's
+        // rounding (the corners are exact), the subtraction, the factor's
         // rounding, the product and the difference: under 9 units of the largest magnitude;
         // 16 leaves room for the exact test's own (double-precision) roundings.
-        let magnitude = extent + o.abs().max_element() as f32;
+        let magnitude = extent + up(origin.abs().max_element());
         let error = if magnitude < 1e15 {
             16.0 * UNIT * magnitude
         } else {
@@ -387,7 +394,7 @@ impl FilterRay {
             below: [bx.0, by.0, bz.0].map(Vec4::splat),
             above: [bx.1, by.1, bz.1].map(Vec4::splat),
             inverse: [dx.recip(), dy.recip(), dz.recip()].map(Vec4::splat),
-            origin: [ox as f32, oy as f32, oz as f32].map(Vec4::splat),
+            origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
             kx,
             ky,
             kz,
@@ -653,12 +660,16 @@ mod tests {
                 }
                 faces.push([k, k + 1, k + 2]);
             }
+            // (A mesh's vertices are single precision.)
+            for v in &mut vertices {
+                *v = v.as_vec3().as_dvec3();
+            }
             let soup: Vec<[DVec3; 3]> = faces
                 .iter()
                 .map(|f| f.map(|i| vertices[i as usize]))
                 .collect();
             let mesh = TriangleMesh::new(
-                vertices.clone(),
+                vertices.iter().map(|v| v.as_vec3()).collect(),
                 faces.clone(),
                 vec![],
                 vec![],
@@ -689,12 +700,15 @@ mod tests {
                     }
                     faces.push([3 * k, 3 * k + 1, 3 * k + 2]);
                 }
+                for v in &mut vertices {
+                    *v = v.as_vec3().as_dvec3();
+                }
                 let soup: Vec<[DVec3; 3]> = faces
                     .iter()
                     .map(|f| f.map(|i| vertices[i as usize]))
                     .collect();
-                let mesh =
-                    TriangleMesh::new(vertices.clone(), faces, vec![], vec![], vec![], vec![]);
+                let single = vertices.iter().map(|v| v.as_vec3()).collect();
+                let mesh = TriangleMesh::new(single, faces, vec![], vec![], vec![], vec![]);
                 for k in 0..200 {
                     let ray = test_ray(&mut rng, k, (DVec3::ZERO, 4.0), &vertices, &soup);
                     agree_with_every_triangle(

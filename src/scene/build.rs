@@ -893,9 +893,9 @@ fn build_mesh(mesh: &ir::Mesh) -> TriangleMesh {
     // texture, 1 + i the mesh's texture i.
     let entry = |t: u32| if t == ir::OWN_TEXTURE { 0 } else { t + 1 };
     let mut built = TriangleMesh::with_corner_entries(
-        mesh.vertices.iter().map(|v| v.as_dvec3()).collect(),
+        mesh.vertices.clone(),
         mesh.triangles.clone(),
-        mesh.normals.iter().map(|n| n.as_dvec3()).collect(),
+        mesh.normals.clone(),
         mesh.normal_indices.clone(),
         mesh.uvs.clone(),
         mesh.uv_indices.clone(),
