@@ -125,7 +125,7 @@ impl WideBvh {
         let extent = lo.abs().max(hi.abs()).max_element();
         let extent = if extent.is_finite() { up(extent) } else { 0.0 };
         let mut tree = WideBvh {
-            nodes: Vec::with_capacity(bvh.nodes.len() / 3 + 1),
+            nodes: crate::memory::with_huge_pages(bvh.nodes.len() / 3 + 1),
             blocks: Vec::new(),
             root: EMPTY,
             centre,
@@ -201,7 +201,7 @@ impl WideBvh {
         drop(bvh);
         // The blocks' triangles (sequentially: cheap), then their corners (in parallel).
         let nan = Vec4::splat(f32::NAN);
-        tree.blocks = Vec::with_capacity(block_count as usize);
+        tree.blocks = crate::memory::with_huge_pages(block_count as usize);
         for range in leaves {
             for start in range.clone().step_by(4) {
                 let count = (range.end - start).min(4);

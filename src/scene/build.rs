@@ -396,8 +396,10 @@ impl Scene {
             let taken = kept.iter().filter(|s| s.is_some()).count();
             (Either::Left(kept.into_par_iter()), taken)
         };
-        let (objects, bounds): (Vec<Object>, Vec<_>) = ir
-            .objects
+        // (The objects a ray tests are read scattered: huge pages, see `with_huge_pages`.)
+        let mut objects: Vec<Object> = crate::memory::with_huge_pages(ir.objects.len());
+        let mut bounds = Vec::with_capacity(ir.objects.len());
+        ir.objects
             .par_iter()
             .zip(ids)
             .zip(interior_ids)
@@ -461,7 +463,7 @@ impl Scene {
                 object.bounded = bounds.is_some();
                 (object, bounds)
             })
-            .unzip();
+            .unzip_into_vecs(&mut objects, &mut bounds);
         let view = View::of(ir);
         let mut scene = Scene {
             camera: view.camera,
