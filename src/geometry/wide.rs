@@ -25,11 +25,11 @@ const LEAF: u32 = 1 << 31;
 /// Half an f32 ulp: the relative error of one rounding.
 const UNIT: f32 = f32::EPSILON / 2.0;
 
-/// An inner node: the boxes of its four children, axis by axis, relative to the mesh's centre.
+/// An inner node: the boxes of its four children, relative to the mesh's centre: their low
+/// sides along x, y and z, then their high sides.
 #[derive(Clone, Copy, Debug)]
 struct Node {
-    lo: [Vec4; 3],
-    hi: [Vec4; 3],
+    planes: [Vec4; 6],
     /// A node's index, `LEAF` | a leaf's first block, or `EMPTY`.
     child: [u32; 4],
 }
@@ -174,15 +174,14 @@ impl WideBvh {
                 let at = tree.nodes.len();
                 let empty = Vec4::splat(f32::NAN);
                 let mut new = Node {
-                    lo: [empty; 3],
-                    hi: [empty; 3],
+                    planes: [empty; 6],
                     child: [EMPTY; 4],
                 };
                 for (i, &k) in kids[..n].iter().enumerate() {
                     let b = &bvh.nodes[k].aabb;
                     for axis in 0..3 {
-                        new.lo[axis][i] = down(b.min[axis] as f64 - centre[axis]);
-                        new.hi[axis][i] = up(b.max[axis] as f64 - centre[axis]);
+                        new.planes[axis][i] = down(b.min[axis] as f64 - centre[axis]);
+                        new.planes[3 + axis][i] = up(b.max[axis] as f64 - centre[axis]);
                     }
                 }
                 tree.nodes.push(new);
@@ -294,17 +293,31 @@ impl WideBvh {
                     m &= m - 1;
                     self.prefetch(node.child[i]);
                 }
-                if !ORDERED || mask.count_ones() == 1 {
-                    let first = mask.trailing_zeros();
-                    mask &= mask - 1;
+                let first = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                if !ORDERED || mask == 0 {
                     while mask != 0 {
                         let i = mask.trailing_zeros() as usize;
                         mask &= mask - 1;
                         stack.push(node.child[i], entry_t[i]);
                     }
-                    entry = node.child[first as usize];
+                    entry = node.child[first];
                     continue;
                 }
+                let second = mask.trailing_zeros() as usize;
+                mask &= mask - 1;
+                if mask == 0 {
+                    // Two children (the usual case): the nearer next, the other later.
+                    let (near, far) = if entry_t[second] < entry_t[first] {
+                        (second, first)
+                    } else {
+                        (first, second)
+                    };
+                    stack.push(node.child[far], entry_t[far]);
+                    entry = node.child[near];
+                    continue;
+                }
+                mask |= (1 << first) | (1 << second);
                 // Sort the children hit by entry distance, farthest first, and go on with
                 // the nearest.
                 let mut hits = [(0.0f32, 0u32); 4];
@@ -351,12 +364,21 @@ impl WideBvh {
 
 /// A ray's f32 copies for the two tests.
 struct FilterRay {
-    /// The origin relative to the boxes' centre, rounded down and up, axis by axis (the box
-    /// test brackets the exact one).
-    below: [Vec4; 3],
-    above: [Vec4; 3],
+    /// Along each axis, the node plane (an index into [`Node::planes`]) the ray enters a box
+    /// by (the low side if it moves up or not at all, the high side if down), and the one it
+    /// leaves by.
+    enter: [usize; 3],
+    leave: [usize; 3],
+    /// The origin relative to the boxes' centre, rounded to make the entry distance smallest
+    /// and the exit distance largest, so that the slabs hold the exact ray's: the origin
+    /// rounded up for a low side, down for a high side.
+    enter_origin: [Vec4; 3],
+    leave_origin: [Vec4; 3],
     /// The reciprocal of the direction's f32 copy (infinite along an axis it does not move in).
     inverse: [Vec4; 3],
+    /// The same times 1 + 32 units: the rounding of the reciprocal and of the products scales
+    /// each axis's distances by a few units, and this margin on the exit covers it.
+    leave_inverse: [Vec4; 3],
     /// The origin rounded to nearest (not relative to the centre: the corners are not).
     origin: [Vec4; 3],
     /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
@@ -388,12 +410,22 @@ impl FilterRay {
             f32::INFINITY
         };
         let (ox, oy, oz) = (o.x, o.y, o.z);
-        let (bx, by, bz) = (bracket(ox), bracket(oy), bracket(oz));
-        let (dx, dy, dz) = (d.x as f32, d.y as f32, d.z as f32);
+        let bracket = [bracket(ox), bracket(oy), bracket(oz)];
+        let direction = [d.x as f32, d.y as f32, d.z as f32];
+        // (A zero component's sign picks the side as its infinite reciprocal's does.)
+        let down = direction.map(f32::is_sign_negative);
+        let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
+        let origin_for = |axis: usize, high: bool| {
+            let (below, above) = bracket[axis];
+            Vec4::splat(if high { below } else { above })
+        };
         FilterRay {
-            below: [bx.0, by.0, bz.0].map(Vec4::splat),
-            above: [bx.1, by.1, bz.1].map(Vec4::splat),
-            inverse: [dx.recip(), dy.recip(), dz.recip()].map(Vec4::splat),
+            enter: [0, 1, 2].map(|a| side(a, down[a])),
+            leave: [0, 1, 2].map(|a| side(a, !down[a])),
+            enter_origin: [0, 1, 2].map(|a| origin_for(a, down[a])),
+            leave_origin: [0, 1, 2].map(|a| origin_for(a, !down[a])),
+            inverse: direction.map(|c| Vec4::splat(c.recip())),
+            leave_inverse: direction.map(|c| Vec4::splat(c.recip() * (1.0 + 32.0 * UNIT))),
             origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
             kx,
             ky,
@@ -408,19 +440,18 @@ impl FilterRay {
     /// distance in [0, limit].
     #[inline(always)]
     fn boxes(&self, node: &Node, limit: f32) -> ([f32; 4], u32) {
-        let mut near = Vec4::ZERO;
-        let mut far = Vec4::INFINITY;
-        for axis in 0..3 {
-            // The origin that makes each distance smallest (entry) or largest (exit), so that
-            // the slab holds the exact ray's whatever the rounding.
-            let t0 = (node.lo[axis] - self.above[axis]) * self.inverse[axis];
-            let t1 = (node.hi[axis] - self.below[axis]) * self.inverse[axis];
-            near = near.max(t0.min(t1));
-            far = far.min(t0.max(t1));
-        }
-        // The rounding of the inverse direction and of the products scales each axis's
-        // distances by a few units; a relative margin on the exit covers it.
-        let far = far * (1.0 + 32.0 * UNIT);
+        let enter = |axis: usize| {
+            (node.planes[self.enter[axis]] - self.enter_origin[axis]) * self.inverse[axis]
+        };
+        let leave = |axis: usize| {
+            (node.planes[self.leave[axis]] - self.leave_origin[axis]) * self.leave_inverse[axis]
+        };
+        // As two short chains, not one long one: a walk waits on each node's test before it
+        // can read the next node. (max and min return their second operand when either is
+        // NaN: an empty slot's NaN sides, or an origin on a side along an axis the ray does
+        // not move in, reach the comparison below, which NaN fails.)
+        let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
+        let far = leave(0).min(leave(1)).min(leave(2));
         let mask = near.cmple(far) & near.cmple(Vec4::splat(limit));
         (near.to_array(), mask.bitmask())
     }
