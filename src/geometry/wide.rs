@@ -480,15 +480,10 @@ impl FilterRay {
         let w = bx * ay - by * ax;
         // |u − exact u| ≤ 4·E·S + 2·E² + 3·unit·2·S², with E the coordinate error and S the
         // largest sheared coordinate; rounded up generously.
-        let s = ax
-            .abs()
-            .max(ay.abs())
-            .max(bx.abs())
-            .max(by.abs())
-            .max(cx.abs())
-            .max(cy.abs());
-        let e = Vec4::splat(self.error);
-        let bound = e * s * 5.0 + e * e * 3.0 + s * s * (8.0 * UNIT);
+        // (As a tree, not a chain: the walk waits on this test.)
+        let s = (ax.abs().max(ay.abs())).max((bx.abs().max(by.abs())).max(cx.abs().max(cy.abs())));
+        let e = self.error;
+        let bound = s * (s * (8.0 * UNIT) + 5.0 * e) + 3.0 * e * e;
         let (lo, hi) = (-bound, bound);
         let positive = u.cmpge(lo) & v.cmpge(lo) & w.cmpge(lo);
         let negative = u.cmple(hi) & v.cmple(hi) & w.cmple(hi);
