@@ -23,7 +23,7 @@ pub struct TriangleMesh {
     normals: Vec<Vec3>,
     /// Per triangle (BVH order), indices into `normals`, or [`FLAT`]; empty if all flat.
     normal_indices: Vec<[u32; 3]>,
-    /// The 4-wide tree over the triangles.
+    /// The 8-wide tree over the triangles.
     tree: super::wide::WideBvh,
     /// `uv_vectors`: the corners' surface coordinates.
     uvs: Vec<glam::DVec2>,
@@ -251,6 +251,13 @@ impl TriangleMesh {
             world_uv: false,
             bounds: (lo, hi),
         }
+    }
+
+    /// The same mesh, its tree walked without AVX2 (for tests of that path).
+    #[cfg(test)]
+    pub fn without_avx2(mut self) -> TriangleMesh {
+        self.tree = self.tree.without_avx2();
+        self
     }
 
     fn corners_of(&self, triangle: usize) -> [DVec3; 3] {

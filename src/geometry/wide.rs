@@ -1,9 +1,12 @@
-//! The 4-wide tree a triangle mesh is traced through.
+//! The 8-wide tree a triangle mesh is traced through.
 //!
 //! obvhs builds a binary tree (`Bvh2`) over groups of up to four triangles; here it is
-//! collapsed into a tree of four children a node, whose nodes hold the four children's boxes
-//! side by side (one SIMD slab test for four boxes) and whose leaves hold their triangles'
-//! corners side by side (one SIMD test for four triangles). A mesh's vertices are single
+//! collapsed into a tree of eight children a node, whose nodes hold the eight children's
+//! boxes side by side (one AVX2 slab test for eight boxes, or two SSE tests of four on a CPU
+//! without AVX2, chosen when the tree is built) and whose leaves hold their triangles' corners
+//! side by side (one SIMD test for four triangles). Eight children a node make the tree about
+//! two thirds as deep as four do, and a walk waits on each node's test before it can read the
+//! next node, so depth is what a ray pays for. A mesh's vertices are single
 //! precision, as POV-Ray stores them, so a leaf holds its corners exactly and the exact test
 //! reads them there, not through the mesh's vertex indices. Both SIMD tests are conservative:
 //! the box test pads for every rounding of the ray's f32 copy, and the triangle test is a
@@ -25,13 +28,18 @@ const LEAF: u32 = 1 << 31;
 /// Half an f32 ulp: the relative error of one rounding.
 const UNIT: f32 = f32::EPSILON / 2.0;
 
-/// An inner node: the boxes of its four children, relative to the mesh's centre: their low
-/// sides along x, y and z, then their high sides.
+/// Children a node has room for.
+const WIDE: usize = 8;
+
+/// An inner node: the boxes of its eight children, relative to the mesh's centre: their low
+/// sides along x, y and z, then their high sides (`planes[side][child]`), each side's eight
+/// values one AVX register (two SSE registers where AVX2 is missing).
 #[derive(Clone, Copy, Debug)]
+#[repr(C, align(32))]
 struct Node {
-    planes: [Vec4; 6],
+    planes: [[f32; WIDE]; 6],
     /// A node's index, `LEAF` | a leaf's first block, or `EMPTY`.
-    child: [u32; 4],
+    child: [u32; WIDE],
 }
 
 /// Up to four consecutive triangles' corners, lane by lane: corner `k`'s coordinate `axis`
@@ -80,6 +88,20 @@ pub struct WideBvh {
     centre: DVec3,
     /// The largest magnitude of a corner coordinate.
     extent: f32,
+    /// Whether this CPU has AVX2, which tests a node's eight boxes at once.
+    avx2: bool,
+}
+
+/// Whether this CPU has AVX2 (checked once; always false off x86-64).
+fn has_avx2() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::arch::is_x86_feature_detected!("avx2")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
 }
 
 /// The smallest f32 not below `x` and the largest not above it.
@@ -109,7 +131,7 @@ fn bracket(x: f64) -> (f32, f32) {
 
 impl WideBvh {
     /// Collapses `bvh` (dropped as soon as it is read; whose primitive at position `p` is the triangles
-    /// `group_start[p]..group_start[p + 1]`) into a 4-wide tree; `corners(i)` gives triangle
+    /// `group_start[p]..group_start[p + 1]`) into an 8-wide tree; `corners(i)` gives triangle
     /// `i`'s corners and `(lo, hi)` bounds them all.
     pub fn new(
         bvh: Bvh2,
@@ -130,6 +152,7 @@ impl WideBvh {
             root: EMPTY,
             centre,
             extent,
+            avx2: has_avx2(),
         };
         if bvh.nodes.is_empty() || group_start.len() < 2 {
             return tree;
@@ -150,15 +173,12 @@ impl WideBvh {
                 leaves.push(range);
                 entry
             } else {
-                // Open the widest inner child until there are four.
-                let mut kids = [
-                    node.first_index as usize,
-                    node.first_index as usize + 1,
-                    0,
-                    0,
-                ];
+                // Open the widest inner child until there are eight.
+                let mut kids = [0; WIDE];
+                kids[0] = node.first_index as usize;
+                kids[1] = node.first_index as usize + 1;
                 let mut n = 2;
-                while n < 4 {
+                while n < WIDE {
                     let area = |k: usize| bvh.nodes[k].aabb.half_area();
                     let Some(widest) = (0..n)
                         .filter(|&i| !bvh.nodes[kids[i]].is_leaf())
@@ -172,10 +192,9 @@ impl WideBvh {
                     n += 1;
                 }
                 let at = tree.nodes.len();
-                let empty = Vec4::splat(f32::NAN);
                 let mut new = Node {
-                    planes: [empty; 6],
-                    child: [EMPTY; 4],
+                    planes: [[f32::NAN; WIDE]; 6],
+                    child: [EMPTY; WIDE],
                 };
                 for (i, &k) in kids[..n].iter().enumerate() {
                     let b = &bvh.nodes[k].aabb;
@@ -224,6 +243,13 @@ impl WideBvh {
         tree
     }
 
+    /// The same tree, walked without AVX2 (for tests of that path on CPUs that have it).
+    #[cfg(test)]
+    pub fn without_avx2(mut self) -> WideBvh {
+        self.avx2 = false;
+        self
+    }
+
     /// Asks for an entry's memory ahead of its test.
     #[inline(always)]
     fn prefetch(&self, entry: u32) {
@@ -237,7 +263,7 @@ impl WideBvh {
                 }
             } else {
                 match self.nodes.get(entry as usize) {
-                    Some(n) => (n as *const Node as *const i8, 2),
+                    Some(n) => (n as *const Node as *const i8, 4),
                     None => return,
                 }
             };
@@ -253,6 +279,37 @@ impl WideBvh {
     /// triangles that may cross the ray (lane `i` is triangle `first + i`) and their corners,
     /// and returns a new limit (it only ever lowers it; a negative limit ends the walk).
     pub fn walk<const ORDERED: bool>(
+        &self,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        limit: f32,
+        visit: impl FnMut(u32, u32, &Corners) -> f32,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the CPU has AVX2.
+            return unsafe { self.walk_avx2::<ORDERED>(ray, sheared, limit, visit) };
+        }
+        self.walk_with::<ORDERED, false>(ray, sheared, limit, visit)
+    }
+
+    /// [`WideBvh::walk`] compiled for AVX2 (the box tests, and all that is inlined here).
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn walk_avx2<const ORDERED: bool>(
+        &self,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        limit: f32,
+        visit: impl FnMut(u32, u32, &Corners) -> f32,
+    ) {
+        self.walk_with::<ORDERED, true>(ray, sheared, limit, visit)
+    }
+
+    /// The walk, testing a node's boxes with AVX2 when `AVX2` (only ever inlined into
+    /// [`WideBvh::walk_avx2`]).
+    #[inline(always)]
+    fn walk_with<const ORDERED: bool, const AVX2: bool>(
         &self,
         ray: &Ray,
         sheared: &ShearedRay,
@@ -283,7 +340,7 @@ impl WideBvh {
             // Descend through inner nodes, nearest child first.
             while entry & LEAF == 0 {
                 let node = &self.nodes[entry as usize];
-                let (entry_t, mut mask) = r.boxes(node, limit);
+                let (entry_t, mut mask) = r.boxes::<AVX2>(node, limit);
                 if mask == 0 {
                     break;
                 }
@@ -320,7 +377,7 @@ impl WideBvh {
                 mask |= (1 << first) | (1 << second);
                 // Sort the children hit by entry distance, farthest first, and go on with
                 // the nearest.
-                let mut hits = [(0.0f32, 0u32); 4];
+                let mut hits = [(0.0f32, 0u32); WIDE];
                 let mut n = 0;
                 while mask != 0 {
                     let i = mask.trailing_zeros() as usize;
@@ -372,13 +429,13 @@ struct FilterRay {
     /// The origin relative to the boxes' centre, rounded to make the entry distance smallest
     /// and the exit distance largest, so that the slabs hold the exact ray's: the origin
     /// rounded up for a low side, down for a high side.
-    enter_origin: [Vec4; 3],
-    leave_origin: [Vec4; 3],
+    enter_origin: [f32; 3],
+    leave_origin: [f32; 3],
     /// The reciprocal of the direction's f32 copy (infinite along an axis it does not move in).
-    inverse: [Vec4; 3],
+    inverse: [f32; 3],
     /// The same times 1 + 32 units: the rounding of the reciprocal and of the products scales
     /// each axis's distances by a few units, and this margin on the exit covers it.
-    leave_inverse: [Vec4; 3],
+    leave_inverse: [f32; 3],
     /// The origin rounded to nearest (not relative to the centre: the corners are not).
     origin: [Vec4; 3],
     /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
@@ -417,15 +474,15 @@ impl FilterRay {
         let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
         let origin_for = |axis: usize, high: bool| {
             let (below, above) = bracket[axis];
-            Vec4::splat(if high { below } else { above })
+            if high { below } else { above }
         };
         FilterRay {
             enter: [0, 1, 2].map(|a| side(a, down[a])),
             leave: [0, 1, 2].map(|a| side(a, !down[a])),
             enter_origin: [0, 1, 2].map(|a| origin_for(a, down[a])),
             leave_origin: [0, 1, 2].map(|a| origin_for(a, !down[a])),
-            inverse: direction.map(|c| Vec4::splat(c.recip())),
-            leave_inverse: direction.map(|c| Vec4::splat(c.recip() * (1.0 + 32.0 * UNIT))),
+            inverse: direction.map(f32::recip),
+            leave_inverse: direction.map(|c| c.recip() * (1.0 + 32.0 * UNIT)),
             origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
             kx,
             ky,
@@ -436,24 +493,81 @@ impl FilterRay {
         }
     }
 
-    /// The entry distances into a node's four boxes and the mask of those the ray enters at a
-    /// distance in [0, limit].
+    /// The entry distances into a node's eight boxes and the mask of those the ray enters at a
+    /// distance in [0, limit]: with AVX2 when `AVX2` (the caller's CPU has it), as two halves
+    /// of four otherwise.
     #[inline(always)]
-    fn boxes(&self, node: &Node, limit: f32) -> ([f32; 4], u32) {
-        let enter = |axis: usize| {
-            (node.planes[self.enter[axis]] - self.enter_origin[axis]) * self.inverse[axis]
+    fn boxes<const AVX2: bool>(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 {
+            // SAFETY: `AVX2` is true only in the walk compiled for AVX2, which runs only
+            // where the CPU has it.
+            return unsafe { self.boxes_avx2(node, limit) };
+        }
+        let half = |h: usize| {
+            let plane = |side: usize| Vec4::from_slice(&node.planes[side][4 * h..]);
+            let enter = |axis: usize| {
+                (plane(self.enter[axis]) - Vec4::splat(self.enter_origin[axis]))
+                    * Vec4::splat(self.inverse[axis])
+            };
+            let leave = |axis: usize| {
+                (plane(self.leave[axis]) - Vec4::splat(self.leave_origin[axis]))
+                    * Vec4::splat(self.leave_inverse[axis])
+            };
+            // As in `boxes_avx2`.
+            let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
+            let far = leave(0).min(leave(1)).min(leave(2));
+            let mask = near.cmple(far) & near.cmple(Vec4::splat(limit));
+            (near, mask.bitmask())
         };
-        let leave = |axis: usize| {
-            (node.planes[self.leave[axis]] - self.leave_origin[axis]) * self.leave_inverse[axis]
+        let ((near0, mask0), (near1, mask1)) = (half(0), half(1));
+        let mut near = [0.0; WIDE];
+        near[..4].copy_from_slice(&near0.to_array());
+        near[4..].copy_from_slice(&near1.to_array());
+        (near, mask0 | mask1 << 4)
+    }
+
+    /// [`FilterRay::boxes`] with AVX: one register a side.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline]
+    fn boxes_avx2(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
+        use std::arch::x86_64::*;
+        // SAFETY: each side is eight f32s, 32-byte aligned (`Node`'s alignment, and a side's
+        // size).
+        let plane = |side: usize| unsafe { _mm256_load_ps(node.planes[side].as_ptr()) };
+        let distance = |plane: __m256, origin: f32, inverse: f32| {
+            _mm256_mul_ps(
+                _mm256_sub_ps(plane, _mm256_set1_ps(origin)),
+                _mm256_set1_ps(inverse),
+            )
+        };
+        let enter =
+            |a: usize| distance(plane(self.enter[a]), self.enter_origin[a], self.inverse[a]);
+        let leave = |a: usize| {
+            distance(
+                plane(self.leave[a]),
+                self.leave_origin[a],
+                self.leave_inverse[a],
+            )
         };
         // As two short chains, not one long one: a walk waits on each node's test before it
         // can read the next node. (max and min return their second operand when either is
         // NaN: an empty slot's NaN sides, or an origin on a side along an axis the ray does
         // not move in, reach the comparison below, which NaN fails.)
-        let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
-        let far = leave(0).min(leave(1)).min(leave(2));
-        let mask = near.cmple(far) & near.cmple(Vec4::splat(limit));
-        (near.to_array(), mask.bitmask())
+        let near = _mm256_max_ps(
+            _mm256_max_ps(enter(0), enter(1)),
+            _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
+        );
+        let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
+        let inside = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
+            _mm256_cmp_ps::<_CMP_LE_OQ>(near, _mm256_set1_ps(limit)),
+        );
+        let mut distances = [0.0; WIDE];
+        // SAFETY: `distances` holds eight f32s.
+        unsafe { _mm256_storeu_ps(distances.as_mut_ptr(), near) };
+        (distances, _mm256_movemask_ps(inside) as u32)
     }
 
     /// The lanes of a block whose triangle the exact test might find on the ray's line: the
@@ -633,6 +747,23 @@ mod tests {
         assert_eq!(mesh.count_crossings(ray), count, "{what}");
     }
 
+    /// A mesh of `vertices` and `faces`, and the same mesh walked without AVX2 (the same
+    /// tree: on a CPU without AVX2 the two are the same walk).
+    fn both_walks(vertices: &[DVec3], faces: &[[u32; 3]]) -> [TriangleMesh; 2] {
+        let single: Vec<_> = vertices.iter().map(|v| v.as_vec3()).collect();
+        let mesh = || {
+            TriangleMesh::new(
+                single.clone(),
+                faces.to_vec(),
+                vec![],
+                vec![],
+                vec![],
+                vec![],
+            )
+        };
+        [mesh(), mesh().without_avx2()]
+    }
+
     #[test]
     fn stack_spills_and_pops_in_order() {
         let mut stack = Stack::new();
@@ -694,17 +825,12 @@ mod tests {
                 .iter()
                 .map(|f| f.map(|i| vertices[i as usize]))
                 .collect();
-            let mesh = TriangleMesh::new(
-                vertices.iter().map(|v| v.as_vec3()).collect(),
-                faces.clone(),
-                vec![],
-                vec![],
-                vec![],
-                vec![],
-            );
-            for k in 0..3000 {
-                let ray = test_ray(&mut rng, k, (centre, size), &vertices, &soup);
-                agree_with_every_triangle(&mesh, &soup, &ray, &format!("offset {offset}, ray {k}"));
+            for mesh in both_walks(&vertices, &faces) {
+                for k in 0..3000 {
+                    let ray = test_ray(&mut rng, k, (centre, size), &vertices, &soup);
+                    let what = format!("offset {offset}, ray {k}");
+                    agree_with_every_triangle(&mesh, &soup, &ray, &what);
+                }
             }
         }
     }
@@ -733,16 +859,12 @@ mod tests {
                     .iter()
                     .map(|f| f.map(|i| vertices[i as usize]))
                     .collect();
-                let single = vertices.iter().map(|v| v.as_vec3()).collect();
-                let mesh = TriangleMesh::new(single, faces, vec![], vec![], vec![], vec![]);
-                for k in 0..200 {
-                    let ray = test_ray(&mut rng, k, (DVec3::ZERO, 4.0), &vertices, &soup);
-                    agree_with_every_triangle(
-                        &mesh,
-                        &soup,
-                        &ray,
-                        &format!("{n} triangles, ray {k}"),
-                    );
+                for mesh in both_walks(&vertices, &faces) {
+                    for k in 0..200 {
+                        let ray = test_ray(&mut rng, k, (DVec3::ZERO, 4.0), &vertices, &soup);
+                        let what = format!("{n} triangles, ray {k}");
+                        agree_with_every_triangle(&mesh, &soup, &ray, &what);
+                    }
                 }
             }
         }
