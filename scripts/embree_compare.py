@@ -59,7 +59,7 @@ def main():
     t = trace_numbers()
     e, version = embree_numbers()
     sizes = sorted({s for s, _ in t})
-    lines = ["trace's mesh BVH (4-wide tree collapsed from obvhs's `Bvh2`, f32 filter and double-precision watertight triangle test) against Embree %s "
+    lines = ["trace's mesh BVH (8-wide tree collapsed from obvhs's `Bvh2`, AVX2 box tests on this machine, f32 filter and double-precision watertight triangle test on single-precision vertices, nodes and leaves on huge pages) against Embree %s "
              "(build quality medium, `rtcIntersect1`/`rtcOccluded1`), one thread each, on the bvh benchmark's "
              "terrains and rays (`python3 scripts/embree_compare.py`; trace: divan's fastest pass of 20k rays, "
              "Embree: best of 5 passes)." % version, "",
