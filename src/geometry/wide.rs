@@ -527,47 +527,50 @@ impl FilterRay {
         (near, mask0 | mask1 << 4)
     }
 
-    /// [`FilterRay::boxes`] with AVX: one register a side.
+    /// [`FilterRay::boxes`] with AVX: one register a side. Not itself compiled for AVX2 (a
+    /// function that is cannot be inlined always): it is inlined into the walk compiled for
+    /// AVX2, and the intrinsics into that.
+    ///
+    /// # Safety
+    /// Only for a CPU with AVX2.
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    #[inline]
-    fn boxes_avx2(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
+    #[inline(always)]
+    unsafe fn boxes_avx2(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
         use std::arch::x86_64::*;
-        // SAFETY: each side is eight f32s, 32-byte aligned (`Node`'s alignment, and a side's
-        // size).
-        let plane = |side: usize| unsafe { _mm256_load_ps(node.planes[side].as_ptr()) };
-        let distance = |plane: __m256, origin: f32, inverse: f32| {
-            _mm256_mul_ps(
-                _mm256_sub_ps(plane, _mm256_set1_ps(origin)),
-                _mm256_set1_ps(inverse),
-            )
-        };
-        let enter =
-            |a: usize| distance(plane(self.enter[a]), self.enter_origin[a], self.inverse[a]);
-        let leave = |a: usize| {
-            distance(
-                plane(self.leave[a]),
-                self.leave_origin[a],
-                self.leave_inverse[a],
-            )
-        };
-        // As two short chains, not one long one: a walk waits on each node's test before it
-        // can read the next node. (max and min return their second operand when either is
-        // NaN: an empty slot's NaN sides, or an origin on a side along an axis the ray does
-        // not move in, reach the comparison below, which NaN fails.)
-        let near = _mm256_max_ps(
-            _mm256_max_ps(enter(0), enter(1)),
-            _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
-        );
-        let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
-        let inside = _mm256_and_ps(
-            _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
-            _mm256_cmp_ps::<_CMP_LE_OQ>(near, _mm256_set1_ps(limit)),
-        );
-        let mut distances = [0.0; WIDE];
-        // SAFETY: `distances` holds eight f32s.
-        unsafe { _mm256_storeu_ps(distances.as_mut_ptr(), near) };
-        (distances, _mm256_movemask_ps(inside) as u32)
+        // SAFETY: the caller's CPU has AVX2 (this function's contract); each side is eight
+        // f32s, 32-byte aligned (`Node`'s alignment, and a side's size), and `distances`
+        // holds eight f32s.
+        unsafe {
+            let plane = |side: usize| _mm256_load_ps(node.planes[side].as_ptr());
+            let distance = |plane: __m256, origin: f32, inverse: f32| {
+                _mm256_mul_ps(
+                    _mm256_sub_ps(plane, _mm256_set1_ps(origin)),
+                    _mm256_set1_ps(inverse),
+                )
+            };
+            let enter =
+                |a: usize| distance(plane(self.enter[a]), self.enter_origin[a], self.inverse[a]);
+            let leave = |a: usize| {
+                let inverse = self.leave_inverse[a];
+                distance(plane(self.leave[a]), self.leave_origin[a], inverse)
+            };
+            // As two short chains, not one long one: a walk waits on each node's test before
+            // it can read the next node. (max and min return their second operand when
+            // either is NaN: an empty slot's NaN sides, or an origin on a side along an axis
+            // the ray does not move in, reach the comparison below, which NaN fails.)
+            let near = _mm256_max_ps(
+                _mm256_max_ps(enter(0), enter(1)),
+                _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
+            );
+            let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
+            let inside = _mm256_and_ps(
+                _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
+                _mm256_cmp_ps::<_CMP_LE_OQ>(near, _mm256_set1_ps(limit)),
+            );
+            let mut distances = [0.0; WIDE];
+            _mm256_storeu_ps(distances.as_mut_ptr(), near);
+            (distances, _mm256_movemask_ps(inside) as u32)
+        }
     }
 
     /// The lanes of a block whose triangle the exact test might find on the ray's line: the
