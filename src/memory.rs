@@ -122,11 +122,16 @@ const HUGE_PAGE: usize = 2 << 20;
 /// TLB, and in a virtual machine each of those misses walks two sets of page tables. Linux
 /// gives huge pages to memory so advised when its transparent huge pages are in `madvise`
 /// mode (and to all memory in `always` mode). Only the 2 MiB-aligned stretches inside the
-/// buffer are advised, so the process takes no memory the buffer does not; elsewhere, and for
-/// buffers of a few pages, this is `Vec::with_capacity`.
+/// buffer are advised, so the process takes no memory the buffer does not; elsewhere (other
+/// systems, Linux on other than x86-64 and AArch64), and for buffers of a few pages, this is
+/// `Vec::with_capacity`.
 pub fn with_huge_pages<T>(capacity: usize) -> Vec<T> {
     let v = Vec::with_capacity(capacity);
-    #[cfg(target_os = "linux")]
+    // (MADV_HUGEPAGE is 14 on these; a few other architectures number it otherwise.)
+    #[cfg(all(
+        target_os = "linux",
+        any(target_arch = "x86_64", target_arch = "aarch64")
+    ))]
     {
         let bytes = v.capacity() * std::mem::size_of::<T>();
         let start = v.as_ptr() as usize;
