@@ -306,8 +306,8 @@ impl WideBvh {
         self.walk_with::<ORDERED, true>(ray, sheared, limit, visit)
     }
 
-    /// The walk, testing a node's boxes with AVX2 when `AVX2` (only ever inlined into
-    /// [`WideBvh::walk_avx2`]).
+    /// The walk, testing a node's boxes with AVX2 when `AVX2` (with `AVX2` it is called only
+    /// from [`WideBvh::walk_avx2`], which it is inlined into).
     #[inline(always)]
     fn walk_with<const ORDERED: bool, const AVX2: bool>(
         &self,

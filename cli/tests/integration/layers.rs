@@ -20,7 +20,8 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ),
     ("ir", &["diag", "pattern", "func", "noise"]),
     // func: the isosurface's function (a function of a point, like a pattern).
-    ("geometry", &["func"]),
+    // memory: buffers on huge pages for what rays read scattered (a mesh's tree).
+    ("geometry", &["func", "memory"]),
     // func: compiled user functions (noise: f_noise3d is the patterns' noise).
     ("func", &["noise"]),
     // pattern: functions of a point (what a pigment or normal looks up), used by the IR's
@@ -28,7 +29,11 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("pattern", &["noise", "func"]),
     // noise: POV-Ray's noise, turbulence and hashes (patterns, functions, normals, blur).
     ("noise", &[]),
-    ("scene", &["ir", "geometry", "pattern", "func", "noise"]),
+    // memory: huge pages for the objects and the top-level tree.
+    (
+        "scene",
+        &["ir", "geometry", "pattern", "func", "noise", "memory"],
+    ),
     // cancel: a load or render stopped by its caller.
     ("render", &["scene", "geometry", "film", "cancel"]),
     // output: temporary files removed on interrupt or when memory runs out.
