@@ -103,22 +103,8 @@ fn lanes_of(mut lanes: u32) -> impl Iterator<Item = usize> {
     })
 }
 
-/// Triangles per BVH primitive. Building over groups of spatially close triangles (consecutive
-/// in Morton order) instead of single ones cuts the BVH builder's memory and time by about this
-/// factor; each leaf then tests a few more triangles.
-const GROUP: usize = 4;
-
-/// A 30-bit Morton code of a point in the unit cube.
-fn morton(p: DVec3) -> u32 {
-    let spread = |x: f64| -> u32 {
-        let mut v = (x.clamp(0.0, 1.0) * 1023.0) as u32;
-        v = (v | (v << 16)) & 0x0300_00FF;
-        v = (v | (v << 8)) & 0x0300_F00F;
-        v = (v | (v << 4)) & 0x030C_30C3;
-        (v | (v << 2)) & 0x0924_9249
-    };
-    (spread(p.x) << 2) | (spread(p.y) << 1) | spread(p.z)
-}
+/// Triangles a leaf holds at most: one block of the tree, tested together.
+const LEAF_SIZE: u32 = 4;
 
 impl TriangleMesh {
     /// Builds the BVH over the triangles. `normal_indices` is empty or parallel to `triangles`.
@@ -158,86 +144,43 @@ impl TriangleMesh {
             hi = hi.max(v.as_dvec3());
         }
         let corners = |t: &[u32; 3]| t.map(|i| vertices[i as usize].as_dvec3());
-        // Triangles in Morton order of their centroids, cut into groups of GROUP.
-        let scale = (hi - lo).max(DVec3::splat(f64::MIN_POSITIVE)).recip();
-        let mut order: Vec<(u32, u32)> = triangles
+        let boxes: Vec<Aabb> = triangles
             .iter()
-            .enumerate()
-            .map(|(k, t)| {
-                let p = corners(t);
-                let centre = (p[0] + p[1] + p[2]) / 3.0;
-                (morton((centre - lo) * scale), k as u32)
+            .map(|t| {
+                let [p, q, r] = corners(t);
+                outward_aabb(p.min(q).min(r), p.max(q).max(r))
             })
             .collect();
-        order.sort_unstable();
-        // Up to GROUP consecutive triangles whose codes share all but the lowest bits (the same
-        // small Morton cell), so that no group straddles the curve's big jumps.
-        let mut groups: Vec<std::ops::Range<usize>> = Vec::with_capacity(order.len() / GROUP + 1);
-        let mut start = 0;
-        for k in 1..=order.len() {
-            if k == order.len() || k - start == GROUP || (order[k].0 ^ order[start].0) >> 6 != 0 {
-                groups.push(start..k);
-                start = k;
-            }
-        }
-        let boxes: Vec<Aabb> = groups
-            .iter()
-            .map(|range| {
-                let group = &order[range.clone()];
-                let (mut a, mut b) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
-                for &(_, k) in group {
-                    for p in corners(&triangles[k as usize]) {
-                        a = a.min(p);
-                        b = b.max(p);
-                    }
-                }
-                outward_aabb(a, b)
-            })
-            .collect();
+        // Leaves of up to four triangles, where the builder's surface-area cost finds them
+        // worth it. (Before 2026-11-30 the builder was handed groups of up to four triangles
+        // consecutive in Morton order, one per leaf: on meshes as flat as a terrain most
+        // groups held one triangle, and the rays were 13-80 % slower.)
         let params = BvhBuildParams {
-            max_prims_per_leaf: 1,
+            max_prims_per_leaf: LEAF_SIZE,
             ..BvhBuildParams::fast_build()
         };
         let bvh = obvhs::bvh2::builder::build_bvh2(&boxes, params, &mut Duration::default());
         drop(boxes);
-        // Triangles in BVH order: group by group, as the BVH lists its primitives.
-        let mut triangles_ordered = Vec::with_capacity(triangles.len());
-        let mut normal_ordered = Vec::with_capacity(normal_indices.len());
-        let mut uv_ordered = Vec::with_capacity(uv_indices.len());
-        let mut entries_ordered = Vec::with_capacity(corner_entries.len());
-        let mut group_start = Vec::with_capacity(bvh.primitive_indices.len() + 1);
-        for &g in &bvh.primitive_indices {
-            group_start.push(triangles_ordered.len() as u32);
-            for &(_, k) in &order[groups[g as usize].clone()] {
-                triangles_ordered.push(triangles[k as usize]);
-                if !normal_indices.is_empty() {
-                    normal_ordered.push(normal_indices[k as usize]);
-                }
-                if !uv_indices.is_empty() {
-                    uv_ordered.push(uv_indices[k as usize]);
-                }
-                if !corner_entries.is_empty() {
-                    entries_ordered.push(corner_entries[k as usize]);
-                }
+        // Triangles in the tree's order, as it lists its primitives.
+        let order = &bvh.primitive_indices;
+        let pick = |list: &[[u32; 3]]| -> Vec<[u32; 3]> {
+            if list.is_empty() {
+                Vec::new()
+            } else {
+                order.iter().map(|&k| list[k as usize]).collect()
             }
-        }
-        group_start.push(triangles_ordered.len() as u32);
+        };
+        let triangles_ordered = pick(&triangles);
+        let normal_ordered = pick(&normal_indices);
+        let uv_ordered = pick(&uv_indices);
+        let entries_ordered = pick(&corner_entries);
         // (The input's copies go before the tree is built: at 1M triangles they are 40 MB.)
-        drop((
-            triangles,
-            normal_indices,
-            uv_indices,
-            corner_entries,
-            order,
-            groups,
-        ));
+        drop((triangles, normal_indices, uv_indices, corner_entries));
         let tree = super::wide::WideBvh::new(
             bvh,
-            &group_start,
             |i| triangles_ordered[i].map(|v| vertices[v as usize]),
             (lo, hi),
         );
-        drop(group_start);
         TriangleMesh {
             vertices,
             triangles: triangles_ordered,

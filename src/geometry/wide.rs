@@ -1,9 +1,10 @@
 //! The 8-wide tree a triangle mesh is traced through.
 //!
-//! obvhs builds a binary tree (`Bvh2`) over groups of up to four triangles; here it is
+//! obvhs builds a binary tree (`Bvh2`) with leaves of up to four triangles; here it is
 //! collapsed into a tree of eight children a node, whose nodes hold the eight children's
-//! boxes side by side (one AVX2 slab test for eight boxes, or two SSE tests of four on a CPU
-//! without AVX2, chosen when the tree is built) and whose leaves hold their triangles' corners
+//! boxes side by side (one AVX2 slab test for eight boxes, a fused multiply-subtract a
+//! distance, or two SSE tests of four on a CPU without AVX2 and FMA, chosen when the tree
+//! is built) and whose leaves hold their triangles' corners
 //! side by side (one SIMD test for four triangles). Eight children a node make the tree about
 //! two thirds as deep as four do, and a walk waits on each node's test before it can read the
 //! next node, so depth is what a ray pays for. A mesh's vertices are single
@@ -88,15 +89,15 @@ pub struct WideBvh {
     centre: DVec3,
     /// The largest magnitude of a corner coordinate.
     extent: f32,
-    /// Whether this CPU has AVX2, which tests a node's eight boxes at once.
+    /// Whether this CPU has AVX2 and FMA, which test a node's eight boxes at once.
     avx2: bool,
 }
 
-/// Whether this CPU has AVX2 (checked once; always false off x86-64).
+/// Whether this CPU has AVX2 and FMA (always false off x86-64).
 fn has_avx2() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
-        std::arch::is_x86_feature_detected!("avx2")
+        std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
@@ -114,28 +115,12 @@ fn down(x: f64) -> f32 {
     if (y as f64) > x { y.next_down() } else { y }
 }
 
-/// An f32 at or below `x` and one at or above it, within three units of the last place of
-/// it: `(down(x), up(x))` widened by up to one unit, without their data-dependent branches
-/// (a ray's origin rounds either way at random, and those branches were most of the cost of
-/// setting up a ray for the tree).
-fn bracket(x: f64) -> (f32, f32) {
-    let y = x as f32;
-    if !y.is_finite() {
-        return (down(x), up(x));
-    }
-    // |y|·ε is at least one unit in the last place of y, and MIN_POSITIVE more than one of
-    // a subnormal's; y is within half a unit of x.
-    let step = y.abs() * f32::EPSILON + f32::MIN_POSITIVE;
-    (y - step, y + step)
-}
-
 impl WideBvh {
-    /// Collapses `bvh` (dropped as soon as it is read; whose primitive at position `p` is the triangles
-    /// `group_start[p]..group_start[p + 1]`) into an 8-wide tree; `corners(i)` gives triangle
-    /// `i`'s corners and `(lo, hi)` bounds them all.
+    /// Collapses `bvh` (dropped as soon as it is read; its primitive at position `i` of its
+    /// list is triangle `i`) into an 8-wide tree; `corners(i)` gives triangle `i`'s corners
+    /// and `(lo, hi)` bounds them all.
     pub fn new(
         bvh: Bvh2,
-        group_start: &[u32],
         corners: impl Fn(usize) -> [Vec3; 3] + Sync + Send,
         (lo, hi): (DVec3, DVec3),
     ) -> WideBvh {
@@ -154,11 +139,11 @@ impl WideBvh {
             extent,
             avx2: has_avx2(),
         };
-        if bvh.nodes.is_empty() || group_start.len() < 2 {
+        if bvh.nodes.is_empty() || bvh.primitive_indices.is_empty() {
             return tree;
         }
         // The leaves' triangles, in the order their blocks are stored.
-        let mut leaves: Vec<std::ops::Range<usize>> = Vec::with_capacity(group_start.len());
+        let mut leaves: Vec<std::ops::Range<usize>> = Vec::new();
         let mut block_count = 0u32;
         // Work list: (Bvh2 node, the node slot to fill, or None for the root).
         let mut work: Vec<(usize, Option<(usize, usize)>)> = vec![(0, None)];
@@ -166,8 +151,7 @@ impl WideBvh {
             let node = &bvh.nodes[index];
             let entry = if node.is_leaf() {
                 let first = node.first_index as usize;
-                let range = group_start[first] as usize
-                    ..group_start[first + node.prim_count as usize] as usize;
+                let range = first..first + node.prim_count as usize;
                 let entry = LEAF | block_count;
                 block_count += range.len().div_ceil(4) as u32;
                 leaves.push(range);
@@ -256,16 +240,13 @@ impl WideBvh {
         #[cfg(target_arch = "x86_64")]
         {
             use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+            // (Addresses worked out without bounds checks: a prefetch never faults.)
             let (p, lines) = if entry & LEAF != 0 {
-                match self.blocks.get((entry & !LEAF) as usize) {
-                    Some(b) => (b as *const Block as *const i8, 3),
-                    None => return,
-                }
+                let block = self.blocks.as_ptr().wrapping_add((entry & !LEAF) as usize);
+                (block as *const i8, 3)
             } else {
-                match self.nodes.get(entry as usize) {
-                    Some(n) => (n as *const Node as *const i8, 4),
-                    None => return,
-                }
+                let node = self.nodes.as_ptr().wrapping_add(entry as usize);
+                (node as *const i8, 4)
             };
             for k in 0..lines {
                 // SAFETY: a prefetch only hints the cache; it never faults, whatever the address.
@@ -287,15 +268,16 @@ impl WideBvh {
     ) {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
-            // SAFETY: `avx2` is set only where the CPU has AVX2.
+            // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
             return unsafe { self.walk_avx2::<ORDERED>(ray, sheared, limit, visit) };
         }
         self.walk_with::<ORDERED, false>(ray, sheared, limit, visit)
     }
 
-    /// [`WideBvh::walk`] compiled for AVX2 (the box tests, and all that is inlined here).
+    /// [`WideBvh::walk`] compiled for AVX2 and FMA (the box tests, and all that is inlined
+    /// here).
     #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,fma")]
     unsafe fn walk_avx2<const ORDERED: bool>(
         &self,
         ray: &Ray,
@@ -421,21 +403,20 @@ impl WideBvh {
 
 /// A ray's f32 copies for the two tests.
 struct FilterRay {
-    /// Along each axis, the node plane (an index into [`Node::planes`]) the ray enters a box
-    /// by (the low side if it moves up or not at all, the high side if down), and the one it
-    /// leaves by.
+    /// Along each axis, the node plane (an index into [`Node::planes`], below 6) the ray
+    /// enters a box by (the low side if it moves up or not at all, the high side if down),
+    /// and the one it leaves by.
     enter: [usize; 3],
     leave: [usize; 3],
-    /// The origin relative to the boxes' centre, rounded to make the entry distance smallest
-    /// and the exit distance largest, so that the slabs hold the exact ray's: the origin
-    /// rounded up for a low side, down for a high side.
-    enter_origin: [f32; 3],
-    leave_origin: [f32; 3],
-    /// The reciprocal of the direction's f32 copy (infinite along an axis it does not move in).
+    /// Along each axis, the reciprocal of the direction (±10²⁰ where the direction is
+    /// nearer zero than 10⁻²⁰, so that no distance is NaN or infinite); 0 where the slab
+    /// cannot be bounded in f32 (it then holds every distance).
     inverse: [f32; 3],
-    /// The same times 1 + 32 units: the rounding of the reciprocal and of the products scales
-    /// each axis's distances by a few units, and this margin on the exit covers it.
-    leave_inverse: [f32; 3],
+    /// The origin relative to the boxes' centre times `inverse`, less a margin for the
+    /// entry distance (`plane · inverse − offset`, with one rounding or two) and plus it
+    /// for the exit, so that each slab holds the exact ray's: see [`FilterRay::new`].
+    enter_offset: [f32; 3],
+    leave_offset: [f32; 3],
     /// The origin rounded to nearest (not relative to the centre: the corners are not).
     origin: [Vec4; 3],
     /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
@@ -466,23 +447,40 @@ impl FilterRay {
         } else {
             f32::INFINITY
         };
-        let (ox, oy, oz) = (o.x, o.y, o.z);
-        let bracket = [bracket(ox), bracket(oy), bracket(oz)];
-        let direction = [d.x as f32, d.y as f32, d.z as f32];
-        // (A zero component's sign picks the side as its infinite reciprocal's does.)
-        let down = direction.map(f32::is_sign_negative);
-        let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
-        let origin_for = |axis: usize, high: bool| {
-            let (below, above) = bracket[axis];
-            if high { below } else { above }
+        // A slab's distance is plane · i − o · i for the f32 reciprocal i of the direction
+        // (within 2 units of the exact one, as the direction is rounded to f32 first), the
+        // exact plane (a node's sides are f32) and o · i rounded: the reciprocal's error
+        // moves it by 2 units of |t| ≤ (extent + |o|)·|i|, o · i's rounding by one unit of
+        // |o · i|, o's own rounding by one more, and the product and the difference (or the
+        // fused product-difference) by two units of (extent + |o|)·|i| at most: 8 units of
+        // (extent + |o|)·|i| hold them all, with room for the extent's own rounding. The
+        // offsets are rounded to nearest, one unit more (no branch on the way they round:
+        // a ray's origin rounds either way at random).
+        let slab = |o: f64, d: f64| -> (f32, f32, f32) {
+            let i = if d.abs() < 1e-20 {
+                1e20f32.copysign(d as f32)
+            } else {
+                (d as f32).recip()
+            };
+            let scale = (f64::from(extent) + o.abs()) * f64::from(i).abs();
+            if scale.is_nan() || scale >= 1e36 {
+                // (plane · 0 − (+∞) is −∞ and plane · 0 − (−∞) is +∞: the slab holds all.)
+                return (0.0, f32::INFINITY, f32::NEG_INFINITY);
+            }
+            let at = o * f64::from(i);
+            let margin = 10.0 * f64::from(UNIT) * scale;
+            (i, (at + margin) as f32, (at - margin) as f32)
         };
+        let slabs = [slab(o.x, d.x), slab(o.y, d.y), slab(o.z, d.z)];
+        // (A zero component's sign picks the side as its reciprocal's does.)
+        let down = [d.x, d.y, d.z].map(|c| (c as f32).is_sign_negative());
+        let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
         FilterRay {
             enter: [0, 1, 2].map(|a| side(a, down[a])),
             leave: [0, 1, 2].map(|a| side(a, !down[a])),
-            enter_origin: [0, 1, 2].map(|a| origin_for(a, down[a])),
-            leave_origin: [0, 1, 2].map(|a| origin_for(a, !down[a])),
-            inverse: direction.map(f32::recip),
-            leave_inverse: direction.map(|c| c.recip() * (1.0 + 32.0 * UNIT)),
+            inverse: slabs.map(|s| s.0),
+            enter_offset: slabs.map(|s| s.1),
+            leave_offset: slabs.map(|s| s.2),
             origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
             kx,
             ky,
@@ -494,26 +492,23 @@ impl FilterRay {
     }
 
     /// The entry distances into a node's eight boxes and the mask of those the ray enters at a
-    /// distance in [0, limit]: with AVX2 when `AVX2` (the caller's CPU has it), as two halves
-    /// of four otherwise.
+    /// distance in [0, limit]: with AVX2 and FMA when `AVX2` (the caller's CPU has them), as
+    /// two halves of four otherwise.
     #[inline(always)]
     fn boxes<const AVX2: bool>(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
         #[cfg(target_arch = "x86_64")]
         if AVX2 {
-            // SAFETY: `AVX2` is true only in the walk compiled for AVX2, which runs only
-            // where the CPU has it.
+            // SAFETY: `AVX2` is true only in the walk compiled for AVX2 and FMA, which runs
+            // only where the CPU has them.
             return unsafe { self.boxes_avx2(node, limit) };
         }
         let half = |h: usize| {
             let plane = |side: usize| Vec4::from_slice(&node.planes[side][4 * h..]);
-            let enter = |axis: usize| {
-                (plane(self.enter[axis]) - Vec4::splat(self.enter_origin[axis]))
-                    * Vec4::splat(self.inverse[axis])
+            let distance = |side: usize, axis: usize, offset: f32| {
+                plane(side) * Vec4::splat(self.inverse[axis]) - Vec4::splat(offset)
             };
-            let leave = |axis: usize| {
-                (plane(self.leave[axis]) - Vec4::splat(self.leave_origin[axis]))
-                    * Vec4::splat(self.leave_inverse[axis])
-            };
+            let enter = |a: usize| distance(self.enter[a], a, self.enter_offset[a]);
+            let leave = |a: usize| distance(self.leave[a], a, self.leave_offset[a]);
             // As in `boxes_avx2`.
             let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
             let far = leave(0).min(leave(1)).min(leave(2));
@@ -527,37 +522,35 @@ impl FilterRay {
         (near, mask0 | mask1 << 4)
     }
 
-    /// [`FilterRay::boxes`] with AVX: one register a side. Not itself compiled for AVX2 (a
-    /// function that is cannot be inlined always): it is inlined into the walk compiled for
-    /// AVX2, and the intrinsics into that.
+    /// [`FilterRay::boxes`] with AVX and FMA: one register a side, one fused
+    /// product-difference a distance. Not itself compiled for AVX2 (a function that is
+    /// cannot be inlined always): it is inlined into the walk compiled for AVX2 and FMA, and
+    /// the intrinsics into that.
     ///
     /// # Safety
-    /// Only for a CPU with AVX2.
+    /// Only for a CPU with AVX2 and FMA.
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
     unsafe fn boxes_avx2(&self, node: &Node, limit: f32) -> ([f32; WIDE], u32) {
         use std::arch::x86_64::*;
-        // SAFETY: the caller's CPU has AVX2 (this function's contract); each side is eight
-        // f32s, 32-byte aligned (`Node`'s alignment, and a side's size), and `distances`
-        // holds eight f32s.
+        // SAFETY: the caller's CPU has AVX2 and FMA (this function's contract); each side is
+        // eight f32s, 32-byte aligned (`Node`'s alignment, and a side's size), `enter` and
+        // `leave` are below 6, and `distances` holds eight f32s.
         unsafe {
-            let plane = |side: usize| _mm256_load_ps(node.planes[side].as_ptr());
-            let distance = |plane: __m256, origin: f32, inverse: f32| {
-                _mm256_mul_ps(
-                    _mm256_sub_ps(plane, _mm256_set1_ps(origin)),
-                    _mm256_set1_ps(inverse),
+            let plane = |side: usize| _mm256_load_ps(node.planes.get_unchecked(side).as_ptr());
+            let distance = |side: usize, axis: usize, offset: f32| {
+                _mm256_fmsub_ps(
+                    plane(side),
+                    _mm256_set1_ps(self.inverse[axis]),
+                    _mm256_set1_ps(offset),
                 )
             };
-            let enter =
-                |a: usize| distance(plane(self.enter[a]), self.enter_origin[a], self.inverse[a]);
-            let leave = |a: usize| {
-                let inverse = self.leave_inverse[a];
-                distance(plane(self.leave[a]), self.leave_origin[a], inverse)
-            };
+            let enter = |a: usize| distance(self.enter[a], a, self.enter_offset[a]);
+            let leave = |a: usize| distance(self.leave[a], a, self.leave_offset[a]);
             // As two short chains, not one long one: a walk waits on each node's test before
             // it can read the next node. (max and min return their second operand when
-            // either is NaN: an empty slot's NaN sides, or an origin on a side along an axis
-            // the ray does not move in, reach the comparison below, which NaN fails.)
+            // either is NaN: an empty slot's NaN sides reach the comparison below, which NaN
+            // fails.)
             let near = _mm256_max_ps(
                 _mm256_max_ps(enter(0), enter(1)),
                 _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
@@ -681,32 +674,97 @@ mod tests {
         )
     }
 
-    /// A ray origin's bracket holds it, within three units of the last place, over the
-    /// whole range of f32 and beyond it (where it falls back to the exact rounding).
+    /// A node's box test passes every box the ray's exact slabs (in double precision)
+    /// enter before the limit, with an entry distance no greater than theirs, on both paths:
+    /// boxes near the origin and far from it, large and tiny, rays from near and far,
+    /// axis-aligned and grazing.
     #[test]
-    fn brackets_hold_the_value_closely() {
-        let mut values = vec![
-            0.0, -0.0, 1e-45, -1e-45, 1e-40, 1.0, -1.0, 3.0e38, -3.0e38, 1e300,
-        ];
-        let mut r = Rng(7);
-        for _ in 0..100_000 {
-            let exponent = (r.next() * 80.0 - 40.0) as i32;
-            values.push((r.next() - 0.5) * 10f64.powi(exponent));
-        }
-        for x in values {
-            let (lo, hi) = bracket(x);
-            assert!(f64::from(lo) <= x && x <= f64::from(hi), "{x}: {lo} {hi}");
-            let ulp = |v: f32| (v.abs().next_up() - v.abs()).max(f32::from_bits(1));
-            let y = x as f32;
-            if y.is_finite() {
-                assert!(
-                    hi - lo <= 6.0 * ulp(y) + 2.0 * f32::MIN_POSITIVE,
-                    "{x}: {lo} {hi}"
-                );
-            } else {
-                assert_eq!((lo, hi), (down(x), up(x)));
+    fn box_test_keeps_every_box_the_exact_ray_enters() {
+        let mut r = Rng(0x5851_F42D_4C95_7F2D);
+        let mut checked = 0;
+        for k in 0..40_000 {
+            let scale = 10f64.powi((r.next() * 12.0) as i32 - 4);
+            let centre = DVec3::new(r.next() - 0.5, r.next() - 0.5, r.next() - 0.5)
+                * 10f64.powi((r.next() * 8.0) as i32 - 2);
+            let mut node = Node {
+                planes: [[f32::NAN; WIDE]; 6],
+                child: [EMPTY; WIDE],
+            };
+            let mut boxes = Vec::new();
+            for i in 0..WIDE - (k % 3) {
+                let a = r.point(DVec3::ZERO, scale);
+                let b = a + r.point(DVec3::ZERO, scale * [1.0, 1e-3, 1e-6][k % 3]).abs();
+                for axis in 0..3 {
+                    node.planes[axis][i] = down(a[axis]);
+                    node.planes[3 + axis][i] = up(b[axis]);
+                }
+                boxes.push(i);
+            }
+            let origin = centre + r.point(DVec3::ZERO, scale * [1.0, 10.0, 1e4][k % 3]);
+            let target = centre + r.point(DVec3::ZERO, scale);
+            let mut direction = target - origin;
+            match k % 5 {
+                0 => direction[k % 3] = 0.0,
+                1 => {
+                    direction[k % 3] = 0.0;
+                    direction[(k + 1) % 3] = 0.0
+                }
+                2 => direction[k % 3] *= 1e-9,
+                _ => {}
+            }
+            if direction == DVec3::ZERO {
+                continue;
+            }
+            let ray = Ray::new(origin, direction);
+            let sheared = ShearedRay::new(ray.origin, ray.direction);
+            let extent = (0..6)
+                .flat_map(|side| node.planes[side])
+                .filter(|p| !p.is_nan())
+                .fold(0.0f32, |m, p| m.max(p.abs()));
+            let f = FilterRay::new(&ray, &sheared, centre, extent);
+            let o = origin - centre;
+            for avx2 in [false, has_avx2()] {
+                let (near, mask) = if avx2 {
+                    f.boxes::<true>(&node, f32::INFINITY)
+                } else {
+                    f.boxes::<false>(&node, f32::INFINITY)
+                };
+                for &i in &boxes {
+                    let (mut lo, mut hi) = (0.0f64, f64::INFINITY);
+                    for axis in 0..3 {
+                        let (a, b) = (node.planes[axis][i] as f64, node.planes[3 + axis][i] as f64);
+                        if direction[axis] == 0.0 {
+                            if o[axis] < a || o[axis] > b {
+                                hi = f64::NEG_INFINITY;
+                            }
+                            continue;
+                        }
+                        let (t0, t1) = (
+                            (a - o[axis]) / direction[axis],
+                            (b - o[axis]) / direction[axis],
+                        );
+                        lo = lo.max(t0.min(t1));
+                        hi = hi.min(t0.max(t1));
+                    }
+                    // (The exact slabs' own rounding: a relative 10⁻¹⁵.)
+                    if lo < hi * (1.0 - 1e-12) {
+                        checked += 1;
+                        assert!(
+                            mask & (1 << i) != 0,
+                            "box {i} of ray {k} dropped (avx2 {avx2})"
+                        );
+                        assert!(
+                            near[i] as f64 <= lo * (1.0 + 1e-12) + 1e-300,
+                            "ray {k}: entry {} after {lo}",
+                            near[i]
+                        );
+                    }
+                }
+                // Empty slots never pass.
+                assert_eq!(mask >> boxes.len(), 0);
             }
         }
+        assert!(checked > 10_000, "only {checked} boxes entered");
     }
 
     /// Test ray `k` around a mesh at `centre` of `size`: from a random point toward a random
