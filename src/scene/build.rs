@@ -494,6 +494,7 @@ impl Scene {
                     shadowless: l.shadowless,
                     fade: l.fade,
                     area: l.area.clone(),
+                    grid: super::grid_table(l.area.as_ref()),
                     group: l.group,
                     media_interaction: l.media_interaction,
                     media_attenuation: l.media_attenuation,

@@ -303,6 +303,10 @@ pub struct Light {
     pub fade: Option<LightFade>,
     /// Soft-shadow grid.
     pub area: Option<AreaLight>,
+    /// An area light's grid points as offsets along its axes ([`grid_offset`]), row by row
+    /// (`v · size1 + u`), worked out once: empty for a jittered light (its points move with
+    /// the shaded point) or a grid of more than [`GRID_TABLE_POINTS`] points.
+    pub grid: Box<[(f64, f64)]>,
     /// `projected_through`: the shapes light must cross to reach a point.
     pub through: Option<Box<[BoundShape]>>,
     /// The `light_group` it lights alone.
@@ -311,6 +315,52 @@ pub struct Light {
     pub media_interaction: bool,
     /// The atmosphere dims its shadow rays (`media_attenuation`).
     pub media_attenuation: bool,
+}
+
+/// Area lights of up to this many grid points keep their points' offsets ([`Light::grid`]).
+pub const GRID_TABLE_POINTS: u32 = 4096;
+
+/// The offsets in [−½, ½]² along an area light's axes of its grid point (u, v) moved by
+/// `(ju, jv)` cells (its jitter), mapped onto the disc for a `circular` or `orient`ed light.
+pub fn grid_offset(area: &AreaLight, (u, v): (u32, u32), (ju, jv): (f64, f64)) -> (f64, f64) {
+    let along = |i: u32, j: f64, size: u32| {
+        if size > 1 {
+            (i as f64 + j) / (size - 1) as f64 - 0.5
+        } else {
+            0.0
+        }
+    };
+    disc_offset(area, (along(u, ju, area.size1), along(v, jv, area.size2)))
+}
+
+/// Offsets in [−½, ½]² as a light places them: mapped onto the disc for a `circular` or
+/// `orient`ed light, as they are otherwise.
+pub fn disc_offset(area: &AreaLight, (s1, s2): (f64, f64)) -> (f64, f64) {
+    if area.circular || area.orient {
+        square_to_disc(s1, s2)
+    } else {
+        (s1, s2)
+    }
+}
+
+/// POV-Ray's `circular` mapping of grid offsets in [−½, ½]²: square shells onto circles
+/// (with its constant 0.001 bias, so the centre point is slightly off centre).
+fn square_to_disc(x: f64, y: f64) -> (f64, f64) {
+    const BIAS: f64 = 0.001;
+    let (a, b) = (x + BIAS, y + BIAS);
+    let s = a.abs().max(b.abs()) / (a * a + b * b).sqrt();
+    (a * s, b * s)
+}
+
+/// An area light's table of grid offsets ([`Light::grid`]).
+pub(crate) fn grid_table(area: Option<&AreaLight>) -> Box<[(f64, f64)]> {
+    match area {
+        Some(a) if !a.jitter && a.size1.saturating_mul(a.size2) <= GRID_TABLE_POINTS => (0..a
+            .size2)
+            .flat_map(|v| (0..a.size1).map(move |u| grid_offset(a, (u, v), (0.0, 0.0))))
+            .collect(),
+        _ => Box::new([]),
+    }
 }
 
 /// The sky: pigments of the ray's direction, the last on top.
@@ -592,4 +642,48 @@ fn world_bounds(lo: DVec3, hi: DVec3, m: Option<&DMat4>) -> (DVec3, DVec3) {
     }
     let pad = 1e-9 * (wlo.abs().max(whi.abs()).max_element() + (whi - wlo).max_element());
     (wlo - pad, whi + pad)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circular_grid_keeps_direction_at_shell_radius() {
+        let (x, y) = square_to_disc(0.5 - 0.001, 0.5 - 0.001);
+        assert!(((x * x + y * y).sqrt() - 0.5).abs() < 1e-12);
+        let (x, y) = square_to_disc(0.5 - 0.001, -0.001);
+        assert!((x - 0.5).abs() < 1e-12 && y.abs() < 1e-12);
+    }
+
+    /// The table holds each grid point's offsets as worked out point by point.
+    #[test]
+    fn grid_table_holds_each_points_offsets() {
+        for (circular, jitter) in [(false, false), (true, false), (true, true)] {
+            let area = AreaLight {
+                axis1: DVec3::X,
+                axis2: DVec3::Z,
+                size1: 5,
+                size2: 3,
+                adaptive: 1,
+                jitter,
+                circular,
+                orient: false,
+                area_illumination: false,
+            };
+            let table = grid_table(Some(&area));
+            if jitter {
+                assert!(table.is_empty());
+                continue;
+            }
+            assert_eq!(table.len(), 15);
+            for v in 0..3 {
+                for u in 0..5 {
+                    let (s1, s2) = grid_offset(&area, (u, v), (0.0, 0.0));
+                    assert_eq!(table[(v * 5 + u) as usize], (s1, s2));
+                }
+            }
+            assert_eq!(table[0], disc_offset(&area, (-0.5, -0.5)));
+        }
+    }
 }

@@ -5,6 +5,7 @@ use super::Tracer;
 use crate::geometry::Ray;
 use crate::scene::{
     AreaLight, Light, LightKind, ObjectId, Queries, Rgb, Scene, ShadowHull, SurfaceHit,
+    disc_offset, grid_offset,
 };
 use glam::DVec3;
 
@@ -291,21 +292,15 @@ impl Tracer<'_> {
         kind
     }
 
-    /// The shadow ray from `start` to the point at offsets (s1, s2) in [−½, ½]² along the
-    /// light's axes `a1`, `a2` (mapped to the disc for circular and oriented lights).
+    /// The shadow ray from `start` to the point at offsets (s1, s2) along the light's axes
+    /// `a1`, `a2` (already mapped to the disc for circular and oriented lights).
     fn ray_to(
         &self,
         light: &Light,
-        area: &AreaLight,
         (a1, a2): (DVec3, DVec3),
         (s1, s2): (f64, f64),
         start: ShadowStart,
     ) -> Ray {
-        let (s1, s2) = if area.circular || area.orient {
-            square_to_disc(s1, s2)
-        } else {
-            (s1, s2)
-        };
         let point = light.position + a1 * s1 + a2 * s2;
         let to = point - start.point();
         let mut shadow = start.ray(self.scene, to / to.length());
@@ -323,23 +318,18 @@ impl Tracer<'_> {
         start: ShadowStart,
         (u, v): (u32, u32),
     ) -> Ray {
-        let (mut fu, mut fv) = (u as f64, v as f64);
-        if area.jitter {
-            let (ju, jv) = jitter(start.point(), u, v);
-            fu += ju;
-            fv += jv;
-        }
-        let s1 = if area.size1 > 1 {
-            fu / (area.size1 - 1) as f64 - 0.5
-        } else {
-            0.0
+        let offsets = match light.grid.get((v * area.size1 + u) as usize) {
+            Some(&kept) => kept,
+            None => {
+                let moved = if area.jitter {
+                    jitter(start.point(), u, v)
+                } else {
+                    (0.0, 0.0)
+                };
+                grid_offset(area, (u, v), moved)
+            }
         };
-        let s2 = if area.size2 > 1 {
-            fv / (area.size2 - 1) as f64 - 0.5
-        } else {
-            0.0
-        };
-        self.ray_to(light, area, axes, (s1, s2), start)
+        self.ray_to(light, axes, offsets, start)
     }
 
     /// What reaches the end of a shadow ray toward `light` whose possible blockers are
@@ -380,7 +370,7 @@ impl Tracer<'_> {
         origin: ShadowStart,
         (seed, n): (u32, u32),
     ) -> Rgb {
-        // square_to_disc's bias moves points up to 0.001 beyond the square.
+        // The disc mapping's bias moves points up to 0.001 beyond the square.
         let half = |size: u32| if size == 1 { 0.0 } else { 0.502 };
         let blockers = self.area_blockers(
             (light, index),
@@ -413,7 +403,7 @@ impl Tracer<'_> {
             if area.size2 == 1 {
                 s2 = 0.0;
             }
-            let shadow = self.ray_to(light, area, (a1, a2), (s1, s2), origin);
+            let shadow = self.ray_to(light, (a1, a2), disc_offset(area, (s1, s2)), origin);
             self.counts.shadow += 1;
             self.shadow_through(&shadow, light, blockers)
         };
@@ -442,7 +432,7 @@ impl Tracer<'_> {
         area: &AreaLight,
         start: ShadowStart,
     ) -> Rgb {
-        // Jitter moves grid points up to half a cell beyond the grid's edge, square_to_disc's
+        // Jitter moves grid points up to half a cell beyond the grid's edge, the disc mapping's
         // bias up to 0.001.
         let reach = |size: u32| match (area.jitter, size) {
             (_, 1) => 0.0,
@@ -675,15 +665,6 @@ fn grid_axes(light: &Light, area: &AreaLight, p: DVec3) -> (DVec3, DVec3) {
     let a2 = d.cross(a1).normalize();
     let length = area.axis1.length();
     (a1 * length, a2 * length)
-}
-
-/// POV-Ray's `circular` mapping of grid offsets in [−½, ½]²: square shells onto circles
-/// (with its constant 0.001 bias, so the centre point is slightly off centre).
-fn square_to_disc(x: f64, y: f64) -> (f64, f64) {
-    const BIAS: f64 = 0.001;
-    let (a, b) = (x + BIAS, y + BIAS);
-    let s = a.abs().max(b.abs()) / (a * a + b * b).sqrt();
-    (a * s, b * s)
 }
 
 /// The unit direction from `point` toward `light` and the distance to it (along the
@@ -1006,13 +987,5 @@ mod tests {
         assert_eq!(jitter(p, 1, 2), jitter(p, 1, 2));
         let (a, b) = jitter(p, 3, 4);
         assert!((-0.5..0.5).contains(&a) && (-0.5..0.5).contains(&b));
-    }
-
-    #[test]
-    fn circular_grid_keeps_direction_at_shell_radius() {
-        let (x, y) = square_to_disc(0.5 - 0.001, 0.5 - 0.001);
-        assert!(((x * x + y * y).sqrt() - 0.5).abs() < 1e-12);
-        let (x, y) = square_to_disc(0.5 - 0.001, -0.001);
-        assert!((x - 0.5).abs() < 1e-12 && y.abs() < 1e-12);
     }
 }
