@@ -28,10 +28,18 @@ impl super::shape::Surface for Sphere {
         let d = ray.direction;
         let a = d.length_squared();
         let half_b = f.dot(d);
-        let c = f.length_squared() - self.radius * self.radius;
+        let (ff, rr) = (f.length_squared(), self.radius * self.radius);
+        let c = ff - rr;
+        // A clear miss first, without the division below: the textbook discriminant
+        // half_b² − a·c is the same number as the one below but for rounding, which is under
+        // 20 units of a·(|f|² + r²) for each; below minus a millionth of that, both are
+        // negative.
+        if half_b * half_b - a * c < -1e-6 * (a * (ff + rr)) {
+            return Crossings::NONE;
+        }
         // Δ/a = r² − |f − (f·d/a)·d|²: the squared half chord.
         let perpendicular = f - (half_b / a) * d;
-        let discriminant = a * (self.radius * self.radius - perpendicular.length_squared());
+        let discriminant = a * (rr - perpendicular.length_squared());
         if discriminant < 0.0 {
             return Crossings::NONE;
         }
@@ -49,7 +57,7 @@ impl super::shape::Surface for Sphere {
         let far = ray.origin.abs().max_element() + self.centre.abs().max_element();
         let noise = 4.0
             * f64::EPSILON
-            * (f.length_squared() + self.radius * self.radius + 2.0 * f.abs().element_sum() * far)
+            * (ff + rr + 2.0 * f.abs().element_sum() * far)
             / q.abs();
         let t0 = if t0.abs() <= noise { f64::NAN } else { t0 };
         let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };

@@ -98,6 +98,10 @@ fn pass(
         if blocked {
             return Rgb::ZERO;
         }
+        if crossings.is_empty() {
+            // (Most shadow rays cross nothing: the light arrives whole.)
+            return along(&[]);
+        }
         distinct(ray, crossings);
         let through = walk(scene, ray, crossings, media);
         if through == Rgb::ZERO {
