@@ -55,10 +55,7 @@ impl super::shape::Surface for Sphere {
         // by rounding (a sphere of radius 30000 seen from 1 unit off its surface: 10⁻⁹ and
         // more at grazing angles, beyond the spawned origin's offset).
         let far = ray.origin.abs().max_element() + self.centre.abs().max_element();
-        let noise = 4.0
-            * f64::EPSILON
-            * (ff + rr + 2.0 * f.abs().element_sum() * far)
-            / q.abs();
+        let noise = 4.0 * f64::EPSILON * (ff + rr + 2.0 * f.abs().element_sum() * far) / q.abs();
         let t0 = if t0.abs() <= noise { f64::NAN } else { t0 };
         let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
         Crossings::within(ray, &[near, far])
