@@ -94,7 +94,7 @@ pub struct WideBvh {
 }
 
 /// Whether this CPU has AVX2 and FMA (always false off x86-64).
-fn has_avx2() -> bool {
+fn has_avx2_and_fma() -> bool {
     #[cfg(target_arch = "x86_64")]
     {
         std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma")
@@ -137,7 +137,7 @@ impl WideBvh {
             root: EMPTY,
             centre,
             extent,
-            avx2: has_avx2(),
+            avx2: has_avx2_and_fma(),
         };
         if bvh.nodes.is_empty() || bvh.primitive_indices.is_empty() {
             return tree;
@@ -723,7 +723,7 @@ mod tests {
                 .fold(0.0f32, |m, p| m.max(p.abs()));
             let f = FilterRay::new(&ray, &sheared, centre, extent);
             let o = origin - centre;
-            for avx2 in [false, has_avx2()] {
+            for avx2 in [false, has_avx2_and_fma()] {
                 let (near, mask) = if avx2 {
                     f.boxes::<true>(&node, f32::INFINITY)
                 } else {
