@@ -265,6 +265,14 @@ impl Scene {
     pub fn cull_shadow_rays(&self) -> bool {
         self.cull_shadow_rays
     }
+
+    /// Whether the scene tests every object for every ray (it has too few for a top-level
+    /// index): finding what may block a point light from a pyramid then costs about what one
+    /// shadow ray does, and the pyramid serves the points around its apex too.
+    #[inline]
+    pub fn scans_objects(&self) -> bool {
+        self.index.is_none()
+    }
 }
 
 /// The camera's four vectors.
