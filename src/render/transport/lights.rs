@@ -344,8 +344,11 @@ impl Tracer<'_> {
     ) -> Ray {
         let point = light.position + a1 * s1 + a2 * s2;
         let to = point - start.point();
-        let mut shadow = start.ray(self.scene, to / to.length());
-        shadow.tmax = (point - shadow.origin).length();
+        let length = to.length();
+        let mut shadow = start.ray(self.scene, to / length);
+        // (The distance from the shaded point, which the ray's origin lies within 10⁻¹² of:
+        // one square root a ray, not two, as for a point light.)
+        shadow.tmax = length;
         shadow
     }
 
