@@ -65,7 +65,7 @@ const HULL_REUSE: f64 = 1.0 / 64.0;
 const POINT_HULL_REUSE: f64 = 1.0 / 16.0;
 
 /// Pyramids kept per light and object (set), and the most candidates one keeps.
-const HULLS_PER_SET: usize = 4;
+const HULLS_PER_SET: usize = 8;
 const HULL_MOST_CANDIDATES: usize = 8;
 
 /// The sets of pyramids kept per light: a point's object picks one (its id modulo the
