@@ -6,10 +6,8 @@ fn trace() -> Command {
     Command::new(env!("CARGO_BIN_EXE_trace"))
 }
 
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("trace-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
+fn temp_dir(name: &str) -> crate::Scratch {
+    crate::Scratch::new("cli", name)
 }
 
 #[test]

@@ -8,12 +8,9 @@ fn trace() -> Command {
     Command::new(env!("CARGO_BIN_EXE_trace"))
 }
 
-/// A fresh scratch folder.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("trace-hostile-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
+/// A fresh scratch folder, removed at the end of the test.
+fn scratch(name: &str) -> crate::Scratch {
+    crate::Scratch::new("hostile", name)
 }
 
 const CAMERA: &str =
@@ -49,8 +46,9 @@ pub(crate) fn load_error(text: &str) -> Option<String> {
 }
 
 /// A secret outside the scene's folder, a scene folder with a link to it, and files the
-/// scene may not read, each holding a marker that must never be printed.
-fn sandbox_layout(name: &str) -> (PathBuf, PathBuf) {
+/// scene may not read, each holding a marker that must never be printed: the scratch folder
+/// holding both (removed when dropped), the scene's folder and the one outside it.
+fn sandbox_layout(name: &str) -> (crate::Scratch, PathBuf, PathBuf) {
     let root = scratch(name);
     let (scene_dir, outside) = (root.join("scene"), root.join("outside"));
     std::fs::create_dir_all(&scene_dir).unwrap();
@@ -61,12 +59,12 @@ fn sandbox_layout(name: &str) -> (PathBuf, PathBuf) {
     }
     #[cfg(unix)]
     std::os::unix::fs::symlink(outside.join("x.inc"), scene_dir.join("link.inc")).unwrap();
-    (scene_dir, outside)
+    (root, scene_dir, outside)
 }
 
 #[test]
 fn a_scene_reads_no_file_outside_its_folder_and_the_include_paths() {
-    let (scene_dir, outside) = sandbox_layout("sandbox");
+    let (_root, scene_dir, outside) = sandbox_layout("sandbox");
     let absolute = outside.join("x.inc");
     let mut cases = vec![
         "#include \"/etc/passwd\"".to_string(),

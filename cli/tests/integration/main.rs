@@ -24,6 +24,40 @@ mod watch;
 
 use std::path::{Path, PathBuf};
 
+/// A scratch folder of the system's temporary folder, named for the test's kind and name and
+/// the process: fresh (emptied if a run before left it), and removed when dropped, so that
+/// test runs leave nothing behind.
+pub struct Scratch(PathBuf);
+
+impl Scratch {
+    pub fn new(kind: &str, name: &str) -> Scratch {
+        let id = std::process::id();
+        let dir = std::env::temp_dir().join(format!("trace-{kind}-{id}-{name}"));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("scratch folder");
+        Scratch(dir)
+    }
+}
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 /// The repository root (the workspace; this crate is cli/).
 pub fn root() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))

@@ -9,12 +9,9 @@ fn trace() -> Command {
     Command::new(env!("CARGO_BIN_EXE_trace"))
 }
 
-/// A fresh scratch folder.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("trace-povcli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    dir
+/// A fresh scratch folder, removed at the end of the test.
+fn scratch(name: &str) -> crate::Scratch {
+    crate::Scratch::new("povcli", name)
 }
 
 /// Runs trace in `dir` with `args`; panics with its stderr if it fails.
