@@ -606,11 +606,12 @@ fn pyramid(
     let (h1, h2) = match (h1 == DVec3::ZERO, h2 == DVec3::ZERO) {
         (true, true) => {
             let axis = c - apex;
+            let length = axis.length();
             // (An apex at the light, or not finite, has no pyramid.)
-            if axis.length().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+            if length.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return None;
             }
-            let side = axis.any_orthogonal_vector().normalize() * (1e-6 * axis.length());
+            let side = axis.any_orthogonal_vector().normalize() * (1e-6 * length);
             (side, axis.normalize().cross(side))
         }
         (true, false) => (
