@@ -3,7 +3,7 @@
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
-use super::wide::{Corners, triangle};
+use super::wide::{Corners, Lane};
 use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
@@ -216,8 +216,7 @@ impl TriangleMesh {
         tmin: f64,
         tmax: f64,
     ) -> Option<f64> {
-        let [a, b, c] = triangle(corners, lane);
-        let crossing = sheared.intersect(a, b, c, tmin, tmax);
+        let crossing = sheared.intersect_corners(&Lane(corners, lane), tmin, tmax);
         counters::record(super::shape::TRIANGLE, crossing.is_some());
         crossing
     }

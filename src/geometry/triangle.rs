@@ -12,7 +12,8 @@ use glam::DVec3;
 /// A ray prepared for triangle tests: the shear that maps its direction to +z.
 #[derive(Clone, Copy, Debug)]
 pub struct ShearedRay {
-    origin: DVec3,
+    /// The origin's coordinates along the shear's x, y and z axes.
+    origin: [f64; 3],
     kx: usize,
     ky: usize,
     kz: usize,
@@ -26,7 +27,7 @@ impl ShearedRay {
     pub fn new(origin: DVec3, direction: DVec3) -> ShearedRay {
         let (kx, ky, kz) = shear_axes(direction);
         ShearedRay {
-            origin,
+            origin: [origin[kx], origin[ky], origin[kz]],
             kx,
             ky,
             kz,
@@ -47,17 +48,38 @@ impl ShearedRay {
     }
 
     /// Distance `t` to the triangle (v0, v1, v2), if the ray meets it (either side) at a `t` in
-    /// `(tmin, tmax)`.
+    /// `(tmin, tmax)`. (Meshes call [`ShearedRay::intersect_corners`] on their stored
+    /// corners; this form is for tests and the stability suite.)
+    #[cfg(any(test, feature = "internals"))]
     pub fn intersect(&self, v0: DVec3, v1: DVec3, v2: DVec3, tmin: f64, tmax: f64) -> Option<f64> {
-        // Vertices relative to the origin, sheared.
-        let (a, b, c) = (v0 - self.origin, v1 - self.origin, v2 - self.origin);
+        self.intersect_corners(&[v0, v1, v2], tmin, tmax)
+    }
+
+    /// [`ShearedRay::intersect`] for the triangle whose corner `k`'s coordinate `axis` is
+    /// `corners.at(k, axis)`: read where the corners are stored, a coordinate at a time, with
+    /// no copy of them to index.
+    #[inline(always)]
+    pub fn intersect_corners(
+        &self,
+        corners: &impl TriangleCorners,
+        tmin: f64,
+        tmax: f64,
+    ) -> Option<f64> {
+        let corner = |k: usize, axis: usize| corners.at(k, axis);
         let (kx, ky, kz) = (self.kx, self.ky, self.kz);
-        let ax = a[kx] - self.sx * a[kz];
-        let ay = a[ky] - self.sy * a[kz];
-        let bx = b[kx] - self.sx * b[kz];
-        let by = b[ky] - self.sy * b[kz];
-        let cx = c[kx] - self.sx * c[kz];
-        let cy = c[ky] - self.sy * c[kz];
+        let [ox, oy, oz] = self.origin;
+        // Vertices relative to the origin, sheared.
+        let sheared = |k: usize| {
+            let z = corner(k, kz) - oz;
+            (
+                (corner(k, kx) - ox) - self.sx * z,
+                (corner(k, ky) - oy) - self.sy * z,
+                z,
+            )
+        };
+        let (ax, ay, az) = sheared(0);
+        let (bx, by, bz) = sheared(1);
+        let (cx, cy, cz) = sheared(2);
         // Scaled barycentric coordinates (2D edge functions).
         let u = cx * by - cy * bx;
         let v = ax * cy - ay * cx;
@@ -70,9 +92,22 @@ impl ShearedRay {
             return None;
         }
         // Scaled distance, then the real one.
-        let t_scaled = u * self.sz * a[kz] + v * self.sz * b[kz] + w * self.sz * c[kz];
+        let t_scaled = u * self.sz * az + v * self.sz * bz + w * self.sz * cz;
         let t = t_scaled / det;
         (tmin < t && t < tmax).then_some(t)
+    }
+}
+
+/// Where a triangle's corners are read from.
+pub trait TriangleCorners {
+    /// Corner `k`'s coordinate `axis` (each below 3).
+    fn at(&self, k: usize, axis: usize) -> f64;
+}
+
+impl TriangleCorners for [DVec3; 3] {
+    #[inline(always)]
+    fn at(&self, k: usize, axis: usize) -> f64 {
+        self[k][axis]
     }
 }
 

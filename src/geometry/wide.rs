@@ -16,10 +16,11 @@
 //! the crossings are those of the exact test alone.
 
 use super::Ray;
-use super::triangle::ShearedRay;
-use glam::{DVec3, Vec3, Vec4};
+use super::triangle::{ShearedRay, TriangleCorners};
+use glam::{DVec3, Vec3, Vec3A, Vec4};
 use obvhs::bvh2::Bvh2;
 use rayon::prelude::*;
+use std::mem::MaybeUninit;
 
 /// A child slot that holds nothing.
 const EMPTY: u32 = u32::MAX;
@@ -47,10 +48,15 @@ struct Node {
 /// of lane `i` is `corner[k][axis][i]`, the mesh's vertex exactly.
 pub type Corners = [[Vec4; 3]; 3];
 
-/// A lane's triangle, in double precision (exactly its corners).
-#[inline(always)]
-pub fn triangle(corners: &Corners, lane: usize) -> [DVec3; 3] {
-    corners.map(|c| DVec3::new(c[0][lane] as f64, c[1][lane] as f64, c[2][lane] as f64))
+/// A lane of a block's corners: one triangle, for the exact test.
+pub struct Lane<'a>(pub &'a Corners, pub usize);
+
+impl TriangleCorners for Lane<'_> {
+    #[inline(always)]
+    fn at(&self, k: usize, axis: usize) -> f64 {
+        let Lane(corners, lane) = *self;
+        corners[k][axis].as_ref()[lane] as f64
+    }
 }
 
 /// Up to four consecutive triangles; the lanes past `count` hold NaN, which no test passes.
@@ -431,56 +437,54 @@ struct FilterRay {
 }
 
 impl FilterRay {
+    #[inline(always)]
     fn new(ray: &Ray, sheared: &ShearedRay, centre: DVec3, extent: f32) -> FilterRay {
-        let o = ray.origin - centre;
-        let d = ray.direction;
         let origin = ray.origin;
         // The same axes and factors as the exact test's.
         let ((kx, ky, kz), (sx, sy)) = (sheared.axes(), sheared.factors());
         // Each sheared coordinate a[kx] − sx·a[kz] (|sx| ≤ 1) is off by at most: the origin's
         // rounding (the corners are exact), the subtraction, the factor's
         // rounding, the product and the difference: under 9 units of the largest magnitude;
-        // 16 leaves room for the exact test's own (double-precision) roundings.
-        let magnitude = extent + up(origin.abs().max_element());
+        // 16 leaves room for the magnitude's own rounding (to nearest) and the exact test's
+        // (double-precision) roundings.
+        let magnitude = extent + origin.abs().max_element() as f32;
         let error = if magnitude < 1e15 {
             16.0 * UNIT * magnitude
         } else {
             f32::INFINITY
         };
-        // A slab's distance is plane · i − o · i for the f32 reciprocal i of the direction
-        // (within 2 units of the exact one, as the direction is rounded to f32 first), the
-        // exact plane (a node's sides are f32) and o · i rounded: the reciprocal's error
-        // moves it by 2 units of |t| ≤ (extent + |o|)·|i|, o · i's rounding by one unit of
-        // |o · i|, o's own rounding by one more, and the product and the difference (or the
-        // fused product-difference) by two units of (extent + |o|)·|i| at most: 8 units of
-        // (extent + |o|)·|i| hold them all, with room for the extent's own rounding. The
-        // offsets are rounded to nearest, one unit more (no branch on the way they round:
-        // a ray's origin rounds either way at random).
-        let slab = |o: f64, d: f64| -> (f32, f32, f32) {
-            let i = if d.abs() < 1e-20 {
-                1e20f32.copysign(d as f32)
-            } else {
-                (d as f32).recip()
-            };
-            let scale = (f64::from(extent) + o.abs()) * f64::from(i).abs();
-            if scale.is_nan() || scale >= 1e36 {
-                // (plane · 0 − (+∞) is −∞ and plane · 0 − (−∞) is +∞: the slab holds all.)
-                return (0.0, f32::INFINITY, f32::NEG_INFINITY);
-            }
-            let at = o * f64::from(i);
-            let margin = 10.0 * f64::from(UNIT) * scale;
-            (i, (at + margin) as f32, (at - margin) as f32)
-        };
-        let slabs = [slab(o.x, d.x), slab(o.y, d.y), slab(o.z, d.z)];
+        // The slabs, three axes at once in f32. A slab's distance is plane · i − offset for
+        // the f32 reciprocal i of the f32 direction (±10²⁰ where that is nearer zero than
+        // 10⁻²⁰, so that no distance is NaN or infinite; 2 units from the exact reciprocal)
+        // and offset = o · i ± margin, with o the origin relative to the boxes' centre. With
+        // |plane| ≤ extent, every distance is at most scale = (extent + |o|)·|i|, and the
+        // roundings are: the reciprocal's error (2 units of scale), o's rounding to f32 (1),
+        // the product o · i (1), adding the margin (1), and the product-difference (1 fused,
+        // 2 without FMA): 7 units of scale, which a margin of 12 units holds (its own f32
+        // roundings take under 3 units of it). Where scale is 10³⁶ or more (or NaN) the slab
+        // cannot be bounded in f32 and holds every distance instead: i = 0 and offsets ∓∞
+        // (plane · 0 − (+∞) is −∞ and plane · 0 − (−∞) is +∞).
+        let o = (origin - centre).as_vec3a();
+        let d = ray.direction.as_vec3a();
+        let tiny = d.abs().cmplt(Vec3A::splat(1e-20));
+        let i = Vec3A::select(tiny, Vec3A::splat(1e20).copysign(d), d.recip());
         // (A zero component's sign picks the side as its reciprocal's does.)
-        let down = [d.x, d.y, d.z].map(|c| (c as f32).is_sign_negative());
+        let down = i.is_negative_bitmask();
+        let scale = (Vec3A::splat(extent) + o.abs()) * i.abs();
+        let bounded = scale.cmplt(Vec3A::splat(1e36));
+        let at = o * i;
+        let margin = scale * (12.0 * UNIT);
+        let enter_offset = Vec3A::select(bounded, at + margin, Vec3A::INFINITY);
+        let leave_offset = Vec3A::select(bounded, at - margin, Vec3A::NEG_INFINITY);
+        let inverse = Vec3A::select(bounded, i, Vec3A::ZERO);
         let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
+        let high = |axis: usize| down & (1 << axis) != 0;
         FilterRay {
-            enter: [0, 1, 2].map(|a| side(a, down[a])),
-            leave: [0, 1, 2].map(|a| side(a, !down[a])),
-            inverse: slabs.map(|s| s.0),
-            enter_offset: slabs.map(|s| s.1),
-            leave_offset: slabs.map(|s| s.2),
+            enter: [0, 1, 2].map(|a| side(a, high(a))),
+            leave: [0, 1, 2].map(|a| side(a, !high(a))),
+            inverse: inverse.to_array(),
+            enter_offset: enter_offset.to_array(),
+            leave_offset: leave_offset.to_array(),
             origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
             kx,
             ky,
@@ -601,10 +605,11 @@ impl FilterRay {
     }
 }
 
-/// The walk's stack of (entry, entry distance): a fixed array, spilling to the heap only for
-/// trees deeper than any a real mesh gives.
+/// The walk's stack of (entry, entry distance): a fixed array, left uninitialised (a walk
+/// is short, and writing 64 slots it will not use cost a shadow ray about 7 % of its
+/// instructions), spilling to the heap only for trees deeper than any a real mesh gives.
 struct Stack {
-    items: [(u32, f32); 64],
+    items: [MaybeUninit<(u32, f32)>; 64],
     len: usize,
     spill: Vec<(u32, f32)>,
 }
@@ -612,7 +617,7 @@ struct Stack {
 impl Stack {
     fn new() -> Stack {
         Stack {
-            items: [(0, 0.0); 64],
+            items: [const { MaybeUninit::uninit() }; 64],
             len: 0,
             spill: Vec::new(),
         }
@@ -621,7 +626,7 @@ impl Stack {
     #[inline(always)]
     fn push(&mut self, entry: u32, near: f32) {
         if self.len < self.items.len() {
-            self.items[self.len] = (entry, near);
+            self.items[self.len] = MaybeUninit::new((entry, near));
             self.len += 1;
         } else {
             self.spill.push((entry, near));
@@ -637,7 +642,8 @@ impl Stack {
             return None;
         }
         self.len -= 1;
-        Some(self.items[self.len])
+        // SAFETY: the slots below `len` were each written by `push`.
+        Some(unsafe { self.items[self.len].assume_init() })
     }
 }
 
@@ -795,6 +801,22 @@ mod tests {
         if k % 3 == 0 {
             ray.tmin = 1e-9;
             ray.tmax = 1.0;
+        }
+        if k % 5 == 4 {
+            // A shadow ray: from a point on a triangle (as a hit point is, which the filter
+            // passes and the exact test must turn down), with a small `tmin` and a `tmax`
+            // anywhere along it.
+            let f = soup[(rng.next() * soup.len() as f64) as usize];
+            let (s, t) = (rng.next(), rng.next());
+            let (s, t) = if s + t > 1.0 {
+                (1.0 - s, 1.0 - t)
+            } else {
+                (s, t)
+            };
+            let start = f[0] + (f[1] - f[0]) * s + (f[2] - f[0]) * t;
+            ray = Ray::new(start, target - start);
+            ray.tmin = [1e-9, 1e-6, 1e-3][k % 3];
+            ray.tmax = rng.next() * 2.0;
         }
         ray
     }
