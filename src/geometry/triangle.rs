@@ -26,14 +26,16 @@ impl ShearedRay {
     /// Prepares `origin + t·direction`.
     pub fn new(origin: DVec3, direction: DVec3) -> ShearedRay {
         let (kx, ky, kz) = shear_axes(direction);
+        // (Indexed as arrays: a vector's own indexing is a branch on each index.)
+        let (o, d) = (origin.to_array(), direction.to_array());
         ShearedRay {
-            origin: [origin[kx], origin[ky], origin[kz]],
+            origin: [o[kx], o[ky], o[kz]],
             kx,
             ky,
             kz,
-            sx: direction[kx] / direction[kz],
-            sy: direction[ky] / direction[kz],
-            sz: 1.0 / direction[kz],
+            sx: d[kx] / d[kz],
+            sy: d[ky] / d[kz],
+            sz: 1.0 / d[kz],
         }
     }
 
