@@ -18,13 +18,21 @@ pub(super) struct Carry {
 /// Renders the block whose top-left pixel is (x0, y0), with the media camera rays start in
 /// (if the same for all), radiosity's cache after the pretrace (if the scene has it) and, in
 /// POV-Ray's order, what earlier blocks left.
-pub(super) fn render_block(
-    scene: &Scene,
+///
+/// With `centres` (method 3, the band's centre samples traced first: see
+/// [`antialias::BandCentres`]), the block's own centre samples and what tracing them
+/// counted are taken from there, and `tracer` is the one that traced them.
+pub(super) fn render_block<'a>(
+    scene: &'a Scene,
     options: &RenderOptions,
     (camera_media, radiosity, mut carry): (
         Option<MediumStack>,
         Option<&Shared>,
         Option<&mut Carry>,
+    ),
+    (centres, tracer): (
+        Option<(&antialias::BandCentres, &antialias::Centres)>,
+        Option<Tracer<'a>>,
     ),
     x0: u32,
     y0: u32,
@@ -32,7 +40,7 @@ pub(super) fn render_block(
     let (w, h) = (options.width, options.height);
     let x1 = (x0 + BLOCK_SIZE).min(w);
     let y1 = (y0 + BLOCK_SIZE).min(h);
-    let mut tracer = Tracer::new(scene);
+    let mut tracer = tracer.unwrap_or_else(|| Tracer::new(scene));
     // (Radiosity: the block adds its own samples to the pretrace's, seen by it alone.)
     let serial = (y0 / BLOCK_SIZE) * w.div_ceil(BLOCK_SIZE) + x0 / BLOCK_SIZE;
     tracer.gathering = radiosity.map(|shared| {
@@ -59,8 +67,9 @@ pub(super) fn render_block(
         camera_media: &camera_media,
         xs: x0..x1,
         ys: y0..y1,
+        centres,
     };
-    let (pixels, samples) = match (radiosity, options.radiosity_reference) {
+    let (pixels, mut samples) = match (radiosity, options.radiosity_reference) {
         (Some(shared), Some(paths)) => reference_pixels(&block, &mut tracer, shared, paths),
         _ => antialias::block_pixels(&block, &mut tracer),
     };
@@ -71,19 +80,49 @@ pub(super) fn render_block(
     if let (Some(c), Some(g)) = (carry, tracer.gathering.take()) {
         c.samples = Some((g.own, g.next));
     }
+    // (Traced before the counts and tests are taken.)
+    let aov = block_aovs(&mut tracer, options, x0..x1, y0..y1);
+    let mut tests = counters::take();
+    if let Some((_, own)) = centres {
+        tracer.counts.add(&own.counts);
+        tests.add(&own.tests);
+        samples += own.samples();
+    }
     BlockResult {
         radiosity,
         x0,
         y0,
         width: x1 - x0,
-        // (Traced before the counts and tests are taken.)
-        aov: block_aovs(&mut tracer, options, x0..x1, y0..y1),
+        aov,
         pixels,
         counts: tracer.counts,
-        tests: counters::take(),
+        tests,
         samples,
         non_finite: 0,
     }
+}
+
+/// Method 3's centre samples of the rectangle `xs` × `ys` (a block's, grown where no block
+/// of its band lies beyond: see [`antialias::BandCentres`]), traced into `buffer` before
+/// the band's blocks are, for them to share, and the tracer that traced them (for the
+/// block to go on with: the pyramids it keeps for shadow rays are its own pixels').
+pub(super) fn block_centres<'a>(
+    scene: &'a Scene,
+    options: &RenderOptions,
+    camera_media: Option<MediumStack>,
+    (xs, ys): (std::ops::Range<u32>, std::ops::Range<u32>),
+    buffer: Vec<(super::Px, Rgb)>,
+) -> (antialias::Centres, Tracer<'a>) {
+    let mut tracer = Tracer::new(scene);
+    let block = Block {
+        scene,
+        options,
+        camera_media: &camera_media,
+        xs,
+        ys,
+        centres: None,
+    };
+    (antialias::centres(&block, &mut tracer, buffer), tracer)
 }
 
 /// Radiosity's ground truth for the pixels of a block: each pixel's centre ray traced

@@ -275,6 +275,25 @@ pub fn thread_pool(
 /// the band's output values, which each block writes as it finishes).
 const BAND_PIXELS: usize = 1 << 19;
 
+/// Pixels a band holds at most when its blocks share method 3's centre samples (see
+/// `antialias::BandCentres`), which are kept, 56 bytes a pixel, until its blocks are done:
+/// more would touch more new memory than the rays saved are worth (measured: 14 MB of them
+/// cost a 640×480 render 7 %), and wider images, whose one row of blocks would hold more,
+/// do not share.
+const SHARED_BAND_PIXELS: usize = 1 << 17;
+
+/// Rows of blocks a band holds at most when its blocks share method 3's centre samples: the
+/// rows just above and below a band are traced twice (1.6 % more centre samples at four).
+const SHARED_BAND_BLOCK_ROWS: u32 = 4;
+
+/// Rows of blocks in a band of `width` pixels whose blocks share method 3's centre samples,
+/// or `None` if a band that wide does not share.
+fn shared_band_block_rows(width: u32) -> Option<u32> {
+    let row_pixels = width as usize * BLOCK_SIZE as usize;
+    (row_pixels <= SHARED_BAND_PIXELS)
+        .then(|| ((SHARED_BAND_PIXELS / row_pixels.max(1)) as u32).min(SHARED_BAND_BLOCK_ROWS))
+}
+
 /// Rows of blocks rendered together: as many as fit in `band_pixels`, at least one.
 fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
     let row_pixels = width as usize * BLOCK_SIZE as usize;
@@ -283,14 +302,21 @@ fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
 
 /// The memory a render of `width` × `height` pixels holds at its peak, whatever the scene:
 /// one band of rows being traced and converted, and the writer's buffers (up to 64 rows of
-/// output values: EXR's blocks of 16 scanlines queued for compression).
+/// output values: EXR's blocks of 16 scanlines queued for compression), and method 3's
+/// centre samples of a band whose blocks share them.
 pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
     let per_pixel = std::mem::size_of::<[f32; 3]>();
     let band = (width as usize * band_rows).saturating_mul(per_pixel);
     let writer =
         (width as usize * 64.min(height as usize)).saturating_mul(std::mem::size_of::<[f32; 3]>());
-    band.saturating_add(writer)
+    // (Method 3's centre samples of a band that shares them, with the rows and columns
+    // just outside it.)
+    let centres = shared_band_block_rows(width).map_or(0, |rows| {
+        let rows = (rows * BLOCK_SIZE).min(height) as usize + 2;
+        (width as usize + 2) * rows * std::mem::size_of::<(Px, Rgb)>()
+    });
+    band.saturating_add(writer).saturating_add(centres)
 }
 
 /// The image in bands of whole rows of blocks, top first, each rendered in parallel when it
@@ -317,6 +343,10 @@ pub struct Bands<'a> {
     carry: Option<block::Carry>,
     /// Statistics of the bands rendered so far.
     pub stats: RenderStats,
+    /// Method 3's centre-sample buffers of the band before, for this band's blocks.
+    spare_centres: Vec<Vec<(Px, Rgb)>>,
+    /// Whether method 3's bands may share their centre samples (tests turn it off).
+    share_centres: bool,
 }
 
 impl<'a> Bands<'a> {
@@ -344,7 +374,7 @@ impl<'a> Bands<'a> {
             stats.stopped = Some(0);
         }
         stats.trace_time += start.elapsed();
-        Bands {
+        let mut bands = Bands {
             scene,
             options,
             pool,
@@ -358,7 +388,35 @@ impl<'a> Bands<'a> {
             blocks_x: region.x0 / BLOCK_SIZE..region.x1.div_ceil(BLOCK_SIZE),
             band_block_rows: band_block_rows(region.width(), BAND_PIXELS),
             stats,
+            spare_centres: Vec::new(),
+            share_centres: true,
+        };
+        if bands.shares_centres() {
+            // (A band's centre samples are kept until its blocks are done: smaller bands keep
+            // fewer, and pass their memory on to the next band.)
+            match shared_band_block_rows(bands.blocks_x.len() as u32 * BLOCK_SIZE) {
+                Some(rows) => bands.band_block_rows = bands.band_block_rows.min(rows),
+                None => bands.share_centres = false,
+            }
         }
+        bands
+    }
+
+    /// Whether method 3's bands trace their centre samples first, for their blocks to
+    /// share (see `antialias::BandCentres`): not with radiosity, where each block gathers
+    /// its own samples in the order its rays are traced.
+    fn shares_centres(&self) -> bool {
+        self.share_centres
+            && matches!(self.options.antialias, Antialias::Sampled { .. })
+            && self.radiosity.is_none()
+            && self.options.radiosity_reference.is_none()
+    }
+
+    /// The same bands, each block tracing its own centre samples and border (for tests).
+    #[cfg(test)]
+    fn without_shared_centres(mut self) -> Self {
+        self.share_centres = false;
+        self
     }
 
     /// The same bands, each at most `rows` rows of blocks high (tests split small images).
@@ -425,15 +483,59 @@ impl<'a> Bands<'a> {
         let radiosity = self.radiosity.as_ref();
         let progress = options.progress.as_deref();
         let gamma = scene.gamma();
-        let one = |i: u32, mut tile: Tile, carry: Option<&mut block::Carry>| {
-            if options.cancel.is_cancelled() {
+        // Method 3: the band's centre samples first, each traced once, for its blocks'
+        // comparisons to share (see `antialias::BandCentres`); each block then goes on with
+        // the tracer that traced its own.
+        let mut tracers: Vec<Option<transport::Tracer>> = Vec::new();
+        let centres = self.shares_centres().then(|| {
+            let rows = first..last;
+            let count = ((last - first) * columns) as usize;
+            let mut buffers = std::mem::take(&mut self.spare_centres);
+            buffers.resize_with(count, Vec::new);
+            let blocks: Vec<Option<(antialias::Centres, transport::Tracer)>> =
+                self.pool.install(|| {
+                    (buffers.into_par_iter().enumerate())
+                        .with_max_len(1)
+                        .map(|(i, buffer)| {
+                            if options.cancel.is_cancelled() {
+                                return None;
+                            }
+                            let i = i as u32;
+                            let (bx, by) = (blocks_x.start + i % columns, first + i / columns);
+                            let rectangle = antialias::BandCentres::rectangle(
+                                (bx, by),
+                                (blocks_x.clone(), rows.clone()),
+                                (options.width, options.height),
+                            );
+                            Some(block::block_centres(
+                                scene, options, media, rectangle, buffer,
+                            ))
+                        })
+                        .collect()
+                });
+            // (A band stopped part-way has no shared samples: its blocks stop too.)
+            let blocks: Option<Vec<_>> = blocks.into_iter().collect();
+            blocks.map(|blocks| {
+                let (blocks, kept): (Vec<_>, Vec<_>) = blocks.into_iter().unzip();
+                tracers = kept.into_iter().map(Some).collect();
+                antialias::BandCentres::new(blocks, columns, (blocks_x.start, first))
+            })
+        });
+        tracers.resize_with(tiles.len(), || None);
+        let one = |i: u32,
+                   mut tile: Tile,
+                   carry: Option<&mut block::Carry>,
+                   tracer: Option<transport::Tracer<'a>>| {
+            if options.cancel.is_cancelled() || centres.as_ref().is_some_and(Option::is_none) {
                 return None;
             }
             let (bx, by) = (blocks_x.start + i % columns, first + i / columns);
+            let band = centres.as_ref().and_then(Option::as_ref);
             let mut block = block::render_block(
                 scene,
                 options,
                 (media, radiosity, carry),
+                (band.map(|b| (b, b.block(i))), tracer),
                 bx * BLOCK_SIZE,
                 by * BLOCK_SIZE,
             );
@@ -458,15 +560,15 @@ impl<'a> Bands<'a> {
         let blocks: Vec<Option<block::BlockResult>> = match self.carry.as_mut() {
             // (Radiosity in POV-Ray's order: the blocks one after another, on this thread.)
             Some(carry) => (tiles.into_iter().enumerate())
-                .map(|(i, tile)| one(i as u32, tile, Some(&mut *carry)))
+                .map(|(i, tile)| one(i as u32, tile, Some(&mut *carry), None))
                 .collect(),
             // (One block per task: costly blocks often sit together, around one object, and
             // rayon's default chunks of many blocks left a core idle; measured 133 % of 2 cores
             // on examples/parametric.rt before, see the commit.)
             None => self.pool.install(|| {
-                (tiles.into_par_iter().enumerate())
+                (tiles.into_par_iter().zip(tracers).enumerate())
                     .with_max_len(1)
-                    .map(|(i, tile)| one(i as u32, tile, None))
+                    .map(|(i, (tile, tracer))| one(i as u32, tile, None, tracer))
                     .collect()
             }),
         };
@@ -483,6 +585,10 @@ impl<'a> Bands<'a> {
                 return None;
             }
             values.truncate(row_len * (y1 - y0) as usize);
+        }
+        // (The band's sample buffers go to the next band's blocks: memory already touched.)
+        if let Some(Some(band)) = centres {
+            self.spare_centres = band.into_buffers().collect();
         }
         for b in blocks.iter().flatten().filter(|b| b.y0 < y1) {
             self.stats.non_finite += b.non_finite;
@@ -634,6 +740,55 @@ mod tests {
         );
     }
 
+    /// Method 3's blocks, sharing their band's centre samples, give the picture of blocks
+    /// that each trace their own and their border, with fewer samples: for bands of one to
+    /// three rows of blocks (so rows above and below bands are traced twice), a region that
+    /// starts and ends inside blocks, alpha and AOV layers.
+    #[test]
+    fn shared_centre_samples_change_no_value() {
+        let (w, h) = (75, 100);
+        let scene = built(w, h);
+        let pool = thread_pool(Some(2)).expect("a pool");
+        let options = RenderOptions {
+            width: w,
+            height: h,
+            antialias: Antialias::Sampled {
+                threshold: 0.1,
+                depth: 2,
+            },
+            region: Some(Region {
+                x0: 5,
+                y0: 17,
+                x1: 71,
+                y1: 96,
+            }),
+            alpha: true,
+            aovs: vec![Aov::Depth],
+            ..RenderOptions::default()
+        };
+        let run = |rows: u32, share: bool| {
+            let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
+            if !share {
+                bands = bands.without_shared_centres();
+            }
+            let mut all = Vec::new();
+            while let Some(band) = bands.next_band(Vec::new()) {
+                all.extend(band.values.iter().map(|v| v.to_bits()));
+            }
+            (all, bands.stats.samples)
+        };
+        let (own, own_samples) = run(1, false);
+        assert_eq!(run(3, false).0, own);
+        for rows in [1, 2, 3] {
+            let (shared, samples) = run(rows, true);
+            assert!(shared == own, "bands of {rows} rows of blocks");
+            assert!(
+                samples < own_samples,
+                "{samples} samples, {own_samples} without sharing"
+            );
+        }
+    }
+
     #[test]
     fn the_preview_ends_as_the_film_whatever_it_held() {
         let (w, h) = (70, 45);
@@ -709,8 +864,12 @@ mod tests {
                     pixels == whole.film.pixels,
                     "{antialias:?}, {rows} rows of blocks"
                 );
-                assert_eq!(bands.stats.samples, whole.stats.samples);
-                assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+                // (Method 3's blocks trace the rows just above and below their band again:
+                // its counts depend on the bands' height; the pixels do not.)
+                if !matches!(antialias, Antialias::Sampled { .. }) {
+                    assert_eq!(bands.stats.samples, whole.stats.samples);
+                    assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+                }
             }
         }
     }
@@ -884,7 +1043,13 @@ mod tests {
         assert_eq!(band_block_rows(640, BAND_PIXELS), 25);
         assert_eq!(band_block_rows(7680, BAND_PIXELS), 2);
         assert_eq!(band_block_rows(32768, BAND_PIXELS), 1);
-        // The memory asked for is the band's and the writer's, not the image's: an 8K image
+        // Bands that share method 3's centre samples are smaller, and wide ones do not share.
+        assert_eq!(shared_band_block_rows(640), Some(4));
+        assert_eq!(shared_band_block_rows(1280), Some(3));
+        assert_eq!(shared_band_block_rows(4096), Some(1));
+        assert_eq!(shared_band_block_rows(4097), None);
+        // The memory asked for is the band's and the writer's (and, up to 4,096 pixels wide,
+        // the shared centre samples of a band), not the image's: an 8K image
         // needs about 12 MB, a 32k × 32k one about 38 MB (it would hold 12 GB as a film).
         assert!(bytes_needed(7680, 4320) < 12 << 20);
         assert!(bytes_needed(32768, 32768) < 38 << 20);

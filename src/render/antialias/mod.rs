@@ -6,6 +6,8 @@ mod adaptive;
 mod recursive;
 mod sampled;
 
+pub(super) use sampled::{BandCentres, Centres, centres};
+
 use super::transport::{MediumStack, Tracer};
 use super::{Px, RenderOptions, camera, output_value};
 use crate::scene::{Gamma, Rgb, Scene};
@@ -81,6 +83,9 @@ pub(super) struct Block<'a> {
     /// The block's columns and rows.
     pub xs: Range<u32>,
     pub ys: Range<u32>,
+    /// Method 3's centre samples of the block's band, if the band traced them first, and
+    /// the block's own among them.
+    pub centres: Option<(&'a BandCentres, &'a Centres)>,
 }
 
 impl Block<'_> {
