@@ -8,7 +8,6 @@ use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
-use obvhs::ray::Ray as BvhRay;
 use std::time::Duration;
 
 /// Marker for a flat triangle in the normal indices.
@@ -61,30 +60,8 @@ pub fn outward_aabb(min: DVec3, max: DVec3) -> Aabb {
     }
 }
 
-/// An obvhs ray for `ray` (f32), with the exact reciprocal direction: a zero component gives
-/// an infinite one, so a ray parallel to a slab stays in it for every t when its origin lies
-/// inside (and never enters it otherwise), as the slab test assumes. (Replacing a zero by a
-/// tiny component, as obvhs's own constructor does, makes the ray drift out of a box padded
-/// by 1e-7 of its size: a grid seen straight on leaked along its lines.) An origin exactly on
-/// a padded box face makes a NaN there, whichever way it resolves: the padding keeps all
-/// geometry strictly inside, so a ray along the face meets none of it.
-pub fn bvh_ray(ray: &Ray, tmax: f64) -> BvhRay {
-    let d = ray.direction.as_vec3a();
-    BvhRay {
-        origin: ray.origin.as_vec3a(),
-        direction: d,
-        inv_direction: d.recip(),
-        tmin: 0.0,
-        tmax: if tmax.is_finite() {
-            ((tmax * (1.0 + 1e-6)) as f32).next_up()
-        } else {
-            f32::INFINITY
-        },
-    }
-}
-
 /// A distance as the tree's pruning value: never below the true distance.
-fn prune_value(t: f64) -> f32 {
+pub(crate) fn prune_value(t: f64) -> f32 {
     if t.is_finite() {
         ((t * (1.0 + 1e-6)) as f32).next_up()
     } else {

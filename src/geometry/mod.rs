@@ -34,7 +34,7 @@ mod superellipsoid;
 mod text;
 mod torus;
 pub mod triangle;
-mod wide;
+pub(crate) mod wide;
 
 pub use blob::{Blob, BlobElement};
 pub use cone::Cone;

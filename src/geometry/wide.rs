@@ -85,18 +85,25 @@ impl Block {
 /// 2 to 10 stand-alone triangles, meshes of their own).
 const SMALL: usize = 4;
 
-/// The tree: nodes, leaves' blocks and the frame they are stored in.
-pub struct WideBvh {
+/// An 8-wide tree over boxes: its inner nodes and the frame they are stored in. A leaf is a
+/// child entry `LEAF | payload`, the payload (below 2^31) what its owner put there: a mesh's
+/// first block, the top-level index's first object.
+pub struct WideTree {
     nodes: Vec<Node>,
-    blocks: Vec<Block>,
-    /// The root entry (as a node's child), `EMPTY` for a mesh with no triangles.
+    /// The root entry (as a node's child), `EMPTY` for a tree over nothing.
     root: u32,
     /// Nodes' boxes are stored relative to this point.
     centre: DVec3,
-    /// The largest magnitude of a corner coordinate.
+    /// The largest magnitude of a box coordinate.
     extent: f32,
     /// Whether this CPU has AVX2 and FMA, which test a node's eight boxes at once.
     avx2: bool,
+}
+
+/// A triangle mesh's tree: the boxes, and the leaves' blocks of triangles.
+pub struct WideBvh {
+    tree: WideTree,
+    blocks: Vec<Block>,
 }
 
 /// Whether this CPU has AVX2 and FMA (always false off x86-64).
@@ -121,15 +128,15 @@ fn down(x: f64) -> f32 {
     if (y as f64) > x { y.next_down() } else { y }
 }
 
-impl WideBvh {
-    /// Collapses `bvh` (dropped as soon as it is read; its primitive at position `i` of its
-    /// list is triangle `i`) into an 8-wide tree; `corners(i)` gives triangle `i`'s corners
-    /// and `(lo, hi)` bounds them all.
-    pub fn new(
-        bvh: Bvh2,
-        corners: impl Fn(usize) -> [Vec3; 3] + Sync + Send,
+impl WideTree {
+    /// Collapses `bvh`, whose boxes `(lo, hi)` bounds, into an 8-wide tree; `leaf(range)`
+    /// gives the payload (below 2^31) of a leaf over the primitives at `range` of the binary
+    /// tree's primitive list, called in the order the leaves are laid out.
+    pub fn collapse(
+        bvh: &Bvh2,
         (lo, hi): (DVec3, DVec3),
-    ) -> WideBvh {
+        mut leaf: impl FnMut(std::ops::Range<usize>) -> u32,
+    ) -> WideTree {
         let centre = if lo.cmple(hi).all() {
             (lo + hi) * 0.5
         } else {
@@ -137,9 +144,8 @@ impl WideBvh {
         };
         let extent = lo.abs().max(hi.abs()).max_element();
         let extent = if extent.is_finite() { up(extent) } else { 0.0 };
-        let mut tree = WideBvh {
+        let mut tree = WideTree {
             nodes: crate::memory::with_huge_pages(bvh.nodes.len() / 3 + 1),
-            blocks: Vec::new(),
             root: EMPTY,
             centre,
             extent,
@@ -148,20 +154,15 @@ impl WideBvh {
         if bvh.nodes.is_empty() || bvh.primitive_indices.is_empty() {
             return tree;
         }
-        // The leaves' triangles, in the order their blocks are stored.
-        let mut leaves: Vec<std::ops::Range<usize>> = Vec::new();
-        let mut block_count = 0u32;
         // Work list: (Bvh2 node, the node slot to fill, or None for the root).
         let mut work: Vec<(usize, Option<(usize, usize)>)> = vec![(0, None)];
         while let Some((index, slot)) = work.pop() {
             let node = &bvh.nodes[index];
             let entry = if node.is_leaf() {
                 let first = node.first_index as usize;
-                let range = first..first + node.prim_count as usize;
-                let entry = LEAF | block_count;
-                block_count += range.len().div_ceil(4) as u32;
-                leaves.push(range);
-                entry
+                let payload = leaf(first..first + node.prim_count as usize);
+                debug_assert!(payload & LEAF == 0);
+                LEAF | payload
             } else {
                 // Open the widest inner child until there are eight.
                 let mut kids = [0; WIDE];
@@ -205,120 +206,71 @@ impl WideBvh {
                 None => tree.root = entry,
             }
         }
-        // The binary tree goes before the blocks are made (at 1M triangles it is 64 MB).
-        drop(bvh);
-        // The blocks' triangles (sequentially: cheap), then their corners (in parallel).
-        let nan = Vec4::splat(f32::NAN);
-        tree.blocks = crate::memory::with_huge_pages(block_count as usize);
-        for range in leaves {
-            for start in range.clone().step_by(4) {
-                let count = (range.end - start).min(4);
-                tree.blocks.push(Block {
-                    corner: [[nan; 3]; 3],
-                    first: start as u32,
-                    count: count as u32 | if start + count < range.end { MORE } else { 0 },
-                });
-            }
-        }
-        tree.blocks.par_iter_mut().for_each(|block| {
-            for lane in 0..(block.count & 7) as usize {
-                for (k, p) in corners(block.first as usize + lane).into_iter().enumerate() {
-                    for axis in 0..3 {
-                        block.corner[k][axis][lane] = p[axis];
-                    }
-                }
-            }
-        });
-        debug_assert_eq!(tree.blocks.len(), block_count as usize);
         tree
     }
 
-    /// The same tree, walked without AVX2 (for tests of that path on CPUs that have it).
-    #[cfg(test)]
-    pub fn without_avx2(mut self) -> WideBvh {
-        self.avx2 = false;
-        self
-    }
-
-    /// Asks for an entry's memory ahead of its test.
+    /// Asks for a node's memory ahead of its test (`leaf` for a leaf's payload).
     #[inline(always)]
-    fn prefetch(&self, entry: u32) {
+    fn prefetch(&self, entry: u32, leaf: &impl Fn(u32)) {
+        if entry & LEAF != 0 {
+            return leaf(entry & !LEAF);
+        }
         #[cfg(target_arch = "x86_64")]
         {
-            use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
-            // (Addresses worked out without bounds checks: a prefetch never faults.)
-            let (p, lines) = if entry & LEAF != 0 {
-                let block = self.blocks.as_ptr().wrapping_add((entry & !LEAF) as usize);
-                (block as *const i8, 3)
-            } else {
-                let node = self.nodes.as_ptr().wrapping_add(entry as usize);
-                (node as *const i8, 4)
-            };
-            for k in 0..lines {
-                // SAFETY: a prefetch only hints the cache; it never faults, whatever the address.
-                unsafe { _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(64 * k)) };
-            }
+            // (An address worked out without bounds checks: a prefetch never faults.)
+            let node = self.nodes.as_ptr().wrapping_add(entry as usize);
+            prefetch_lines(node as *const u8, 4);
         }
     }
 
     /// Visits, nearest box first when `ORDERED`, the leaves whose boxes the ray enters before
-    /// `limit`; `visit(first, lanes, corners)` is called for each block with a mask of the
-    /// triangles that may cross the ray (lane `i` is triangle `first + i`) and their corners,
-    /// and returns a new limit (it only ever lowers it; a negative limit ends the walk).
+    /// `limit`: `visit(payload, limit)` is called for each and returns a new limit (it only
+    /// ever lowers it; a negative limit ends the walk); `prefetch(payload)` may ask for a
+    /// leaf's memory when its box is entered.
+    #[inline(always)]
     pub fn walk<const ORDERED: bool>(
         &self,
         ray: &Ray,
-        sheared: &ShearedRay,
         limit: f32,
-        visit: impl FnMut(u32, u32, &Corners) -> f32,
+        prefetch: impl Fn(u32),
+        visit: impl FnMut(u32, f32) -> f32,
     ) {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
             // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
-            return unsafe { self.walk_avx2::<ORDERED>(ray, sheared, limit, visit) };
+            return unsafe { self.walk_avx2::<ORDERED>(ray, limit, prefetch, visit) };
         }
-        self.walk_with::<ORDERED, false>(ray, sheared, limit, visit)
+        self.walk_with::<ORDERED, false>(ray, limit, prefetch, visit)
     }
 
-    /// [`WideBvh::walk`] compiled for AVX2 and FMA (the box tests, and all that is inlined
-    /// here).
+    /// [`WideTree::walk`] compiled for AVX2 and FMA (the box tests, and all that is inlined
+    /// here: the leaves' own tests too).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2,fma")]
     unsafe fn walk_avx2<const ORDERED: bool>(
         &self,
         ray: &Ray,
-        sheared: &ShearedRay,
         limit: f32,
-        visit: impl FnMut(u32, u32, &Corners) -> f32,
+        prefetch: impl Fn(u32),
+        visit: impl FnMut(u32, f32) -> f32,
     ) {
-        self.walk_with::<ORDERED, true>(ray, sheared, limit, visit)
+        self.walk_with::<ORDERED, true>(ray, limit, prefetch, visit)
     }
 
     /// The walk, testing a node's boxes with AVX2 when `AVX2` (with `AVX2` it is called only
-    /// from [`WideBvh::walk_avx2`], which it is inlined into).
+    /// from [`WideTree::walk_avx2`], which it is inlined into).
     #[inline(always)]
     fn walk_with<const ORDERED: bool, const AVX2: bool>(
         &self,
         ray: &Ray,
-        sheared: &ShearedRay,
         mut limit: f32,
-        mut visit: impl FnMut(u32, u32, &Corners) -> f32,
+        prefetch: impl Fn(u32),
+        mut visit: impl FnMut(u32, f32) -> f32,
     ) {
         if self.root == EMPTY {
             return;
         }
-        // A small tree's blocks, whole and in their order: the walk's order when the root is
-        // a leaf (it holds them all), so an ordered walk takes this only then.
-        if self.blocks.len() <= SMALL && (!ORDERED || self.root & LEAF != 0) {
-            for block in &self.blocks {
-                limit = limit.min(visit(block.first, block.all_lanes(), &block.corner));
-                if limit < 0.0 {
-                    return;
-                }
-            }
-            return;
-        }
-        let r = FilterRay::new(ray, sheared, self.centre, self.extent);
+        let r = BoxRay::new(ray, self.centre, self.extent);
         let mut stack = Stack::new();
         stack.push(self.root, 0.0);
         while let Some((mut entry, near)) = stack.pop() {
@@ -336,7 +288,7 @@ impl WideBvh {
                 while m != 0 {
                     let i = m.trailing_zeros() as usize;
                     m &= m - 1;
-                    self.prefetch(node.child[i]);
+                    self.prefetch(node.child[i], &prefetch);
                 }
                 let first = mask.trailing_zeros() as usize;
                 mask &= mask - 1;
@@ -388,27 +340,176 @@ impl WideBvh {
             if entry & LEAF == 0 {
                 continue;
             }
-            let mut b = (entry & !LEAF) as usize;
-            loop {
-                let block = &self.blocks[b];
-                let lanes = r.triangles(block);
-                if lanes != 0 {
-                    limit = limit.min(visit(block.first, lanes, &block.corner));
-                    if limit < 0.0 {
-                        return;
-                    }
-                }
-                if block.count & MORE == 0 {
-                    break;
-                }
-                b += 1;
+            limit = limit.min(visit(entry & !LEAF, limit));
+            if limit < 0.0 {
+                return;
             }
         }
     }
+
+    /// Calls `f` with the payload of every leaf whose box `keep(lo, hi)` keeps (a box holding
+    /// the leaf's, in world space), descending only into nodes it keeps; a leaf at the root
+    /// is always visited.
+    pub fn each_kept(&self, keep: impl Fn(DVec3, DVec3) -> bool, mut f: impl FnMut(u32)) {
+        if self.root == EMPTY {
+            return;
+        }
+        // The stored sides are rounded outward from the boxes less the centre, in double
+        // precision (one rounding: 2^-53 of the larger magnitude), and the centre is added
+        // back here (one more): a pad of 2^-50 of the magnitudes covers both.
+        let pad = (self.extent as f64 + self.centre.abs().max_element()) * (2.0f64).powi(-50);
+        // (Called for every shading point under an area light: the stack is kept per thread.)
+        thread_local! {
+            static STACK: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
+        }
+        STACK.with_borrow_mut(|stack| {
+            stack.clear();
+            stack.push(self.root);
+            while let Some(entry) = stack.pop() {
+                if entry & LEAF != 0 {
+                    f(entry & !LEAF);
+                    continue;
+                }
+                let node = &self.nodes[entry as usize];
+                for i in 0..WIDE {
+                    if node.child[i] == EMPTY {
+                        continue;
+                    }
+                    let side = |s: usize| {
+                        DVec3::new(
+                            node.planes[s][i] as f64,
+                            node.planes[s + 1][i] as f64,
+                            node.planes[s + 2][i] as f64,
+                        ) + self.centre
+                    };
+                    if keep(side(0) - DVec3::splat(pad), side(3) + DVec3::splat(pad)) {
+                        stack.push(node.child[i]);
+                    }
+                }
+            }
+        });
+    }
 }
 
-/// A ray's f32 copies for the two tests.
-struct FilterRay {
+/// Asks for `lines` cache lines from `p` on (x86-64 only; elsewhere nothing).
+#[inline(always)]
+fn prefetch_lines(p: *const u8, lines: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        for k in 0..lines {
+            // SAFETY: a prefetch only hints the cache; it never faults, whatever the address.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(p.wrapping_add(64 * k) as *const i8) };
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (p, lines);
+}
+
+impl WideBvh {
+    /// Collapses `bvh` (dropped as soon as it is read; its primitive at position `i` of its
+    /// list is triangle `i`) into an 8-wide tree; `corners(i)` gives triangle `i`'s corners
+    /// and `(lo, hi)` bounds them all.
+    pub fn new(
+        bvh: Bvh2,
+        corners: impl Fn(usize) -> [Vec3; 3] + Sync + Send,
+        bounds: (DVec3, DVec3),
+    ) -> WideBvh {
+        // The leaves' triangles, in the order their blocks are stored.
+        let mut leaves: Vec<std::ops::Range<usize>> = Vec::new();
+        let mut block_count = 0u32;
+        let tree = WideTree::collapse(&bvh, bounds, |range| {
+            let first = block_count;
+            block_count += range.len().div_ceil(4) as u32;
+            leaves.push(range);
+            first
+        });
+        // The binary tree goes before the blocks are made (at 1M triangles it is 64 MB).
+        drop(bvh);
+        // The blocks' triangles (sequentially: cheap), then their corners (in parallel).
+        let nan = Vec4::splat(f32::NAN);
+        let mut blocks = crate::memory::with_huge_pages(block_count as usize);
+        for range in leaves {
+            for start in range.clone().step_by(4) {
+                let count = (range.end - start).min(4);
+                blocks.push(Block {
+                    corner: [[nan; 3]; 3],
+                    first: start as u32,
+                    count: count as u32 | if start + count < range.end { MORE } else { 0 },
+                });
+            }
+        }
+        blocks.par_iter_mut().for_each(|block| {
+            for lane in 0..(block.count & 7) as usize {
+                for (k, p) in corners(block.first as usize + lane).into_iter().enumerate() {
+                    for axis in 0..3 {
+                        block.corner[k][axis][lane] = p[axis];
+                    }
+                }
+            }
+        });
+        debug_assert_eq!(blocks.len(), block_count as usize);
+        WideBvh { tree, blocks }
+    }
+
+    /// The same tree, walked without AVX2 (for tests of that path on CPUs that have it).
+    #[cfg(test)]
+    pub fn without_avx2(mut self) -> WideBvh {
+        self.tree.avx2 = false;
+        self
+    }
+
+    /// Visits, nearest box first when `ORDERED`, the leaves whose boxes the ray enters before
+    /// `limit`; `visit(first, lanes, corners)` is called for each block with a mask of the
+    /// triangles that may cross the ray (lane `i` is triangle `first + i`) and their corners,
+    /// and returns a new limit (it only ever lowers it; a negative limit ends the walk).
+    pub fn walk<const ORDERED: bool>(
+        &self,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        mut limit: f32,
+        mut visit: impl FnMut(u32, u32, &Corners) -> f32,
+    ) {
+        // A small tree's blocks, whole and in their order: the walk's order when the root is
+        // a leaf (it holds them all), so an ordered walk takes this only then.
+        if self.blocks.len() <= SMALL && (!ORDERED || self.tree.root & LEAF != 0) {
+            for block in &self.blocks {
+                limit = limit.min(visit(block.first, block.all_lanes(), &block.corner));
+                if limit < 0.0 {
+                    return;
+                }
+            }
+            return;
+        }
+        let filter = TriangleFilter::new(ray, sheared, self.tree.extent);
+        let blocks = &self.blocks;
+        let prefetch = |first: u32| {
+            // (An address worked out without bounds checks: a prefetch never faults.)
+            prefetch_lines(blocks.as_ptr().wrapping_add(first as usize) as *const u8, 3);
+        };
+        self.tree
+            .walk::<ORDERED>(ray, limit, prefetch, |first, mut limit| {
+                let mut b = first as usize;
+                loop {
+                    let block = &blocks[b];
+                    let lanes = filter.triangles(block);
+                    if lanes != 0 {
+                        limit = limit.min(visit(block.first, lanes, &block.corner));
+                        if limit < 0.0 {
+                            return limit;
+                        }
+                    }
+                    if block.count & MORE == 0 {
+                        return limit;
+                    }
+                    b += 1;
+                }
+            });
+    }
+}
+
+/// A ray's f32 copy for the box tests.
+struct BoxRay {
     /// Along each axis, the node plane (an index into [`Node::planes`], below 6) the ray
     /// enters a box by (the low side if it moves up or not at all, the high side if down),
     /// and the one it leaves by.
@@ -420,9 +521,13 @@ struct FilterRay {
     inverse: [f32; 3],
     /// The origin relative to the boxes' centre times `inverse`, less a margin for the
     /// entry distance (`plane · inverse − offset`, with one rounding or two) and plus it
-    /// for the exit, so that each slab holds the exact ray's: see [`FilterRay::new`].
+    /// for the exit, so that each slab holds the exact ray's: see [`BoxRay::new`].
     enter_offset: [f32; 3],
     leave_offset: [f32; 3],
+}
+
+/// A ray's f32 copy for the triangle filter.
+struct TriangleFilter {
     /// The origin rounded to nearest (not relative to the centre: the corners are not).
     origin: [Vec4; 3],
     /// The shear of the watertight test: the axes and the shear factors (as the exact test's).
@@ -436,9 +541,10 @@ struct FilterRay {
     error: f32,
 }
 
-impl FilterRay {
+impl TriangleFilter {
+    /// The filter for a ray and its exact test, for corners no larger than `extent`.
     #[inline(always)]
-    fn new(ray: &Ray, sheared: &ShearedRay, centre: DVec3, extent: f32) -> FilterRay {
+    fn new(ray: &Ray, sheared: &ShearedRay, extent: f32) -> TriangleFilter {
         let origin = ray.origin;
         // The same axes and factors as the exact test's.
         let ((kx, ky, kz), (sx, sy)) = (sheared.axes(), sheared.factors());
@@ -453,6 +559,21 @@ impl FilterRay {
         } else {
             f32::INFINITY
         };
+        TriangleFilter {
+            origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
+            kx,
+            ky,
+            kz,
+            sx: Vec4::splat(sx as f32),
+            sy: Vec4::splat(sy as f32),
+            error,
+        }
+    }
+}
+
+impl BoxRay {
+    #[inline(always)]
+    fn new(ray: &Ray, centre: DVec3, extent: f32) -> BoxRay {
         // The slabs, three axes at once in f32. A slab's distance is plane · i − offset for
         // the f32 reciprocal i of the f32 direction (±10²⁰ where that is nearer zero than
         // 10⁻²⁰, so that no distance is NaN or infinite; 2 units from the exact reciprocal)
@@ -464,7 +585,7 @@ impl FilterRay {
         // roundings take under 3 units of it). Where scale is 10³⁶ or more (or NaN) the slab
         // cannot be bounded in f32 and holds every distance instead: i = 0 and offsets ∓∞
         // (plane · 0 − (+∞) is −∞ and plane · 0 − (−∞) is +∞).
-        let o = (origin - centre).as_vec3a();
+        let o = (ray.origin - centre).as_vec3a();
         let d = ray.direction.as_vec3a();
         let tiny = d.abs().cmplt(Vec3A::splat(1e-20));
         let i = Vec3A::select(tiny, Vec3A::splat(1e20).copysign(d), d.recip());
@@ -479,19 +600,12 @@ impl FilterRay {
         let inverse = Vec3A::select(bounded, i, Vec3A::ZERO);
         let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
         let high = |axis: usize| down & (1 << axis) != 0;
-        FilterRay {
+        BoxRay {
             enter: [0, 1, 2].map(|a| side(a, high(a))),
             leave: [0, 1, 2].map(|a| side(a, !high(a))),
             inverse: inverse.to_array(),
             enter_offset: enter_offset.to_array(),
             leave_offset: leave_offset.to_array(),
-            origin: [origin.x as f32, origin.y as f32, origin.z as f32].map(Vec4::splat),
-            kx,
-            ky,
-            kz,
-            sx: Vec4::splat(sx as f32),
-            sy: Vec4::splat(sy as f32),
-            error,
         }
     }
 
@@ -526,7 +640,7 @@ impl FilterRay {
         (near, mask0 | mask1 << 4)
     }
 
-    /// [`FilterRay::boxes`] with AVX and FMA: one register a side, one fused
+    /// [`BoxRay::boxes`] with AVX and FMA: one register a side, one fused
     /// product-difference a distance. Not itself compiled for AVX2 (a function that is
     /// cannot be inlined always): it is inlined into the walk compiled for AVX2 and FMA, and
     /// the intrinsics into that.
@@ -569,7 +683,9 @@ impl FilterRay {
             (distances, _mm256_movemask_ps(inside) as u32)
         }
     }
+}
 
+impl TriangleFilter {
     /// The lanes of a block whose triangle the exact test might find on the ray's line: the
     /// scaled barycentric coordinates are computed in f32 and a lane passes unless they have
     /// opposite signs by more than their error bound.
@@ -722,12 +838,11 @@ mod tests {
                 continue;
             }
             let ray = Ray::new(origin, direction);
-            let sheared = ShearedRay::new(ray.origin, ray.direction);
             let extent = (0..6)
                 .flat_map(|side| node.planes[side])
                 .filter(|p| !p.is_nan())
                 .fold(0.0f32, |m, p| m.max(p.abs()));
-            let f = FilterRay::new(&ray, &sheared, centre, extent);
+            let f = BoxRay::new(&ray, centre, extent);
             let o = origin - centre;
             for avx2 in [false, has_avx2_and_fma()] {
                 let (near, mask) = if avx2 {

@@ -1,13 +1,14 @@
-//! The top-level structure over objects: an obvhs `Bvh2` over the world boxes of the bounded
-//! objects, with unbounded ones (planes) kept in a list beside it. Scenes with few objects
-//! skip it and test every object (see [`MIN_OBJECTS_FOR_BVH`]).
+//! The top-level structure over objects: the world boxes of the bounded objects in a tree
+//! obvhs builds, collapsed into eight children a node (the meshes' [`WideTree`]), with
+//! unbounded ones (planes) kept in a list beside it. Scenes with few objects skip it and
+//! test every object (see [`MIN_OBJECTS_FOR_BVH`]).
 
 use crate::geometry::Ray;
-use crate::geometry::mesh::{bvh_ray, outward_aabb};
+use crate::geometry::mesh::{outward_aabb, prune_value};
+use crate::geometry::wide::WideTree;
+use glam::DVec3;
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
-use obvhs::bvh2::Bvh2;
-use obvhs::ray::RayHit;
 use std::time::Duration;
 
 /// Below this many bounded objects a linear scan (with a box test per object) is as fast as
@@ -16,8 +17,9 @@ pub const MIN_OBJECTS_FOR_BVH: usize = 8;
 
 /// Objects organised for ray queries.
 pub struct ObjectIndex {
-    bvh: Bvh2,
-    /// Object ids in BVH primitive order.
+    tree: WideTree,
+    /// Object ids in the leaves' order, a leaf's last one marked with [`LAST`]; a leaf's
+    /// payload is the position of its first.
     bounded: Vec<u32>,
     /// Objects without bounds, tested for every ray.
     pub unbounded: Vec<u32>,
@@ -31,6 +33,9 @@ impl std::fmt::Debug for ObjectIndex {
             .finish()
     }
 }
+
+/// The bit that marks the last object of a leaf in [`ObjectIndex::bounded`].
+const LAST: u32 = 1 << 31;
 
 /// The boxes an index will be built over (see [`ObjectIndex::prepare`]).
 pub struct Prepared {
@@ -91,15 +96,22 @@ impl Prepared {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::fast_build()
         };
-        let mut bvh =
-            obvhs::bvh2::builder::build_bvh2(&self.boxes, params, &mut Duration::default());
+        let bvh = obvhs::bvh2::builder::build_bvh2(&self.boxes, params, &mut Duration::default());
         drop(self.boxes);
-        // (A ray's walk reads nodes scattered over megabytes at a million objects.)
-        bvh.nodes = crate::memory::into_huge_pages(std::mem::take(&mut bvh.nodes));
+        let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+        if let Some(root) = bvh.nodes.first() {
+            (lo, hi) = (root.aabb.min.as_dvec3(), root.aabb.max.as_dvec3());
+        }
         let mut bounded = crate::memory::with_huge_pages(bvh.primitive_indices.len());
-        bounded.extend(bvh.primitive_indices.iter().map(|&k| self.ids[k as usize]));
+        let tree = WideTree::collapse(&bvh, (lo, hi), |range| {
+            let first = bounded.len() as u32;
+            let ids = &bvh.primitive_indices[range];
+            bounded.extend(ids.iter().map(|&k| self.ids[k as usize]));
+            *bounded.last_mut().expect("a leaf holds an object") |= LAST;
+            first
+        });
         ObjectIndex {
-            bvh,
+            tree,
             bounded,
             unbounded: self.unbounded,
         }
@@ -107,71 +119,69 @@ impl Prepared {
 }
 
 impl ObjectIndex {
+    /// Calls `f` with each object of the leaf at `first` until it returns true; whether it
+    /// did.
+    #[inline(always)]
+    fn leaf(&self, first: u32, mut f: impl FnMut(u32) -> bool) -> bool {
+        for &id in &self.bounded[first as usize..] {
+            if f(id & !LAST) {
+                return true;
+            }
+            if id & LAST != 0 {
+                break;
+            }
+        }
+        false
+    }
+
     /// Closest-hit traversal: `f(object, tmax)` returns the object's nearest distance below
     /// `tmax`, if any; the best is kept and prunes the rest.
     pub fn closest(&self, ray: &Ray, mut f: impl FnMut(u32, f64) -> Option<f64>) {
         let mut tmax = ray.tmax;
-        self.bvh
-            .ray_traverse(bvh_ray(ray, tmax), &mut RayHit::none(), |_, k| {
-                match f(self.bounded[k], tmax) {
-                    Some(t) => {
-                        tmax = t;
-                        ((t * (1.0 + 1e-6)) as f32).next_up()
-                    }
-                    None => f32::INFINITY,
+        let visit = |first: u32, _| {
+            let mut hit = false;
+            self.leaf(first, |i| {
+                if let Some(t) = f(i, tmax) {
+                    tmax = t;
+                    hit = true;
                 }
+                false
             });
-    }
-
-    /// Visits every bounded object whose box the ray meets, stopping when `f` returns true.
-    pub fn any(&self, ray: &Ray, mut f: impl FnMut(u32) -> bool) -> bool {
-        !self.bvh.ray_traverse_miss(bvh_ray(ray, ray.tmax), |_, k| {
-            if f(self.bounded[k]) {
-                0.0
+            if hit {
+                prune_value(tmax)
             } else {
                 f32::INFINITY
             }
-        })
+        };
+        self.tree
+            .walk::<true>(ray, prune_value(ray.tmax), |_| {}, visit);
+    }
+
+    /// Visits every bounded object whose box the ray meets, stopping when `f` returns true;
+    /// whether it did.
+    pub fn any(&self, ray: &Ray, mut f: impl FnMut(u32) -> bool) -> bool {
+        let mut found = false;
+        let visit = |first: u32, _| {
+            if self.leaf(first, &mut f) {
+                found = true;
+                -1.0
+            } else {
+                f32::INFINITY
+            }
+        };
+        self.tree
+            .walk::<false>(ray, prune_value(ray.tmax), |_| {}, visit);
+        found
     }
 
     /// Visits every bounded object in a leaf whose box `keep(min, max)` keeps, descending only
     /// into nodes it keeps (the node boxes hold their objects' boxes, rounded outward).
-    pub fn each_kept(
-        &self,
-        keep: impl Fn(glam::DVec3, glam::DVec3) -> bool,
-        mut f: impl FnMut(u32),
-    ) {
-        let nodes = &self.bvh.nodes;
-        let Some(root) = nodes.first() else { return };
-        let kept = |n: &obvhs::bvh2::node::Bvh2Node| {
-            let a = n.aabb();
-            keep(a.min.as_dvec3(), a.max.as_dvec3())
-        };
-        if !kept(root) {
-            return;
-        }
-        // (Called for every shading point under an area light: the stack is kept per thread.)
-        thread_local! {
-            static STACK: std::cell::RefCell<Vec<u32>> = const { std::cell::RefCell::new(Vec::new()) };
-        }
-        STACK.with_borrow_mut(|stack| {
-            stack.clear();
-            stack.push(0);
-            while let Some(i) = stack.pop() {
-                let node = &nodes[i as usize];
-                if node.is_leaf() {
-                    let first = node.first_index as usize;
-                    for k in first..first + node.prim_count as usize {
-                        f(self.bounded[k]);
-                    }
-                    continue;
-                }
-                for child in [node.first_index, node.first_index + 1] {
-                    if kept(&nodes[child as usize]) {
-                        stack.push(child);
-                    }
-                }
-            }
+    pub fn each_kept(&self, keep: impl Fn(DVec3, DVec3) -> bool, mut f: impl FnMut(u32)) {
+        self.tree.each_kept(keep, |first| {
+            self.leaf(first, |i| {
+                f(i);
+                false
+            });
         });
     }
 }
@@ -183,4 +193,156 @@ fn tie_breaker(k: u32) -> f32 {
     h = h.wrapping_mul(0x85EB_CA6B);
     h ^= h >> 13;
     (h >> 8) as f32 / (1u32 << 24) as f32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small deterministic generator (xorshift), uniform in [0, 1).
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn point(&mut self, size: f64) -> DVec3 {
+            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * size
+        }
+    }
+
+    /// The distance at which the ray enters box `(lo, hi)` within [0, tmax], by exact slabs
+    /// in double precision (None if it misses it).
+    fn entry(ray: &Ray, (lo, hi): (DVec3, DVec3)) -> Option<f64> {
+        let (mut near, mut far) = (0.0f64, ray.tmax);
+        for axis in 0..3 {
+            let (o, d) = (ray.origin[axis], ray.direction[axis]);
+            if d == 0.0 {
+                if o < lo[axis] || o > hi[axis] {
+                    return None;
+                }
+                continue;
+            }
+            let (a, b) = ((lo[axis] - o) / d, (hi[axis] - o) / d);
+            near = near.max(a.min(b));
+            far = far.min(a.max(b));
+        }
+        // (Clear of the exact slabs' own rounding.)
+        (near < far * (1.0 - 1e-12)).then_some(near)
+    }
+
+    /// The index answers as testing every object's box does: a walk visits every object
+    /// whose box the ray enters, the nearest-first walk finds the nearest of them, a
+    /// stopping walk stops, and a point query keeps every box that holds the point: with
+    /// boxes near the origin and far from it, large and tiny, unbounded ones beside them,
+    /// rays from inside and outside, axis-aligned and grazing, shadow-like with an end.
+    #[test]
+    fn index_finds_what_every_box_finds() {
+        let mut r = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut checked = 0;
+        for (case, (offset, size, count)) in [
+            (0.0, 10.0, 9),
+            (0.0, 10.0, 300),
+            (1e5, 1.0, 100),
+            (-3e3, 1e-3, 50),
+            (20.0, 1e4, 1000),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let centre = DVec3::new(offset, 0.5 * offset, -offset);
+            let mut bounds = Vec::new();
+            for k in 0..count {
+                if k % 17 == 5 {
+                    bounds.push(None);
+                    continue;
+                }
+                let lo = centre + r.point(size);
+                let extent = r.point(size * [0.2, 0.01, 1e-6][k % 3]).abs();
+                bounds.push(Some((lo, lo + extent)));
+            }
+            let index = ObjectIndex::prepare(&bounds)
+                .expect("enough objects")
+                .build();
+            assert_eq!(
+                index.unbounded,
+                (0..count as u32)
+                    .filter(|&k| k % 17 == 5)
+                    .collect::<Vec<_>>()
+            );
+            for k in 0..2000 {
+                let origin = centre + r.point(size * [0.5, 3.0, 100.0][k % 3]);
+                // Half the rays aimed at a point inside a box.
+                let target = match bounds[(k * 13) % count] {
+                    Some((lo, hi)) if k % 2 == 0 => lo + (hi - lo) * r.next(),
+                    _ => centre + r.point(size),
+                };
+                let mut direction = target - origin;
+                if k % 7 == 0 {
+                    direction[k % 3] = 0.0;
+                }
+                if k % 11 == 0 {
+                    direction[(k + 1) % 3] *= 1e-9;
+                }
+                if direction == DVec3::ZERO {
+                    continue;
+                }
+                let mut ray = Ray::new(origin, direction);
+                if k % 4 == 0 {
+                    ray.tmax = r.next() * 1.5;
+                }
+                let hit: Vec<(u32, f64)> = (bounds.iter().enumerate())
+                    .filter_map(|(i, b)| Some((i as u32, entry(&ray, (*b)?)?)))
+                    .collect();
+                checked += hit.len();
+                let what = format!("case {case}, ray {k}");
+                // Every box entered is visited.
+                let mut seen = vec![false; count];
+                assert!(!index.any(&ray, |i| {
+                    seen[i as usize] = true;
+                    false
+                }));
+                for &(i, _) in &hit {
+                    assert!(seen[i as usize], "{what}: object {i} not visited");
+                }
+                // The walk stops when asked.
+                if let Some(&(stop, _)) = hit.first() {
+                    assert!(index.any(&ray, |i| i == stop), "{what}");
+                }
+                // The nearest entry, with each object answering its own box's entry.
+                let mut best: Option<f64> = None;
+                index.closest(&ray, |i, tmax| {
+                    let t = entry(&ray, bounds[i as usize]?)?;
+                    if t < tmax && best.is_none_or(|b| t < b) {
+                        best = Some(t);
+                        return Some(t);
+                    }
+                    None
+                });
+                let nearest = hit.iter().map(|&(_, t)| t).reduce(f64::min);
+                assert_eq!(best, nearest, "{what}");
+            }
+            // Point queries: every box holding the point is kept.
+            for k in 0..500 {
+                let p = if k % 2 == 0 {
+                    centre + r.point(size)
+                } else {
+                    // A box's corner, exactly.
+                    let (lo, hi) = bounds[(k * 7) % count].unwrap_or((centre, centre));
+                    if k % 4 == 1 { lo } else { hi }
+                };
+                let holds = |lo: DVec3, hi: DVec3| p.cmpge(lo).all() && p.cmple(hi).all();
+                let mut kept = vec![false; count];
+                index.each_kept(holds, |i| kept[i as usize] = true);
+                for (i, b) in bounds.iter().enumerate() {
+                    if b.is_some_and(|(lo, hi)| holds(lo, hi)) {
+                        assert!(kept[i], "case {case}, point {k}: object {i} not kept");
+                    }
+                }
+            }
+        }
+        assert!(checked > 4_000, "only {checked} boxes entered");
+    }
 }
