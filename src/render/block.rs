@@ -19,9 +19,9 @@ pub(super) struct Carry {
 /// (if the same for all), radiosity's cache after the pretrace (if the scene has it) and, in
 /// POV-Ray's order, what earlier blocks left.
 ///
-/// With `centres` (method 3, the band's centre samples traced first: see
-/// [`antialias::BandCentres`]), the block's own centre samples and what tracing them
-/// counted are taken from there, and `tracer` is the one that traced them.
+/// With `centres` (methods 1 and 3, the band's centre samples traced first: see
+/// [`antialias::BandCentres`]), the centre samples the block traced for its band and what
+/// tracing them counted are taken from there, and `tracer` is the one that traced them.
 pub(super) fn render_block<'a>(
     scene: &'a Scene,
     options: &RenderOptions,
@@ -69,7 +69,7 @@ pub(super) fn render_block<'a>(
         ys: y0..y1,
         centres,
     };
-    let (pixels, mut samples) = match (radiosity, options.radiosity_reference) {
+    let (pixels, samples) = match (radiosity, options.radiosity_reference) {
         (Some(shared), Some(paths)) => reference_pixels(&block, &mut tracer, shared, paths),
         _ => antialias::block_pixels(&block, &mut tracer),
     };
@@ -86,7 +86,6 @@ pub(super) fn render_block<'a>(
     if let Some((_, own)) = centres {
         tracer.counts.add(&own.counts);
         tests.add(&own.tests);
-        samples += own.samples();
     }
     BlockResult {
         radiosity,
@@ -102,15 +101,15 @@ pub(super) fn render_block<'a>(
     }
 }
 
-/// Method 3's centre samples of the rectangle `xs` × `ys` (a block's, grown where no block
-/// of its band lies beyond: see [`antialias::BandCentres`]), traced into `buffer` before
-/// the band's blocks are, for them to share, and the tracer that traced them (for the
-/// block to go on with: the pyramids it keeps for shadow rays are its own pixels').
+/// The centre samples of `rectangles` (a block's, for its band: see
+/// [`antialias::BandCentres`]), traced into `buffer` before the band's blocks are, for them
+/// to share, and the tracer that traced them (for the block to go on with: the pyramids it
+/// keeps for shadow rays are its own pixels').
 pub(super) fn block_centres<'a>(
     scene: &'a Scene,
     options: &RenderOptions,
     camera_media: Option<MediumStack>,
-    (xs, ys): (std::ops::Range<u32>, std::ops::Range<u32>),
+    rectangles: &[antialias::Rect],
     buffer: Vec<(super::Px, Rgb)>,
 ) -> (antialias::Centres, Tracer<'a>) {
     let mut tracer = Tracer::new(scene);
@@ -118,11 +117,12 @@ pub(super) fn block_centres<'a>(
         scene,
         options,
         camera_media: &camera_media,
-        xs,
-        ys,
+        xs: 0..0,
+        ys: 0..0,
         centres: None,
     };
-    (antialias::centres(&block, &mut tracer, buffer), tracer)
+    let centres = antialias::centres(&block, &mut tracer, rectangles, buffer);
+    (centres, tracer)
 }
 
 /// Radiosity's ground truth for the pixels of a block: each pixel's centre ray traced

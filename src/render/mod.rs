@@ -279,7 +279,7 @@ const BAND_PIXELS: usize = 1 << 19;
 /// `antialias::BandCentres`), which are kept, 56 bytes a pixel, until its blocks are done:
 /// more would touch more new memory than the rays saved are worth (measured: 14 MB of them
 /// cost a 640×480 render 7 %), and wider images, whose one row of blocks would hold more,
-/// do not share.
+/// do not share (nor, to keep the memory budget of such images, do method 1's).
 const SHARED_BAND_PIXELS: usize = 1 << 17;
 
 /// Rows of blocks a band holds at most when its blocks share method 3's centre samples: the
@@ -287,7 +287,7 @@ const SHARED_BAND_PIXELS: usize = 1 << 17;
 const SHARED_BAND_BLOCK_ROWS: u32 = 4;
 
 /// Rows of blocks in a band of `width` pixels whose blocks share method 3's centre samples,
-/// or `None` if a band that wide does not share.
+/// or `None` if a band that wide does not share (with either method).
 fn shared_band_block_rows(width: u32) -> Option<u32> {
     let row_pixels = width as usize * BLOCK_SIZE as usize;
     (row_pixels <= SHARED_BAND_PIXELS)
@@ -302,8 +302,8 @@ fn band_block_rows(width: u32, band_pixels: usize) -> u32 {
 
 /// The memory a render of `width` × `height` pixels holds at its peak, whatever the scene:
 /// one band of rows being traced and converted, and the writer's buffers (up to 64 rows of
-/// output values: EXR's blocks of 16 scanlines queued for compression), and method 3's
-/// centre samples of a band whose blocks share them.
+/// output values: EXR's blocks of 16 scanlines queued for compression), and the centre
+/// samples of a band whose blocks share them (method 3's, or method 1's edges of blocks).
 pub fn bytes_needed(width: u32, height: u32) -> usize {
     let band_rows = (band_block_rows(width, BAND_PIXELS) * BLOCK_SIZE).min(height) as usize;
     let per_pixel = std::mem::size_of::<[f32; 3]>();
@@ -313,8 +313,13 @@ pub fn bytes_needed(width: u32, height: u32) -> usize {
     // (Method 3's centre samples of a band that shares them, with the rows and columns
     // just outside it.)
     let centres = shared_band_block_rows(width).map_or(0, |rows| {
-        let rows = (rows * BLOCK_SIZE).min(height) as usize + 2;
-        (width as usize + 2) * rows * std::mem::size_of::<(Px, Rgb)>()
+        let sample = std::mem::size_of::<(Px, Rgb)>();
+        let method_3 = (width as usize + 2) * ((rows * BLOCK_SIZE).min(height) as usize + 2);
+        // (Method 1's: each block's bottom row and right column, and the row above and the
+        // column left of the band.)
+        let blocks = width.div_ceil(BLOCK_SIZE) as usize * band_rows.div_ceil(BLOCK_SIZE as usize);
+        let method_1 = blocks * 2 * BLOCK_SIZE as usize + width as usize + band_rows;
+        method_3.max(method_1) * sample
     });
     band.saturating_add(writer).saturating_add(centres)
 }
@@ -343,9 +348,9 @@ pub struct Bands<'a> {
     carry: Option<block::Carry>,
     /// Statistics of the bands rendered so far.
     pub stats: RenderStats,
-    /// Method 3's centre-sample buffers of the band before, for this band's blocks.
+    /// The centre-sample buffers of the band before, for this band's blocks.
     spare_centres: Vec<Vec<(Px, Rgb)>>,
-    /// Whether method 3's bands may share their centre samples (tests turn it off).
+    /// Whether bands may share their centre samples (tests turn it off).
     share_centres: bool,
 }
 
@@ -392,22 +397,28 @@ impl<'a> Bands<'a> {
             share_centres: true,
         };
         if bands.shares_centres() {
-            // (A band's centre samples are kept until its blocks are done: smaller bands keep
-            // fewer, and pass their memory on to the next band.)
+            // (Method 3's band keeps all its centre samples until its blocks are done: smaller
+            // bands keep fewer, and pass their memory on to the next band. Method 1's keeps
+            // its blocks' edges only, whatever the band's height.)
+            let method_3 = matches!(options.antialias, Antialias::Sampled { .. });
             match shared_band_block_rows(bands.blocks_x.len() as u32 * BLOCK_SIZE) {
-                Some(rows) => bands.band_block_rows = bands.band_block_rows.min(rows),
+                Some(rows) if method_3 => bands.band_block_rows = bands.band_block_rows.min(rows),
+                Some(_) => {}
                 None => bands.share_centres = false,
             }
         }
         bands
     }
 
-    /// Whether method 3's bands trace their centre samples first, for their blocks to
+    /// Whether bands trace their centre samples first (methods 1 and 3), for their blocks to
     /// share (see `antialias::BandCentres`): not with radiosity, where each block gathers
     /// its own samples in the order its rays are traced.
     fn shares_centres(&self) -> bool {
         self.share_centres
-            && matches!(self.options.antialias, Antialias::Sampled { .. })
+            && matches!(
+                self.options.antialias,
+                Antialias::Adaptive { .. } | Antialias::Sampled { .. }
+            )
             && self.radiosity.is_none()
             && self.options.radiosity_reference.is_none()
     }
@@ -483,7 +494,7 @@ impl<'a> Bands<'a> {
         let radiosity = self.radiosity.as_ref();
         let progress = options.progress.as_deref();
         let gamma = scene.gamma();
-        // Method 3: the band's centre samples first, each traced once, for its blocks'
+        // Methods 1 and 3: the band's centre samples first, each traced once, for its blocks'
         // comparisons to share (see `antialias::BandCentres`); each block then goes on with
         // the tracer that traced its own.
         let mut tracers: Vec<Option<transport::Tracer>> = Vec::new();
@@ -502,13 +513,18 @@ impl<'a> Bands<'a> {
                             }
                             let i = i as u32;
                             let (bx, by) = (blocks_x.start + i % columns, first + i / columns);
-                            let rectangle = antialias::BandCentres::rectangle(
+                            let (rectangles, n) = antialias::BandCentres::rectangles(
                                 (bx, by),
                                 (blocks_x.clone(), rows.clone()),
                                 (options.width, options.height),
+                                &options.antialias,
                             );
                             Some(block::block_centres(
-                                scene, options, media, rectangle, buffer,
+                                scene,
+                                options,
+                                media,
+                                &rectangles[..n],
+                                buffer,
                             ))
                         })
                         .collect()
@@ -740,52 +756,69 @@ mod tests {
         );
     }
 
-    /// Method 3's blocks, sharing their band's centre samples, give the picture of blocks
-    /// that each trace their own and their border, with fewer samples: for bands of one to
-    /// three rows of blocks (so rows above and below bands are traced twice), a region that
-    /// starts and ends inside blocks, alpha and AOV layers.
+    /// Blocks of methods 1 and 3, sharing their band's centre samples, give the picture of
+    /// blocks that each trace their own and their border, with fewer camera rays: for bands
+    /// of one to three rows of blocks (so rows just outside bands are traced twice), a
+    /// region that starts and ends inside blocks, alpha and AOV layers.
     #[test]
     fn shared_centre_samples_change_no_value() {
         let (w, h) = (75, 100);
         let scene = built(w, h);
         let pool = thread_pool(Some(2)).expect("a pool");
-        let options = RenderOptions {
-            width: w,
-            height: h,
-            antialias: Antialias::Sampled {
+        for antialias in [
+            Antialias::Adaptive {
                 threshold: 0.1,
                 depth: 2,
             },
-            region: Some(Region {
-                x0: 5,
-                y0: 17,
-                x1: 71,
-                y1: 96,
-            }),
-            alpha: true,
-            aovs: vec![Aov::Depth],
-            ..RenderOptions::default()
-        };
-        let run = |rows: u32, share: bool| {
-            let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
-            if !share {
-                bands = bands.without_shared_centres();
+            Antialias::Sampled {
+                threshold: 0.1,
+                depth: 2,
+            },
+        ] {
+            let options = RenderOptions {
+                width: w,
+                height: h,
+                antialias,
+                region: Some(Region {
+                    x0: 5,
+                    y0: 17,
+                    x1: 71,
+                    y1: 96,
+                }),
+                alpha: true,
+                aovs: vec![Aov::Depth],
+                ..RenderOptions::default()
+            };
+            let run = |rows: u32, share: bool| {
+                let mut bands = Bands::new(&scene, &options, &pool).with_band_block_rows(rows);
+                if !share {
+                    bands = bands.without_shared_centres();
+                }
+                let mut all = Vec::new();
+                while let Some(band) = bands.next_band(Vec::new()) {
+                    all.extend(band.values.iter().map(|v| v.to_bits()));
+                }
+                (all, bands.stats)
+            };
+            let (own, own_stats) = run(1, false);
+            assert_eq!(run(3, false).0, own);
+            for rows in [1, 2, 3] {
+                let (shared, stats) = run(rows, true);
+                assert!(
+                    shared == own,
+                    "{antialias:?}, bands of {rows} rows of blocks"
+                );
+                assert!(
+                    stats.counts.camera < own_stats.counts.camera,
+                    "{antialias:?}: {} camera rays, {} without sharing",
+                    stats.counts.camera,
+                    own_stats.counts.camera
+                );
+                // (Method 1 counts a block's own samples, not the border it compares with.)
+                if matches!(antialias, Antialias::Adaptive { .. }) {
+                    assert_eq!(stats.samples, own_stats.samples);
+                }
             }
-            let mut all = Vec::new();
-            while let Some(band) = bands.next_band(Vec::new()) {
-                all.extend(band.values.iter().map(|v| v.to_bits()));
-            }
-            (all, bands.stats.samples)
-        };
-        let (own, own_samples) = run(1, false);
-        assert_eq!(run(3, false).0, own);
-        for rows in [1, 2, 3] {
-            let (shared, samples) = run(rows, true);
-            assert!(shared == own, "bands of {rows} rows of blocks");
-            assert!(
-                samples < own_samples,
-                "{samples} samples, {own_samples} without sharing"
-            );
         }
     }
 
@@ -864,11 +897,19 @@ mod tests {
                     pixels == whole.film.pixels,
                     "{antialias:?}, {rows} rows of blocks"
                 );
-                // (Method 3's blocks trace the rows just above and below their band again:
-                // its counts depend on the bands' height; the pixels do not.)
-                if !matches!(antialias, Antialias::Sampled { .. }) {
-                    assert_eq!(bands.stats.samples, whole.stats.samples);
-                    assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+                // (Bands that share their centre samples trace the rows just outside them
+                // again (method 1's above, method 3's above and below): their rays depend
+                // on the bands' height, and method 3's samples, which count them; the
+                // pixels do not.)
+                match antialias {
+                    Antialias::Sampled { .. } => {}
+                    Antialias::Adaptive { .. } => {
+                        assert_eq!(bands.stats.samples, whole.stats.samples)
+                    }
+                    _ => {
+                        assert_eq!(bands.stats.samples, whole.stats.samples);
+                        assert_eq!(bands.stats.counts.shadow, whole.stats.counts.shadow);
+                    }
                 }
             }
         }

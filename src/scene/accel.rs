@@ -198,19 +198,11 @@ fn tie_breaker(k: u32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::testing::Xorshift;
 
-    /// A small deterministic generator (xorshift), uniform in [0, 1).
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn point(&mut self, size: f64) -> DVec3 {
-            DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5) * size
-        }
+    /// A point of the cube of side `size` around the origin.
+    fn point(r: &mut Xorshift, size: f64) -> DVec3 {
+        DVec3::new(r.unit() - 0.5, r.unit() - 0.5, r.unit() - 0.5) * size
     }
 
     /// The distance at which the ray enters box `(lo, hi)` within [0, tmax], by exact slabs
@@ -240,7 +232,7 @@ mod tests {
     /// rays from inside and outside, axis-aligned and grazing, shadow-like with an end.
     #[test]
     fn index_finds_what_every_box_finds() {
-        let mut r = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut r = Xorshift(0x9E37_79B9_7F4A_7C15);
         let mut checked = 0;
         for (case, (offset, size, count)) in [
             (0.0, 10.0, 9),
@@ -259,8 +251,8 @@ mod tests {
                     bounds.push(None);
                     continue;
                 }
-                let lo = centre + r.point(size);
-                let extent = r.point(size * [0.2, 0.01, 1e-6][k % 3]).abs();
+                let lo = centre + point(&mut r, size);
+                let extent = point(&mut r, size * [0.2, 0.01, 1e-6][k % 3]).abs();
                 bounds.push(Some((lo, lo + extent)));
             }
             let index = ObjectIndex::prepare(&bounds)
@@ -273,11 +265,11 @@ mod tests {
                     .collect::<Vec<_>>()
             );
             for k in 0..2000 {
-                let origin = centre + r.point(size * [0.5, 3.0, 100.0][k % 3]);
+                let origin = centre + point(&mut r, size * [0.5, 3.0, 100.0][k % 3]);
                 // Half the rays aimed at a point inside a box.
                 let target = match bounds[(k * 13) % count] {
-                    Some((lo, hi)) if k % 2 == 0 => lo + (hi - lo) * r.next(),
-                    _ => centre + r.point(size),
+                    Some((lo, hi)) if k % 2 == 0 => lo + (hi - lo) * r.unit(),
+                    _ => centre + point(&mut r, size),
                 };
                 let mut direction = target - origin;
                 if k % 7 == 0 {
@@ -291,7 +283,7 @@ mod tests {
                 }
                 let mut ray = Ray::new(origin, direction);
                 if k % 4 == 0 {
-                    ray.tmax = r.next() * 1.5;
+                    ray.tmax = r.unit() * 1.5;
                 }
                 let hit: Vec<(u32, f64)> = (bounds.iter().enumerate())
                     .filter_map(|(i, b)| Some((i as u32, entry(&ray, (*b)?)?)))
@@ -327,7 +319,7 @@ mod tests {
             // Point queries: every box holding the point is kept.
             for k in 0..500 {
                 let p = if k % 2 == 0 {
-                    centre + r.point(size)
+                    centre + point(&mut r, size)
                 } else {
                     // A box's corner, exactly.
                     let (lo, hi) = bounds[(k * 7) % count].unwrap_or((centre, centre));

@@ -7,8 +7,9 @@ use crate::render::{Px, camera};
 use crate::scene::Rgb;
 
 /// The pixels of `block` with POV-Ray's method-1 logic, and the samples they took: the row
-/// above and the column left of the block are traced (centre samples) for comparison and
-/// count as already supersampled.
+/// above and the column left of the block are traced (centre samples; the band's, shared,
+/// when it traced them first) for comparison, count as already supersampled and not as the
+/// block's samples.
 pub(super) fn pixels(
     block: &Block,
     tracer: &mut Tracer,
@@ -28,20 +29,31 @@ pub(super) fn pixels(
     let index = |x: u32, y: u32| (y + 1 - y0) as usize * gw + (x + 1 - x0) as usize;
     let mut samples = 0u64;
 
+    // A centre sample and its encoding: where the band traced it first (the block's own
+    // bottom row and right column, its neighbours' for its border: see `BandCentres`), from
+    // there; else traced here (without the band's, the border again by the neighbouring
+    // block: the same rays).
+    let own = |x: u32, y: u32| (x0..x1).contains(&x) && (y0..y1).contains(&y);
+    let centre = |tracer: &mut Tracer, x: u32, y: u32| match block.centres {
+        Some((_, mine)) if mine.holds(x, y) => mine.at(x, y),
+        Some((band, _)) if !own(x, y) => band.at(x, y),
+        _ => {
+            let c = block.centre(tracer, x, y);
+            (c, aa_encoded(c.truncate(), scene.gamma()))
+        }
+    };
     if y0 > 0 {
         for x in x0..x1 {
-            value[index(x, y0 - 1)] = block.centre(tracer, x, y0 - 1);
-            encoded[index(x, y0 - 1)] =
-                aa_encoded(value[index(x, y0 - 1)].truncate(), scene.gamma());
-            done[index(x, y0 - 1)] = true;
+            let i = index(x, y0 - 1);
+            (value[i], encoded[i]) = centre(tracer, x, y0 - 1);
+            done[i] = true;
         }
     }
     if x0 > 0 {
         for y in y0..y1 {
-            value[index(x0 - 1, y)] = block.centre(tracer, x0 - 1, y);
-            encoded[index(x0 - 1, y)] =
-                aa_encoded(value[index(x0 - 1, y)].truncate(), scene.gamma());
-            done[index(x0 - 1, y)] = true;
+            let i = index(x0 - 1, y);
+            (value[i], encoded[i]) = centre(tracer, x0 - 1, y);
+            done[i] = true;
         }
     }
 
@@ -73,10 +85,9 @@ pub(super) fn pixels(
 
     for y in y0..y1 {
         for x in x0..x1 {
-            let c = block.centre(tracer, x, y);
+            let (c, e) = centre(tracer, x, y);
             samples += 1;
             value[index(x, y)] = c;
-            let e = aa_encoded(c.truncate(), scene.gamma());
             encoded[index(x, y)] = e;
             let left_differs = x > 0 && differ(encoded[index(x - 1, y)], e, threshold);
             let top_differs = y > 0 && differ(encoded[index(x, y - 1)], e, threshold);

@@ -3,10 +3,11 @@
 //! gamma-2.5 encoded, channel differences summed).
 
 mod adaptive;
+mod centres;
 mod recursive;
 mod sampled;
 
-pub(super) use sampled::{BandCentres, Centres, centres};
+pub(super) use centres::{BandCentres, Centres, Rect, centres};
 
 use super::transport::{MediumStack, Tracer};
 use super::{Px, RenderOptions, camera, output_value};
@@ -84,8 +85,8 @@ pub(super) struct Block<'a> {
     /// The block's columns and rows.
     pub xs: Range<u32>,
     pub ys: Range<u32>,
-    /// Method 3's centre samples of the block's band, if the band traced them first, and
-    /// the block's own among them.
+    /// The centre samples of the block's band (methods 1 and 3), if the band traced them
+    /// first, and the block's own among them.
     pub centres: Option<(&'a BandCentres, &'a Centres)>,
 }
 
