@@ -113,6 +113,7 @@ pub(super) fn block_centres<'a>(
     buffer: Vec<(super::Px, Rgb)>,
 ) -> (antialias::Centres, Tracer<'a>) {
     let mut tracer = Tracer::new(scene);
+    // (The render's settings only: `rectangles` say which pixels are traced.)
     let block = Block {
         scene,
         options,
