@@ -352,9 +352,11 @@ impl Queries for Scene {
                 (t.normal_to_world * n, t.normal_to_world * g)
             }
         };
+        // (Most shapes give one normal for both: it is normalised once, to the same bits.)
+        let same = geometric == normal;
         let normal = normal.normalize();
-        let mut geometric_normal = geometric.normalize();
-        if geometric_normal.dot(normal) < 0.0 {
+        let mut geometric_normal = if same { normal } else { geometric.normalize() };
+        if !same && geometric_normal.dot(normal) < 0.0 {
             geometric_normal = -geometric_normal;
         }
         let material = object.side(normal, ray.direction);
