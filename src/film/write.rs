@@ -320,8 +320,13 @@ pub(super) fn write_exr(
     let headers: Headers = SmallVec::from_vec(vec![header]);
     let channel_list = headers[0].channels.clone();
     let stride = names.len();
-    // (Each row is asked for once a channel: the last one is kept.)
+    let width = width as usize;
+    // (Each row is asked for once a channel: the last one is kept, split into one line of
+    // values a channel, and the colour's halves converted a line at a time.)
     let (mut values, mut last) = (Vec::new(), None);
+    let mut lines = vec![0.0f32; width * stride];
+    let mut halves = vec![f16::ZERO; width * stride];
+    let max = f16::MAX.to_f32();
     exr::block::write(out, headers, true, |meta, chunks| {
         let blocks = meta.collect_ordered_block_data(|block| {
             UncompressedBlock::collect_block_data_from_lines(&channel_list, block, |line| {
@@ -330,14 +335,24 @@ pub(super) fn write_exr(
                 if last != Some(y) {
                     values.clear();
                     row(y as u32, &mut values);
+                    for (x, pixel) in values.chunks_exact(stride).enumerate() {
+                        for (k, &v) in pixel.iter().enumerate() {
+                            lines[k * width + x] = v;
+                        }
+                    }
+                    for k in (0..stride).filter(|&k| half && colour(k)) {
+                        let line = &mut lines[k * width..(k + 1) * width];
+                        line.iter_mut().for_each(|v| *v = v.clamp(-max, max));
+                        use half::slice::HalfFloatSliceExt;
+                        halves[k * width..(k + 1) * width].convert_from_f32_slice(line);
+                    }
                     last = Some(y);
                 }
-                let value = |i: usize| values[(x0 + i) * stride + c];
+                let span = c * width + x0..c * width + x0 + line.location.sample_count;
                 if half && colour(c) {
-                    let max = f16::MAX.to_f32();
-                    line.write_samples(|i| f16::from_f32(value(i).clamp(-max, max)))
+                    line.write_samples_from_slice(&halves[span])
                 } else {
-                    line.write_samples(value)
+                    line.write_samples_from_slice(&lines[span])
                 }
                 .expect("a line holds sample_count samples");
             })
@@ -427,6 +442,54 @@ pub(super) fn write_ppm(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_half_float_exr_holds_each_channel_rounded_and_the_aovs_whole() {
+        use half::f16;
+        // Colour and alpha in halves (each value rounded to the nearest, beyond the half range
+        // the largest half, not infinity), the AOV channel in full floats; an odd width, and
+        // values that differ by channel and pixel, so that a channel or a pixel out of place
+        // shows.
+        let (w, h) = (19, 21);
+        let layout = Layout {
+            alpha: true,
+            bits: 16,
+            aovs: vec!["Z".into()],
+            note: None,
+        };
+        let value = |x: u32, y: u32, c: u32| match (x + y + c) % 7 {
+            0 => 1e6 * if c % 2 == 0 { 1.0 } else { -1.0 },
+            _ => (x * 131 + y * 17 + c * 5) as f32 / 97.0 + 1.0 / 3.0,
+        };
+        let values: Vec<f32> = (0..h)
+            .flat_map(|y| (0..w).flat_map(move |x| (0..5).map(move |c| value(x, y, c))))
+            .collect();
+        let path = std::env::temp_dir().join(format!("trace-half-{}.exr", std::process::id()));
+        let mut sent = false;
+        write_streamed(&path, w, h, &layout, None, |_| {
+            (!std::mem::replace(&mut sent, true)).then(|| Rows {
+                y0: 0,
+                values: values.as_slice().into(),
+            })
+        })
+        .unwrap();
+        let read = crate::film::raster::Raster::read(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        for y in 0..h {
+            for x in 0..w {
+                for (c, name) in ["R", "G", "B", "A", "Z"].into_iter().enumerate() {
+                    let v = value(x, y, c as u32);
+                    let want = if name == "Z" {
+                        v
+                    } else {
+                        let max = f16::MAX.to_f32();
+                        f16::from_f32(v.clamp(-max, max)).to_f32()
+                    };
+                    assert_eq!(read.sample(x, y, name), Some(want), "{name} at ({x}, {y})");
+                }
+            }
+        }
+    }
 
     #[test]
     fn the_srgb_table_gives_the_bytes_of_the_formula() {
