@@ -279,11 +279,15 @@ pub trait Queries {
     /// Surface details at a hit.
     fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit;
 
-    /// Occlusion: whether an opaque object that casts shadows meets `ray` within its
-    /// extent (stops at the first found).
-    fn occluded(&self, ray: &Ray) -> bool;
+    /// Occlusion: an opaque object that casts shadows and meets `ray` within its extent (the
+    /// first found), if any; `skip` is not tested (known not to).
+    fn blocker(&self, ray: &Ray, skip: Option<u32>) -> Option<u32>;
 
-    /// [`Queries::occluded`] and the crossings along `ray` with every object that casts
+    /// Whether object `i` is one [`Queries::blocker`] finds: opaque, casting shadows, and
+    /// meeting `ray` within its extent.
+    fn blocks(&self, ray: &Ray, i: u32) -> bool;
+
+    /// [`Queries::blocker`] and the crossings along `ray` with every object that casts
     /// shadows and may let light through, in one pass over the objects: whether an opaque
     /// object blocks `ray` (the pass then stops, `out` holding part of the crossings), else
     /// every crossing appended to `out`, in no particular order.
@@ -392,24 +396,35 @@ impl Queries for Scene {
         }
     }
 
-    fn occluded(&self, ray: &Ray) -> bool {
-        let opaque_blocks = |i: u32| {
-            let object = &self.objects[i as usize];
-            !object.no_shadow
-                && !self.material(object.material).may_be_transparent()
-                && object.admits(ray)
-                && Self::in_object(object, ray, |local| object.shape.occludes(local))
+    fn blocker(&self, ray: &Ray, skip: Option<u32>) -> Option<u32> {
+        let mut found = None;
+        let mut blocks = |i: u32| {
+            let yes = Some(i) != skip && self.blocks(ray, i);
+            if yes {
+                found = Some(i);
+            }
+            yes
         };
         match &self.index {
             Some(index) => {
-                index.unbounded.iter().any(|&i| opaque_blocks(i)) || index.any(ray, opaque_blocks)
+                let _ = index.unbounded.iter().any(|&i| blocks(i)) || index.any(ray, blocks);
             }
             None => {
                 let inv = ray.direction.recip();
-                (self.scan_bounds.iter().enumerate())
-                    .any(|(i, b)| may_hit(*b, ray, inv) && opaque_blocks(i as u32))
+                let _ = (self.scan_bounds.iter().enumerate())
+                    .any(|(i, b)| may_hit(*b, ray, inv) && blocks(i as u32));
             }
         }
+        found
+    }
+
+    #[inline]
+    fn blocks(&self, ray: &Ray, i: u32) -> bool {
+        let object = &self.objects[i as usize];
+        !object.no_shadow
+            && !self.material(object.material).may_be_transparent()
+            && object.admits(ray)
+            && Self::in_object(object, ray, |local| object.shape.occludes(local))
     }
 
     fn shadow_pass(&self, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool {

@@ -249,7 +249,7 @@ impl Tracer<'_> {
                         let blockers = self.blockers((light, index), (point, false), start);
                         self.shadow_through(&shadow, light, blockers)
                     } else {
-                        self.shadow_seen(&shadow, light)
+                        self.point_shadow(&shadow, light, index)
                     }
                 }
             };
@@ -264,6 +264,20 @@ impl Tracer<'_> {
             // (Radiosity's rays see no highlights.)
             highlights: !light.shadowless && !self.seer.radiosity,
         })
+    }
+
+    /// What reaches the end of a point light's shadow ray (light `index`) that does not
+    /// first find its possible blockers: in a scene without transparent objects or media
+    /// on shadow rays, by POV-Ray's shadow cache (see [`super::shadow::opaque_transmittance`],
+    /// one object a light, kept by the block's tracer).
+    fn point_shadow(&mut self, shadow: &Ray, light: &Light, index: usize) -> Rgb {
+        if self.media_dims_shadows(light) || self.scene.any_transparent() {
+            return self.shadow_seen(shadow, light);
+        }
+        if self.shadow_cache.len() <= index {
+            self.shadow_cache.resize(index + 1, None);
+        }
+        super::shadow::opaque_transmittance(self.scene, shadow, &mut self.shadow_cache[index])
     }
 
     /// Whether a point light's shadow rays first find what may block them (see

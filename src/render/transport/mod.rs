@@ -90,6 +90,8 @@ pub struct Tracer<'a> {
     pub(super) blockers: Vec<u32>,
     /// Each area light's pyramids found lately, with their possible blockers.
     hulls: Vec<lights::Hulls>,
+    /// For each point light, the object that last blocked one of its shadow rays.
+    shadow_cache: Vec<Option<u32>>,
     /// The media the ray being shaded is in: where its shadow rays start (POV-Ray's shadow
     /// rays copy the viewing ray's interior list).
     shadow_start: MediumStack,
@@ -175,6 +177,7 @@ impl<'a> Tracer<'a> {
             lens_stream: None,
             blockers: Vec::new(),
             hulls: Vec::new(),
+            shadow_cache: Vec::new(),
             shadow_start: MediumStack::default(),
             media_scratch: media::Scratch::default(),
             band: None,

@@ -75,7 +75,7 @@ fn pass(
     let ray = &blocking_part(ray);
     if !scene.any_transparent() {
         let blocked = match among {
-            None => scene.occluded(ray),
+            None => scene.blocker(ray, None).is_some(),
             Some(candidates) => scene.blocked_among(ray, candidates),
         };
         if blocked {
@@ -109,6 +109,27 @@ fn pass(
         }
         through * along(crossings)
     })
+}
+
+/// [`transmittance`] in a scene without transparent objects (0 or 1), testing first `last`,
+/// the object that blocked the last blocked ray toward the same light, and leaving this
+/// ray's blocker there: POV-Ray's shadow cache (neighbouring points are mostly shadowed by
+/// the same object, found with one test instead of a walk through the object tree).
+pub(super) fn opaque_transmittance(scene: &Scene, ray: &Ray, last: &mut Option<u32>) -> Rgb {
+    debug_assert!(!scene.any_transparent());
+    let ray = &blocking_part(ray);
+    if let Some(i) = *last {
+        if scene.blocks(ray, i) {
+            return Rgb::ZERO;
+        }
+    }
+    match scene.blocker(ray, *last) {
+        Some(i) => {
+            *last = Some(i);
+            Rgb::ZERO
+        }
+        None => Rgb::ONE,
+    }
 }
 
 /// Sorts a shadow ray's crossings along it and drops each at the same point as the one
@@ -175,6 +196,65 @@ fn walk(scene: &Scene, ray: &Ray, crossings: &[ShadowCrossing], media: &mut Vec<
 mod tests {
     use super::*;
     use glam::DVec3;
+
+    /// The shadow cache changes no answer: whatever object it holds (none, one that blocks
+    /// the ray, one that does not, a plane, a transformed object, one that casts no shadow),
+    /// a ray's transmittance is the walk's, and a blocked ray leaves an object that blocks it
+    /// there. Among many objects (an object tree) and few (a list).
+    #[test]
+    fn the_shadow_cache_gives_the_walks_answer() {
+        for count in [6, 300] {
+            let mut random = crate::testing::Xorshift(0xcace + count);
+            let mut text = String::from("plane { y, -3 pigment { rgb 1 } }\n");
+            for k in 0..count {
+                let mut at = || (random.unit() * 2.0 - 1.0) * 6.0;
+                let (x, y, z) = (at(), at(), at());
+                let extra = match k % 5 {
+                    0 => "scale <1, 0.3, 2> rotate 30*x",
+                    1 => "no_shadow",
+                    _ => "",
+                };
+                let r = 0.3 + random.unit() * 0.04 * 300.0 / count as f64;
+                text += &format!("sphere {{ <{x}, {y}, {z}>, {r} pigment {{ rgb 1 }} {extra} }}\n");
+            }
+            let scene = crate::testing::scene(text);
+            let objects = scene.object_count() as u32;
+            let (mut blocked, mut cached) = (0, 0);
+            let (mut from, mut to, mut prev) = (DVec3::ZERO, DVec3::X, None);
+            for k in 0..4000 {
+                let mut at = || (random.unit() * 2.0 - 1.0) * 9.0;
+                // (Every other ray runs next to the one before, holding what that one left,
+                // as the rays of neighbouring points do.)
+                let held = if k % 2 == 0 {
+                    (from, to) = (DVec3::new(at(), at(), at()), DVec3::new(at(), at(), at()));
+                    let start = random.next_u64() % u64::from(objects + 1);
+                    (start < u64::from(objects)).then_some(start as u32)
+                } else {
+                    from += DVec3::new(at(), at(), at()) * 0.002;
+                    prev
+                };
+                let mut ray = Ray::new(from, (to - from).normalize());
+                ray.tmax = (to - from).length();
+                let walk = transmittance(&scene, &ray);
+                let mut last = held;
+                let seen = opaque_transmittance(&scene, &ray, &mut last);
+                assert_eq!(seen, walk, "{from} to {to}, holding {held:?}");
+                if walk == Rgb::ZERO {
+                    blocked += 1;
+                    let i = last.expect("a blocked ray leaves its blocker");
+                    assert!(scene.blocks(&blocking_part(&ray), i));
+                    cached += usize::from(last == held);
+                } else {
+                    assert_eq!(last, held);
+                }
+                prev = last;
+            }
+            assert!(
+                blocked > 500 && cached > 300,
+                "{count}: {blocked} blocked, {cached} by the cache"
+            );
+        }
+    }
 
     /// The inverse length of a normalised direction (the shadow rays') is the division's to
     /// within a few units of rounding (parts in 10¹⁶), and that of any other vector is the
