@@ -37,11 +37,11 @@ impl Scene {
     /// the tests' question).
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        self.nearest(ray, None)
+        self.nearest(ray, None, None)
     }
 
     #[inline]
-    fn nearest(&self, ray: &Ray, seer: Option<Seer>) -> Option<Hit> {
+    fn nearest(&self, ray: &Ray, seer: Option<Seer>, hint: Option<u32>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
         // Two hits within rounding of each other (a glass box standing on the floor plane: the
@@ -70,12 +70,24 @@ impl Scene {
         };
         match &self.index {
             Some(index) => {
-                for &i in &index.unbounded {
-                    if let Some(t) = test(i, &ray) {
+                if let Some(h) = hint {
+                    if let Some(t) = test(h, &ray) {
                         ray.tmax = t;
                     }
                 }
-                index.closest(&ray, |i, tmax| test(i, &Ray { tmax, ..ray }));
+                for &i in &index.unbounded {
+                    if Some(i) != hint {
+                        if let Some(t) = test(i, &ray) {
+                            ray.tmax = t;
+                        }
+                    }
+                }
+                index.closest(&ray, |i, tmax| {
+                    if Some(i) == hint {
+                        return None;
+                    }
+                    test(i, &Ray { tmax, ..ray })
+                });
             }
             None => {
                 let inv = ray.direction.recip();
@@ -273,8 +285,11 @@ impl Seer {
 /// Called with static dispatch only.
 pub trait Queries {
     /// The nearest hit along a ray traced for the picture, of the objects that do not hide
-    /// from `seer`'s kind of ray (`no_image`, `no_reflection`, `no_radiosity`).
-    fn nearest_hit(&self, ray: &Ray, seer: Seer) -> Option<Hit>;
+    /// from `seer`'s kind of ray (`no_image`, `no_reflection`, `no_radiosity`). `hint` is an
+    /// object to test first, as the one a neighbouring ray hit: the walk through the object
+    /// tree then starts with the hit's distance and leaves out what lies beyond; the hit is
+    /// the same whatever the hint (ties go by POV-Ray's order, not the order of the tests).
+    fn nearest_hit(&self, ray: &Ray, seer: Seer, hint: Option<u32>) -> Option<Hit>;
 
     /// Surface details at a hit.
     fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit;
@@ -340,8 +355,8 @@ pub trait Queries {
 
 impl Queries for Scene {
     #[inline]
-    fn nearest_hit(&self, ray: &Ray, seer: Seer) -> Option<Hit> {
-        self.nearest(ray, self.any_hidden.then_some(seer))
+    fn nearest_hit(&self, ray: &Ray, seer: Seer, hint: Option<u32>) -> Option<Hit> {
+        self.nearest(ray, self.any_hidden.then_some(seer), hint)
     }
 
     #[inline]
@@ -776,5 +791,70 @@ mod hull_tests {
         assert!(ShadowHull::new(DVec3::new(3.0, 0.0, 0.0), corners).is_none());
         let line = [c(-1.0, 0.0), c(1.0, 0.0), c(1.0, 0.0), c(-1.0, 0.0)];
         assert!(ShadowHull::new(DVec3::new(0.0, 2.0, 0.0), line).is_none());
+    }
+}
+
+#[cfg(test)]
+mod hint_tests {
+    use super::*;
+
+    /// A hint (an object tested first, as the object a neighbouring camera ray hit) changes
+    /// no hit, even where surfaces coincide and POV-Ray's order picks among them: duplicate
+    /// spheres, boxes sharing faces, a box face on a plane, coplanar discs, and a union's
+    /// members; whichever object is hinted, hit or not.
+    #[test]
+    fn a_hint_changes_no_hit() {
+        let mut text = String::from(
+            "plane { y, 0 pigment { rgb 1 } }\n\
+             plane { y, 0 pigment { rgb 0.5 } }\n",
+        );
+        for k in 0..6 {
+            let x = k as f64 * 2.0 - 5.0;
+            text += &format!(
+                "sphere {{ <{x}, 1, 0>, 1 pigment {{ rgb 1 }} }}\n\
+                 sphere {{ <{x}, 1, 0>, 1 pigment {{ rgb 0.5 }} }}\n\
+                 box {{ <{x}, 0, 2>, <{}, 1, 3> pigment {{ rgb 1 }} }}\n\
+                 box {{ <{}, 0, 2>, <{}, 1, 3> pigment {{ rgb 1 }} }}\n\
+                 box {{ <{x}, 0, 2>, <{}, 0.5, 2.5> pigment {{ rgb 0.2 }} }}\n\
+                 disc {{ <{x}, 2, 5>, y, 1 pigment {{ rgb 1 }} }}\n\
+                 disc {{ <{x}, 2, 5>, y, 0.7 pigment {{ rgb 1 }} }}\n\
+                 union {{ sphere {{ <{x}, 1, 7>, 1 }} sphere {{ <{x}, 1, 7>, 1 }} pigment {{ rgb 1 }} }}\n",
+                x + 1.0,
+                x + 1.0,
+                x + 2.0,
+                x + 1.0,
+            );
+        }
+        let scene = crate::testing::scene(text);
+        assert!(scene.index.is_some(), "the scene has an object tree");
+        let objects = scene.object_count() as u32;
+        let mut random = crate::testing::Xorshift(0x417);
+        let (mut hits, mut hinted_hits) = (0, 0);
+        for _ in 0..20_000 {
+            let mut at = |scale: f64| (random.unit() * 2.0 - 1.0) * scale;
+            let from = DVec3::new(at(8.0), 3.0 + at(3.0), -6.0 + at(4.0));
+            // (Toward points on the shared surfaces, or anywhere.)
+            let to = DVec3::new(at(6.0), (at(1.0) > 0.0) as u32 as f64, at(1.0) * 8.0 + 3.0);
+            let ray = Ray::new(from, (to - from).normalize());
+            let plain = scene.nearest(&ray, None, None);
+            hits += usize::from(plain.is_some());
+            for hint in [
+                random.next_u64() as u32 % objects,
+                plain.map_or(0, |h| h.object.0),
+            ] {
+                let hinted = scene.nearest(&ray, None, Some(hint));
+                let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.object, h.part));
+                assert_eq!(
+                    key(hinted),
+                    key(plain),
+                    "{from} toward {to}, hinting {hint}"
+                );
+                hinted_hits += usize::from(plain.is_some_and(|h| h.object.0 == hint));
+            }
+        }
+        assert!(
+            hits > 15_000 && hinted_hits > 15_000,
+            "{hits} hits, {hinted_hits}"
+        );
     }
 }

@@ -92,6 +92,8 @@ pub struct Tracer<'a> {
     hulls: Vec<lights::Hulls>,
     /// For each point light, the object that last blocked one of its shadow rays.
     shadow_cache: Vec<Option<u32>>,
+    /// The object the last camera ray (level 1) hit, tested first by the next one.
+    hint: Option<u32>,
     /// The media the ray being shaded is in: where its shadow rays start (POV-Ray's shadow
     /// rays copy the viewing ray's interior list).
     shadow_start: MediumStack,
@@ -178,6 +180,7 @@ impl<'a> Tracer<'a> {
             blockers: Vec::new(),
             hulls: Vec::new(),
             shadow_cache: Vec::new(),
+            hint: None,
             shadow_start: MediumStack::default(),
             media_scratch: media::Scratch::default(),
             band: None,
@@ -204,7 +207,11 @@ impl<'a> Tracer<'a> {
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
         let seer = self.seer;
-        let hit = self.scene.nearest_hit(&ray, seer);
+        let hint = if level == 1 { self.hint } else { None };
+        let hit = self.scene.nearest_hit(&ray, seer, hint);
+        if level == 1 {
+            self.hint = hit.map(|h| h.object.0).or(self.hint);
+        }
         let share = self.importance_query;
         if share >= 0.0 {
             // (POV-Ray's check on a radiosity sample's ray: an object of lower importance
@@ -329,7 +336,7 @@ impl<'a> Tracer<'a> {
     pub fn first_hit(&mut self, ray: &Ray) -> (f64, DVec3, Rgb, u32) {
         let mut ray = *ray;
         ray.tmax = ray.tmax.min(MAX_DISTANCE);
-        let Some(hit) = self.scene.nearest_hit(&ray, Seer::default()) else {
+        let Some(hit) = self.scene.nearest_hit(&ray, Seer::default(), None) else {
             return (f64::INFINITY, DVec3::ZERO, Rgb::ZERO, 0);
         };
         let surface = self.scene.surface(&ray, &hit);
