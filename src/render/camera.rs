@@ -316,6 +316,43 @@ pub(super) fn lens_sampled(
     sum / f64::from(count)
 }
 
+/// The centre samples of pixels `xs` of row `y`, left to right, each handed to `f` as
+/// [`sample`] gives it. With a plain camera (no mesh camera, no focal blur) the rays of up
+/// to [`ROW_RAYS`] pixels are set up before the first of them is traced, so that their
+/// divisions and square roots overlap one another instead of each waiting at the head of
+/// its ray's walk (no AA on 10,000 spheres: 2 % faster).
+pub(super) fn sample_row(
+    tracer: &mut Tracer,
+    camera_media: &Option<MediumStack>,
+    (w, h): (u32, u32),
+    (xs, y): (std::ops::Range<u32>, u32),
+    mut f: impl FnMut(&mut Tracer, u32, Px),
+) {
+    let scene = tracer.scene;
+    if scene.mesh_camera().is_some() || scene.blur().is_some() {
+        for x in xs {
+            let v = sample(tracer, camera_media, w, h, x as f64, y as f64);
+            f(tracer, x, v);
+        }
+        return;
+    }
+    let mut rays = [None; ROW_RAYS];
+    for x0 in xs.clone().step_by(ROW_RAYS) {
+        let run = x0..(x0 + ROW_RAYS as u32).min(xs.end);
+        for (ray, x) in rays.iter_mut().zip(run.clone()) {
+            *ray = camera_ray(scene, w, h, x as f64, y as f64);
+        }
+        for (&ray, x) in rays.iter().zip(run) {
+            tracer.counts.camera += 1;
+            let colour = trace_primary(tracer, camera_media, ray);
+            f(tracer, x, colour.extend(tracer.see_through));
+        }
+    }
+}
+
+/// Camera rays [`sample_row`] sets up at once.
+const ROW_RAYS: usize = 32;
+
 /// Method 3 with sampled focal blur: lens points the centre sample looks through.
 pub(super) const LENS_FIRST_POINTS: u32 = 4;
 
@@ -332,4 +369,41 @@ pub(super) fn trace_primary(
     };
     let media = camera_media.unwrap_or_else(|| MediumStack::at(tracer.scene, ray.origin));
     tracer.trace(&ray, 1, 1.0, &media)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row's samples set up together are the samples taken one by one, in order, for rows
+    /// longer than a run of set-up rays and shorter, starting anywhere, with a plain camera
+    /// and with focal blur (which takes them one by one).
+    #[test]
+    fn a_row_of_samples_is_the_samples_one_by_one() {
+        let objects = "light_source { <-3, 5, -4>, rgb 1 }\n\
+                       plane { y, -1 pigment { checker rgb 1 rgb 0.2 } }\n\
+                       sphere { 0, 1 pigment { rgb <1, 0.5, 0.2> } finish { reflection 0.3 } }\n\
+                       sphere { <1.5, 0, 1>, 0.7 pigment { rgbf <1, 1, 1, 0.8> } interior { ior 1.4 } }\n";
+        for camera in [
+            "camera { location <0, 1, -4> look_at 0 }",
+            "camera { location <0, 1, -4> look_at 0 aperture 0.3 blur_samples 4 focal_point 0 }",
+        ] {
+            let scene = crate::testing::scene(format!("{camera}\n{objects}"));
+            let (w, h) = (97, 40);
+            for (xs, y) in [(0..97, 20), (5..38, 7), (60..61, 33)] {
+                let mut tracer = Tracer::new(&scene);
+                let mut row = Vec::new();
+                sample_row(&mut tracer, &None, (w, h), (xs.clone(), y), |_, x, v| {
+                    row.push((x, v))
+                });
+                let mut one = Tracer::new(&scene);
+                let each: Vec<_> = xs
+                    .clone()
+                    .map(|x| (x, sample(&mut one, &None, w, h, x as f64, y as f64)))
+                    .collect();
+                assert_eq!(row, each, "{camera}: {xs:?} of row {y}");
+                assert_eq!(tracer.counts.camera, one.counts.camera);
+            }
+        }
+    }
 }

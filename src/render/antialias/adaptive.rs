@@ -34,13 +34,14 @@ pub(super) fn pixels(
     // there; else traced here (without the band's, the border again by the neighbouring
     // block: the same rays).
     let own = |x: u32, y: u32| (x0..x1).contains(&x) && (y0..y1).contains(&y);
-    let centre = |tracer: &mut Tracer, x: u32, y: u32| match block.centres {
-        Some((_, mine)) if mine.holds(x, y) => mine.at(x, y),
-        Some((band, _)) if !own(x, y) => band.at(x, y),
-        _ => {
-            let c = block.centre(tracer, x, y);
-            (c, aa_encoded(c.truncate(), scene.gamma()))
-        }
+    let shared = |x: u32, y: u32| match block.centres {
+        Some((_, mine)) if mine.holds(x, y) => Some(mine.at(x, y)),
+        Some((band, _)) if !own(x, y) => Some(band.at(x, y)),
+        _ => None,
+    };
+    let encode = |c: Px| (c, aa_encoded(c.truncate(), scene.gamma()));
+    let centre = |tracer: &mut Tracer, x: u32, y: u32| {
+        shared(x, y).unwrap_or_else(|| encode(block.centre(tracer, x, y)))
     };
     if y0 > 0 {
         for x in x0..x1 {
@@ -84,11 +85,26 @@ pub(super) fn pixels(
         };
 
     for y in y0..y1 {
+        // The row's centre samples first: the band's from there, runs of the others traced
+        // together (the comparisons below read the pixels to the left and above, and each
+        // pixel's centre before anything supersamples it, so the order changes nothing).
+        let mut x = x0;
+        while x < x1 {
+            if let Some(v) = shared(x, y) {
+                (value[index(x, y)], encoded[index(x, y)]) = v;
+                x += 1;
+                continue;
+            }
+            let end = (x..x1).find(|&x| shared(x, y).is_some()).unwrap_or(x1);
+            let size = (w, h);
+            camera::sample_row(tracer, camera_media, size, (x..end, y), |_, x, c| {
+                (value[index(x, y)], encoded[index(x, y)]) = encode(c);
+            });
+            x = end;
+        }
         for x in x0..x1 {
-            let (c, e) = centre(tracer, x, y);
+            let e = encoded[index(x, y)];
             samples += 1;
-            value[index(x, y)] = c;
-            encoded[index(x, y)] = e;
             let left_differs = x > 0 && differ(encoded[index(x - 1, y)], e, threshold);
             let top_differs = y > 0 && differ(encoded[index(x, y - 1)], e, threshold);
             if left_differs && !done[index(x - 1, y)] {

@@ -114,7 +114,14 @@ impl Block<'_> {
 pub(super) fn block_pixels(block: &Block, tracer: &mut Tracer) -> (Vec<Px>, u64) {
     match block.options.antialias {
         Antialias::Off => {
-            let pixels = block.pixels(&mut |x, y| block.centre(tracer, x, y));
+            let mut pixels = Vec::with_capacity(block.xs.len() * block.ys.len());
+            let size = (block.options.width, block.options.height);
+            for y in block.ys.clone() {
+                let row = (block.xs.clone(), y);
+                camera::sample_row(tracer, block.camera_media, size, row, |_, _, v| {
+                    pixels.push(v)
+                });
+            }
             let samples = pixels.len() as u64;
             (pixels, samples)
         }
