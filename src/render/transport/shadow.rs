@@ -75,7 +75,7 @@ fn pass(
     let ray = &blocking_part(ray);
     if !scene.any_transparent() {
         let blocked = match among {
-            None => scene.blocker(ray, None).is_some(),
+            None => blocked(scene, ray, &mut None),
             Some(candidates) => scene.blocked_among(ray, candidates),
         };
         if blocked {
@@ -117,19 +117,24 @@ fn pass(
 /// the same object, found with one test instead of a walk through the object tree).
 pub(super) fn opaque_transmittance(scene: &Scene, ray: &Ray, last: &mut Option<u32>) -> Rgb {
     debug_assert!(!scene.any_transparent());
-    let ray = &blocking_part(ray);
-    if let Some(i) = *last {
-        if scene.blocks(ray, i) {
-            return Rgb::ZERO;
-        }
+    if blocked(scene, &blocking_part(ray), last) {
+        Rgb::ZERO
+    } else {
+        Rgb::ONE
     }
-    match scene.blocker(ray, *last) {
-        Some(i) => {
-            *last = Some(i);
-            Rgb::ZERO
-        }
-        None => Rgb::ONE,
+}
+
+/// Whether an opaque object blocks `part`, a shadow ray's blocking part, testing first the
+/// object `last` holds (none for a ray without a cache) and leaving the blocker there.
+fn blocked(scene: &Scene, part: &Ray, last: &mut Option<u32>) -> bool {
+    if last.is_some_and(|i| scene.blocks(part, i)) {
+        return true;
     }
+    let blocker = scene.blocker(part, *last);
+    if blocker.is_some() {
+        *last = blocker;
+    }
+    blocker.is_some()
 }
 
 /// Sorts a shadow ray's crossings along it and drops each at the same point as the one
