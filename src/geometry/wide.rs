@@ -209,6 +209,12 @@ impl WideTree {
         tree
     }
 
+    /// Whether to test boxes with AVX2 where the CPU has it (for tests of both paths).
+    #[cfg(test)]
+    pub fn use_avx2(&mut self, on: bool) {
+        self.avx2 = on && has_avx2_and_fma();
+    }
+
     /// Asks for a node's memory ahead of its test (`leaf` for a leaf's payload).
     #[inline(always)]
     fn prefetch(&self, entry: u32, leaf: &impl Fn(u32)) {
@@ -347,6 +353,120 @@ impl WideTree {
         }
     }
 
+    /// Visits, for each of up to [`PACKET`] rays (a packet, such as the camera rays of a
+    /// pixel's samples or of neighbouring pixels), the leaves whose boxes it enters before its
+    /// limit, nearer boxes roughly first: `visit(k, payload, limit)` is called for ray `k` and
+    /// returns its new limit (it only ever lowers it). Each node is read once for all the rays
+    /// that enter it and their box tests, independent of one another, overlap, where a single
+    /// ray's walk waits on each node's test before it can read the next.
+    #[inline(always)]
+    pub fn walk_packet(
+        &self,
+        rays: &[Ray],
+        limits: &mut [f32; PACKET],
+        visit: impl FnMut(usize, u32, f32) -> f32,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx2 {
+            // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
+            return unsafe { self.walk_packet_avx2(rays, limits, visit) };
+        }
+        self.walk_packet_with::<false>(rays, limits, visit)
+    }
+
+    /// [`WideTree::walk_packet`] compiled for AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn walk_packet_avx2(
+        &self,
+        rays: &[Ray],
+        limits: &mut [f32; PACKET],
+        visit: impl FnMut(usize, u32, f32) -> f32,
+    ) {
+        self.walk_packet_with::<true>(rays, limits, visit)
+    }
+
+    /// The packet walk, testing a child's box against all the rays at once with AVX2 when
+    /// `AVX2`. Rays whose directions differ in sign along an axis enter a box by different
+    /// sides, so the rays are walked in groups of one sign along each axis (camera rays near
+    /// the axis of a camera looking along an axis may differ).
+    #[inline(always)]
+    fn walk_packet_with<const AVX2: bool>(
+        &self,
+        rays: &[Ray],
+        limits: &mut [f32; PACKET],
+        mut visit: impl FnMut(usize, u32, f32) -> f32,
+    ) {
+        assert!(rays.len() <= PACKET);
+        if self.root == EMPTY || rays.is_empty() {
+            return;
+        }
+        let packet = RayPacket::new(rays, self.centre, self.extent);
+        let mut left = (1u32 << rays.len()) - 1;
+        while left != 0 {
+            let lead = left.trailing_zeros() as usize;
+            let group = bits(left)
+                .filter(|&k| packet.signs[k] == packet.signs[lead])
+                .fold(0, |m, k| m | 1 << k);
+            left &= !group;
+            self.walk_group::<AVX2>(&packet, packet.sides(lead), group, limits, &mut visit);
+        }
+    }
+
+    /// The packet walk of the rays in `group`, which enter boxes by the node planes `sides`.
+    #[inline(always)]
+    fn walk_group<const AVX2: bool>(
+        &self,
+        packet: &RayPacket,
+        sides: [usize; 6],
+        group: u32,
+        limits: &mut [f32; PACKET],
+        visit: &mut impl FnMut(usize, u32, f32) -> f32,
+    ) {
+        let mut stack = PacketStack::new();
+        stack.push(self.root, group, [0.0; PACKET]);
+        while let Some((entry, rays_in, near)) = stack.pop() {
+            // The rays that still may meet something in this box.
+            let active = rays_in & below(&near, limits);
+            if active == 0 {
+                continue;
+            }
+            if entry & LEAF != 0 {
+                for k in bits(active) {
+                    limits[k] = limits[k].min(visit(k, entry & !LEAF, limits[k]));
+                }
+                continue;
+            }
+            let node = &self.nodes[entry as usize];
+            // Each child's rays and their entry distances, the children entered ordered
+            // farthest first by their first ray's entry distance, so that the nearest is
+            // walked next.
+            let mut distance = [[0.0f32; PACKET]; WIDE];
+            let mut order = [(0.0f32, 0usize, 0u32); WIDE];
+            let mut n = 0;
+            for (i, slot) in distance.iter_mut().enumerate() {
+                let (d, rays_in) = packet.child::<AVX2>(node, i, &sides, limits);
+                let rays_in = rays_in & active;
+                if rays_in != 0 {
+                    self.prefetch(node.child[i], &|_| {});
+                    *slot = d;
+                    order[n] = (d[rays_in.trailing_zeros() as usize], i, rays_in);
+                    n += 1;
+                }
+            }
+            for a in 1..n {
+                let mut b = a;
+                while b > 0 && order[b - 1].0 < order[b].0 {
+                    order.swap(b - 1, b);
+                    b -= 1;
+                }
+            }
+            for &(_, i, rays_in) in &order[..n] {
+                stack.push(node.child[i], rays_in, distance[i]);
+            }
+        }
+    }
+
     /// Calls `f` with the payload of every leaf whose box `keep(lo, hi)` keeps (a box holding
     /// the leaf's, in world space), descending only into nodes it keeps; a leaf at the root
     /// is always visited.
@@ -455,7 +575,7 @@ impl WideBvh {
     /// The same tree, walked without AVX2 (for tests of that path on CPUs that have it).
     #[cfg(test)]
     pub fn without_avx2(mut self) -> WideBvh {
-        self.tree.avx2 = false;
+        self.tree.use_avx2(false);
         self
     }
 
@@ -524,6 +644,146 @@ struct BoxRay {
     /// for the exit, so that each slab holds the exact ray's: see [`BoxRay::new`].
     enter_offset: [f32; 3],
     leave_offset: [f32; 3],
+}
+
+/// A packet's rays, lane by lane, for testing a box against all of them at once: each
+/// lane's reciprocal direction and offsets as [`BoxRay`]'s (lanes past the packet's rays
+/// copy its first).
+struct RayPacket {
+    inverse: [[f32; PACKET]; 3],
+    enter_offset: [[f32; PACKET]; 3],
+    leave_offset: [[f32; PACKET]; 3],
+    /// Each ray's direction signs (a bit an axis, set where it moves down).
+    signs: [u32; PACKET],
+}
+
+impl RayPacket {
+    #[inline(always)]
+    fn new(rays: &[Ray], centre: DVec3, extent: f32) -> RayPacket {
+        let mut packet = RayPacket {
+            inverse: [[0.0; PACKET]; 3],
+            enter_offset: [[0.0; PACKET]; 3],
+            leave_offset: [[0.0; PACKET]; 3],
+            signs: [0; PACKET],
+        };
+        for k in 0..PACKET {
+            let r = BoxRay::new(&rays[if k < rays.len() { k } else { 0 }], centre, extent);
+            for axis in 0..3 {
+                packet.inverse[axis][k] = r.inverse[axis];
+                packet.enter_offset[axis][k] = r.enter_offset[axis];
+                packet.leave_offset[axis][k] = r.leave_offset[axis];
+                if r.enter[axis] >= 3 {
+                    packet.signs[k] |= 1 << axis;
+                }
+            }
+        }
+        packet
+    }
+
+    /// The node planes ray `k` enters (the first three) and leaves (the last three) a box
+    /// by along each axis, as [`BoxRay`]'s.
+    fn sides(&self, k: usize) -> [usize; 6] {
+        let down = |axis: usize| self.signs[k] & (1 << axis) != 0;
+        let side = |axis: usize, high: bool| if high { 3 + axis } else { axis };
+        [
+            side(0, down(0)),
+            side(1, down(1)),
+            side(2, down(2)),
+            side(0, !down(0)),
+            side(1, !down(1)),
+            side(2, !down(2)),
+        ]
+    }
+
+    /// The entry distances of every lane into child `i`'s box of `node` and the mask of the
+    /// lanes that enter it at a distance in [0, their limit], for lanes that enter and leave
+    /// boxes by the planes `sides`: as [`BoxRay::boxes`] computes each (the same values).
+    #[inline(always)]
+    fn child<const AVX2: bool>(
+        &self,
+        node: &Node,
+        i: usize,
+        sides: &[usize; 6],
+        limits: &[f32; PACKET],
+    ) -> ([f32; PACKET], u32) {
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 {
+            // SAFETY: `AVX2` is true only in the walk compiled for AVX2 and FMA, which runs
+            // only where the CPU has them.
+            return unsafe { self.child_avx2(node, i, sides, limits) };
+        }
+        let half = |h: usize| {
+            let lanes = |v: &[f32; PACKET]| Vec4::from_slice(&v[4 * h..]);
+            let distance = |side: usize, axis: usize, offset: &[[f32; PACKET]; 3]| {
+                Vec4::splat(node.planes[side][i]) * lanes(&self.inverse[axis])
+                    - lanes(&offset[axis])
+            };
+            let enter = |a: usize| distance(sides[a], a, &self.enter_offset);
+            let leave = |a: usize| distance(sides[3 + a], a, &self.leave_offset);
+            let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
+            let far = leave(0).min(leave(1)).min(leave(2));
+            let mask = near.cmple(far) & near.cmple(lanes(limits));
+            (near, mask.bitmask())
+        };
+        let ((near0, mask0), (near1, mask1)) = (half(0), half(1));
+        let mut near = [0.0; PACKET];
+        near[..4].copy_from_slice(&near0.to_array());
+        near[4..].copy_from_slice(&near1.to_array());
+        (near, mask0 | mask1 << 4)
+    }
+
+    /// [`RayPacket::child`] with AVX and FMA (inlined into the walk compiled for them).
+    ///
+    /// # Safety
+    /// Only for a CPU with AVX2 and FMA.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    unsafe fn child_avx2(
+        &self,
+        node: &Node,
+        i: usize,
+        sides: &[usize; 6],
+        limits: &[f32; PACKET],
+    ) -> ([f32; PACKET], u32) {
+        use std::arch::x86_64::*;
+        // SAFETY: the caller's CPU has AVX2 and FMA (this function's contract); every
+        // array read holds eight f32s, `sides` are below 6 and `i` below 8.
+        unsafe {
+            let lanes = |v: &[f32; PACKET]| _mm256_loadu_ps(v.as_ptr());
+            let distance = |side: usize, axis: usize, offset: &[[f32; PACKET]; 3]| {
+                _mm256_fmsub_ps(
+                    _mm256_set1_ps(*node.planes.get_unchecked(side).get_unchecked(i)),
+                    lanes(self.inverse.get_unchecked(axis)),
+                    lanes(offset.get_unchecked(axis)),
+                )
+            };
+            let enter = |a: usize| distance(sides[a], a, &self.enter_offset);
+            let leave = |a: usize| distance(sides[3 + a], a, &self.leave_offset);
+            // (As in `BoxRay::boxes_avx2`, NaN sides of an empty slot fail the comparison.)
+            let near = _mm256_max_ps(
+                _mm256_max_ps(enter(0), enter(1)),
+                _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
+            );
+            let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
+            let inside = _mm256_and_ps(
+                _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
+                _mm256_cmp_ps::<_CMP_LE_OQ>(near, lanes(limits)),
+            );
+            let mut distances = [0.0; PACKET];
+            _mm256_storeu_ps(distances.as_mut_ptr(), near);
+            (distances, _mm256_movemask_ps(inside) as u32)
+        }
+    }
+}
+
+/// The mask of the lanes whose `near` is at most their `limit`.
+#[inline(always)]
+fn below(near: &[f32; PACKET], limits: &[f32; PACKET]) -> u32 {
+    let mut mask = 0;
+    for k in 0..PACKET {
+        mask |= u32::from(near[k] <= limits[k]) << k;
+    }
+    mask
 }
 
 /// A ray's f32 copy for the triangle filter.
@@ -751,6 +1011,62 @@ impl Stack {
 
     #[inline(always)]
     fn pop(&mut self) -> Option<(u32, f32)> {
+        if let Some(item) = self.spill.pop() {
+            return Some(item);
+        }
+        if self.len == 0 {
+            return None;
+        }
+        self.len -= 1;
+        // SAFETY: the slots below `len` were each written by `push`.
+        Some(unsafe { self.items[self.len].assume_init() })
+    }
+}
+
+/// The bits set in `mask`, lowest first.
+#[inline(always)]
+fn bits(mut mask: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (mask != 0).then(|| {
+            let i = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            i
+        })
+    })
+}
+
+/// Rays a packet walk takes at most.
+pub const PACKET: usize = 8;
+
+/// The packet walk's stack of (entry, the rays that enter it, their entry distances), as
+/// [`Stack`]: a fixed array, spilling to the heap only for trees deeper than a scene gives.
+struct PacketStack {
+    items: [MaybeUninit<(u32, u32, [f32; PACKET])>; 96],
+    len: usize,
+    spill: Vec<(u32, u32, [f32; PACKET])>,
+}
+
+impl PacketStack {
+    fn new() -> PacketStack {
+        PacketStack {
+            items: [const { MaybeUninit::uninit() }; 96],
+            len: 0,
+            spill: Vec::new(),
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, entry: u32, rays: u32, near: [f32; PACKET]) {
+        if self.len < self.items.len() {
+            self.items[self.len] = MaybeUninit::new((entry, rays, near));
+            self.len += 1;
+        } else {
+            self.spill.push((entry, rays, near));
+        }
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(u32, u32, [f32; PACKET])> {
         if let Some(item) = self.spill.pop() {
             return Some(item);
         }

@@ -5,7 +5,7 @@
 
 use crate::geometry::Ray;
 use crate::geometry::mesh::{outward_aabb, prune_value};
-use crate::geometry::wide::WideTree;
+use crate::geometry::wide::{PACKET, WideTree};
 use glam::DVec3;
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
@@ -159,6 +159,32 @@ impl ObjectIndex {
 
     /// Visits every bounded object whose box the ray meets, stopping when `f` returns true;
     /// whether it did.
+    /// [`ObjectIndex::closest`] for a packet of up to [`PACKET`] rays walked together:
+    /// `f(k, i, tmax)` offers object `i` to ray `k`, whose nearest hit so far is at `tmax`.
+    pub fn closest_packet(&self, rays: &[Ray], mut f: impl FnMut(usize, u32, f64) -> Option<f64>) {
+        let mut tmax = [f64::INFINITY; PACKET];
+        let mut limits = [f32::INFINITY; PACKET];
+        for (k, ray) in rays.iter().enumerate() {
+            tmax[k] = ray.tmax;
+            limits[k] = prune_value(ray.tmax);
+        }
+        self.tree.walk_packet(rays, &mut limits, |k, first, _| {
+            let mut hit = false;
+            self.leaf(first, |i| {
+                if let Some(t) = f(k, i, tmax[k]) {
+                    tmax[k] = t;
+                    hit = true;
+                }
+                false
+            });
+            if hit {
+                prune_value(tmax[k])
+            } else {
+                f32::INFINITY
+            }
+        });
+    }
+
     pub fn any(&self, ray: &Ray, mut f: impl FnMut(u32) -> bool) -> bool {
         let mut found = false;
         let visit = |first: u32, _| {
@@ -229,11 +255,15 @@ mod tests {
     /// whose box the ray enters, the nearest-first walk finds the nearest of them, a
     /// stopping walk stops, and a point query keeps every box that holds the point: with
     /// boxes near the origin and far from it, large and tiny, unbounded ones beside them,
-    /// rays from inside and outside, axis-aligned and grazing, shadow-like with an end.
+    /// rays from inside and outside, axis-aligned and grazing, shadow-like with an end. So
+    /// do packets of rays walked together (incoherent ones, and rays from one point in
+    /// nearly one direction, some of mixed signs), with and without AVX2: each ray visits
+    /// every box it enters and finds the nearest.
     #[test]
     fn index_finds_what_every_box_finds() {
         let mut r = Xorshift(0x9E37_79B9_7F4A_7C15);
         let mut checked = 0;
+        let mut packet_hits = 0;
         for (case, (offset, size, count)) in [
             (0.0, 10.0, 9),
             (0.0, 10.0, 300),
@@ -264,6 +294,7 @@ mod tests {
                     .filter(|&k| k % 17 == 5)
                     .collect::<Vec<_>>()
             );
+            let mut rays = Vec::new();
             for k in 0..2000 {
                 let origin = centre + point(&mut r, size * [0.5, 3.0, 100.0][k % 3]);
                 // Half the rays aimed at a point inside a box.
@@ -285,6 +316,7 @@ mod tests {
                 if k % 4 == 0 {
                     ray.tmax = r.unit() * 1.5;
                 }
+                rays.push(ray);
                 let hit: Vec<(u32, f64)> = (bounds.iter().enumerate())
                     .filter_map(|(i, b)| Some((i as u32, entry(&ray, (*b)?)?)))
                     .collect();
@@ -316,6 +348,65 @@ mod tests {
                 let nearest = hit.iter().map(|&(_, t)| t).reduce(f64::min);
                 assert_eq!(best, nearest, "{what}");
             }
+            // Packets: the rays above eight at a time (and fewer), then packets of rays from
+            // one point in nearly one direction (some with mixed signs), walked together.
+            let mut packets: Vec<Vec<Ray>> = rays.chunks(8).map(|c| c.to_vec()).collect();
+            packets.extend(rays.chunks(3).take(50).map(|c| c.to_vec()));
+            for k in 0..300 {
+                let origin = centre + point(&mut r, size * 2.0);
+                let target = centre + point(&mut r, size);
+                let base = target - origin;
+                let spread = [1e-3, 0.05, 1e-9][k % 3] * base.length();
+                let packet = (0..8)
+                    .map(|_| {
+                        let mut d = base + point(&mut r, spread);
+                        if k % 5 == 0 {
+                            // Around a sign change along x.
+                            d.x = point(&mut r, spread).x;
+                        }
+                        Ray::new(origin, d)
+                    })
+                    .collect();
+                packets.push(packet);
+            }
+            for avx2 in [true, false] {
+                let mut index = ObjectIndex::prepare(&bounds)
+                    .expect("enough objects")
+                    .build();
+                index.tree.use_avx2(avx2);
+                for (p, packet) in packets.iter().enumerate() {
+                    let what = format!("case {case}, packet {p}, avx2 {avx2}");
+                    // Every box a ray enters is visited for that ray.
+                    let mut seen = vec![vec![false; count]; packet.len()];
+                    index.closest_packet(packet, |k, i, _| {
+                        seen[k][i as usize] = true;
+                        None
+                    });
+                    // The nearest entry of each ray.
+                    let mut best = vec![None::<f64>; packet.len()];
+                    index.closest_packet(packet, |k, i, tmax| {
+                        let t = entry(&packet[k], bounds[i as usize]?)?;
+                        if t < tmax && best[k].is_none_or(|b| t < b) {
+                            best[k] = Some(t);
+                            return Some(t);
+                        }
+                        None
+                    });
+                    for (k, ray) in packet.iter().enumerate() {
+                        let hit = bounds
+                            .iter()
+                            .enumerate()
+                            .filter_map(|(i, b)| Some((i, entry(ray, (*b)?)?)));
+                        let mut nearest = None::<f64>;
+                        for (i, t) in hit {
+                            assert!(seen[k][i], "{what}: ray {k} did not visit object {i}");
+                            nearest = Some(nearest.map_or(t, |n| n.min(t)));
+                        }
+                        assert_eq!(best[k], nearest, "{what}: ray {k}");
+                        packet_hits += usize::from(nearest.is_some());
+                    }
+                }
+            }
             // Point queries: every box holding the point is kept.
             for k in 0..500 {
                 let p = if k % 2 == 0 {
@@ -336,5 +427,6 @@ mod tests {
             }
         }
         assert!(checked > 4_000, "only {checked} boxes entered");
+        assert!(packet_hits > 10_000, "only {packet_hits} packet rays hit");
     }
 }

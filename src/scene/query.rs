@@ -2,6 +2,7 @@
 //! what reaches a light through transparent objects, inside tests.
 
 use super::*;
+use crate::geometry::wide::PACKET;
 
 impl Scene {
     /// The interior of `object`.
@@ -40,34 +41,44 @@ impl Scene {
         self.nearest(ray, None, None)
     }
 
+    /// Offers object `i` to a ray whose nearest hit so far is `best`: if the ray meets it
+    /// nearer (or at a tie the object wins), `best` becomes that hit and the distance the
+    /// ray need look no farther than is returned.
+    ///
+    /// Two hits within rounding of each other (a glass box standing on the floor plane: the
+    /// ray leaves the glass where it meets the floor) are one point, and the object first in
+    /// POV-Ray's test order is hit, as in POV-Ray, whose depths there are exactly equal;
+    /// rounding would otherwise pick either at random from pixel to pixel. So each hit
+    /// leaves room for a tie just beyond it. (Which hit wins depends not on the order the
+    /// objects are offered in.)
+    #[inline(always)]
+    fn offer(&self, i: u32, ray: &Ray, seer: Option<Seer>, best: &mut Option<Hit>) -> Option<f64> {
+        let object = &self.objects[i as usize];
+        if seer.is_some_and(|s| !object.seen_by(s)) {
+            return None;
+        }
+        let (t, part) = Self::crossings(object, ray).first_part()?;
+        if let Some(b) = best {
+            let tied = (t - b.t).abs() <= TIE * b.t.abs();
+            if tied && !self.wins_tie(i, b.object.0, ray) {
+                return None;
+            }
+        }
+        *best = Some(Hit {
+            t,
+            object: ObjectId(i),
+            part,
+        });
+        Some(t + TIE * t.abs())
+    }
+
+    /// The nearest hit along `ray` of the objects `seer` sees (all with `None`); object
+    /// `hint` (the last camera ray's) is tested first, which changes no answer.
     #[inline]
     fn nearest(&self, ray: &Ray, seer: Option<Seer>, hint: Option<u32>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut ray = *ray;
-        // Two hits within rounding of each other (a glass box standing on the floor plane: the
-        // ray leaves the glass where it meets the floor) are one point, and the object first in
-        // POV-Ray's test order is hit, as in POV-Ray, whose depths there are exactly equal;
-        // rounding would otherwise pick either at random from pixel to pixel. So each hit
-        // leaves room for a tie just beyond it.
-        let mut test = |i: u32, ray: &Ray| -> Option<f64> {
-            let object = &self.objects[i as usize];
-            if seer.is_some_and(|s| !object.seen_by(s)) {
-                return None;
-            }
-            let (t, part) = Self::crossings(object, ray).first_part()?;
-            if let Some(b) = &best {
-                let tied = (t - b.t).abs() <= TIE * b.t.abs();
-                if tied && !self.wins_tie(i, b.object.0, ray) {
-                    return None;
-                }
-            }
-            best = Some(Hit {
-                t,
-                object: ObjectId(i),
-                part,
-            });
-            Some(t + TIE * t.abs())
-        };
+        let mut test = |i: u32, ray: &Ray| self.offer(i, ray, seer, &mut best);
         if let Some(h) = hint {
             if let Some(t) = test(h, &ray) {
                 ray.tmax = t;
@@ -101,6 +112,54 @@ impl Scene {
             }
         }
         best
+    }
+
+    /// [`Scene::nearest`] for each of `rays` (at most [`PACKET`]), into `hits`: with an
+    /// index, its tree walked once for all of them.
+    fn nearest_packet(
+        &self,
+        rays: &[Ray],
+        seer: Option<Seer>,
+        hint: Option<u32>,
+        hits: &mut [Option<Hit>],
+    ) {
+        let Some(index) = &self.index else {
+            for (ray, hit) in rays.iter().zip(hits) {
+                *hit = self.nearest(ray, seer, hint);
+            }
+            return;
+        };
+        let mut rays_now: [Ray; PACKET] = std::array::from_fn(|k| rays[k.min(rays.len() - 1)]);
+        let rays_now = &mut rays_now[..rays.len()];
+        for (ray, best) in rays_now.iter_mut().zip(hits.iter_mut()) {
+            *best = None;
+            if let Some(h) = hint {
+                if let Some(t) = self.offer(h, ray, seer, best) {
+                    ray.tmax = t;
+                }
+            }
+            for &i in &index.unbounded {
+                if Some(i) != hint {
+                    if let Some(t) = self.offer(i, ray, seer, best) {
+                        ray.tmax = t;
+                    }
+                }
+            }
+        }
+        index.closest_packet(rays_now, |k, i, tmax| {
+            if Some(i) == hint {
+                return None;
+            }
+            self.offer(
+                i,
+                &Ray {
+                    tmax,
+                    ..rays_now[k]
+                },
+                seer,
+                &mut hits[k],
+            )
+        });
     }
 
     /// Whether object `new`, hit at the same depth as object `old`, is the one POV-Ray sees:
@@ -291,6 +350,10 @@ pub trait Queries {
     /// the same whatever the hint (ties go by POV-Ray's order, not the order of the tests).
     fn nearest_hit(&self, ray: &Ray, seer: Seer, hint: Option<u32>) -> Option<Hit>;
 
+    /// [`Queries::nearest_hit`] for each of up to eight rays (a packet: neighbouring camera
+    /// rays), into `hits`: the same hits, found together.
+    fn nearest_hits(&self, rays: &[Ray], seer: Seer, hint: Option<u32>, hits: &mut [Option<Hit>]);
+
     /// Surface details at a hit.
     fn surface(&self, ray: &Ray, hit: &Hit) -> SurfaceHit;
 
@@ -357,6 +420,11 @@ impl Queries for Scene {
     #[inline]
     fn nearest_hit(&self, ray: &Ray, seer: Seer, hint: Option<u32>) -> Option<Hit> {
         self.nearest(ray, self.any_hidden.then_some(seer), hint)
+    }
+
+    #[inline]
+    fn nearest_hits(&self, rays: &[Ray], seer: Seer, hint: Option<u32>, hits: &mut [Option<Hit>]) {
+        self.nearest_packet(rays, self.any_hidden.then_some(seer), hint, hits)
     }
 
     #[inline]
@@ -809,6 +877,49 @@ mod hint_tests {
             assert_eq!(scene.index.is_some(), tree);
             hints_change_nothing(&scene);
         }
+    }
+
+    /// Camera rays found together as a packet meet what each meets alone, whatever the
+    /// hint, among the same coincident surfaces: packets of 1 to 8 rays from one point in
+    /// nearby directions (some of mixed signs along x), and of scattered rays.
+    #[test]
+    fn a_packet_finds_what_each_ray_finds() {
+        let scene = coincident(6, 8);
+        assert!(scene.index.is_some());
+        let objects = scene.object_count() as u32;
+        let mut random = crate::testing::Xorshift(0x9ac);
+        let mut hits = 0;
+        for p in 0..4_000 {
+            let mut at = |scale: f64| (random.unit() * 2.0 - 1.0) * scale;
+            let from = DVec3::new(at(8.0), 3.0 + at(3.0), -6.0 + at(4.0));
+            let to = DVec3::new(at(6.0), (at(1.0) > 0.0) as u32 as f64, at(1.0) * 8.0 + 3.0);
+            let spread = [0.01, 0.2, 3.0][p % 3];
+            let size = 1 + p % PACKET;
+            let rays: Vec<Ray> = (0..size)
+                .map(|_| {
+                    let from = if p % 3 == 2 {
+                        from + DVec3::new(at(4.0), at(1.0), at(2.0))
+                    } else {
+                        from
+                    };
+                    let mut d = to - from + DVec3::new(at(spread), at(spread), at(spread));
+                    if p % 4 == 0 {
+                        d.x = at(0.01);
+                    }
+                    Ray::new(from, d.normalize())
+                })
+                .collect();
+            let hint = [None, Some(random.next_u64() as u32 % objects)][p % 2];
+            let mut together = [None; PACKET];
+            scene.nearest_packet(&rays, None, hint, &mut together[..size]);
+            let key = |h: Option<Hit>| h.map(|h| (h.t.to_bits(), h.object, h.part));
+            for (k, ray) in rays.iter().enumerate() {
+                let alone = scene.nearest(ray, None, None);
+                assert_eq!(key(together[k]), key(alone), "packet {p}, ray {k}");
+                hits += usize::from(alone.is_some());
+            }
+        }
+        assert!(hits > 10_000, "{hits} hits");
     }
 
     /// Two coincident planes, then `columns` columns of coincident objects (the first

@@ -64,24 +64,42 @@ pub(super) fn pixels(
     let supersample =
         |tracer: &mut Tracer, value: &mut [Px], encoded: &mut [Rgb], x: u32, y: u32| {
             // (centre + n×n grid) / (n² + 1): the centre sample counts once more.
-            let centre_value = value[index(x, y)];
-            let mut sum = centre_value;
+            // The grid's points but the centre (no jitter: its colour is known), traced
+            // together, then summed in the grid's order.
+            let mut points = [(0.0, 0.0); 81];
             let mut traced = 0;
             for b in 0..n {
                 for a in 0..n {
                     let (ox, oy) = (offset(a), offset(b));
-                    if ox == 0.0 && oy == 0.0 {
-                        // The centre ray again (no jitter): its colour is known.
-                        sum += centre_value;
-                        continue;
+                    if ox != 0.0 || oy != 0.0 {
+                        points[traced] = (x as f64 + ox, y as f64 + oy);
+                        traced += 1;
                     }
-                    traced += 1;
-                    sum += camera::sample(tracer, camera_media, w, h, x as f64 + ox, y as f64 + oy);
+                }
+            }
+            let mut samples = [Px::ZERO; 81];
+            camera::sample_many(
+                tracer,
+                camera_media,
+                (w, h),
+                &points[..traced],
+                |_, k, v| samples[k] = v,
+            );
+            let centre_value = value[index(x, y)];
+            let mut sum = centre_value;
+            let mut next = samples.iter();
+            for b in 0..n {
+                for a in 0..n {
+                    sum += if offset(a) == 0.0 && offset(b) == 0.0 {
+                        centre_value
+                    } else {
+                        *next.next().expect("a sample for each point")
+                    };
                 }
             }
             value[index(x, y)] = sum / (n * n + 1) as f64;
             encoded[index(x, y)] = aa_encoded(value[index(x, y)].truncate(), scene.gamma());
-            traced
+            traced as u64
         };
 
     for y in y0..y1 {

@@ -14,6 +14,7 @@ mod shadow;
 mod spectrum;
 
 use crate::geometry::Ray;
+use crate::geometry::wide::PACKET;
 use crate::scene::{
     Colour, Material, PatternSurface as Surface, Queries, Rgb, Scene, Seer, SurfaceHit,
     filter_colour,
@@ -209,6 +210,19 @@ impl<'a> Tracer<'a> {
         let seer = self.seer;
         let hint = if level == 1 { self.hint } else { None };
         let hit = self.scene.nearest_hit(&ray, seer, hint);
+        self.found(&ray, hit, level, weight, media)
+    }
+
+    /// [`Tracer::trace`] once the nearest hit along `ray` (its `tmax` cut to POV-Ray's
+    /// farthest) is known.
+    fn found(
+        &mut self,
+        ray: &Ray,
+        hit: Option<crate::scene::Hit>,
+        level: u32,
+        weight: f64,
+        media: &MediumStack,
+    ) -> Rgb {
         if level == 1 {
             self.hint = hit.map(|h| h.object.0).or(self.hint);
         }
@@ -232,9 +246,42 @@ impl<'a> Tracer<'a> {
         // the rays its shading traces next, such as a reflection, carry the sample's last
         // share and stop at an object of lower importance.)
         self.importance_query = -1.0;
-        let colour = self.traced(&ray, hit, level, weight, media);
+        let colour = self.traced(ray, hit, level, weight, media);
         self.importance_query = share;
         colour
+    }
+
+    /// [`Tracer::trace`] of camera rays (level 1, weight 1), up to eight neighbours (a
+    /// packet), each inside its `media(ray)`: their nearest hits found together, then each
+    /// ray's colour handed to `done(tracer, k, colour)` in order, as soon as it is traced (so
+    /// that `see_through` is the ray's). The colours are those of tracing them one by one.
+    pub fn trace_camera_rays(
+        &mut self,
+        rays: &[Ray],
+        media: impl Fn(&Ray) -> MediumStack,
+        mut done: impl FnMut(&mut Self, usize, Rgb),
+    ) {
+        let (level, weight) = (1, 1.0);
+        if level > self.max_level || weight < self.bailout {
+            for (k, ray) in rays.iter().enumerate() {
+                let colour = self.trace(ray, level, weight, &media(ray));
+                done(self, k, colour);
+            }
+            return;
+        }
+        let mut packet = [Ray::new(DVec3::ZERO, DVec3::Z); PACKET];
+        for (to, ray) in packet.iter_mut().zip(rays) {
+            *to = *ray;
+            to.tmax = to.tmax.min(MAX_DISTANCE);
+        }
+        let packet = &packet[..rays.len()];
+        let mut hits = [None; PACKET];
+        self.scene
+            .nearest_hits(packet, self.seer, self.hint, &mut hits[..rays.len()]);
+        for (k, (ray, &hit)) in packet.iter().zip(&hits).enumerate() {
+            let colour = self.found(ray, hit, level, weight, &media(ray));
+            done(self, k, colour);
+        }
     }
 
     /// [`Tracer::trace`] past the checks: the colour of `ray`, which meets `hit` first.
