@@ -3,7 +3,7 @@
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
-use super::wide::{Corners, Lane};
+use super::wide::{Corners, Lane, PACKET};
 use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
@@ -67,6 +67,17 @@ pub(crate) fn prune_value(t: f64) -> f32 {
         ((t * (1.0 + 1e-6)) as f32).next_up()
     } else {
         f32::INFINITY
+    }
+}
+
+/// Whether a crossing at `t` with triangle `index` is nearer than `best` (the nearest so far),
+/// or than the ray's end `tmax` when there is none: at an equal distance (a ray through the
+/// edge two triangles share) the lower index wins, so that the answer does not depend on the
+/// order the walk meets them in.
+fn closer(t: f64, index: u32, best: Option<(f64, u32)>, tmax: f64) -> bool {
+    match best {
+        None => t < tmax,
+        Some((b, i)) => t < b || (t == b && index < i),
     }
 }
 
@@ -213,8 +224,8 @@ impl TriangleMesh {
             |first, lanes, corners| {
                 let mut hit = false;
                 for i in lanes_of(lanes) {
-                    let crossing = Self::exact(&sheared, corners, i, ray.tmin, tmax);
-                    if let Some(t) = crossing {
+                    let crossing = Self::exact(&sheared, corners, i, ray.tmin, tmax.next_up());
+                    if let Some(t) = crossing.filter(|&t| closer(t, first + i as u32, best, tmax)) {
                         tmax = t;
                         best = Some((t, first + i as u32));
                         hit = true;
@@ -232,6 +243,48 @@ impl TriangleMesh {
             out.push(t, i);
         }
         out
+    }
+
+    /// [`TriangleMesh::intersect`] of up to eight rays (a packet), walked together, into
+    /// `out`.
+    pub fn intersect_packet(&self, rays: &[Ray], out: &mut [Crossings]) {
+        let sheared: [ShearedRay; PACKET] = std::array::from_fn(|k| {
+            let ray = &rays[if k < rays.len() { k } else { 0 }];
+            ShearedRay::new(ray.origin, ray.direction)
+        });
+        let mut best: [Option<(f64, u32)>; PACKET] = [None; PACKET];
+        let mut tmax = [f64::INFINITY; PACKET];
+        let mut limits = [f32::INFINITY; PACKET];
+        for (k, ray) in rays.iter().enumerate() {
+            tmax[k] = ray.tmax;
+            limits[k] = prune_value(ray.tmax);
+        }
+        self.tree
+            .walk_packet(rays, &sheared, &mut limits, |k, first, lanes, corners| {
+                let mut hit = false;
+                for i in lanes_of(lanes) {
+                    let crossing =
+                        Self::exact(&sheared[k], corners, i, rays[k].tmin, tmax[k].next_up());
+                    if let Some(t) =
+                        crossing.filter(|&t| closer(t, first + i as u32, best[k], tmax[k]))
+                    {
+                        tmax[k] = t;
+                        best[k] = Some((t, first + i as u32));
+                        hit = true;
+                    }
+                }
+                if hit {
+                    prune_value(tmax[k])
+                } else {
+                    f32::INFINITY
+                }
+            });
+        for (k, crossings) in out.iter_mut().enumerate().take(rays.len()) {
+            *crossings = Crossings::NONE;
+            if let Some((t, i)) = best[k] {
+                crossings.push(t, i);
+            }
+        }
     }
 
     /// Calls `f` with the distance of every crossing along the ray (in no particular order).

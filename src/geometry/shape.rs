@@ -280,6 +280,26 @@ shapes! {
     Parametric(Box<Parametric>),
 }
 
+impl Shape {
+    /// [`Shape::intersect`] of each of up to eight rays (a packet), into `out`: a mesh walks
+    /// its tree once for them all.
+    pub fn intersect_packet(&self, rays: &[Ray], out: &mut [Crossings]) {
+        match self {
+            Shape::Mesh(m) => {
+                m.intersect_packet(rays, out);
+                for crossings in &out[..rays.len()] {
+                    counters::record(self.kind(), !crossings.is_empty());
+                }
+            }
+            _ => {
+                for (ray, crossings) in rays.iter().zip(out) {
+                    *crossings = self.intersect(ray);
+                }
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

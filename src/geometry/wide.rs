@@ -353,10 +353,11 @@ impl WideTree {
         }
     }
 
-    /// Visits, for each of up to [`PACKET`] rays (a packet, such as the camera rays of a
-    /// pixel's samples or of neighbouring pixels), the leaves whose boxes it enters before its
-    /// limit, nearer boxes roughly first: `visit(k, payload, limit)` is called for ray `k` and
-    /// returns its new limit (it only ever lowers it). Each node is read once for all the rays
+    /// Visits, for up to [`PACKET`] rays (a packet, such as the camera rays of a pixel's
+    /// samples or of neighbouring pixels), the leaves whose boxes they enter before their
+    /// limits, nearer boxes roughly first: `visit(rays, payload, limits)` is called with the
+    /// mask of the rays that enter the leaf's box (ray `k` is bit `k`) and may lower their
+    /// limits. Each node is read once for all the rays
     /// that enter it and their box tests, independent of one another, overlap, where a single
     /// ray's walk waits on each node's test before it can read the next.
     #[inline(always)]
@@ -364,7 +365,7 @@ impl WideTree {
         &self,
         rays: &[Ray],
         limits: &mut [f32; PACKET],
-        visit: impl FnMut(usize, u32, f32) -> f32,
+        visit: impl FnMut(u32, u32, &mut [f32; PACKET]),
     ) {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
@@ -381,7 +382,7 @@ impl WideTree {
         &self,
         rays: &[Ray],
         limits: &mut [f32; PACKET],
-        visit: impl FnMut(usize, u32, f32) -> f32,
+        visit: impl FnMut(u32, u32, &mut [f32; PACKET]),
     ) {
         self.walk_packet_with::<true>(rays, limits, visit)
     }
@@ -395,7 +396,7 @@ impl WideTree {
         &self,
         rays: &[Ray],
         limits: &mut [f32; PACKET],
-        mut visit: impl FnMut(usize, u32, f32) -> f32,
+        mut visit: impl FnMut(u32, u32, &mut [f32; PACKET]),
     ) {
         assert!(rays.len() <= PACKET);
         if self.root == EMPTY || rays.is_empty() {
@@ -421,7 +422,7 @@ impl WideTree {
         sides: [usize; 6],
         group: u32,
         limits: &mut [f32; PACKET],
-        visit: &mut impl FnMut(usize, u32, f32) -> f32,
+        visit: &mut impl FnMut(u32, u32, &mut [f32; PACKET]),
     ) {
         let mut stack = PacketStack::new();
         stack.push(self.root, group, [0.0; PACKET]);
@@ -432,9 +433,7 @@ impl WideTree {
                 continue;
             }
             if entry & LEAF != 0 {
-                for k in bits(active) {
-                    limits[k] = limits[k].min(visit(k, entry & !LEAF, limits[k]));
-                }
+                visit(active, entry & !LEAF, limits);
                 continue;
             }
             let node = &self.nodes[entry as usize];
@@ -623,6 +622,43 @@ impl WideBvh {
                         return limit;
                     }
                     b += 1;
+                }
+            });
+    }
+}
+
+impl WideBvh {
+    /// [`WideBvh::walk`], nearest box first, for up to [`PACKET`] rays walked together
+    /// (`sheared[k]` is ray `k`'s exact test): `visit(k, first, lanes, corners)` is called for
+    /// each block ray `k` reaches with the triangles that may cross it, and returns its new
+    /// limit.
+    pub fn walk_packet(
+        &self,
+        rays: &[Ray],
+        sheared: &[ShearedRay],
+        limits: &mut [f32; PACKET],
+        mut visit: impl FnMut(usize, u32, u32, &Corners) -> f32,
+    ) {
+        let filters: [TriangleFilter; PACKET] = std::array::from_fn(|k| {
+            let k = if k < rays.len() { k } else { 0 };
+            TriangleFilter::new(&rays[k], &sheared[k], self.tree.extent)
+        });
+        let blocks = &self.blocks;
+        self.tree
+            .walk_packet(rays, limits, |rays_in, first, limits| {
+                for k in bits(rays_in) {
+                    let mut b = first as usize;
+                    loop {
+                        let block = &blocks[b];
+                        let lanes = filters[k].triangles(block);
+                        if lanes != 0 {
+                            limits[k] = limits[k].min(visit(k, block.first, lanes, &block.corner));
+                        }
+                        if block.count & MORE == 0 {
+                            break;
+                        }
+                        b += 1;
+                    }
                 }
             });
     }
@@ -1025,7 +1061,7 @@ impl Stack {
 
 /// The bits set in `mask`, lowest first.
 #[inline(always)]
-fn bits(mut mask: u32) -> impl Iterator<Item = usize> {
+pub(crate) fn bits(mut mask: u32) -> impl Iterator<Item = usize> {
     std::iter::from_fn(move || {
         (mask != 0).then(|| {
             let i = mask.trailing_zeros() as usize;
@@ -1081,6 +1117,7 @@ impl PacketStack {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Crossings;
     use super::super::mesh::TriangleMesh;
     use super::*;
 
@@ -1340,12 +1377,66 @@ mod tests {
                 .map(|f| f.map(|i| vertices[i as usize]))
                 .collect();
             for mesh in both_walks(&vertices, &faces) {
+                let mut rays = Vec::new();
                 for k in 0..3000 {
                     let ray = test_ray(&mut rng, k, (centre, size), &vertices, &soup);
                     let what = format!("offset {offset}, ray {k}");
                     agree_with_every_triangle(&mesh, &soup, &ray, &what);
+                    rays.push(ray);
+                }
+                // Packets: the rays above, 1 to 8 at a time, and rays from one point toward
+                // the grid's corners and edges next to one another (ties between triangles).
+                let mut start = 0;
+                for p in 0.. {
+                    let end = (start + 1 + p % PACKET).min(rays.len());
+                    packets_agree(
+                        &mesh,
+                        &rays[start..end],
+                        &format!("offset {offset}, packet {p}"),
+                    );
+                    start = end;
+                    if start == rays.len() {
+                        break;
+                    }
+                }
+                for p in 0..300 {
+                    let origin = rng.point(centre, size * 3.0);
+                    let at = (rng.next() * (n * n) as f64) as usize;
+                    let packet: Vec<Ray> = (0..PACKET)
+                        .map(|k| {
+                            let a = vertices[at + k / 2];
+                            let b = vertices[at + k / 2 + 1];
+                            let target = if k % 2 == 0 { a } else { (a + b) * 0.5 };
+                            Ray::new(origin, target - origin)
+                        })
+                        .collect();
+                    packets_agree(&mesh, &packet, &format!("offset {offset}, corners {p}"));
                 }
             }
+        }
+    }
+
+    /// Rays walked together as a packet find what each finds alone, and each finds the
+    /// nearest crossing and, where triangles tie at it (a ray through the edge or corner
+    /// they share), the lowest-numbered of them, whatever order a walk meets them in.
+    fn packets_agree(mesh: &TriangleMesh, rays: &[Ray], what: &str) {
+        let mut together = [Crossings::NONE; PACKET];
+        mesh.intersect_packet(rays, &mut together[..rays.len()]);
+        let key = |c: &Crossings| c.first_part().map(|(t, part)| (t.to_bits(), part));
+        for (k, ray) in rays.iter().enumerate() {
+            let alone = mesh.intersect(ray);
+            assert_eq!(key(&together[k]), key(&alone), "{what}, ray {k}");
+            let mut lowest: Option<(f64, u32)> = None;
+            mesh.for_each_crossing(ray, |t, part| {
+                if lowest.is_none_or(|(b, i)| t < b || (t == b && part < i)) {
+                    lowest = Some((t, part));
+                }
+            });
+            assert_eq!(
+                key(&alone),
+                lowest.map(|(t, part)| (t.to_bits(), part)),
+                "{what}, ray {k}"
+            );
         }
     }
 

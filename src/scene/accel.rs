@@ -5,7 +5,7 @@
 
 use crate::geometry::Ray;
 use crate::geometry::mesh::{outward_aabb, prune_value};
-use crate::geometry::wide::{PACKET, WideTree};
+use crate::geometry::wide::{PACKET, WideTree, bits};
 use glam::DVec3;
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
@@ -160,29 +160,27 @@ impl ObjectIndex {
     /// Visits every bounded object whose box the ray meets, stopping when `f` returns true;
     /// whether it did.
     /// [`ObjectIndex::closest`] for a packet of up to [`PACKET`] rays walked together:
-    /// `f(k, i, tmax)` offers object `i` to ray `k`, whose nearest hit so far is at `tmax`.
-    pub fn closest_packet(&self, rays: &[Ray], mut f: impl FnMut(usize, u32, f64) -> Option<f64>) {
-        let mut tmax = [f64::INFINITY; PACKET];
-        let mut limits = [f32::INFINITY; PACKET];
-        for (k, ray) in rays.iter().enumerate() {
-            tmax[k] = ray.tmax;
-            limits[k] = prune_value(ray.tmax);
-        }
-        self.tree.walk_packet(rays, &mut limits, |k, first, _| {
-            let mut hit = false;
-            self.leaf(first, |i| {
-                if let Some(t) = f(k, i, tmax[k]) {
-                    tmax[k] = t;
-                    hit = true;
+    /// `f(rays, i, tmax)` offers object `i` to the rays of mask `rays` (ray `k` is bit `k`),
+    /// ray `k`'s nearest hit so far being at `tmax[k]` (at first as given, not beyond its
+    /// end), which it lowers where it finds one nearer.
+    pub fn closest_packet(
+        &self,
+        rays: &[Ray],
+        tmax: &[f64; PACKET],
+        mut f: impl FnMut(u32, u32, &mut [f64; PACKET]),
+    ) {
+        let mut tmax = *tmax;
+        let limits = &mut tmax.map(prune_value);
+        self.tree
+            .walk_packet(rays, limits, |rays_in, first, limits| {
+                self.leaf(first, |i| {
+                    f(rays_in, i, &mut tmax);
+                    false
+                });
+                for k in bits(rays_in) {
+                    limits[k] = limits[k].min(prune_value(tmax[k]));
                 }
-                false
             });
-            if hit {
-                prune_value(tmax[k])
-            } else {
-                f32::INFINITY
-            }
-        });
     }
 
     pub fn any(&self, ray: &Ray, mut f: impl FnMut(u32) -> bool) -> bool {
@@ -378,19 +376,25 @@ mod tests {
                     let what = format!("case {case}, packet {p}, avx2 {avx2}");
                     // Every box a ray enters is visited for that ray.
                     let mut seen = vec![vec![false; count]; packet.len()];
-                    index.closest_packet(packet, |k, i, _| {
-                        seen[k][i as usize] = true;
-                        None
+                    let ends = std::array::from_fn(|k| packet.get(k).map_or(0.0, |r| r.tmax));
+                    index.closest_packet(packet, &ends, |rays, i, _| {
+                        for k in bits(rays) {
+                            seen[k][i as usize] = true;
+                        }
                     });
                     // The nearest entry of each ray.
                     let mut best = vec![None::<f64>; packet.len()];
-                    index.closest_packet(packet, |k, i, tmax| {
-                        let t = entry(&packet[k], bounds[i as usize]?)?;
-                        if t < tmax && best[k].is_none_or(|b| t < b) {
-                            best[k] = Some(t);
-                            return Some(t);
+                    index.closest_packet(packet, &ends, |rays, i, tmax| {
+                        for k in bits(rays) {
+                            let Some(t) = bounds[i as usize].and_then(|b| entry(&packet[k], b))
+                            else {
+                                continue;
+                            };
+                            if t < tmax[k] && best[k].is_none_or(|b| t < b) {
+                                best[k] = Some(t);
+                                tmax[k] = t;
+                            }
                         }
-                        None
                     });
                     for (k, ray) in packet.iter().enumerate() {
                         let hit = bounds
