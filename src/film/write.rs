@@ -357,14 +357,81 @@ pub(super) fn write_exr(
                 .expect("a line holds sample_count samples");
             })
         });
-        let chunks = chunks.on_progress(|_| {});
-        if parallel {
-            chunks.compress_all_blocks_parallel(&meta, blocks)
+        // Compressed a batch at a time, in parallel if `parallel` while the next batch is
+        // read (which may render it), and written in order.
+        let batch = if parallel {
+            4 * rayon::current_num_threads()
         } else {
-            chunks.compress_all_blocks_sequential(&meta, blocks)
+            1
+        };
+        let mut blocks = blocks;
+        let mut current: Vec<_> = blocks.by_ref().take(batch).collect();
+        while !current.is_empty() {
+            let compress = |blocks: Vec<(usize, exr::block::UncompressedBlock)>| {
+                use rayon::prelude::*;
+                let zip = |(i, b)| (i, zip_block(b));
+                if parallel {
+                    blocks.into_par_iter().map(zip).collect()
+                } else {
+                    blocks.into_iter().map(zip).collect::<Vec<_>>()
+                }
+            };
+            let (done, next) = if parallel {
+                let mut done = Vec::new();
+                let next = rayon::in_place_scope(|s| {
+                    s.spawn(|_| done = compress(current));
+                    blocks.by_ref().take(batch).collect()
+                });
+                (done, next)
+            } else {
+                (compress(current), blocks.by_ref().take(batch).collect())
+            };
+            for (i, chunk) in done {
+                chunks.write_chunk(i, chunk)?;
+            }
+            current = next;
         }
+        Ok(())
     })
     .map_err(format)
+}
+
+/// A block of scanlines as EXR's ZIP compression stores it (the bytes of its little-endian
+/// samples split into the even and the odd ones, each byte then the difference from the one
+/// before plus 128, deflated into a zlib stream), or the samples as they are where that is
+/// no smaller, as the format asks. Deflated at miniz's fastest level, not the `exr` crate's
+/// level 4: at 640×480 a picture's blocks take 9 ms instead of 26 ms on one core, for a file
+/// 15 % larger.
+fn zip_block(block: exr::block::UncompressedBlock) -> exr::block::chunk::Chunk {
+    use exr::block::chunk::{Chunk, CompressedBlock, CompressedScanLineBlock};
+    let raw = block.data;
+    // (The samples are in the machine's order, which is the file's on the little-endian
+    // machines this writer is built for.)
+    const _: () = assert!(cfg!(target_endian = "little"));
+    let n = raw.len();
+    let mut split = vec![0u8; n];
+    let (even, odd) = split.split_at_mut(n.div_ceil(2));
+    for (k, &byte) in raw.iter().enumerate() {
+        if k % 2 == 0 {
+            even[k / 2] = byte;
+        } else {
+            odd[k / 2] = byte;
+        }
+    }
+    let mut previous = split.first().copied().unwrap_or(0);
+    for byte in split.iter_mut().skip(1) {
+        let here = *byte;
+        *byte = here.wrapping_sub(previous).wrapping_add(128);
+        previous = here;
+    }
+    let deflated = miniz_oxide::deflate::compress_to_vec_zlib(&split, 1);
+    Chunk {
+        layer_index: block.index.layer,
+        compressed_block: CompressedBlock::ScanLine(CompressedScanLineBlock {
+            y_coordinate: block.index.pixel_position.y() as i32,
+            compressed_pixels_le: if deflated.len() < n { deflated } else { raw },
+        }),
+    }
 }
 
 /// A PNG, RGB or RGBA, 8 or 16 bits, rows from `row(y, bytes)`: adaptive filter, and the png
@@ -489,6 +556,64 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The EXR's blocks read back exactly where they were compressed (smooth rows) and where
+    /// compressing them would not have made them smaller, so they are stored as they are
+    /// (rows of noise), with a last block of fewer lines; compressed on all cores and on one,
+    /// the file is the same.
+    #[test]
+    fn zip_blocks_read_back_whether_compressed_or_stored() {
+        let (w, h) = (37, 50);
+        let layout = Layout {
+            alpha: false,
+            bits: 32,
+            aovs: vec![],
+            note: None,
+        };
+        let mut random = crate::testing::Xorshift(0x5eed);
+        let values: Vec<f32> = (0..w * h * 3)
+            .map(|k| {
+                if k / (3 * w) < 32 {
+                    (k % 97) as f32 / 8.0
+                } else {
+                    f32::from_bits(random.next_u64() as u32 & 0x3fff_ffff)
+                }
+            })
+            .collect();
+        let write = |threads: Option<usize>| {
+            let path = std::env::temp_dir()
+                .join(format!("trace-zip-{}-{threads:?}.exr", std::process::id()));
+            let mut sent = false;
+            write_streamed(&path, w, h, &layout, threads, |_| {
+                (!std::mem::replace(&mut sent, true)).then(|| Rows {
+                    y0: 0,
+                    values: values.as_slice().into(),
+                })
+            })
+            .unwrap();
+            let bytes = std::fs::read(&path).unwrap();
+            let read = crate::film::raster::Raster::read(&path).unwrap();
+            std::fs::remove_file(&path).unwrap();
+            for y in 0..h {
+                for x in 0..w {
+                    for (c, name) in ["R", "G", "B"].into_iter().enumerate() {
+                        let want = values[((y * w + x) * 3) as usize + c];
+                        let got = read.sample(x, y, name).unwrap();
+                        assert_eq!(got.to_bits(), want.to_bits(), "{name} at ({x}, {y})");
+                    }
+                }
+            }
+            bytes
+        };
+        let (all, one) = (write(None), write(Some(1)));
+        assert_eq!(all, one);
+        // The smooth rows were compressed: the file is well below the samples' own size.
+        assert!(
+            all.len() < (w * h * 12) as usize * 3 / 4,
+            "{} bytes",
+            all.len()
+        );
     }
 
     #[test]
