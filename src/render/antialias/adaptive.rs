@@ -83,6 +83,7 @@ pub(super) fn pixels(
                 camera_media,
                 (w, h),
                 &points[..traced],
+                |_, _| {},
                 |_, k, v| samples[k] = v,
             );
             let centre_value = value[index(x, y)];

@@ -178,19 +178,45 @@ impl BandCentres {
     }
 }
 
-/// The centre sample of pixel (x, y) and its comparison encoding (method 3's draws its area
-/// lights' and lens's points from the first of the pixel's sequence when it samples them;
-/// the other methods' are the rays of [`Block::centre`]).
-pub(super) fn centre_sample(block: &Block, tracer: &mut Tracer, x: u32, y: u32) -> (Px, Rgb) {
+/// The centre samples of pixels `xs` of row `y` and their comparison encodings, appended to
+/// `out` (method 3's draw their area lights' and lens's points from the first of each
+/// pixel's sequence when it samples them; the other methods' are the rays of
+/// [`Block::centre`]), their nearest hits found a packet at a time.
+pub(super) fn centre_row(
+    block: &Block,
+    tracer: &mut Tracer,
+    (xs, y): (std::ops::Range<u32>, u32),
+    out: &mut Vec<(Px, Rgb)>,
+) {
     let options = block.options;
-    let seed = sampler::pixel_seed(x, y, 0);
     let sampled = matches!(options.antialias, Antialias::Sampled { .. });
-    tracer.light_stream = (sampled && options.sampled_lights).then_some((seed, 0));
-    tracer.lens_stream = (sampled && options.sampled_blur).then_some((seed, 0));
-    let (w, h) = (options.width, options.height);
-    let v = camera::sample(tracer, block.camera_media, w, h, x as f64, y as f64);
-    (v, aa_encoded(v.truncate(), tracer.scene.gamma()))
+    let gamma = tracer.scene.gamma();
+    let size = (options.width, options.height);
+    let mut points = [(0.0, 0.0); ROW];
+    for x0 in xs.clone().step_by(ROW) {
+        let run = x0..(x0 + ROW as u32).min(xs.end);
+        for (point, x) in points.iter_mut().zip(run.clone()) {
+            *point = (x as f64, y as f64);
+        }
+        let streams = |tracer: &mut Tracer, k: usize| {
+            let seed = sampler::pixel_seed(x0 + k as u32, y, 0);
+            tracer.light_stream = (sampled && options.sampled_lights).then_some((seed, 0));
+            tracer.lens_stream = (sampled && options.sampled_blur).then_some((seed, 0));
+        };
+        let points = &points[..run.len()];
+        camera::sample_many(
+            tracer,
+            block.camera_media,
+            size,
+            points,
+            streams,
+            |_, _, v| out.push((v, aa_encoded(v.truncate(), gamma))),
+        );
+    }
 }
+
+/// Pixels [`centre_row`] traces at once.
+const ROW: usize = 32;
 
 /// The centre samples of the pixels of `rectangles` (up to four: see [`BandCentres`]),
 /// traced for the band's blocks to share, into `values` (an emptied buffer); `block` gives
@@ -213,9 +239,7 @@ pub(in crate::render) fn centres(
             start: values.len(),
         };
         for y in ys.clone() {
-            for x in xs.clone() {
-                values.push(centre_sample(block, tracer, x, y));
-            }
+            centre_row(block, tracer, (xs.clone(), y), &mut values);
         }
     }
     tracer.light_stream = None;

@@ -1,7 +1,7 @@
 //! trace's own sampler (method 3): stratified samples from each pixel's scrambled Sobol
 //! sequence where a pixel differs from a neighbour, until their estimated error is small.
 
-use super::centres::centre_sample;
+use super::centres::centre_row;
 use super::{Block, SAMPLED_TOLERANCE, aa_encoded, differ};
 use crate::render::transport::Tracer;
 use crate::render::{Px, camera, sampler};
@@ -37,9 +37,7 @@ pub(super) fn pixels(
     } else {
         own.reserve(gw * (gy1 - gy0) as usize);
         for y in gy0..gy1 {
-            for x in gx0..gx1 {
-                own.push(centre_sample(block, tracer, x, y));
-            }
+            centre_row(block, tracer, (gx0..gx1, y), &mut own);
         }
         samples += own.len() as u64;
     }
@@ -70,15 +68,27 @@ pub(super) fn pixels(
             let (mut n, mut batch, mut sum) = (0u32, 4u32, value);
             encoded.clear();
             loop {
+                // The batch's samples traced together, each with its own streams, up to
+                // 32 at a time.
                 while n < batch {
-                    let (dx, dy) = sampler::offset(seed, n);
-                    tracer.light_stream = options.sampled_lights.then_some((seed, n + 1));
-                    tracer.lens_stream = options.sampled_blur.then_some((seed, n + 1));
-                    let v =
-                        camera::sample(tracer, camera_media, w, h, x as f64 + dx, y as f64 + dy);
-                    sum += v;
-                    encoded.push(aa_encoded(v.truncate(), gamma));
-                    n += 1;
+                    let count = (batch - n).min(32);
+                    let mut points = [(0.0, 0.0); 32];
+                    for (k, point) in points.iter_mut().enumerate().take(count as usize) {
+                        let (dx, dy) = sampler::offset(seed, n + k as u32);
+                        *point = (x as f64 + dx, y as f64 + dy);
+                    }
+                    let first = n;
+                    let streams = |tracer: &mut Tracer, k: usize| {
+                        let stream = Some((seed, first + k as u32 + 1));
+                        tracer.light_stream = stream.filter(|_| options.sampled_lights);
+                        tracer.lens_stream = stream.filter(|_| options.sampled_blur);
+                    };
+                    let (size, points) = ((w, h), &points[..count as usize]);
+                    camera::sample_many(tracer, camera_media, size, points, streams, |_, _, v| {
+                        sum += v;
+                        encoded.push(aa_encoded(v.truncate(), gamma));
+                    });
+                    n += count;
                 }
                 if n >= most {
                     break;

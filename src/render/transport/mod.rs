@@ -253,17 +253,21 @@ impl<'a> Tracer<'a> {
 
     /// [`Tracer::trace`] of camera rays (level 1, weight 1), up to eight neighbours (a
     /// packet), each inside its `media(ray)`: their nearest hits found together, then each
-    /// ray's colour handed to `done(tracer, k, colour)` in order, as soon as it is traced (so
-    /// that `see_through` is the ray's). The colours are those of tracing them one by one.
+    /// ray shaded in order, `before(tracer, k)` called first (to set the pixel's sample
+    /// streams) and its colour handed to `done(tracer, k, colour)` as soon as it is traced
+    /// (so that `see_through` is the ray's). The colours are those of tracing them one by
+    /// one.
     pub fn trace_camera_rays(
         &mut self,
         rays: &[Ray],
         media: impl Fn(&Ray) -> MediumStack,
+        mut before: impl FnMut(&mut Self, usize),
         mut done: impl FnMut(&mut Self, usize, Rgb),
     ) {
         let (level, weight) = (1, 1.0);
         if level > self.max_level || weight < self.bailout {
             for (k, ray) in rays.iter().enumerate() {
+                before(self, k);
                 let colour = self.trace(ray, level, weight, &media(ray));
                 done(self, k, colour);
             }
@@ -279,6 +283,7 @@ impl<'a> Tracer<'a> {
         self.scene
             .nearest_hits(packet, self.seer, self.hint, &mut hits[..rays.len()]);
         for (k, (ray, &hit)) in packet.iter().zip(&hits).enumerate() {
+            before(self, k);
             let colour = self.found(ray, hit, level, weight, &media(ray));
             done(self, k, colour);
         }
