@@ -357,9 +357,8 @@ impl WideTree {
     /// samples or of neighbouring pixels), the leaves whose boxes they enter before their
     /// limits, nearer boxes roughly first: `visit(rays, payload, limits)` is called with the
     /// mask of the rays that enter the leaf's box (ray `k` is bit `k`) and may lower their
-    /// limits. Each node is read once for all the rays
-    /// that enter it and their box tests, independent of one another, overlap, where a single
-    /// ray's walk waits on each node's test before it can read the next.
+    /// limits. Each node is read once for all the rays that enter it, and each of its
+    /// children's boxes is tested against all of them at once.
     #[inline(always)]
     pub fn walk_packet(
         &self,
