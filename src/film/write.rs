@@ -510,6 +510,32 @@ pub(super) fn write_ppm(
 mod tests {
     use super::*;
 
+    /// The file `write_streamed` makes of `values` (one band) and what reading it back gives.
+    fn written(
+        (w, h): (u32, u32),
+        layout: &Layout,
+        threads: Option<usize>,
+        values: &[f32],
+        name: &str,
+    ) -> (Vec<u8>, crate::film::raster::Raster) {
+        let path = std::env::temp_dir().join(format!(
+            "trace-{name}-{}-{threads:?}.exr",
+            std::process::id()
+        ));
+        let mut sent = false;
+        write_streamed(&path, w, h, layout, threads, |_| {
+            (!std::mem::replace(&mut sent, true)).then(|| Rows {
+                y0: 0,
+                values: values.into(),
+            })
+        })
+        .unwrap();
+        let bytes = std::fs::read(&path).unwrap();
+        let read = crate::film::raster::Raster::read(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        (bytes, read)
+    }
+
     #[test]
     fn a_half_float_exr_holds_each_channel_rounded_and_the_aovs_whole() {
         use half::f16;
@@ -531,17 +557,7 @@ mod tests {
         let values: Vec<f32> = (0..h)
             .flat_map(|y| (0..w).flat_map(move |x| (0..5).map(move |c| value(x, y, c))))
             .collect();
-        let path = std::env::temp_dir().join(format!("trace-half-{}.exr", std::process::id()));
-        let mut sent = false;
-        write_streamed(&path, w, h, &layout, None, |_| {
-            (!std::mem::replace(&mut sent, true)).then(|| Rows {
-                y0: 0,
-                values: values.as_slice().into(),
-            })
-        })
-        .unwrap();
-        let read = crate::film::raster::Raster::read(&path).unwrap();
-        std::fs::remove_file(&path).unwrap();
+        let (_, read) = written((w, h), &layout, None, &values, "half");
         for y in 0..h {
             for x in 0..w {
                 for (c, name) in ["R", "G", "B", "A", "Z"].into_iter().enumerate() {
@@ -582,19 +598,7 @@ mod tests {
             })
             .collect();
         let write = |threads: Option<usize>| {
-            let path = std::env::temp_dir()
-                .join(format!("trace-zip-{}-{threads:?}.exr", std::process::id()));
-            let mut sent = false;
-            write_streamed(&path, w, h, &layout, threads, |_| {
-                (!std::mem::replace(&mut sent, true)).then(|| Rows {
-                    y0: 0,
-                    values: values.as_slice().into(),
-                })
-            })
-            .unwrap();
-            let bytes = std::fs::read(&path).unwrap();
-            let read = crate::film::raster::Raster::read(&path).unwrap();
-            std::fs::remove_file(&path).unwrap();
+            let (bytes, read) = written((w, h), &layout, threads, &values, "zip");
             for y in 0..h {
                 for x in 0..w {
                     for (c, name) in ["R", "G", "B"].into_iter().enumerate() {

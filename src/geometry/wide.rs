@@ -277,8 +277,8 @@ impl WideTree {
             return;
         }
         let r = BoxRay::new(ray, self.centre, self.extent);
-        let mut stack = Stack::new();
-        stack.push(self.root, 0.0);
+        let mut stack = Stack::<(u32, f32), 64>::new();
+        stack.push((self.root, 0.0));
         while let Some((mut entry, near)) = stack.pop() {
             if near > limit {
                 continue;
@@ -302,7 +302,7 @@ impl WideTree {
                     while mask != 0 {
                         let i = mask.trailing_zeros() as usize;
                         mask &= mask - 1;
-                        stack.push(node.child[i], entry_t[i]);
+                        stack.push((node.child[i], entry_t[i]));
                     }
                     entry = node.child[first];
                     continue;
@@ -316,7 +316,7 @@ impl WideTree {
                     } else {
                         (first, second)
                     };
-                    stack.push(node.child[far], entry_t[far]);
+                    stack.push((node.child[far], entry_t[far]));
                     entry = node.child[near];
                     continue;
                 }
@@ -331,15 +331,9 @@ impl WideTree {
                     hits[n] = (entry_t[i], node.child[i]);
                     n += 1;
                 }
-                for i in 1..n {
-                    let mut j = i;
-                    while j > 0 && hits[j - 1].0 < hits[j].0 {
-                        hits.swap(j - 1, j);
-                        j -= 1;
-                    }
-                }
+                farthest_first(&mut hits[..n]);
                 for &(t, child) in &hits[..n - 1] {
-                    stack.push(child, t);
+                    stack.push((child, t));
                 }
                 entry = hits[n - 1].1;
             }
@@ -423,8 +417,9 @@ impl WideTree {
         limits: &mut [f32; PACKET],
         visit: &mut impl FnMut(u32, u32, &mut [f32; PACKET]),
     ) {
-        let mut stack = PacketStack::new();
-        stack.push(self.root, group, [0.0; PACKET]);
+        // (Entries, the rays that enter them, and their entry distances.)
+        let mut stack = Stack::<(u32, u32, [f32; PACKET]), 96>::new();
+        stack.push((self.root, group, [0.0; PACKET]));
         while let Some((entry, rays_in, near)) = stack.pop() {
             // The rays that still may meet something in this box.
             let active = rays_in & below(&near, limits);
@@ -440,7 +435,7 @@ impl WideTree {
             // farthest first by their first ray's entry distance, so that the nearest is
             // walked next.
             let mut distance = [[0.0f32; PACKET]; WIDE];
-            let mut order = [(0.0f32, 0usize, 0u32); WIDE];
+            let mut order = [(0.0f32, (0usize, 0u32)); WIDE];
             let mut n = 0;
             for (i, slot) in distance.iter_mut().enumerate() {
                 let (d, rays_in) = packet.child::<AVX2>(node, i, &sides, limits);
@@ -448,19 +443,13 @@ impl WideTree {
                 if rays_in != 0 {
                     self.prefetch(node.child[i], &|_| {});
                     *slot = d;
-                    order[n] = (d[rays_in.trailing_zeros() as usize], i, rays_in);
+                    order[n] = (d[rays_in.trailing_zeros() as usize], (i, rays_in));
                     n += 1;
                 }
             }
-            for a in 1..n {
-                let mut b = a;
-                while b > 0 && order[b - 1].0 < order[b].0 {
-                    order.swap(b - 1, b);
-                    b -= 1;
-                }
-            }
-            for &(_, i, rays_in) in &order[..n] {
-                stack.push(node.child[i], rays_in, distance[i]);
+            farthest_first(&mut order[..n]);
+            for &(_, (i, rays_in)) in &order[..n] {
+                stack.push((node.child[i], rays_in, distance[i]));
             }
         }
     }
@@ -755,16 +744,13 @@ impl RayPacket {
             };
             let enter = |a: usize| distance(sides[a], a, &self.enter_offset);
             let leave = |a: usize| distance(sides[3 + a], a, &self.leave_offset);
-            let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
-            let far = leave(0).min(leave(1)).min(leave(2));
-            let mask = near.cmple(far) & near.cmple(lanes(limits));
-            (near, mask.bitmask())
+            entries4(
+                [enter(0), enter(1), enter(2)],
+                [leave(0), leave(1), leave(2)],
+                lanes(limits),
+            )
         };
-        let ((near0, mask0), (near1, mask1)) = (half(0), half(1));
-        let mut near = [0.0; PACKET];
-        near[..4].copy_from_slice(&near0.to_array());
-        near[4..].copy_from_slice(&near1.to_array());
-        (near, mask0 | mask1 << 4)
+        halves(half(0), half(1))
     }
 
     /// [`RayPacket::child`] with AVX and FMA (inlined into the walk compiled for them).
@@ -794,20 +780,65 @@ impl RayPacket {
             };
             let enter = |a: usize| distance(sides[a], a, &self.enter_offset);
             let leave = |a: usize| distance(sides[3 + a], a, &self.leave_offset);
-            // (As in `BoxRay::boxes_avx2`, NaN sides of an empty slot fail the comparison.)
-            let near = _mm256_max_ps(
-                _mm256_max_ps(enter(0), enter(1)),
-                _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
+            let (enter, leave) = (
+                [enter(0), enter(1), enter(2)],
+                [leave(0), leave(1), leave(2)],
             );
-            let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
-            let inside = _mm256_and_ps(
-                _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
-                _mm256_cmp_ps::<_CMP_LE_OQ>(near, lanes(limits)),
-            );
-            let mut distances = [0.0; PACKET];
-            _mm256_storeu_ps(distances.as_mut_ptr(), near);
-            (distances, _mm256_movemask_ps(inside) as u32)
+            entries8(enter, leave, lanes(limits))
         }
+    }
+}
+
+/// Four lanes' box entry distances (at least 0) from their slabs' distances along the three
+/// axes, `enter` and `leave`, and the mask of the lanes that enter their box at a distance up
+/// to their `limit` (a lane of NaN sides, an empty slot, fails).
+#[inline(always)]
+fn entries4(enter: [Vec4; 3], leave: [Vec4; 3], limit: Vec4) -> (Vec4, u32) {
+    // (As in `entries8`.)
+    let near = enter[0].max(enter[1]).max(Vec4::ZERO.max(enter[2]));
+    let far = leave[0].min(leave[1]).min(leave[2]);
+    let mask = near.cmple(far) & near.cmple(limit);
+    (near, mask.bitmask())
+}
+
+/// Two halves' [`entries4`] as eight lanes.
+#[inline(always)]
+fn halves((near0, mask0): (Vec4, u32), (near1, mask1): (Vec4, u32)) -> ([f32; 8], u32) {
+    let mut near = [0.0; 8];
+    near[..4].copy_from_slice(&near0.to_array());
+    near[4..].copy_from_slice(&near1.to_array());
+    (near, mask0 | mask1 << 4)
+}
+
+/// [`entries4`] for eight lanes with AVX.
+///
+/// # Safety
+/// Only for a CPU with AVX2 and FMA.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+unsafe fn entries8(
+    enter: [std::arch::x86_64::__m256; 3],
+    leave: [std::arch::x86_64::__m256; 3],
+    limit: std::arch::x86_64::__m256,
+) -> ([f32; 8], u32) {
+    use std::arch::x86_64::*;
+    // SAFETY: the caller's CPU has AVX2 and FMA (this function's contract).
+    unsafe {
+        // As two short chains, not one long one: a walk waits on each node's test before it
+        // can read the next node. (max and min return their second operand when either is
+        // NaN: an empty slot's NaN sides reach the comparison below, which NaN fails.)
+        let near = _mm256_max_ps(
+            _mm256_max_ps(enter[0], enter[1]),
+            _mm256_max_ps(_mm256_setzero_ps(), enter[2]),
+        );
+        let far = _mm256_min_ps(_mm256_min_ps(leave[0], leave[1]), leave[2]);
+        let inside = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
+            _mm256_cmp_ps::<_CMP_LE_OQ>(near, limit),
+        );
+        let mut distances = [0.0; 8];
+        _mm256_storeu_ps(distances.as_mut_ptr(), near);
+        (distances, _mm256_movemask_ps(inside) as u32)
     }
 }
 
@@ -922,17 +953,13 @@ impl BoxRay {
             };
             let enter = |a: usize| distance(self.enter[a], a, self.enter_offset[a]);
             let leave = |a: usize| distance(self.leave[a], a, self.leave_offset[a]);
-            // As in `boxes_avx2`.
-            let near = enter(0).max(enter(1)).max(Vec4::ZERO.max(enter(2)));
-            let far = leave(0).min(leave(1)).min(leave(2));
-            let mask = near.cmple(far) & near.cmple(Vec4::splat(limit));
-            (near, mask.bitmask())
+            let (enter, leave) = (
+                [enter(0), enter(1), enter(2)],
+                [leave(0), leave(1), leave(2)],
+            );
+            entries4(enter, leave, Vec4::splat(limit))
         };
-        let ((near0, mask0), (near1, mask1)) = (half(0), half(1));
-        let mut near = [0.0; WIDE];
-        near[..4].copy_from_slice(&near0.to_array());
-        near[4..].copy_from_slice(&near1.to_array());
-        (near, mask0 | mask1 << 4)
+        halves(half(0), half(1))
     }
 
     /// [`BoxRay::boxes`] with AVX and FMA: one register a side, one fused
@@ -960,22 +987,11 @@ impl BoxRay {
             };
             let enter = |a: usize| distance(self.enter[a], a, self.enter_offset[a]);
             let leave = |a: usize| distance(self.leave[a], a, self.leave_offset[a]);
-            // As two short chains, not one long one: a walk waits on each node's test before
-            // it can read the next node. (max and min return their second operand when
-            // either is NaN: an empty slot's NaN sides reach the comparison below, which NaN
-            // fails.)
-            let near = _mm256_max_ps(
-                _mm256_max_ps(enter(0), enter(1)),
-                _mm256_max_ps(_mm256_setzero_ps(), enter(2)),
+            let (enter, leave) = (
+                [enter(0), enter(1), enter(2)],
+                [leave(0), leave(1), leave(2)],
             );
-            let far = _mm256_min_ps(_mm256_min_ps(leave(0), leave(1)), leave(2));
-            let inside = _mm256_and_ps(
-                _mm256_cmp_ps::<_CMP_LE_OQ>(near, far),
-                _mm256_cmp_ps::<_CMP_LE_OQ>(near, _mm256_set1_ps(limit)),
-            );
-            let mut distances = [0.0; WIDE];
-            _mm256_storeu_ps(distances.as_mut_ptr(), near);
-            (distances, _mm256_movemask_ps(inside) as u32)
+            entries8(enter, leave, _mm256_set1_ps(limit))
         }
     }
 }
@@ -1016,36 +1032,37 @@ impl TriangleFilter {
     }
 }
 
-/// The walk's stack of (entry, entry distance): a fixed array, left uninitialised (a walk
-/// is short, and writing 64 slots it will not use cost a shadow ray about 7 % of its
-/// instructions), spilling to the heap only for trees deeper than any a real mesh gives.
-struct Stack {
-    items: [MaybeUninit<(u32, f32)>; 64],
+/// A walk's stack (of entries and their entry distances): a fixed array of `N` items, left
+/// uninitialised (a walk is short, and writing 64 slots it will not use cost a shadow ray
+/// about 7 % of its instructions), spilling to the heap only for trees deeper than any a
+/// real mesh gives.
+struct Stack<T, const N: usize> {
+    items: [MaybeUninit<T>; N],
     len: usize,
-    spill: Vec<(u32, f32)>,
+    spill: Vec<T>,
 }
 
-impl Stack {
-    fn new() -> Stack {
+impl<T: Copy, const N: usize> Stack<T, N> {
+    fn new() -> Self {
         Stack {
-            items: [const { MaybeUninit::uninit() }; 64],
+            items: [const { MaybeUninit::uninit() }; N],
             len: 0,
             spill: Vec::new(),
         }
     }
 
     #[inline(always)]
-    fn push(&mut self, entry: u32, near: f32) {
-        if self.len < self.items.len() {
-            self.items[self.len] = MaybeUninit::new((entry, near));
+    fn push(&mut self, item: T) {
+        if self.len < N {
+            self.items[self.len] = MaybeUninit::new(item);
             self.len += 1;
         } else {
-            self.spill.push((entry, near));
+            self.spill.push(item);
         }
     }
 
     #[inline(always)]
-    fn pop(&mut self) -> Option<(u32, f32)> {
+    fn pop(&mut self) -> Option<T> {
         if let Some(item) = self.spill.pop() {
             return Some(item);
         }
@@ -1055,6 +1072,19 @@ impl Stack {
         self.len -= 1;
         // SAFETY: the slots below `len` were each written by `push`.
         Some(unsafe { self.items[self.len].assume_init() })
+    }
+}
+
+/// Sorts a node's children entered by their entry distances, farthest first (a few items:
+/// insertion sort).
+#[inline(always)]
+fn farthest_first<T: Copy>(items: &mut [(f32, T)]) {
+    for i in 1..items.len() {
+        let mut j = i;
+        while j > 0 && items[j - 1].0 < items[j].0 {
+            items.swap(j - 1, j);
+            j -= 1;
+        }
     }
 }
 
@@ -1072,47 +1102,6 @@ pub(crate) fn bits(mut mask: u32) -> impl Iterator<Item = usize> {
 
 /// Rays a packet walk takes at most.
 pub const PACKET: usize = 8;
-
-/// The packet walk's stack of (entry, the rays that enter it, their entry distances), as
-/// [`Stack`]: a fixed array, spilling to the heap only for trees deeper than a scene gives.
-struct PacketStack {
-    items: [MaybeUninit<(u32, u32, [f32; PACKET])>; 96],
-    len: usize,
-    spill: Vec<(u32, u32, [f32; PACKET])>,
-}
-
-impl PacketStack {
-    fn new() -> PacketStack {
-        PacketStack {
-            items: [const { MaybeUninit::uninit() }; 96],
-            len: 0,
-            spill: Vec::new(),
-        }
-    }
-
-    #[inline(always)]
-    fn push(&mut self, entry: u32, rays: u32, near: [f32; PACKET]) {
-        if self.len < self.items.len() {
-            self.items[self.len] = MaybeUninit::new((entry, rays, near));
-            self.len += 1;
-        } else {
-            self.spill.push((entry, rays, near));
-        }
-    }
-
-    #[inline(always)]
-    fn pop(&mut self) -> Option<(u32, u32, [f32; PACKET])> {
-        if let Some(item) = self.spill.pop() {
-            return Some(item);
-        }
-        if self.len == 0 {
-            return None;
-        }
-        self.len -= 1;
-        // SAFETY: the slots below `len` were each written by `push`.
-        Some(unsafe { self.items[self.len].assume_init() })
-    }
-}
 
 #[cfg(test)]
 mod tests {
@@ -1316,9 +1305,9 @@ mod tests {
 
     #[test]
     fn stack_spills_and_pops_in_order() {
-        let mut stack = Stack::new();
+        let mut stack = Stack::<(u32, f32), 64>::new();
         for i in 0..200 {
-            stack.push(i, i as f32);
+            stack.push((i, i as f32));
         }
         for i in (0..200).rev() {
             assert_eq!(stack.pop(), Some((i, i as f32)));
