@@ -3,7 +3,7 @@
 //! it in their own object space.
 
 use super::triangle::{ShearedRay, barycentric};
-use super::wide::{Corners, Lane, PACKET};
+use super::wide::{Corners, Lane, PACKET, bits};
 use super::{Crossings, Ray, counters};
 use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
@@ -79,17 +79,6 @@ fn closer(t: f64, index: u32, best: Option<(f64, u32)>, tmax: f64) -> bool {
         None => t < tmax,
         Some((b, i)) => t < b || (t == b && index < i),
     }
-}
-
-/// The lanes of a block's lanes mask: `i` for each set bit `i`.
-fn lanes_of(mut lanes: u32) -> impl Iterator<Item = usize> {
-    std::iter::from_fn(move || {
-        (lanes != 0).then(|| {
-            let i = lanes.trailing_zeros();
-            lanes &= lanes - 1;
-            i as usize
-        })
-    })
 }
 
 /// Triangles a leaf holds at most: one block of the tree, tested together.
@@ -223,7 +212,7 @@ impl TriangleMesh {
             prune_value(ray.tmax),
             |first, lanes, corners| {
                 let mut hit = false;
-                for i in lanes_of(lanes) {
+                for i in bits(lanes) {
                     let crossing = Self::exact(&sheared, corners, i, ray.tmin, tmax.next_up());
                     if let Some(t) = crossing.filter(|&t| closer(t, first + i as u32, best, tmax)) {
                         tmax = t;
@@ -262,7 +251,7 @@ impl TriangleMesh {
         self.tree
             .walk_packet(rays, &sheared, &mut limits, |k, first, lanes, corners| {
                 let mut hit = false;
-                for i in lanes_of(lanes) {
+                for i in bits(lanes) {
                     let crossing =
                         Self::exact(&sheared[k], corners, i, rays[k].tmin, tmax[k].next_up());
                     if let Some(t) =
@@ -295,7 +284,7 @@ impl TriangleMesh {
             &sheared,
             prune_value(ray.tmax),
             |first, lanes, corners| {
-                for i in lanes_of(lanes) {
+                for i in bits(lanes) {
                     let crossing = Self::exact(&sheared, corners, i, ray.tmin, ray.tmax);
                     if let Some(t) = crossing {
                         f(t, first + i as u32);
@@ -319,7 +308,7 @@ impl TriangleMesh {
         let mut found = false;
         self.tree
             .walk::<false>(ray, &sheared, prune_value(ray.tmax), |_, lanes, corners| {
-                for i in lanes_of(lanes) {
+                for i in bits(lanes) {
                     let crossing = Self::exact(&sheared, corners, i, ray.tmin, ray.tmax);
                     if crossing.is_some() {
                         found = true;

@@ -1088,7 +1088,7 @@ fn farthest_first<T: Copy>(items: &mut [(f32, T)]) {
     }
 }
 
-/// The bits set in `mask`, lowest first.
+/// The bits set in `mask`, lowest first (a block's lanes, a packet's rays).
 #[inline(always)]
 pub(crate) fn bits(mut mask: u32) -> impl Iterator<Item = usize> {
     std::iter::from_fn(move || {

@@ -379,10 +379,8 @@ pub(super) fn sample_many(
             // A packet: the next rays the projection gives, up to eight.
             let mut packet = [Ray::new(DVec3::ZERO, DVec3::Z); PACKET];
             let mut n = 0;
-            while n < PACKET
-                && let Some(Some(ray)) = rays.get(k + n)
-            {
-                packet[n] = *ray;
+            for ray in rays[k..].iter().take(PACKET).map_while(|ray| *ray) {
+                packet[n] = ray;
                 n += 1;
             }
             if n == 0 {
