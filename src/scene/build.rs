@@ -419,7 +419,11 @@ impl Scene {
                     bounded: false,
                     transform,
                     material,
-                    no_shadow: o.no_shadow,
+                    shadow: ShadowRole::new(
+                        o.no_shadow,
+                        materials[material.0 as usize].may_be_transparent(),
+                        materials[back_material.0 as usize].may_be_transparent(),
+                    ),
                     inverse: o.inverse,
                     hollow: o.hollow,
                     rank: 0,
@@ -571,19 +575,15 @@ impl Scene {
             }
             start += group.len();
         }
-        let see_through = |o: &Object| {
-            [o.material, o.back_material()]
-                .iter()
-                .any(|m| scene.materials[m.0 as usize].may_be_transparent())
-        };
-        scene.any_transparent = scene.objects.iter().any(|o| !o.no_shadow && see_through(o));
+        scene.any_transparent = scene.objects.iter().any(|o| o.shadow.filters());
         scene.any_hidden = scene.objects.iter().any(|o| {
             let sight = o.sight();
             sight.no_image || sight.no_reflection || sight.no_radiosity
         });
-        scene.shadow_fades = scene.objects.iter().any(|o| {
-            !o.no_shadow && fades(&scene.interiors[o.interior as usize]) && see_through(o)
-        });
+        scene.shadow_fades = scene
+            .objects
+            .iter()
+            .any(|o| o.shadow.filters() && fades(&scene.interiors[o.interior as usize]));
         (scene, bounds, taken)
     }
 

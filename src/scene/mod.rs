@@ -413,8 +413,8 @@ pub struct Object {
     pub transform: Option<Box<ObjectTransform>>,
     /// Its material.
     pub material: MaterialId,
-    /// Casts no shadow.
-    pub no_shadow: bool,
+    /// What it does to shadow rays (`no_shadow`, its materials' transparency).
+    pub shadow: ShadowRole,
     /// Inside swapped with outside.
     pub inverse: bool,
     /// Fog reaches rays inside it.
@@ -430,6 +430,53 @@ pub struct Object {
     /// What few objects have (an interior texture, `bounded_by`), boxed to keep the others
     /// small.
     pub extra: Option<Box<ObjectExtra>>,
+}
+
+/// What an object does to shadow rays, from `no_shadow` and whether its materials (outside
+/// and inside) may let light through: worked out with the scene, so that a shadow ray's test
+/// of an object reads no material.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShadowRole {
+    /// `no_shadow`: shadow rays pass as if it were not there.
+    None,
+    /// Opaque: it blocks any shadow ray it lies on.
+    Blocks,
+    /// Its outside may let light through: a shadow ray is filtered where it crosses it.
+    Filters,
+    /// An opaque outside with an inside that may let light through: it blocks, and a
+    /// shadow ray's crossings of it are listed.
+    FiltersAndBlocks,
+}
+
+impl ShadowRole {
+    /// The role of an object with `no_shadow` or not whose outside and inside materials may
+    /// or may not let light through.
+    pub fn new(no_shadow: bool, outside_clear: bool, inside_clear: bool) -> ShadowRole {
+        match (no_shadow, outside_clear, inside_clear) {
+            (true, _, _) => ShadowRole::None,
+            (false, true, _) => ShadowRole::Filters,
+            (false, false, true) => ShadowRole::FiltersAndBlocks,
+            (false, false, false) => ShadowRole::Blocks,
+        }
+    }
+
+    /// Whether shadow rays see it at all.
+    #[inline]
+    pub fn casts(self) -> bool {
+        self != ShadowRole::None
+    }
+
+    /// Whether it blocks a shadow ray that meets it.
+    #[inline]
+    pub fn blocks(self) -> bool {
+        matches!(self, ShadowRole::Blocks | ShadowRole::FiltersAndBlocks)
+    }
+
+    /// Whether light may pass through it filtered (its crossings are listed).
+    #[inline]
+    pub fn filters(self) -> bool {
+        matches!(self, ShadowRole::Filters | ShadowRole::FiltersAndBlocks)
+    }
 }
 
 /// The parts of an object that few objects have.
@@ -655,6 +702,30 @@ fn world_bounds(lo: DVec3, hi: DVec3, m: Option<&DMat4>) -> (DVec3, DVec3) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each object's part in shadow rays comes from `no_shadow` and its materials: an opaque
+    /// object blocks, a clear one filters, an opaque one with a clear inside does both, a
+    /// `no_shadow` one neither; and the scene's flags follow from them.
+    #[test]
+    fn shadow_roles_come_from_no_shadow_and_both_sides() {
+        let opaque = "pigment { rgb 1 }";
+        let clear = "pigment { rgbf <1, 1, 1, 0.9> }";
+        let scene = crate::testing::scene(format!(
+            "sphere {{ 0, 1 {opaque} }}\n\
+             sphere {{ 0, 1 {clear} }}\n\
+             sphere {{ 0, 1 texture {{ {opaque} }} interior_texture {{ {clear} }} }}\n\
+             sphere {{ 0, 1 {clear} no_shadow }}\n\
+             sphere {{ 0, 1 {opaque} no_shadow }}\n"
+        ));
+        let roles: Vec<ShadowRole> = (0..5).map(|i| scene.object(ObjectId(i)).shadow).collect();
+        use ShadowRole::*;
+        assert_eq!(roles, [Blocks, Filters, FiltersAndBlocks, None, None]);
+        assert!(scene.any_transparent());
+        let opaque_only = crate::testing::scene(format!(
+            "sphere {{ 0, 1 {opaque} }}\nsphere {{ 0, 1 {clear} no_shadow }}\n"
+        ));
+        assert!(!opaque_only.any_transparent());
+    }
 
     #[test]
     fn circular_grid_keeps_direction_at_shell_radius() {

@@ -278,11 +278,11 @@ impl Scene {
     /// light through; whether it blocks the ray outright.
     fn shadow_visit(&self, i: u32, ray: &Ray, out: &mut Vec<ShadowCrossing>) -> bool {
         let object = &self.objects[i as usize];
-        if object.no_shadow || !object.admits(ray) {
+        if !object.shadow.casts() || !object.admits(ray) {
             return false;
         }
         Self::in_object(object, ray, |local| {
-            if self.filters_shadows(i) {
+            if object.shadow.filters() {
                 object.shape.for_each_crossing(local, |t, part| {
                     out.push(ShadowCrossing {
                         t,
@@ -291,16 +291,13 @@ impl Scene {
                     })
                 });
             }
-            !self.material(object.material).may_be_transparent() && object.shape.occludes(local)
+            object.shadow.blocks() && object.shape.occludes(local)
         })
     }
 
     /// Whether object `i` can let light through to a shadow ray.
     fn filters_shadows(&self, i: u32) -> bool {
-        let object = &self.objects[i as usize];
-        !object.no_shadow
-            && (self.material(object.material).may_be_transparent()
-                || self.material(object.back_material()).may_be_transparent())
+        self.objects[i as usize].shadow.filters()
     }
 
     /// The material a ray meets where it crosses `object` at distance `t` on `part`: its
@@ -580,8 +577,7 @@ impl Queries for Scene {
     #[inline]
     fn blocks(&self, ray: &Ray, i: u32) -> bool {
         let object = &self.objects[i as usize];
-        !object.no_shadow
-            && !self.material(object.material).may_be_transparent()
+        object.shadow.blocks()
             && object.admits(ray)
             && Self::in_object(object, ray, |local| object.shape.occludes(local))
     }
@@ -701,7 +697,7 @@ impl Queries for Scene {
             let object = &self.objects[i as usize];
             // (A scene with a top-level index keeps no boxes per object: the shape decides.)
             let bounds = self.scan_bounds.get(i as usize).copied().flatten();
-            !object.no_shadow
+            object.shadow.casts()
                 && may_hit(bounds, ray, inv)
                 && object.admits(ray)
                 && Self::in_object(object, ray, |local| object.shape.occludes(local))

@@ -141,6 +141,9 @@ fn blocked(scene: &Scene, part: &Ray, last: &mut Option<u32>) -> bool {
 /// kept before (a duplicated surface): POV-Ray's walk starts each step at the crossing
 /// before, so it meets such a surface once.
 fn distinct(ray: &Ray, crossings: &mut Vec<ShadowCrossing>) {
+    if crossings.len() < 2 {
+        return;
+    }
     crossings.sort_by(|a, b| a.t.total_cmp(&b.t).then(a.object.0.cmp(&b.object.0)));
     // (Crossings closer than rounding to the one kept before are the same point.)
     let length = ray.direction.length();
@@ -165,8 +168,10 @@ fn distinct(ray: &Ray, crossings: &mut Vec<ShadowCrossing>) {
 /// around another fades only from the inner one's exit); otherwise it enters. The list
 /// starts with the media of the crossed objects that contain the ray's origin.
 fn walk(scene: &Scene, ray: &Ray, crossings: &[ShadowCrossing], media: &mut Vec<u32>) -> Rgb {
-    let length = ray.direction.length();
-    if !scene.shadow_fades() {
+    // (Where no crossed object's interior fades, the list of media changes nothing: the
+    // product of the filters, in the same order.)
+    let fading = |c: &ShadowCrossing| fades(scene.interior(scene.object(c.object)));
+    if !scene.shadow_fades() || !crossings.iter().any(fading) {
         return crossings
             .iter()
             .map(|c| scene.crossing_filter(ray, c))
@@ -178,6 +183,7 @@ fn walk(scene: &Scene, ray: &Ray, crossings: &[ShadowCrossing], media: &mut Vec<
             media.push(medium);
         }
     }
+    let length = ray.direction.length();
     let (mut through, mut last_t) = (Rgb::ONE, 0.0);
     for c in crossings.iter() {
         let object = scene.object(c.object);
