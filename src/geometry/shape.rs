@@ -178,6 +178,20 @@ macro_rules! shapes {
                 crossings
             }
 
+            /// Whether the ray clearly misses a sphere (counted as a test that found
+            /// nothing, as [`Shape::intersect`] would find it); false for other shapes.
+            #[inline(always)]
+            pub fn clearly_missed(&self, ray: &Ray) -> bool {
+                let Shape::Sphere(s) = self else {
+                    return false;
+                };
+                let missed = s.clearly_missed(ray);
+                if missed {
+                    counters::record(Kind::Sphere as usize, false);
+                }
+                missed
+            }
+
             /// (shading normal, geometric normal) at `p` on part `part`.
             #[inline]
             pub fn normals(&self, p: DVec3, part: u32) -> (DVec3, DVec3) {

@@ -19,24 +19,68 @@ impl Sphere {
     }
 }
 
-impl super::shape::Surface for Sphere {
-    const NAME: &'static str = "Sphere";
+/// The terms of a ray's quadratic with a sphere (see [`Sphere::terms`]).
+struct Terms {
+    f: DVec3,
+    d: DVec3,
+    a: f64,
+    half_b: f64,
+    ff: f64,
+    rr: f64,
+    c: f64,
+}
 
-    #[inline]
-    fn intersect(&self, ray: &Ray) -> Crossings {
+impl Sphere {
+    /// The terms of the ray's quadratic, `None` for a clear miss: the textbook discriminant
+    /// half_b² − a·c is the same number as the one `intersect` uses but for rounding, which
+    /// is under 20 units of a·(|f|² + r²) for each; below minus a millionth of that, both
+    /// are negative. (Without the division `intersect` goes on to.)
+    #[inline(always)]
+    fn terms(&self, ray: &Ray) -> Option<Terms> {
         let f = ray.origin - self.centre;
         let d = ray.direction;
         let a = d.length_squared();
         let half_b = f.dot(d);
         let (ff, rr) = (f.length_squared(), self.radius * self.radius);
         let c = ff - rr;
-        // A clear miss first, without the division below: the textbook discriminant
-        // half_b² − a·c is the same number as the one below but for rounding, which is under
-        // 20 units of a·(|f|² + r²) for each; below minus a millionth of that, both are
-        // negative.
         if half_b * half_b - a * c < -1e-6 * (a * (ff + rr)) {
-            return Crossings::NONE;
+            return None;
         }
+        Some(Terms {
+            f,
+            d,
+            a,
+            half_b,
+            ff,
+            rr,
+            c,
+        })
+    }
+
+    /// Whether the ray clearly misses the sphere: `intersect` then finds nothing.
+    #[inline(always)]
+    pub fn clearly_missed(&self, ray: &Ray) -> bool {
+        self.terms(ray).is_none()
+    }
+}
+
+impl super::shape::Surface for Sphere {
+    const NAME: &'static str = "Sphere";
+
+    #[inline]
+    fn intersect(&self, ray: &Ray) -> Crossings {
+        let Some(Terms {
+            f,
+            d,
+            a,
+            half_b,
+            ff,
+            rr,
+            c,
+        }) = self.terms(ray)
+        else {
+            return Crossings::NONE;
+        };
         // Δ/a = r² − |f − (f·d/a)·d|²: the squared half chord.
         let perpendicular = f - (half_b / a) * d;
         let discriminant = a * (rr - perpendicular.length_squared());
@@ -104,6 +148,44 @@ mod tests {
             centre: DVec3::ZERO,
             radius: 1.0,
         }
+    }
+
+    /// A ray the early test turns away finds nothing in the full test, grazing rays among
+    /// them; and the early test turns most missing rays away.
+    #[test]
+    fn clear_misses_find_nothing() {
+        let mut random = crate::testing::Xorshift(0x5fe1e);
+        let (mut missed, mut turned_away) = (0, 0);
+        for _ in 0..200_000 {
+            let mut v = |r: &mut crate::testing::Xorshift| {
+                DVec3::new(r.unit(), r.unit(), r.unit()) * 2.0 - 1.0
+            };
+            let sphere = Sphere {
+                centre: v(&mut random) * 5.0,
+                radius: 0.1 + random.unit() * 3.0,
+            };
+            let origin = v(&mut random) * 10.0;
+            // (Aimed near the rim: within a tenth of the radius of grazing it, either side.)
+            let aim = sphere.centre - origin;
+            let side = aim.any_orthogonal_vector().normalize();
+            let off = sphere.radius * (0.9 + 0.2 * random.unit());
+            let ray = Ray::new(
+                origin,
+                (aim + side * off).normalize() * (0.5 + random.unit()),
+            );
+            let found = sphere.intersect(&ray);
+            if found.is_empty() {
+                missed += 1;
+            }
+            if sphere.clearly_missed(&ray) {
+                turned_away += 1;
+                assert!(found.is_empty(), "{sphere:?} {ray:?}");
+            }
+        }
+        assert!(
+            turned_away > 0 && turned_away * 10 > missed * 9,
+            "{turned_away} of {missed} misses turned away"
+        );
     }
 
     #[test]

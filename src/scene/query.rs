@@ -57,6 +57,12 @@ impl Scene {
         if seer.is_some_and(|s| !object.seen_by(s)) {
             return None;
         }
+        // (A sphere in world space that admits every ray turns most of the rays that miss it
+        // away here, before the full test.)
+        let plain = object.transform.is_none() && object.extra.is_none();
+        if plain && object.shape.clearly_missed(ray) {
+            return None;
+        }
         self.offer_crossings(i, ray, Self::crossings(object, ray), best)
     }
 
