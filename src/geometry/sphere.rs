@@ -157,7 +157,7 @@ mod tests {
         let mut random = crate::testing::Xorshift(0x5fe1e);
         let (mut missed, mut turned_away) = (0, 0);
         for _ in 0..200_000 {
-            let mut v = |r: &mut crate::testing::Xorshift| {
+            let v = |r: &mut crate::testing::Xorshift| {
                 DVec3::new(r.unit(), r.unit(), r.unit()) * 2.0 - 1.0
             };
             let sphere = Sphere {
