@@ -62,6 +62,15 @@ impl PlacedPigment {
         PlacedPigment::placed(Kind::Solid(colour), pattern_from_world)
     }
 
+    /// The colour everywhere, for a solid pigment.
+    #[inline]
+    pub fn solid_colour(&self) -> Option<&Colour> {
+        match &self.kind {
+            Kind::Solid(c) => Some(c),
+            _ => None,
+        }
+    }
+
     /// A pattern's value looked up in its map.
     pub fn mapped(pattern: Pattern, map: Map, pattern_from_world: Option<DMat4>) -> PlacedPigment {
         let kind = Kind::Pattern(Box::new(Mapped { pattern, map }));

@@ -218,6 +218,13 @@ impl Material {
     /// What the surface lets through at `p`: the product over the layers of
     /// `rgb·filter + transmit` (POV-Ray's shadow texture), blended for a pattern of materials.
     pub fn filter_at(&self, p: DVec3) -> Rgb {
+        // (One solid layer, glass's usual: its filter, which the product below starts from
+        // one with, to the same bits.)
+        if self.map.is_none() && self.under.is_empty() {
+            if let Some(c) = self.pigment.solid_colour() {
+                return filter_colour(c);
+            }
+        }
         if let Some(m) = &self.map {
             return m.blend(p, &Default::default(), |e, at| e.filter_at(at));
         }
@@ -378,5 +385,46 @@ impl Scene {
             1.0 + irid.amount * (interference / w.y).cos(),
             1.0 + irid.amount * (interference / w.z).cos(),
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::ObjectId;
+
+    /// What a shadow ray's crossing lets through: rgb·filter + transmit for one solid layer
+    /// (glass's usual, taken straight from its colour), the product over layers for a layered
+    /// texture, and the pattern's colour where the pigment varies.
+    #[test]
+    fn filters_of_solid_layered_and_patterned_materials() {
+        let scene = crate::testing::scene(
+            "sphere { 0, 1 pigment { rgbft <0.2, 0.4, 0.6, 0.5, 0.25> } }\n\
+             sphere { 0, 1 texture { pigment { rgbf <1, 0.5, 0.5, 0.8> } }\n\
+                           texture { pigment { rgbt <0.5, 1, 1, 0.4> } } }\n\
+             sphere { 0, 1 pigment { checker rgbf <1, 0, 0, 1> rgbf <0, 0, 1, 1> } }\n"
+                .to_string(),
+        );
+        let filter = |i: u32, p: DVec3| {
+            let object = scene.object(ObjectId(i));
+            scene.material(object.material).filter_at(p)
+        };
+        let close = |a: Rgb, b: Rgb| (a - b).abs().max_element() < 1e-12;
+        let p = DVec3::new(0.3, 0.2, 0.1);
+        assert!(
+            close(filter(0, p), Rgb::new(0.35, 0.45, 0.55)),
+            "{}",
+            filter(0, p)
+        );
+        let under = Rgb::new(0.5, 1.0, 1.0) * 0.0 + Rgb::splat(0.4);
+        let top = Rgb::new(1.0, 0.5, 0.5) * 0.8;
+        assert!(close(filter(1, p), top * under), "{}", filter(1, p));
+        let (a, b) = (DVec3::new(0.5, 0.5, 0.5), DVec3::new(1.5, 0.5, 0.5));
+        let (red, blue) = (Rgb::new(1.0, 0.0, 0.0), Rgb::new(0.0, 0.0, 1.0));
+        let (fa, fb) = (filter(2, a), filter(2, b));
+        assert!(
+            (close(fa, red) && close(fb, blue)) || (close(fa, blue) && close(fb, red)),
+            "{fa} {fb}"
+        );
     }
 }
