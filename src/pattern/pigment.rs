@@ -137,7 +137,7 @@ impl PlacedPigment {
 
     /// The colour at world point `p` of `surface`.
     pub fn colour_on(&self, p: DVec3, surface: &Surface) -> Colour {
-        if let Kind::Solid(c) = &self.kind {
+        if let Some(c) = self.solid_colour() {
             return *c;
         }
         let q = self
